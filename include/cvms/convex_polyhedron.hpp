@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// A validated convex polyhedron: what every Minkowski-sum algorithm takes and
+// returns. Its facets are maximal (no two adjacent facets are coplanar), every
+// vertex is extreme (no vertex inside a facet or on a straight boundary run),
+// faces are oriented counterclockwise seen from outside, and the volume is
+// positive. Each facet stores its exact outward normal, scaled to a primitive
+// integer vector (so equal directions have equal normals), and the plane offset
+// dot(normal, x) = offset; double approximations of vertices and normals with
+// proven error bounds sit next to them for the predicate filters.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cvms/approx.hpp"
+#include "cvms/mesh.hpp"
+#include "cvms/polygon_soup.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms {
+
+class ConvexPolyhedron {
+ public:
+  ConvexPolyhedron() = default;
+
+  /// Checks and normalises a closed mesh: merges coplanar adjacent faces into
+  /// maximal facets, drops vertices that are not extreme, flips a globally
+  /// inward orientation. Convexity is verified exactly.
+  /// \throw Error(not_convex) naming the first reflex edge (its two vertex
+  ///   indices of the input) or a non-convex face;
+  /// \throw Error(degenerate) for a flat (zero-volume) or zero-area input;
+  /// \throw Error(topology) if faces are inconsistently oriented.
+  /// Complexity: O(F + E) predicates plus O(V) for the merges.
+  static ConvexPolyhedron from_mesh(const Mesh& mesh);
+
+  /// Mesh::from_soup followed by from_mesh; errors of both.
+  static ConvexPolyhedron from_soup(PolygonSoup soup);
+
+  /// Trusted construction from facets that the caller guarantees are maximal,
+  /// convex, counterclockwise from outside, with only extreme vertices (used
+  /// by the algorithms for their output). Topology is still checked by
+  /// Mesh::from_soup; geometry is not rechecked. \pre the guarantee holds.
+  static ConvexPolyhedron from_trusted_soup(PolygonSoup soup);
+
+  [[nodiscard]] const Mesh& mesh() const noexcept { return mesh_; }
+  [[nodiscard]] std::uint32_t num_vertices() const noexcept { return mesh_.num_vertices(); }
+  [[nodiscard]] std::uint32_t num_edges() const noexcept { return mesh_.num_edges(); }
+  [[nodiscard]] std::uint32_t num_facets() const noexcept { return mesh_.num_faces(); }
+
+  [[nodiscard]] const Vec3& vertex(VertexId v) const noexcept { return mesh_.position(v); }
+  [[nodiscard]] const ApproxVec3& vertex_approx(VertexId v) const noexcept { return vertex_approx_[v.index()]; }
+  [[nodiscard]] Vec3Ref vertex_ref(VertexId v) const noexcept { return {vertex(v), vertex_approx(v)}; }
+
+  /// Exact outward normal of facet f: a primitive integer vector.
+  [[nodiscard]] const Vec3& normal(FaceId f) const noexcept { return normals_[f.index()]; }
+  [[nodiscard]] const ApproxVec3& normal_approx(FaceId f) const noexcept { return normal_approx_[f.index()]; }
+  [[nodiscard]] Vec3Ref normal_ref(FaceId f) const noexcept { return {normal(f), normal_approx(f)}; }
+  /// dot(normal(f), x) == plane_offset(f) for every point x of facet f.
+  [[nodiscard]] const Rational& plane_offset(FaceId f) const noexcept { return offsets_[f.index()]; }
+
+  /// The direction of the edge of h: vertex(to(h)) - vertex(from(h)).
+  [[nodiscard]] Vec3 edge_vector(HalfedgeId h) const { return vertex(mesh_.to(h)) - vertex(mesh_.from(h)); }
+
+  /// Re-verifies exactly that the stored data describe a convex polyhedron
+  /// with maximal facets and extreme vertices (for tests; O(V F) in the worst case is fine).
+  [[nodiscard]] bool is_convex() const;
+  /// V - E + F (2 for every valid instance).
+  [[nodiscard]] int euler_characteristic() const noexcept;
+
+  [[nodiscard]] PolygonSoup to_soup() const { return mesh_.to_soup(); }
+
+  /// The image under x -> linear * x + offset. \pre det(linear) != 0.
+  /// A negative determinant is handled (faces are re-oriented).
+  [[nodiscard]] ConvexPolyhedron transformed(const Mat3& linear, const Vec3& offset) const;
+  [[nodiscard]] ConvexPolyhedron translated(const Vec3& offset) const;
+  /// -P = {-x : x in P}, for configuration-space obstacles A + (-B).
+  [[nodiscard]] ConvexPolyhedron reflected() const;
+
+ private:
+  void compute_caches();  // normals, offsets, approximations
+
+  Mesh mesh_;
+  std::vector<ApproxVec3> vertex_approx_;
+  std::vector<Vec3> normals_;
+  std::vector<ApproxVec3> normal_approx_;
+  std::vector<Rational> offsets_;
+};
+
+/// Scales a nonzero rational vector by a positive factor to the primitive
+/// integer vector of the same direction (gcd of components 1).
+Vec3 primitive_direction(const Vec3& v);
+
+}  // namespace cvms

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// Every sign decision of the library. Each predicate first evaluates its
+// polynomial in double with a running error bound (inputs carry their own
+// bound, see approx.hpp; each operation adds its rounding and a term for
+// underflow), answers when |value| > bound, and otherwise falls back to exact
+// rational evaluation. The answer is therefore always the exact sign.
+//
+// The Vec3Ref overloads use cached approximations; the plain overloads build
+// them on the fly (slower, same answer).
+#pragma once
+
+#include <cstdint>
+
+#include "cvms/approx.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms {
+
+enum class Sign : int { negative = -1, zero = 0, positive = 1 };
+
+inline Sign sign_of(int s) noexcept {
+  return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero);
+}
+inline Sign operator-(Sign s) noexcept { return static_cast<Sign>(-static_cast<int>(s)); }
+
+/// How often the floating-point filter answered and how often exact
+/// arithmetic was needed. Per thread: predicates running in different threads
+/// never share counters, so the library stays free of shared mutable state.
+struct PredicateCounters {
+  std::uint64_t filtered = 0;  ///< answered by the double filter
+  std::uint64_t exact = 0;     ///< fell back to exact rational evaluation
+};
+/// This thread's counters (read or reset them from tests and benchmarks).
+PredicateCounters& predicate_counters() noexcept;
+
+/// Sign of cross(b - a, c - a) (2D): positive iff a, b, c make a left turn
+/// (counterclockwise), zero iff collinear.
+Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c);
+Sign orient2d(Vec2Ref a, Vec2Ref b, Vec2Ref c);
+
+/// Sign of cross(u, v) (2D, z component): positive iff v is counterclockwise of u.
+Sign sign_cross2(const Vec2& u, const Vec2& v);
+Sign sign_cross2(Vec2Ref u, Vec2Ref v);
+
+/// True iff direction d lies strictly inside the counterclockwise angular
+/// sector that starts at direction d1 and ends at direction d2 (d1, d2, d
+/// nonzero). When d1 and d2 have the same direction the sector is the whole
+/// turn minus that direction. Used to order edges in the planar convolution.
+bool ccw_in_between(const Vec2& d, const Vec2& d1, const Vec2& d2);
+
+/// Sign of dot(b - a, cross(c - a, d - a)) = det[b - a, c - a, d - a]:
+/// positive iff d lies on the side of the plane through a, b, c into which
+/// cross(b - a, c - a) points (a, b, c counterclockwise seen from d),
+/// zero iff the four points are coplanar.
+/// (Note the order: det[b-a, c-a, d-a] = dot(cross(b-a, c-a), d-a).)
+Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d);
+
+/// Sign of dot(u, v).
+Sign sign_dot(const Vec3& u, const Vec3& v);
+Sign sign_dot(Vec3Ref u, Vec3Ref v);
+
+/// Sign of dot(v, n) - dot(w, n): positive iff v is farther than w in the
+/// direction n (the test that picks contributing vertices, paper Eq. 3).
+Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n);
+Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
+
+/// Sign of dot(p, n) - offset: positive iff p is strictly above the plane
+/// {x : dot(x, n) = offset} (in the direction n).
+Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset);
+
+/// Sign of the triple product det[u, v, w] = dot(u, cross(v, w)).
+Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w);
+Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
+
+/// True iff cross(u, v) == 0 (u, v parallel or one of them zero). Exact.
+bool is_parallel(const Vec3& u, const Vec3& v);
+bool is_parallel(Vec3Ref u, Vec3Ref v);
+
+}  // namespace cvms
