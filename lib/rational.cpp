@@ -85,7 +85,7 @@ std::optional<Rational> try_parse_rational(std::string_view text, long max_expon
     std::size_t exp_start = i;
     while (i < text.size() && is_digit(text[i])) {
       long digit = text[i] - '0';
-      if (exponent > (max_exponent - digit) / 10)
+      if (exponent > max_exponent / 10 || exponent * 10 > max_exponent - digit)
         exponent_too_big = true;
       else
         exponent = exponent * 10 + digit;

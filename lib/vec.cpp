@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
+// Mat3 products and determinants, and hashing of exact values.
 #include "cvms/vec.hpp"
+
+#include <cstdint>
 
 namespace cvms {
 
@@ -23,8 +26,19 @@ Rational Mat3::determinant() const {
 }
 
 namespace {
+// The splitmix64 finaliser: every input bit affects every output bit, so
+// small integers (the common coordinates) do not collide the way a plain
+// shift-and-xor combination makes them.
+std::uint64_t avalanche(std::uint64_t x) {
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  return x;
+}
 std::size_t mix(std::size_t seed, std::size_t value) {
-  return seed ^ (value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2));
+  return static_cast<std::size_t>(avalanche(seed * 0x9e3779b97f4a7c15ULL + avalanche(value)));
 }
 std::size_t hash_mpz(mpz_srcptr z) {
   // Hash the limbs: canonical representation, so equal integers hash equal.
