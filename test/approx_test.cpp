@@ -36,8 +36,13 @@ std::string check(const Rational& q) {
   Rational diff = abs(Rational(a.value) - q);
   if (diff > Rational(a.error)) return "bound violated for " + to_string(q);
   if ((a.error == 0) != is_a_double(q)) return "exactness wrong for " + to_string(q);
-  // The value is the truncation: not farther from zero than q, within 1 ulp.
-  if (abs(Rational(a.value)) > abs(q)) return "not truncated for " + to_string(q);
+  // The value is one of the two doubles around q (nearest or truncated): q
+  // lies strictly between it and the next double toward q.
+  if (a.error != 0) {
+    double toward = std::nextafter(a.value, Rational(a.value) < q ? INFINITY : -INFINITY);
+    if (std::isfinite(toward) && (Rational(toward) - q) * (Rational(a.value) - q) >= 0)
+      return "value not adjacent to " + to_string(q);
+  }
   return "";
 }
 
@@ -66,6 +71,11 @@ TEST(Approx, HandPickedBoundaries) {
       power_of_two(-1075) * (power_of_two(53) - 1),             // one bit too low
       power_of_two(-1074) * (power_of_two(54) - 1),             // 54 bits
       Rational(power_of_two(1023) * (power_of_two(53) - 1) / power_of_two(52)),  // DBL_MAX exactly
+      // Fractions of integers with at most / just over 53 bits (the division fast path).
+      test::fraction(mpz_class(1) << 53, 3) - 1, test::fraction((mpz_class(1) << 53) - 1, (mpz_class(1) << 52) + 1),
+      test::fraction(-((mpz_class(1) << 53) - 1), (mpz_class(1) << 53) - 3),
+      test::fraction((mpz_class(1) << 53) + 1, 3), test::fraction(1, (mpz_class(1) << 53) + 1),
+      test::fraction(mpz_class("18446744073709551615"), 7), test::fraction(1, 7), test::fraction(-22, 7),
   };
   for (const Rational& q : cases) EXPECT_EQ(check(q), "") << to_string(q).substr(0, 80);
   EXPECT_EQ(Approx::of(power_of_two(-1075)).value, 0.0);
