@@ -152,7 +152,8 @@ void BM_compare_dot_near_degenerate(benchmark::State& state) {
   cvms::PredicateCounters before = cvms::predicate_counters();
   std::size_t i = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(cvms::compare_dot(Vec3Ref{exact[i], approx[i]}, Vec3Ref{exact[i + 1], approx[i + 1]},
+    benchmark::DoNotOptimize(cvms::compare_dot(Vec3Ref{exact[i], approx[i]},
+                                               Vec3Ref{exact[i + 1], approx[i + 1]},
                                                Vec3Ref{exact[i + 2], approx[i + 2]}));
     i = (i + 4) % points_per_set;
   }

@@ -71,8 +71,8 @@ namespace cvms::filtered {
 static_assert(std::numeric_limits<double>::is_iec559, "the error analysis assumes IEEE binary64");
 static_assert(FLT_EVAL_METHOD == 0, "the error analysis assumes no extended-precision intermediates");
 
-inline constexpr double unit_roundoff = 0x1p-53;  ///< u
-inline constexpr double inflation = 1.0 + 0x1p-50;  ///< F = 1 + 8u
+inline constexpr double unit_roundoff = 0x1p-53;      ///< u
+inline constexpr double inflation = 1.0 + 0x1p-50;    ///< F = 1 + 8u
 inline constexpr double underflow_slack = 0x1p-1021;  ///< eta
 
 // Finishes a bound: fl(fl(sum + eta) * F), see the proof above. `sum` is the

@@ -9,9 +9,10 @@
 // Approx (cached or on-the-fly approximations with an error) or double (all
 // input errors are zero, the common case for inputs that were doubles, where
 // the first operations need no error propagation at all).
+#include "cvms/predicates.hpp"
+
 #include <utility>
 
-#include "cvms/predicates.hpp"
 #include "filtered_arithmetic.hpp"
 #include "predicates_exact.hpp"
 

@@ -160,8 +160,8 @@ double to_double_nearest(const Rational& value) {
   // The candidates are truncated and away; when away is infinite the
   // midpoint is DBL_MAX + ulp(DBL_MAX)/2 = 2^1024 - 2^970, and at the tie
   // IEEE rounds to infinity (DBL_MAX's significand is odd).
-  Rational upper = std::isinf(away) ? Rational(truncated) * 2 - Rational(std::nextafter(truncated, 0.0))
-                                    : Rational(away);
+  Rational upper =
+      std::isinf(away) ? Rational(truncated) * 2 - Rational(std::nextafter(truncated, 0.0)) : Rational(away);
   Rational midpoint = (Rational(truncated) + upper) / 2;
   int c = cmp(abs(value), abs(midpoint));
   if (c < 0) return truncated;

@@ -57,25 +57,34 @@ TEST(Approx, ExactDoublesHaveZeroError) {
 
 TEST(Approx, HandPickedBoundaries) {
   std::vector<Rational> cases = {
-      Rational(1, 3), Rational(-1, 3), Rational(1, 10),
-      power_of_two(1024) - 1,                                  // truncates to DBL_MAX
+      Rational(1, 3),
+      Rational(-1, 3),
+      Rational(1, 10),
+      power_of_two(1024) - 1,  // truncates to DBL_MAX
       -(power_of_two(1024) - 1),
-      power_of_two(1024), power_of_two(5000), -power_of_two(1030),  // beyond the range
-      power_of_two(-1075),                                      // truncates to 0
-      -power_of_two(-1075), power_of_two(-3000),
-      power_of_two(-1074) * 3 / 2,                              // between two subnormals
-      power_of_two(-1022) - power_of_two(-1080),                // just below DBL_MIN
-      power_of_two(-1022) + power_of_two(-1080),                // just above DBL_MIN
-      power_of_two(53) + 1,                                     // 54 significant bits
-      power_of_two(-1074) * (power_of_two(53) - 1),             // 53 bits, lowest 2^-1074
-      power_of_two(-1075) * (power_of_two(53) - 1),             // one bit too low
-      power_of_two(-1074) * (power_of_two(54) - 1),             // 54 bits
+      power_of_two(1024),
+      power_of_two(5000),
+      -power_of_two(1030),  // beyond the range
+      power_of_two(-1075),  // truncates to 0
+      -power_of_two(-1075),
+      power_of_two(-3000),
+      power_of_two(-1074) * 3 / 2,                                               // between two subnormals
+      power_of_two(-1022) - power_of_two(-1080),                                 // just below DBL_MIN
+      power_of_two(-1022) + power_of_two(-1080),                                 // just above DBL_MIN
+      power_of_two(53) + 1,                                                      // 54 significant bits
+      power_of_two(-1074) * (power_of_two(53) - 1),                              // 53 bits, lowest 2^-1074
+      power_of_two(-1075) * (power_of_two(53) - 1),                              // one bit too low
+      power_of_two(-1074) * (power_of_two(54) - 1),                              // 54 bits
       Rational(power_of_two(1023) * (power_of_two(53) - 1) / power_of_two(52)),  // DBL_MAX exactly
       // Fractions of integers with at most / just over 53 bits (the division fast path).
-      test::fraction(mpz_class(1) << 53, 3) - 1, test::fraction((mpz_class(1) << 53) - 1, (mpz_class(1) << 52) + 1),
+      test::fraction(mpz_class(1) << 53, 3) - 1,
+      test::fraction((mpz_class(1) << 53) - 1, (mpz_class(1) << 52) + 1),
       test::fraction(-((mpz_class(1) << 53) - 1), (mpz_class(1) << 53) - 3),
-      test::fraction((mpz_class(1) << 53) + 1, 3), test::fraction(1, (mpz_class(1) << 53) + 1),
-      test::fraction(mpz_class("18446744073709551615"), 7), test::fraction(1, 7), test::fraction(-22, 7),
+      test::fraction((mpz_class(1) << 53) + 1, 3),
+      test::fraction(1, (mpz_class(1) << 53) + 1),
+      test::fraction(mpz_class("18446744073709551615"), 7),
+      test::fraction(1, 7),
+      test::fraction(-22, 7),
   };
   for (const Rational& q : cases) EXPECT_EQ(check(q), "") << to_string(q).substr(0, 80);
   EXPECT_EQ(Approx::of(power_of_two(-1075)).value, 0.0);

@@ -37,11 +37,21 @@ std::string violation(const Tracked& t, const char* what) {
 Tracked leaf(test::Rng& rng, int kind) {
   Rational q;
   switch (kind) {
-    case 0: q = test::random_rational(rng); break;
-    case 1: q = Rational(test::random_magnitude(rng, -600, -480)); break;  // products underflow
-    case 2: q = Rational(test::random_magnitude(rng, 480, 520)); break;    // products overflow
-    case 3: q = Rational(test::random_magnitude(rng, -1074, -1000)); break;  // subnormal-ish
-    default: q = Rational(test::random_uniform(rng, -1, 1)); break;
+    case 0:
+      q = test::random_rational(rng);
+      break;
+    case 1:
+      q = Rational(test::random_magnitude(rng, -600, -480));
+      break;  // products underflow
+    case 2:
+      q = Rational(test::random_magnitude(rng, 480, 520));
+      break;  // products overflow
+    case 3:
+      q = Rational(test::random_magnitude(rng, -1074, -1000));
+      break;  // subnormal-ish
+    default:
+      q = Rational(test::random_uniform(rng, -1, 1));
+      break;
   }
   Approx a = Approx::of(q);
   // Sometimes widen the bound (still valid) so the Approx overloads run on doubles too.

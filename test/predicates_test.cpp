@@ -70,18 +70,26 @@ std::string random_decimal_text(Rng& rng) {
 
 Rational coordinate(Rng& rng, Kind kind) {
   switch (kind) {
-    case Kind::small_integer: return Rational(static_cast<long>(rng() % 7) - 3);
-    case Kind::decimal: return parse_rational(random_decimal_text(rng));  // "0.1" is 1/10
-    case Kind::unit_double: return Rational(test::random_uniform(rng, -1, 1));
-    case Kind::mixed_double: return Rational(test::random_magnitude(rng, -40, 40));
+    case Kind::small_integer:
+      return Rational(static_cast<long>(rng() % 7) - 3);
+    case Kind::decimal:
+      return parse_rational(random_decimal_text(rng));  // "0.1" is 1/10
+    case Kind::unit_double:
+      return Rational(test::random_uniform(rng, -1, 1));
+    case Kind::mixed_double:
+      return Rational(test::random_magnitude(rng, -40, 40));
     case Kind::fraction:
       return fraction(static_cast<long>(rng() % 201) - 100, static_cast<long>(rng() % 30) + 1);
-    case Kind::large_offset: return Rational(1000000000) + Rational(test::random_uniform(rng, -1, 1));
-    case Kind::any_rational: return test::random_rational(rng);
+    case Kind::large_offset:
+      return Rational(1000000000) + Rational(test::random_uniform(rng, -1, 1));
+    case Kind::any_rational:
+      return test::random_rational(rng);
   }
   return 0;
 }
-Vec3 point3(Rng& rng, Kind kind) { return {coordinate(rng, kind), coordinate(rng, kind), coordinate(rng, kind)}; }
+Vec3 point3(Rng& rng, Kind kind) {
+  return {coordinate(rng, kind), coordinate(rng, kind), coordinate(rng, kind)};
+}
 
 // A cached approximation whose bound is deliberately loose (still valid), so
 // that the Approx (non-exact-leaf) code path also runs on double inputs.
@@ -125,7 +133,8 @@ std::string check_3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
          sign_triple(xa, xb, xc));
   Rational offset = d.x;
   expect("side_of_plane", oracle_side(a, b, offset), side_of_plane(a, b, offset),
-         side_of_plane(ra, rb, offset, Approx::of(offset)), side_of_plane(xa, xb, offset, loosen(Approx::of(offset))));
+         side_of_plane(ra, rb, offset, Approx::of(offset)),
+         side_of_plane(xa, xb, offset, loosen(Approx::of(offset))));
   bool parallel = oracle_parallel(a, b);
   if (is_parallel(a, b) != parallel || is_parallel(ra, rb) != parallel || is_parallel(xa, xb) != parallel)
     out += "is_parallel wrong; ";
@@ -155,7 +164,7 @@ TEST(Predicates, HandCheckedConventions) {
   EXPECT_EQ(orient3d(o, ey, ex, ez), Sign::negative);
   EXPECT_EQ(orient3d(o, ex, ey, Vec3{5, 7, 0}), Sign::zero);
   EXPECT_EQ(orient2d(Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}), Sign::positive);  // left turn
-  EXPECT_EQ(sign_cross2(Vec2{1, 0}, Vec2{0, 1}), Sign::positive);          // ccw
+  EXPECT_EQ(sign_cross2(Vec2{1, 0}, Vec2{0, 1}), Sign::positive);           // ccw
   EXPECT_EQ(compare_dot(Vec3{2, 0, 0}, Vec3{1, 5, 5}, ex), Sign::positive);
   EXPECT_EQ(side_of_plane(Vec3{0, 0, 2}, ez, Rational(1)), Sign::positive);
   EXPECT_EQ(side_of_plane(Vec3{0, 0, 1}, ez, Rational(1)), Sign::zero);
@@ -223,7 +232,8 @@ TEST(Predicates, ExactlyDegenerateNonDoubleInputsFallBack) {
   for (int i = 0; i < 300; ++i) {
     Kind kind = i % 2 ? Kind::fraction : Kind::decimal;
     Vec3 a = point3(rng, kind), b = point3(rng, kind), c = point3(rng, kind);
-    Rational s = fraction(static_cast<long>(rng() % 19) - 9, 3), t = fraction(static_cast<long>(rng() % 19) - 9, 7);
+    Rational s = fraction(static_cast<long>(rng() % 19) - 9, 3),
+             t = fraction(static_cast<long>(rng() % 19) - 9, 7);
     Vec3 n = cross(b - a, c - a);
     if (is_zero(n)) continue;
     // orient3d: d in the plane of a, b, c (an exact affine combination).
@@ -253,7 +263,7 @@ TEST(Predicates, ExactlyDegenerateNonDoubleInputsFallBack) {
     Rational e = (i % 4 < 2) ? eps : Rational(-eps);
     Sign expected = sign_of(sgn(e));
     CountersSince perturbed;
-    ASSERT_EQ(orient3d(a, b, c, d + e * n), expected);               // det = e |n|^2
+    ASSERT_EQ(orient3d(a, b, c, d + e * n), expected);              // det = e |n|^2
     ASSERT_EQ(sign_triple(b - a, c - a, d - a + e * n), expected);  // same
     ASSERT_EQ(sign_dot(a, perp + e * a), is_zero(a) ? Sign::zero : expected);
     ASSERT_EQ(compare_dot(a, a + cross(n, c) - e * n, n), expected);  // dot(v - w, n) = e |n|^2
@@ -342,9 +352,9 @@ TEST(Predicates, ExactlyCoplanarDoublesWithLargeOffset) {
 // Scaling by a positive factor keeps every sign: the answer is the sign of
 // the small integer configuration, whatever the scale does to doubles.
 TEST(Predicates, ExtremeScalesKeepTheSign) {
-  const std::vector<Rational> scales = {power_of_ten(300),  power_of_ten(-300), power_of_two(-1074),  // 5e-324
-                                        power_of_ten(-320), power_of_two(1000), power_of_ten(200) / 3,
-                                        Rational(1)};
+  const std::vector<Rational> scales = {
+      power_of_ten(300),  power_of_ten(-300), power_of_two(-1074),  // 5e-324
+      power_of_ten(-320), power_of_two(1000), power_of_ten(200) / 3, Rational(1)};
   Rng rng(17);
   for (std::size_t si = 0; si < scales.size(); ++si) {
     SCOPED_TRACE("scale " + std::to_string(si));
@@ -439,9 +449,9 @@ TEST(Predicates, CcwInBetweenExhaustive) {
     for (int y = -2; y <= 2; ++y)
       if (x != 0 || y != 0) dirs.push_back(Vec2{x, y});  // includes same directions, e.g. (1,1), (2,2)
   Rational third(1, 3), tiny = power_of_ten(-300), huge = power_of_ten(300);
-  for (const Vec2& extra : {Vec2{third, third}, Vec2{third, 2 * third}, Vec2{Rational(-1, 7), third},
-                            Vec2{tiny, 1}, Vec2{-huge, tiny}, Vec2{3, 1 + tiny}, Vec2{-third, -third},
-                            Vec2{Rational(5e-324), -1}})
+  for (const Vec2& extra :
+       {Vec2{third, third}, Vec2{third, 2 * third}, Vec2{Rational(-1, 7), third}, Vec2{tiny, 1},
+        Vec2{-huge, tiny}, Vec2{3, 1 + tiny}, Vec2{-third, -third}, Vec2{Rational(5e-324), -1}})
     dirs.push_back(extra);
   std::vector<ApproxVec2> approx;
   for (const Vec2& v : dirs) approx.push_back(ApproxVec2::of(v));
@@ -469,7 +479,7 @@ TEST(Predicates, CcwInBetweenSpecialSectors) {
   EXPECT_FALSE(ccw_in_between(Vec2{1, -1}, ex, ey));
   EXPECT_FALSE(ccw_in_between(ex, ex, ey));  // boundaries excluded
   EXPECT_FALSE(ccw_in_between(ey, ex, ey));
-  EXPECT_TRUE(ccw_in_between(Vec2{1, -1}, ey, ex));  // the wide sector
+  EXPECT_TRUE(ccw_in_between(Vec2{1, -1}, ey, ex));          // the wide sector
   EXPECT_TRUE(ccw_in_between(Vec2{-1, 0}, ex, Vec2{2, 0}));  // whole turn minus +x
   EXPECT_FALSE(ccw_in_between(Vec2{3, 0}, ex, Vec2{2, 0}));
   EXPECT_TRUE(ccw_in_between(ey, ex, Vec2{-1, 0}));  // half-turn: left of d1

@@ -35,7 +35,7 @@ TEST(Vec, Vec2Operations) {
   EXPECT_EQ(a * Rational(2), (Vec2{2, 1}));
   EXPECT_EQ(dot(a, b), fraction(-1, 3) + 2);
   EXPECT_EQ(cross(a, b), Rational(4) + fraction(1, 6));  // 1*4 - (1/2)(-1/3)
-  EXPECT_GT(sgn(cross(Vec2{1, 0}, Vec2{0, 1})), 0);     // counterclockwise is positive
+  EXPECT_GT(sgn(cross(Vec2{1, 0}, Vec2{0, 1})), 0);      // counterclockwise is positive
   Vec2 c = a;
   c += b;
   EXPECT_EQ(c, a + b);
@@ -132,7 +132,8 @@ Mat3 random_mat(test::Rng& rng) {
 
 // Leibniz: sum over the six permutations of sign * product.
 Rational leibniz(const Mat3& a) {
-  const std::array<std::array<int, 3>, 6> perms = {{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  const std::array<std::array<int, 3>, 6> perms = {
+      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
   Rational det = 0;
   for (int p = 0; p < 6; ++p) {
     Rational term = a.m[0][perms[p][0]] * a.m[1][perms[p][1]] * a.m[2][perms[p][2]];

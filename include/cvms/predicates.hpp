@@ -18,13 +18,12 @@ namespace cvms {
 
 enum class Sign : int { negative = -1, zero = 0, positive = 1 };
 
-inline Sign sign_of(int s) noexcept {
-  return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero);
-}
+inline Sign sign_of(int s) noexcept { return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero); }
 inline Sign operator-(Sign s) noexcept { return static_cast<Sign>(-static_cast<int>(s)); }
 
 /// How often the floating-point filter answered and how often exact
-/// arithmetic was needed. Per thread: predicates running in different threads
+/// arithmetic was needed: one count per sign evaluation (ccw_in_between
+/// makes two to four; a true is_parallel is always an exact evaluation). Per thread: predicates running in different threads
 /// never share counters, so the library stays free of shared mutable state.
 struct PredicateCounters {
   std::uint64_t filtered = 0;  ///< answered by the double filter

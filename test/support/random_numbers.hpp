@@ -82,7 +82,8 @@ inline Rational random_rational(Rng& rng) {
     case 3:
       return Rational(random_magnitude(rng, -80, 80));
     case 4: {  // huge or tiny, non-dyadic
-      return fraction(random_integer(rng, 200) * 3 + 1, 3) * power_of_two(static_cast<long>(rng() % 2400) - 1200);
+      return fraction(random_integer(rng, 200) * 3 + 1, 3) *
+             power_of_two(static_cast<long>(rng() % 2400) - 1200);
     }
     case 5: {  // a double plus a tiny non-dyadic perturbation
       double d = random_magnitude(rng, -30, 30);
