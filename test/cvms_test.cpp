@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <map>
@@ -356,12 +357,28 @@ TEST(Cvms, GaussianArcRunsCounterclockwiseAboutTheEdge) {
 
 TEST(Cvms, RandomPairsAgreeWithChms) {
   const int pairs = std::getenv("CVMS_RANDOM_PAIRS") ? std::atoi(std::getenv("CVMS_RANDOM_PAIRS")) : 2000;
+  // How many pairs exercised each degenerate path (the generator is meant to
+  // produce them; the counts make sure it keeps doing so).
+  int with_edge_ties = 0, with_parallel_facets = 0, with_rejections = 0, with_edge_facets = 0;
   for (int i = 0; i < pairs; ++i) {
     const std::uint64_t seed = 1000 + static_cast<std::uint64_t>(i);
     const test::RandomPair p = test::random_pair(seed);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (" + p.description + ")");
     const std::string msg = test::check_sum(p.a, p.b, test::chms_shape(p.a, p.b));
     ASSERT_EQ(msg, "");
+    const Stats s = cvms_sum(p.a, p.b).stats;
+    with_edge_ties += s.contributing_ties > 0;
+    with_parallel_facets += s.corner_facets < p.b.num_facets();
+    with_rejections += s.edge_paper_rejections > 0;
+    with_edge_facets += s.edge_facets > 0;
+  }
+  std::printf("random pairs: %d with ties, %d with parallel facets, %d with paper-criterion rejections, %d with edge facets\n",
+              with_edge_ties, with_parallel_facets, with_rejections, with_edge_facets);
+  if (pairs >= 2000) {
+    EXPECT_GT(with_edge_ties, pairs / 10);
+    EXPECT_GT(with_parallel_facets, pairs / 20);
+    EXPECT_GT(with_rejections, 10);
+    EXPECT_GT(with_edge_facets, pairs / 2);
   }
 }
 
