@@ -27,7 +27,6 @@
 // every facet normal of A and B.
 #include "cvms.hpp"
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -71,7 +70,8 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
 // horizon edges of B, oriented so that the invisible facet is on the right,
 // with n = cross(d_A, d_B) as the candidate outward normal; the paper's
 // normal-orientation criterion (Eq. 5, here det[n1_A, n, d_A] > 0 and
-// det[n, n2_A, d_A] > 0) then decides whether n is strictly inside the arc
+// det[n, n2_A, d_A] > 0; the paper writes "< 0" with e_A oriented as
+// cross(n2_A, n1_A)) then decides whether n is strictly inside the arc
 // of e_A. Both conditions strict <=> proper crossing <=> edge facet.
 //
 // Where the paper's criterion alone is wrong: the paper counts as horizon an
@@ -146,8 +146,10 @@ ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, 
     } else {
       const FaceId fb = facet_with_normal(b, cv[0], a.normal(fa));
       if (!fb.is_valid()) {
-        throw std::logic_error("cvms: facet " + std::to_string(fa.index()) +
-                               " of A has >= 3 contributing vertices but no parallel facet in B");
+        throw Error(ErrorCategory::invalid_argument,
+                    "minkowski_sum: operand B is not a valid ConvexPolyhedron: facet " +
+                        std::to_string(fa.index()) +
+                        " of A has >= 3 contributing vertices but B has no facet with its normal");
       }
       partner[fb.index()] = fa;
       out.add_facet_plus_facet(fa, fb);
@@ -177,9 +179,12 @@ ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, 
       ++stats.contributing_ties;
     } else {
       // >= 3 contributing vertices means a facet of A with the same (primitive)
-      // normal, which step 1 paired with this facet.
-      throw std::logic_error("cvms: facet " + std::to_string(fb.index()) +
-                             " of B has >= 3 contributing vertices but no partner in A");
+      // normal, which step 1 paired with this facet: only an operand that
+      // breaks the ConvexPolyhedron guarantees gets here.
+      throw Error(ErrorCategory::invalid_argument,
+                  "minkowski_sum: operand A is not a valid ConvexPolyhedron: facet " +
+                      std::to_string(fb.index()) +
+                      " of B has >= 3 contributing vertices but A has no facet with its normal");
     }
     ++stats.corner_facets;
   }

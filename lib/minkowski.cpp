@@ -11,9 +11,9 @@ namespace cvms {
 
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
   if (a.num_facets() == 0 || b.num_facets() == 0) {
-    throw Error(ErrorCategory::invalid_argument,
-                std::string("minkowski_sum: operand ") + (a.num_facets() == 0 ? "A" : "B") +
-                    " is an empty (default-constructed) polyhedron");
+    throw Error(ErrorCategory::invalid_argument, std::string("minkowski_sum: operand ") +
+                                                     (a.num_facets() == 0 ? "A" : "B") +
+                                                     " is an empty (default-constructed) polyhedron");
   }
   // The counters are per thread, so the difference is this call's share.
   const PredicateCounters before = predicate_counters();
@@ -26,10 +26,11 @@ MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron&
       result.polyhedron = chms(a, b);
       break;
     case Algorithm::essdms:
-      throw Error(ErrorCategory::not_implemented, "minkowski_sum: the essdms algorithm is not implemented yet");
+      throw Error(ErrorCategory::not_implemented,
+                  "minkowski_sum: the essdms algorithm is not implemented yet");
     default:
-      throw Error(ErrorCategory::invalid_argument, "minkowski_sum: unknown algorithm " +
-                                                       std::to_string(static_cast<int>(options.algorithm)));
+      throw Error(ErrorCategory::invalid_argument,
+                  "minkowski_sum: unknown algorithm " + std::to_string(static_cast<int>(options.algorithm)));
   }
   const PredicateCounters& after = predicate_counters();
   result.stats.predicate_filtered = after.filtered - before.filtered;

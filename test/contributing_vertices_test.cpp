@@ -29,9 +29,9 @@ std::vector<VertexId> brute_force_maximisers(const ConvexPolyhedron& q, const Ve
 }
 
 TEST(ContributingVertices, MaximisersMatchBruteForceForFacetNormalsAndRandomDirections) {
-  const std::vector<ConvexPolyhedron> polys = {shapes::cube(), shapes::octahedron(), shapes::truncated_cube(),
-                                               shapes::geodesic_sphere(2), shapes::prism(7, 2),
-                                               shapes::random_hull(3, 40, 5)};
+  const std::vector<ConvexPolyhedron> polys = {shapes::cube(),           shapes::octahedron(),
+                                               shapes::truncated_cube(), shapes::geodesic_sphere(2),
+                                               shapes::prism(7, 2),      shapes::random_hull(3, 40, 5)};
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<int> small(-2, 2);
   std::vector<VertexId> got;

@@ -34,7 +34,9 @@ Mat3 scaling(const Rational& s) {
 
 Vec3 v3(const Rational& x, const Rational& y, const Rational& z) { return {x, y, z}; }
 
-ConvexPolyhedron scaled(const ConvexPolyhedron& p, const Rational& s) { return p.transformed(scaling(s), {}); }
+ConvexPolyhedron scaled(const ConvexPolyhedron& p, const Rational& s) {
+  return p.transformed(scaling(s), {});
+}
 
 ConvexPolyhedron hull(const std::vector<Vec3>& pts) { return convex_hull(pts); }
 
@@ -128,9 +130,9 @@ TEST(Cvms, HomotheticCopies) {
 
 TEST(Cvms, PaperShapesEveryPairAgreesWithChms) {
   std::vector<std::pair<std::string, ConvexPolyhedron>> shapes_list = {
-      {"Tetra", shapes::tetrahedron()},          {"Cube", shapes::cube()},
-      {"Hedra", shapes::octahedron()},           {"TruncatedCube", shapes::truncated_cube()},
-      {"Sphere1", shapes::geodesic_sphere(1)},   {"Sphere2", shapes::geodesic_sphere(2)},
+      {"Tetra", shapes::tetrahedron()},        {"Cube", shapes::cube()},
+      {"Hedra", shapes::octahedron()},         {"TruncatedCube", shapes::truncated_cube()},
+      {"Sphere1", shapes::geodesic_sphere(1)}, {"Sphere2", shapes::geodesic_sphere(2)},
       {"Sphere3", shapes::geodesic_sphere(3)},
   };
   for (std::size_t i = 0; i < shapes_list.size(); ++i) {
@@ -138,7 +140,8 @@ TEST(Cvms, PaperShapesEveryPairAgreesWithChms) {
       const auto& [na, a] = shapes_list[i];
       const auto& [nb, b] = shapes_list[j];
       SCOPED_TRACE(na + " + " + nb);
-      EXPECT_EQ(test::check_sum(a, b, test::chms_shape(a, b), {}, a.num_facets() * b.num_facets() < 20000), "");
+      EXPECT_EQ(test::check_sum(a, b, test::chms_shape(a, b), {}, a.num_facets() * b.num_facets() < 20000),
+                "");
     }
   }
 }
@@ -232,7 +235,8 @@ TEST(Cvms, OperandsFarFromTheOrigin) {
   const auto b = shapes::geodesic_sphere(2).translated(v3(-3 * g, g + Rational(1, 3), 7 * g));
   EXPECT_SUM(a, b, test::chms_shape(a, b));
   const auto c = shapes::cube().translated(v3(g, g, g));
-  EXPECT_SUM(c, c, shape_of(shapes::box(v3(2 * g - 2, 2 * g - 2, 2 * g - 2), v3(2 * g + 2, 2 * g + 2, 2 * g + 2))));
+  EXPECT_SUM(c, c,
+             shape_of(shapes::box(v3(2 * g - 2, 2 * g - 2, 2 * g - 2), v3(2 * g + 2, 2 * g + 2, 2 * g + 2))));
 }
 
 TEST(Cvms, HugeAndTinyCoordinates) {
@@ -340,8 +344,8 @@ TEST(Cvms, InputTriangulatedWithManyCoplanarTriangles) {
 TEST(Cvms, GaussianArcRunsCounterclockwiseAboutTheEdge) {
   // cross(n(face(h)), n(face(twin(h)))) is a positive multiple of
   // to(h) - from(h): lib/cvms.cpp uses the edge vector as the arc's pole.
-  for (const auto& p : {shapes::cube(), shapes::truncated_cube(), shapes::geodesic_sphere(2), rhombic_dodecahedron(),
-                        shapes::random_hull(7, 30)}) {
+  for (const auto& p : {shapes::cube(), shapes::truncated_cube(), shapes::geodesic_sphere(2),
+                        rhombic_dodecahedron(), shapes::random_hull(7, 30)}) {
     const Mesh& m = p.mesh();
     for (HalfedgeId h : m.halfedges()) {
       const Vec3 pole = cross(p.normal(m.face(h)), p.normal(m.face(Mesh::twin(h))));
@@ -372,8 +376,10 @@ TEST(Cvms, RandomPairsAgreeWithChms) {
     with_rejections += s.edge_paper_rejections > 0;
     with_edge_facets += s.edge_facets > 0;
   }
-  std::printf("random pairs: %d with ties, %d with parallel facets, %d with paper-criterion rejections, %d with edge facets\n",
-              with_edge_ties, with_parallel_facets, with_rejections, with_edge_facets);
+  std::printf(
+      "random pairs: %d with ties, %d with parallel facets, %d with paper-criterion rejections, %d with edge "
+      "facets\n",
+      with_edge_ties, with_parallel_facets, with_rejections, with_edge_facets);
   if (pairs >= 2000) {
     EXPECT_GT(with_edge_ties, pairs / 10);
     EXPECT_GT(with_parallel_facets, pairs / 20);
@@ -399,7 +405,8 @@ TEST(MinkowskiSum, EssdmsIsNotImplementedYet) {
 TEST(MinkowskiSum, EmptyOperandIsRejected) {
   for (bool first : {true, false}) {
     try {
-      (void)(first ? minkowski_sum(ConvexPolyhedron{}, shapes::cube()) : minkowski_sum(shapes::cube(), ConvexPolyhedron{}));
+      (void)(first ? minkowski_sum(ConvexPolyhedron{}, shapes::cube())
+                   : minkowski_sum(shapes::cube(), ConvexPolyhedron{}));
       FAIL() << "no exception";
     } catch (const Error& e) {
       EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);

@@ -24,8 +24,9 @@ enum class EdgeFacetSearch {
   paper,
 };
 
+/// How minkowski_sum computes the sum.
 struct Options {
-  Algorithm algorithm = Algorithm::cvms;
+  Algorithm algorithm = Algorithm::cvms;  ///< which algorithm
   EdgeFacetSearch edge_facet_search = EdgeFacetSearch::paper;  ///< CVMS only
 };
 
@@ -45,8 +46,8 @@ struct Stats {
   /// Gaussian-map test rejects: the facet of B is parallel to the edge of A,
   /// and the true facet is the corner facet f_B + e_A (see lib/cvms.cpp).
   std::uint64_t edge_paper_rejections = 0;
-  std::uint64_t predicate_filtered = 0; ///< predicate calls the double filter answered
-  std::uint64_t predicate_exact = 0;    ///< predicate calls that needed exact arithmetic
+  std::uint64_t predicate_filtered = 0;  ///< predicate calls the double filter answered
+  std::uint64_t predicate_exact = 0;     ///< predicate calls that needed exact arithmetic
 };
 
 struct MinkowskiResult {
@@ -55,6 +56,10 @@ struct MinkowskiResult {
 };
 
 /// A + B = {a + b : a in A, b in B}. Exact. Thread-safe (no shared state).
+/// CVMS with the paper's search costs O(f_A v_B + f_B v_A + e_A' (f_B + e_B'))
+/// predicates, e' counting the edges that pass Property 1, plus the output.
+/// \throw Error(invalid_argument) for an empty (default-constructed) operand
+///   or an unknown option value;
 /// \throw Error(not_implemented) if the algorithm is not available.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});

@@ -50,7 +50,8 @@ std::string check_facet_origins(const ConvexPolyhedron& a, const ConvexPolyhedro
       }
       if (found) break;
     }
-    if (!found) return "facet normal " + str(p.normal) + " is no facet normal of A or B and no edge cross product";
+    if (!found)
+      return "facet normal " + str(p.normal) + " is no facet normal of A or B and no edge cross product";
   }
   return "";
 }
@@ -76,8 +77,8 @@ std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
     const Shape got = describe(r->polyhedron);
     if (!(got == expected)) out << name << " differs from the oracle: " << difference(expected, got);
     const std::uint64_t f = r->polyhedron.num_facets();
-    const std::uint64_t bound = std::uint64_t{a.num_facets()} + b.num_facets() +
-                                std::uint64_t{a.num_edges()} * b.num_edges();
+    const std::uint64_t bound =
+        std::uint64_t{a.num_facets()} + b.num_facets() + std::uint64_t{a.num_edges()} * b.num_edges();
     if (f > bound) out << name << ": F = " << f << " exceeds f_A + f_B + e_A e_B = " << bound << "\n";
     if (options.algorithm == Algorithm::cvms) {
       const Stats& s = r->stats;
@@ -85,7 +86,8 @@ std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
       if (s.translated_facets + s.corner_facets + s.edge_facets != f)
         out << name << ": stats " << s.translated_facets << " + " << s.corner_facets << " + " << s.edge_facets
             << " do not add up to F = " << f << "\n";
-      if (s.translated_facets != first) out << name << ": translated facets " << s.translated_facets << " != f_A\n";
+      if (s.translated_facets != first)
+        out << name << ": translated facets " << s.translated_facets << " != f_A\n";
       if (s.predicate_exact + s.predicate_filtered == 0) out << name << ": no predicate calls counted\n";
     }
   }

@@ -35,13 +35,20 @@ enum class Kind { integer, decimal, dbl, sphere, box_faces, lattice_planes, coun
 
 const char* kind_name(Kind k) {
   switch (k) {
-    case Kind::integer: return "integer";
-    case Kind::decimal: return "decimal";
-    case Kind::dbl: return "double";
-    case Kind::sphere: return "double-sphere";
-    case Kind::box_faces: return "box-faces";
-    case Kind::lattice_planes: return "lattice-planes";
-    default: return "?";
+    case Kind::integer:
+      return "integer";
+    case Kind::decimal:
+      return "decimal";
+    case Kind::dbl:
+      return "double";
+    case Kind::sphere:
+      return "double-sphere";
+    case Kind::box_faces:
+      return "box-faces";
+    case Kind::lattice_planes:
+      return "lattice-planes";
+    default:
+      return "?";
   }
 }
 
@@ -69,7 +76,8 @@ std::vector<Vec3> random_cloud(Rng& rng, Kind kind, int n) {
     case Kind::dbl: {
       std::uniform_real_distribution<double> u(-1.0, 1.0);
       for (int i = 0; i < n; ++i)
-        pts.push_back({rational_from_double(u(rng)), rational_from_double(u(rng)), rational_from_double(u(rng))});
+        pts.push_back(
+            {rational_from_double(u(rng)), rational_from_double(u(rng)), rational_from_double(u(rng))});
       break;
     }
     case Kind::sphere: {
@@ -77,7 +85,8 @@ std::vector<Vec3> random_cloud(Rng& rng, Kind kind, int n) {
       for (int i = 0; i < n; ++i) {
         const double x = g(rng), y = g(rng), z = g(rng);
         const double r = std::sqrt(x * x + y * y + z * z) + 1e-300;
-        pts.push_back({rational_from_double(x / r), rational_from_double(y / r), rational_from_double(z / r)});
+        pts.push_back(
+            {rational_from_double(x / r), rational_from_double(y / r), rational_from_double(z / r)});
       }
       break;
     }
