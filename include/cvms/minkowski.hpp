@@ -26,7 +26,7 @@ enum class EdgeFacetSearch {
 
 /// How minkowski_sum computes the sum.
 struct Options {
-  Algorithm algorithm = Algorithm::cvms;  ///< which algorithm
+  Algorithm algorithm = Algorithm::cvms;                       ///< which algorithm
   EdgeFacetSearch edge_facet_search = EdgeFacetSearch::paper;  ///< CVMS only
 };
 
