@@ -110,7 +110,15 @@ class Mesh {
   ///   used by other than 2 faces, an edge used twice in the same direction
   ///   (inconsistent orientation), a boundary edge (open surface), a vertex
   ///   whose faces do not form one cycle (non-manifold vertex), an unreferenced
-  ///   vertex, or two vertices at the same point.
+  ///   vertex, two vertices at the same point, or an empty soup.
+  /// \throw Error(invalid_argument) if face_offsets is malformed (not starting
+  ///   at 0, decreasing, or not ending at face_indices.size()).
+  /// \throw Error(limit) if the counts do not fit the 32-bit handles.
+  /// Numbering: vertices and faces keep their soup order; edges are sorted by
+  /// their (smaller, larger) vertex pair and halfedge 2e runs from the smaller
+  /// to the larger index; face f's stored halfedge leaves its first listed
+  /// vertex; vertex v's stored halfedge is its lowest-numbered outgoing one.
+  /// Complexity: O(n log n) in the number of face corners.
   static Mesh from_soup(PolygonSoup soup);
 
   [[nodiscard]] std::uint32_t num_vertices() const noexcept { return static_cast<std::uint32_t>(positions_.size()); }
@@ -160,6 +168,11 @@ class Mesh {
   /// The mesh as points plus face index lists (faces in order, each starting
   /// at the face's stored halfedge).
   [[nodiscard]] PolygonSoup to_soup() const;
+
+  /// The same connectivity with new vertex positions (one per vertex, in
+  /// vertex order); no checks on the positions.
+  /// \throw Error(invalid_argument) if the count differs from num_vertices().
+  [[nodiscard]] Mesh with_positions(std::vector<Vec3> positions) const;
 
  private:
   std::vector<Vec3> positions_;
