@@ -215,7 +215,7 @@ void ConvexPolyhedron::compute_caches() {
 
 ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   const std::uint32_t nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = mesh.num_halfedges();
-  if (nf == 0 || nv == 0) throw Error(ErrorCategory::degenerate, "empty mesh");
+  if (nf == 0 || nv == 0) throw Error(ErrorCategory::topology, "empty mesh");
 
   // 1. Topology: connected and a sphere.
   {

@@ -73,6 +73,11 @@ Mesh Mesh::from_soup(PolygonSoup soup) {
   for (std::uint32_t v = 0; v < n; ++v)
     if (stamp[v] == invalid) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
 
+  // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
+  // caller that built 0/3 by hand would otherwise get wrong answers.
+  for (Vec3& p : soup.points)
+    for (int i = 0; i < 3; ++i) p[i].canonicalize();
+
   // Duplicate points: a hash set of indices keyed by exact position.
   {
     const std::vector<Vec3>& pts = soup.points;

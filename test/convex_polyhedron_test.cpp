@@ -21,13 +21,13 @@ using test::make_soup;
 using test::v3;
 
 // Builds from the soup and checks the result against the brute-force hull of
-// the soup's points, plus every independent invariant.
-ConvexPolyhedron check_against_hull(const PolygonSoup& soup) {
+// `hull_points` (default: the soup's points), plus every independent invariant.
+ConvexPolyhedron check_against_hull(const PolygonSoup& soup, const std::vector<Vec3>* hull_points = nullptr) {
   ConvexPolyhedron p = ConvexPolyhedron::from_soup(soup);
   EXPECT_EQ(test::check_invariants(p), "");
   EXPECT_TRUE(p.is_convex());
   EXPECT_EQ(p.euler_characteristic(), 2);
-  test::Shape want = test::brute_force_hull(soup.points);
+  test::Shape want = test::brute_force_hull(hull_points ? *hull_points : soup.points);
   test::Shape got = test::describe(p);
   EXPECT_TRUE(want == got) << test::difference(want, got);
   return p;
@@ -87,9 +87,12 @@ TEST(ConvexPolyhedron, CubeFromTrianglesMergesToQuads) {
 
 TEST(ConvexPolyhedron, CubeWithFaceAndEdgeMidpointsDropsThem) {
   // Level 2 subdivision: points in face interiors and on cube edges.
+  // The extra points lie on the cube, so the hull of the 8 corners is the oracle.
   PolygonSoup soup = test::subdivided(test::cube_quads(2), 2);
   ASSERT_GT(soup.points.size(), 50u);
-  ConvexPolyhedron p = check_against_hull(soup);
+  const std::vector<Vec3> corners(soup.points.begin(), soup.points.begin() + 8);
+  ConvexPolyhedron p = check_against_hull(soup, &corners);
+  check_against_hull(test::subdivided(test::cube_quads(2), 1));
   EXPECT_EQ(p.num_vertices(), 8u);
   EXPECT_EQ(p.num_facets(), 6u);
   // Output vertices are the extreme input vertices in input order.
@@ -131,7 +134,8 @@ TEST(ConvexPolyhedron, Octahedron) {
 TEST(ConvexPolyhedron, TriangulatedPrismWithManyCoplanarTriangles) {
   PolygonSoup soup = test::subdivided(test::prism(), 2);
   ASSERT_EQ(soup.num_faces(), 8u * 16u);
-  ConvexPolyhedron p = check_against_hull(soup);
+  const std::vector<Vec3> corners = test::prism().points;
+  ConvexPolyhedron p = check_against_hull(soup, &corners);
   EXPECT_EQ(p.num_vertices(), 6u);
   EXPECT_EQ(p.num_facets(), 5u);
   EXPECT_EQ(p.num_edges(), 9u);
@@ -356,7 +360,7 @@ TEST(ConvexPolyhedronBadInput, EmptySoup) {
     (void)ConvexPolyhedron::from_mesh(Mesh{});
     ADD_FAILURE();
   } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::degenerate);
+    EXPECT_EQ(e.category(), ErrorCategory::topology);
   }
 }
 
@@ -382,6 +386,23 @@ TEST(ConvexPolyhedronBadInput, FoldedFaces) {
   PolygonSoup s = make_soup({v3(0, 0, 0), v3(2, 0, 0), v3(0, 2, 0), Vec3{Rational(1, 2), Rational(1, 2), 0}, v3(0, 0, 2)},
                             {{0, 2, 1}, {0, 1, 3}, {3, 1, 4}, {0, 3, 4}, {1, 2, 4}, {2, 0, 4}});
   expect_error(s, ErrorCategory::not_convex, {"edge (0, 1)", "fold"});
+}
+
+TEST(ConvexPolyhedronBadInput, LocallyConvexButWoundTwice) {
+  // A bipyramid over a pentagram: every face is a triangle and every edge is
+  // convex, but the surface winds twice around the axis. Only the global
+  // check can reject it.
+  const std::vector<Vec3> ring{v3(100, 0, 0), v3(-81, 59, 0), v3(31, -95, 0), v3(31, 95, 0), v3(-81, -59, 0)};
+  PolygonSoup s;
+  s.points = ring;
+  s.points.push_back(v3(0, 0, 100));   // 5: north
+  s.points.push_back(v3(0, 0, -100));  // 6: south
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    const std::uint32_t j = (i + 1) % 5;
+    s.add_face({i, j, 5});
+    s.add_face({j, i, 6});
+  }
+  expect_error(s, ErrorCategory::not_convex, {"locally convex but"});
 }
 
 TEST(ConvexPolyhedronBadInput, TwoComponents) {

@@ -230,6 +230,14 @@ TEST(MeshBadInput, DuplicatePoints) {
   expect_error(s, ErrorCategory::topology, {"vertices 1 and 4", "same point"});
 }
 
+TEST(MeshBadInput, DuplicatePointsWrittenDifferently) {
+  // 0/3 built without canonicalisation still equals 0.
+  PolygonSoup s = test::tetrahedron();
+  s.points.push_back(Vec3{Rational(0, 3), Rational(2, 2), Rational(0)});  // equal to vertex 2
+  s.add_face({4, 1, 3});
+  expect_error(s, ErrorCategory::topology, {"vertices 2 and 4", "same point"});
+}
+
 TEST(MeshBadInput, UnreferencedVertex) {
   PolygonSoup s = test::tetrahedron();
   s.points.push_back(v3(5, 5, 5));

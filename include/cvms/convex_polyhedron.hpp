@@ -26,12 +26,20 @@ class ConvexPolyhedron {
 
   /// Checks and normalises a closed mesh: merges coplanar adjacent faces into
   /// maximal facets, drops vertices that are not extreme, flips a globally
-  /// inward orientation. Convexity is verified exactly.
+  /// inward orientation. Convexity is verified exactly (local convexity at
+  /// every edge plus a global winding check; the argument is in
+  /// lib/convex_polyhedron.cpp). Input faces may be any planar convex
+  /// polygons, with collinear vertices allowed.
+  /// Result numbering: vertices are the extreme input vertices in input
+  /// order; facets are ordered by the smallest input face they contain; each
+  /// facet's cycle starts at its smallest vertex index.
   /// \throw Error(not_convex) naming the first reflex edge (its two vertex
-  ///   indices of the input) or a non-convex face;
-  /// \throw Error(degenerate) for a flat (zero-volume) or zero-area input;
-  /// \throw Error(topology) if faces are inconsistently oriented.
-  /// Complexity: O(F + E) predicates plus O(V) for the merges.
+  ///   indices of the input and its two faces), a fold (zero dihedral angle),
+  ///   a non-planar or non-convex face, or a non-convex merged facet;
+  /// \throw Error(degenerate) for a flat (zero-volume) input or a zero-area face;
+  /// \throw Error(topology) for an empty mesh, several connected components
+  ///   or a surface that is not a sphere (Euler characteristic != 2).
+  /// Complexity: O(V + E + F) predicates (plus O(n log n) to rebuild the mesh).
   static ConvexPolyhedron from_mesh(const Mesh& mesh);
 
   /// Mesh::from_soup followed by from_mesh; errors of both.
@@ -41,6 +49,7 @@ class ConvexPolyhedron {
   /// convex, counterclockwise from outside, with only extreme vertices (used
   /// by the algorithms for their output). Topology is still checked by
   /// Mesh::from_soup; geometry is not rechecked. \pre the guarantee holds.
+  /// Normals come from each facet's first corner. Numbering is the soup's.
   static ConvexPolyhedron from_trusted_soup(PolygonSoup soup);
 
   [[nodiscard]] const Mesh& mesh() const noexcept { return mesh_; }

@@ -103,8 +103,8 @@ class Mesh {
   Mesh() = default;
 
   /// Builds the half-edge structure of a closed, consistently oriented
-  /// 2-manifold polygon mesh. Points are moved in unchanged; every point must
-  /// be used by a face.
+  /// 2-manifold polygon mesh. Points are moved in (coordinates canonicalised,
+  /// values unchanged); every point must be used by a face.
   /// \throw Error(topology) naming the offending element: a face with fewer
   ///   than 3 vertices or a repeated vertex, an index out of range, an edge
   ///   used by other than 2 faces, an edge used twice in the same direction
