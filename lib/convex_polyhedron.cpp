@@ -515,7 +515,10 @@ ConvexPolyhedron ConvexPolyhedron::transformed(const Mat3& linear, const Vec3& o
   if (det == Sign::zero) throw Error(ErrorCategory::invalid_argument, "transformed: singular linear map");
   std::vector<Vec3> pts;
   pts.reserve(num_vertices());
-  for (VertexId v : mesh_.vertices()) pts.push_back(linear * vertex(v) + offset);
+  for (VertexId v : mesh_.vertices()) {
+    pts.push_back(linear * vertex(v) + offset);
+    for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();  // in case the caller's matrix was not
+  }
   if (det == Sign::positive) {
     ConvexPolyhedron p;
     p.mesh_ = mesh_.with_positions(std::move(pts));
@@ -534,7 +537,10 @@ ConvexPolyhedron ConvexPolyhedron::transformed(const Mat3& linear, const Vec3& o
 ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
   std::vector<Vec3> pts;
   pts.reserve(num_vertices());
-  for (VertexId v : mesh_.vertices()) pts.push_back(vertex(v) + offset);
+  for (VertexId v : mesh_.vertices()) {
+    pts.push_back(vertex(v) + offset);
+    for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();
+  }
   ConvexPolyhedron p;
   p.mesh_ = mesh_.with_positions(std::move(pts));
   p.vertex_approx_.reserve(p.num_vertices());
@@ -542,7 +548,10 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
   p.normals_ = normals_;
   p.normal_approx_ = normal_approx_;
   p.offsets_.reserve(offsets_.size());
-  for (FaceId f : mesh_.faces()) p.offsets_.push_back(offsets_[f.index()] + dot(normals_[f.index()], offset));
+  for (FaceId f : mesh_.faces()) {
+    p.offsets_.push_back(offsets_[f.index()] + dot(normals_[f.index()], offset));
+    p.offsets_.back().canonicalize();
+  }
   return p;
 }
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 #include <string>
 
@@ -403,6 +404,99 @@ TEST(ConvexPolyhedronBadInput, LocallyConvexButWoundTwice) {
     s.add_face({j, i, 6});
   }
   expect_error(s, ErrorCategory::not_convex, {"locally convex but"});
+}
+
+// A bipyramid: ring points q_0..q_{n-1} (in the given order) and apexes n
+// (north) and n + 1 (south).
+PolygonSoup bipyramid(const std::vector<Vec3>& ring, const Vec3& north, const Vec3& south) {
+  PolygonSoup s;
+  s.points = ring;
+  s.points.push_back(north);
+  s.points.push_back(south);
+  const auto n = static_cast<std::uint32_t>(ring.size());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    s.add_face({i, (i + 1) % n, n});
+    s.add_face({(i + 1) % n, i, n + 1});
+  }
+  return s;
+}
+
+TEST(ConvexPolyhedronBadInput, RandomWoundBipyramidsAreRejected) {
+  // Bipyramids over perturbed star polygons {5/2} and {7/3}: never convex.
+  const long pentagon[5][2] = {{100, 0}, {31, 95}, {-81, 59}, {-81, -59}, {31, -95}};
+  const long heptagon[7][2] = {{100, 0}, {62, 78}, {-22, 97}, {-90, 43}, {-90, -43}, {-22, -97}, {62, -78}};
+  int global_rejections = 0;
+  for (unsigned seed = 1; seed <= 300; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<long> d(-30, 30);
+    std::vector<Vec3> ring;
+    if (seed % 2 == 0)
+      for (int i = 0; i < 5; ++i) ring.push_back(v3(pentagon[(2 * i) % 5][0], pentagon[(2 * i) % 5][1], 0));
+    else
+      for (int i = 0; i < 7; ++i) ring.push_back(v3(heptagon[(3 * i) % 7][0], heptagon[(3 * i) % 7][1], 0));
+    for (Vec3& p : ring) p += v3(d(rng), d(rng), d(rng));
+    PolygonSoup s = bipyramid(ring, v3(d(rng), d(rng), 100 + d(rng)), v3(d(rng), d(rng), -100 + d(rng)));
+    try {
+      (void)ConvexPolyhedron::from_soup(s);
+      ADD_FAILURE() << "accepted a surface that winds twice";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::not_convex) << e.what();
+      global_rejections += std::string(e.what()).find("locally convex but") != std::string::npos;
+    }
+  }
+  EXPECT_GT(global_rejections, 100);  // the global check is exercised, not just the edges
+}
+
+TEST(ConvexPolyhedron, RandomBipyramidsAgainstHullOracle) {
+  // Ring points on a coarse grid so that collinear and coplanar cases occur.
+  // Oracle: the surface is convex iff every face lies in a facet plane of the
+  // brute-force hull (no double covering is possible for a simple ring).
+  int accepted = 0, rejected = 0, merged = 0, dropped = 0;
+  for (unsigned seed = 1; seed <= 300; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    const int n = 3 + static_cast<int>(rng() % 6);
+    const long base[8][2] = {{4, 0}, {3, 3}, {0, 4}, {-3, 3}, {-4, 0}, {-3, -3}, {0, -4}, {3, -3}};
+    std::vector<Vec3> ring;
+    std::uniform_int_distribution<long> d(-1, 1);
+    for (int i = 0; i < n; ++i) {
+      const long* b = base[(i * 8) / n];
+      ring.push_back(v3(b[0] + d(rng), b[1] + d(rng), rng() % 3 == 0 ? d(rng) : 0));
+    }
+    PolygonSoup s = bipyramid(ring, v3(d(rng), d(rng), 3 + d(rng)), v3(d(rng), d(rng), -3 + d(rng)));
+    test::Shape hull = test::brute_force_hull(s.points);
+    bool convex = true;
+    for (std::size_t f = 0; f < s.num_faces() && convex; ++f) {
+      bool on_some_plane = false;
+      for (const test::Plane& pl : hull.planes) {
+        bool all_on = true;
+        for (std::uint32_t v : s.face(f)) all_on = all_on && dot(pl.normal, s.points[v]) == pl.offset;
+        on_some_plane = on_some_plane || all_on;
+      }
+      convex = on_some_plane;
+    }
+    if (convex) {
+      ++accepted;
+      ConvexPolyhedron p = check_against_hull(s);
+      merged += p.num_facets() < s.num_faces();
+      dropped += p.num_vertices() < s.points.size();
+    } else {
+      ++rejected;
+      try {
+        (void)ConvexPolyhedron::from_soup(s);
+        ADD_FAILURE() << "accepted a non-convex surface";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::not_convex) << e.what();
+      }
+    }
+  }
+  EXPECT_GT(accepted, 50);
+  EXPECT_GT(rejected, 50);
+  EXPECT_GT(merged, 10);  // coplanar faces occurred
+  EXPECT_GT(dropped, 3);  // and straight boundary runs
+  std::cout << accepted << " accepted (" << merged << " merged, " << dropped << " dropped vertices), " << rejected
+            << " rejected\n";
 }
 
 TEST(ConvexPolyhedronBadInput, TwoComponents) {

@@ -7,6 +7,14 @@
 // integer vector (so equal directions have equal normals), and the plane offset
 // dot(normal, x) = offset; double approximations of vertices and normals with
 // proven error bounds sit next to them for the predicate filters.
+//
+// What construction from a mesh repairs silently: a consistently inward
+// orientation (flipped), coplanar adjacent faces (merged into one facet),
+// vertices inside a facet or on a straight run of its boundary (dropped).
+// What it rejects: mixed orientation, holes, non-manifold parts (topology,
+// from Mesh::from_soup), reflex edges, folds, non-planar or non-convex faces
+// and surfaces that wind around more than once (not_convex), zero-area faces
+// and flat input (degenerate).
 #pragma once
 
 #include <cstdint>
