@@ -28,6 +28,8 @@
 
 namespace cvms {
 
+/// A convex polyhedron with maximal facets, extreme vertices and cached
+/// exact and approximate facet planes (see the file comment).
 class ConvexPolyhedron {
  public:
   ConvexPolyhedron() = default;
@@ -60,18 +62,27 @@ class ConvexPolyhedron {
   /// Normals come from each facet's first corner. Numbering is the soup's.
   static ConvexPolyhedron from_trusted_soup(PolygonSoup soup);
 
+  /// The half-edge structure: faces are the facets.
   [[nodiscard]] const Mesh& mesh() const noexcept { return mesh_; }
+  /// Number of vertices (all extreme).
   [[nodiscard]] std::uint32_t num_vertices() const noexcept { return mesh_.num_vertices(); }
+  /// Number of edges.
   [[nodiscard]] std::uint32_t num_edges() const noexcept { return mesh_.num_edges(); }
+  /// Number of facets (maximal).
   [[nodiscard]] std::uint32_t num_facets() const noexcept { return mesh_.num_faces(); }
 
+  /// The exact position of v.
   [[nodiscard]] const Vec3& vertex(VertexId v) const noexcept { return mesh_.position(v); }
+  /// The cached double approximation of vertex(v).
   [[nodiscard]] const ApproxVec3& vertex_approx(VertexId v) const noexcept { return vertex_approx_[v.index()]; }
+  /// vertex(v) with its approximation, for the predicates.
   [[nodiscard]] Vec3Ref vertex_ref(VertexId v) const noexcept { return {vertex(v), vertex_approx(v)}; }
 
   /// Exact outward normal of facet f: a primitive integer vector.
   [[nodiscard]] const Vec3& normal(FaceId f) const noexcept { return normals_[f.index()]; }
+  /// The cached double approximation of normal(f).
   [[nodiscard]] const ApproxVec3& normal_approx(FaceId f) const noexcept { return normal_approx_[f.index()]; }
+  /// normal(f) with its approximation, for the predicates.
   [[nodiscard]] Vec3Ref normal_ref(FaceId f) const noexcept { return {normal(f), normal_approx(f)}; }
   /// dot(normal(f), x) == plane_offset(f) for every point x of facet f.
   [[nodiscard]] const Rational& plane_offset(FaceId f) const noexcept { return offsets_[f.index()]; }
@@ -85,11 +96,14 @@ class ConvexPolyhedron {
   /// V - E + F (2 for every valid instance).
   [[nodiscard]] int euler_characteristic() const noexcept;
 
+  /// Vertices and facet cycles as a soup (see Mesh::to_soup).
   [[nodiscard]] PolygonSoup to_soup() const { return mesh_.to_soup(); }
 
-  /// The image under x -> linear * x + offset. \pre det(linear) != 0.
-  /// A negative determinant is handled (faces are re-oriented).
+  /// The image under x -> linear * x + offset, vertex and facet numbering
+  /// kept. A negative determinant is handled (facet cycles are reversed).
+  /// \throw Error(invalid_argument) if det(linear) == 0.
   [[nodiscard]] ConvexPolyhedron transformed(const Mat3& linear, const Vec3& offset) const;
+  /// The image under x -> x + offset (same numbering, normals unchanged).
   [[nodiscard]] ConvexPolyhedron translated(const Vec3& offset) const;
   /// -P = {-x : x in P}, for configuration-space obstacles A + (-B).
   [[nodiscard]] ConvexPolyhedron reflected() const;
