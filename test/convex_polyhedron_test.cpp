@@ -190,6 +190,23 @@ TEST(ConvexPolyhedron, RandomShuffledAndMappedSolids) {
   }
 }
 
+TEST(ConvexPolyhedron, ExtremeMagnitudes) {
+  // Scaled by 2^-1000 and 2^1000 and shifted far away: the double filter
+  // underflows or loses everything, exact fallback must decide.
+  for (int e : {-1000, 1000}) {
+    SCOPED_TRACE("scale 2^" + std::to_string(e));
+    Rational scale = rational_from_double(std::ldexp(1.0, e));
+    Mat3 a;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) a.m[i][j] = (i == j) ? scale : Rational(0);
+    Vec3 t{rational_from_double(1e300), rational_from_double(-1e-300), Rational(1, 3)};
+    PolygonSoup soup = test::mapped(test::subdivided(test::cube_quads(), 1), a, t);
+    ConvexPolyhedron p = check_against_hull(soup);
+    EXPECT_EQ(p.num_vertices(), 8u);
+    EXPECT_EQ(p.num_facets(), 6u);
+  }
+}
+
 TEST(ConvexPolyhedron, TrustedSoupComputesCaches) {
   ConvexPolyhedron p = ConvexPolyhedron::from_trusted_soup(test::cube_quads(3));
   EXPECT_EQ(test::check_invariants(p), "");
