@@ -5,6 +5,7 @@
 // starts a comment anywhere and blank lines are skipped. Counts are checked
 // against ReadLimits but never used to allocate more than a small fixed
 // reserve, so a header that lies costs nothing.
+#include <limits>
 #include <string>
 
 #include "io_reader.hpp"
@@ -61,6 +62,8 @@ std::uint64_t parse_count(const LineReader& reader, std::string_view token, cons
   if (token.empty()) reader.fail(std::string("missing ") + what + " count in the OFF header");
   auto value = parse_unsigned(token);
   if (!value) reader.fail(std::string(what) + " count " + quote(token) + " is not a non-negative integer");
+  if (*value == std::numeric_limits<std::uint64_t>::max())
+    reader.fail(std::string(what) + " count " + quote(token) + " is beyond 2^64-1", ErrorCategory::limit);
   return *value;
 }
 

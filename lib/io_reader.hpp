@@ -130,7 +130,7 @@ void check_face_limit(const LineReader& reader, std::uint64_t faces, std::uint64
 /// against the input yet: never more than a small fixed cap, so a lying header
 /// cannot make us allocate.
 inline std::size_t safe_reserve(std::uint64_t declared) {
-  constexpr std::uint64_t cap = 1u << 16;
+  constexpr std::uint64_t cap = 1u << 12;
   return static_cast<std::size_t>(declared < cap ? declared : cap);
 }
 
