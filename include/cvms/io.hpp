@@ -104,7 +104,9 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source,
 
 enum class Coordinates {
   exact,   ///< exact decimals or p/q, see to_string(const Rational&)
-  double_  ///< the nearest double, printed with enough digits to round-trip
+  double_  ///< the nearest double, printed as the shortest decimal that parses
+           ///< back to that double (std::to_chars). Read back by cvms, the text
+           ///< is that decimal exactly ("0.1" is 1/10), not the double itself.
 };
 
 /// Writers take any soup whose faces have >= 3 indices, all in range

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <initializer_list>
+#include <ostream>
 #include <span>
 #include <sstream>
 #include <string>
@@ -16,6 +17,13 @@
 
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
+
+namespace cvms {
+// Readable gtest output for exact points (found by ADL).
+inline void PrintTo(const Vec3& v, std::ostream* os) {
+  *os << "(" << to_string(v.x) << ", " << to_string(v.y) << ", " << to_string(v.z) << ")";
+}
+}  // namespace cvms
 
 namespace cvms::test {
 
