@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <fstream>
 #include <system_error>
+#include <utility>
 
 #include "io_reader.hpp"
 
@@ -68,13 +69,11 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
     Tokenizer tokens(line);
     std::string_view x = tokens.next();
     if (x.empty()) continue;
-    const std::string name = "point " + std::to_string(points.size());
-    check_vertex_limit(reader, points.size() + 1);
-    Vec3 p;
-    p.x = parse_number(reader, x, "x coordinate of " + name);
-    p.y = parse_number(reader, tokens.next(), "y coordinate of " + name);
-    p.z = parse_number(reader, tokens.next(), "z coordinate of " + name);
-    if (!tokens.at_end()) reader.fail(name + " has more than 3 values: " + quote(tokens.next()));
+    const std::uint64_t index = points.size();
+    check_vertex_limit(reader, index + 1);
+    bool first_token = true;
+    Vec3 p = parse_point(reader, [&] { return std::exchange(first_token, false) ? x : tokens.next(); }, "point", index);
+    if (!tokens.at_end()) reader.fail("point " + std::to_string(index) + " has more than 3 values: " + quote(tokens.next()));
     points.push_back(std::move(p));
   }
   return points;

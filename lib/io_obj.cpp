@@ -68,44 +68,42 @@ PolygonSoup parse_obj(LineReader& reader) {
     if (keyword.empty()) continue;
     any_statement = true;
     if (keyword == "v") {
-      const std::string name = "vertex " + std::to_string(soup.points.size() + 1);
-      check_vertex_limit(reader, soup.points.size() + 1);
-      Vec3 p;
-      p.x = parse_number(reader, tokens.next(), "x coordinate of " + name);
-      p.y = parse_number(reader, tokens.next(), "y coordinate of " + name);
-      p.z = parse_number(reader, tokens.next(), "z coordinate of " + name);
+      const std::uint64_t number = soup.points.size() + 1;  // as OBJ counts
+      check_vertex_limit(reader, number);
+      Vec3 p = parse_point(reader, [&] { return tokens.next(); }, "vertex", number);
+      auto name = [number] { return "vertex " + std::to_string(number); };
       std::array<std::string_view, 4> extra{};
       std::size_t num_extra = 0;
       for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
-        if (num_extra == 3) reader.fail(name + " has more than 6 values");
+        if (num_extra == 3) reader.fail(name() + " has more than 6 values");
         extra[num_extra++] = t;
       }
       if (num_extra == 1) {
-        Rational w = parse_number(reader, extra[0], "w coordinate of " + name);
-        if (w != 1) reader.fail(name + " has w = " + quote(extra[0]) + "; only w = 1 is supported");
+        Rational w = parse_number(reader, extra[0], {"w coordinate", "vertex", number});
+        if (w != 1) reader.fail(name() + " has w = " + quote(extra[0]) + "; only w = 1 is supported");
       } else if (num_extra == 3) {
-        for (std::size_t i = 0; i < 3; ++i) parse_number(reader, extra[i], "color value of " + name);
+        for (std::size_t i = 0; i < 3; ++i) parse_number(reader, extra[i], {"color value", "vertex", number});
       } else if (num_extra != 0) {
-        reader.fail(name + " has 5 values; expected x y z, x y z w or x y z r g b");
+        reader.fail(name() + " has 5 values; expected x y z, x y z w or x y z r g b");
       }
       soup.points.push_back(std::move(p));
     } else if (keyword == "f") {
       const std::uint64_t f = soup.num_faces();
-      const std::string name = "face " + std::to_string(f + 1);
+      auto name = [f] { return "face " + std::to_string(f + 1); };
       face.clear();
       for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
         auto index = parse_face_vertex(t);
-        if (!index) reader.fail(name + ": " + quote(t) + " is not a vertex reference (i, i/t, i//n or i/t/n, i != 0)");
+        if (!index) reader.fail(name() + ": " + quote(t) + " is not a vertex reference (i, i/t, i//n or i/t/n, i != 0)");
         std::int64_t count = static_cast<std::int64_t>(soup.points.size());
         std::int64_t resolved = 0;
         if (*index < 0) {
           if (-*index > count)
-            reader.fail(name + " has relative index " + std::to_string(*index) + " but only " +
+            reader.fail(name() + " has relative index " + std::to_string(*index) + " but only " +
                         std::to_string(count) + " vertices are defined before it");
           resolved = count + *index;
         } else {
           if (static_cast<std::uint64_t>(*index) > std::numeric_limits<std::uint32_t>::max())
-            reader.fail(name + " has index " + std::to_string(*index) + ", beyond the 32-bit range");
+            reader.fail(name() + " has index " + std::to_string(*index) + ", beyond the 32-bit range");
           resolved = *index - 1;
           if (static_cast<std::uint64_t>(*index) > max_forward) {
             max_forward = static_cast<std::uint64_t>(*index);
@@ -117,7 +115,7 @@ PolygonSoup parse_obj(LineReader& reader) {
         if (face.size() % 4096 == 0) check_face_limit(reader, f + 1, soup.face_indices.size() + face.size());
       }
       if (face.size() < 3)
-        reader.fail(name + " has " + std::to_string(face.size()) + " vertices, at least 3 are needed");
+        reader.fail(name() + " has " + std::to_string(face.size()) + " vertices, at least 3 are needed");
       check_face_limit(reader, f + 1, soup.face_indices.size() + face.size());
       soup.add_face(face);
     } else if (is_ignored_statement(keyword)) {

@@ -7,6 +7,7 @@
 // reserve, so a header that lies costs nothing.
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "io_reader.hpp"
 #include "io_writer.hpp"
@@ -101,15 +102,12 @@ PolygonSoup parse_off(LineReader& reader) {
     if (!next_content_line(reader, tokens, token))
       fail_end(reader, "the header declares " + std::to_string(num_vertices) + " vertices but only " +
                            std::to_string(v) + " were found");
-    const std::string name = "vertex " + std::to_string(v);
-    Vec3 p;
-    p.x = parse_number(reader, token, "x coordinate of " + name);
-    p.y = parse_number(reader, tokens.next(), "y coordinate of " + name);
-    p.z = parse_number(reader, tokens.next(), "z coordinate of " + name);
+    bool first_token = true;
+    Vec3 p = parse_point(reader, [&] { return std::exchange(first_token, false) ? token : tokens.next(); }, "vertex", v);
     std::size_t extra = 0;
     while (!tokens.next().empty()) ++extra;
     if (extra < min_extra || extra > max_extra)
-      reader.fail(name + " has " + std::to_string(3 + extra) + " values, expected " +
+      reader.fail("vertex " + std::to_string(v) + " has " + std::to_string(3 + extra) + " values, expected " +
                   std::to_string(3 + min_extra) +
                   (max_extra != min_extra ? " or " + std::to_string(3 + max_extra) : std::string()) +
                   " for a '" + std::string(first) + "' file");

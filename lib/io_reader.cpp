@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <ios>
 #include <limits>
 
 namespace cvms::io_detail {
@@ -71,9 +72,17 @@ std::string quote(std::string_view token) {
 std::size_t ByteSource::read(char* dst, std::size_t n) {
   if (at_end_ || n == 0) return 0;
   // Ask for at most one byte beyond the limit: enough to know it was exceeded.
-  std::uint64_t allowed = max_bytes_ - std::min(max_bytes_, consumed_) + 1;
+  // (consumed_ <= max_bytes_ here, or the previous call would have thrown.)
+  const std::uint64_t remaining = max_bytes_ - consumed_;
+  const std::uint64_t allowed = remaining == std::numeric_limits<std::uint64_t>::max() ? remaining : remaining + 1;
   auto want = static_cast<std::streamsize>(std::min<std::uint64_t>(n, allowed));
-  in_.read(dst, want);
+  try {
+    in_.read(dst, want);
+  } catch (const std::ios_base::failure&) {
+    // A stream with exceptions enabled throws at the end of input too.
+    if (!in_.eof() || in_.bad())
+      throw Error(ErrorCategory::io, source_ + ": read error after " + std::to_string(consumed_) + " bytes");
+  }
   auto got = static_cast<std::size_t>(in_.gcount());
   if (in_.bad())
     throw Error(ErrorCategory::io, source_ + ": read error after " + std::to_string(consumed_) + " bytes");
@@ -131,6 +140,7 @@ bool LineReader::next(std::string_view& line) {
     end_ += got;
   }
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  if (line_number_ == 0 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 byte order mark
   ++line_number_;
   last_ = line;
   return true;
@@ -165,13 +175,22 @@ bool looks_non_finite(std::string_view token) {
   return contains_ci(token, "nan") || contains_ci(token, "inf");
 }
 
-Rational parse_number(const LineReader& reader, std::string_view token, std::string_view what) {
-  if (token.empty()) reader.fail("missing " + std::string(what));
+std::string ValueName::str() const {
+  std::string s = std::string(what) + " of " + element + " " + std::to_string(index);
+  if (outer != nullptr) s += std::string(" of ") + outer + " " + std::to_string(outer_index);
+  return s;
+}
+
+Rational parse_number(const LineReader& reader, std::string_view token, const ValueName& name) {
+  if (!token.empty() && token.size() <= reader.limits().max_number_chars)
+    if (auto value = try_parse_rational(token, max_exponent)) return *std::move(value);
+  // Only failures pay for the message.
+  const std::string what = name.str();
+  if (token.empty()) reader.fail("missing " + what);
   if (token.size() > reader.limits().max_number_chars)
     reader.fail(std::string(what) + " has " + std::to_string(token.size()) +
                     " characters, more than the limit of " + std::to_string(reader.limits().max_number_chars),
                 ErrorCategory::limit);
-  if (auto value = try_parse_rational(token, max_exponent)) return *std::move(value);
   if (looks_non_finite(token))
     reader.fail(std::string(what) + " is not finite: " + quote(token));
   if (is_decimal_with_exponent(token))

@@ -108,11 +108,31 @@ class Tokenizer {
 /// produce ("nan", "-nan(ind)", "inf", "+Infinity", "1.#INF", ...).
 bool looks_non_finite(std::string_view token);
 
+/// Names a value in messages ("x coordinate of vertex 3", "z coordinate of
+/// vertex 2 of facet 7"); the text is only built when a message needs it.
+struct ValueName {
+  const char* what;      ///< "x coordinate", "color value", ...
+  const char* element;   ///< "vertex", "point"
+  std::uint64_t index;
+  const char* outer = nullptr;  ///< "facet", or none
+  std::uint64_t outer_index = 0;
+  [[nodiscard]] std::string str() const;
+};
+
 /// The exact value of a number token, or a message-bearing failure: Error(parse)
 /// naming the line for NaN/inf and junk, Error(limit) for a token longer than
-/// limits.max_number_chars or an exponent beyond max_exponent. `what` names the
-/// value in the message ("x coordinate of vertex 3").
-Rational parse_number(const LineReader& reader, std::string_view token, std::string_view what);
+/// limits.max_number_chars or an exponent beyond max_exponent.
+Rational parse_number(const LineReader& reader, std::string_view token, const ValueName& name);
+/// Three coordinates x y z from the next three tokens of `next()`.
+template <class NextToken>
+Vec3 parse_point(const LineReader& reader, NextToken&& next, const char* element, std::uint64_t index,
+                 const char* outer = nullptr, std::uint64_t outer_index = 0) {
+  Vec3 p;
+  p.x = parse_number(reader, next(), {"x coordinate", element, index, outer, outer_index});
+  p.y = parse_number(reader, next(), {"y coordinate", element, index, outer, outer_index});
+  p.z = parse_number(reader, next(), {"z coordinate", element, index, outer, outer_index});
+  return p;
+}
 
 /// A non-negative decimal integer token (no sign, no exponent); nullopt if the
 /// token is not one; values beyond 2^64-1 saturate to UINT64_MAX.

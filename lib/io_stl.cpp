@@ -41,7 +41,7 @@ bool iequals(std::string_view a, std::string_view b) {
 }
 
 bool starts_with_solid(const std::string& data) {
-  std::size_t i = 0;
+  std::size_t i = data.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // UTF-8 byte order mark
   while (i < data.size() && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n')) ++i;
   if (!iequals(std::string_view(data).substr(i, 5), "solid")) return false;
   i += 5;
@@ -124,12 +124,14 @@ class TokenStream {
     }
   }
   void skip_rest_of_line() { tokens_ = Tokenizer(std::string_view{}, false); }
-  std::string_view expect(std::string_view keyword, std::string_view context) {
+  /// Consumes `keyword`; `context` makes the rest of the message, only on failure.
+  template <class Context>
+  void expect(std::string_view keyword, Context&& context) {
     std::string_view t = next();
-    if (t.empty()) reader_.fail("unexpected end of input, expected '" + std::string(keyword) + "' " + std::string(context));
-    if (!iequals(t, keyword))
-      reader_.fail("expected '" + std::string(keyword) + "' " + std::string(context) + ", found " + quote(t));
-    return t;
+    if (!t.empty() && iequals(t, keyword)) return;
+    const std::string expected = "expected '" + std::string(keyword) + "' " + context();
+    if (t.empty()) reader_.fail("unexpected end of input, " + expected);
+    reader_.fail(expected + ", found " + quote(t));
   }
 
  private:
@@ -141,7 +143,7 @@ PolygonSoup parse_ascii(LineReader& reader) {
   TokenStream tokens(reader);
   PolygonSoup soup;
   std::unordered_map<Vec3, std::uint32_t> index_of;
-  tokens.expect("solid", "at the start of an ASCII STL");
+  tokens.expect("solid", [] { return std::string("at the start of an ASCII STL"); });
   tokens.skip_rest_of_line();  // the solid's name
   for (;;) {
     std::string_view t = tokens.next();
@@ -156,23 +158,19 @@ PolygonSoup parse_ascii(LineReader& reader) {
     }
     if (!iequals(t, "facet")) reader.fail("expected 'facet' or 'endsolid', found " + quote(t));
     const std::size_t f = soup.num_faces();
-    const std::string name = "facet " + std::to_string(f);
-    tokens.expect("normal", "after 'facet'");
+    auto name = [f] { return "facet " + std::to_string(f); };
+    tokens.expect("normal", [] { return std::string("after 'facet'"); });
     for (int c = 0; c < 3; ++c) {
       // The normal is ignored, but must be there; exporters write nan for degenerate facets.
       t = tokens.next();
       if (t.empty() || !(try_parse_rational(t, 400) || looks_non_finite(t)))
-        reader.fail(name + ": normal component " + quote(t) + " is not a number");
+        reader.fail(name() + ": normal component " + quote(t) + " is not a number");
     }
-    tokens.expect("outer", "after the normal of " + name);
-    tokens.expect("loop", "after 'outer'");
+    tokens.expect("outer", [&] { return "after the normal of " + name(); });
+    tokens.expect("loop", [] { return std::string("after 'outer'"); });
     for (std::size_t k = 0; k < 3; ++k) {
-      tokens.expect("vertex", "(" + name + " needs 3 vertices)");
-      const std::string vname = "vertex " + std::to_string(k) + " of " + name;
-      Vec3 p;
-      p.x = parse_number(reader, tokens.next(), "x coordinate of " + vname);
-      p.y = parse_number(reader, tokens.next(), "y coordinate of " + vname);
-      p.z = parse_number(reader, tokens.next(), "z coordinate of " + vname);
+      tokens.expect("vertex", [&] { return "(" + name() + " needs 3 vertices)"; });
+      Vec3 p = parse_point(reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
       auto it = index_of.find(p);
       if (it == index_of.end()) {
         check_vertex_limit(reader, soup.points.size() + 1);
@@ -181,8 +179,8 @@ PolygonSoup parse_ascii(LineReader& reader) {
       }
       soup.face_indices.push_back(it->second);
     }
-    tokens.expect("endloop", "after the 3 vertices of " + name);
-    tokens.expect("endfacet", "at the end of " + name);
+    tokens.expect("endloop", [&] { return "after the 3 vertices of " + name(); });
+    tokens.expect("endfacet", [&] { return "at the end of " + name(); });
     check_face_limit(reader, f + 1, soup.face_indices.size());
     soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
   }

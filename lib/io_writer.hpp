@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <ios>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -59,7 +60,11 @@ class TextWriter {
   /// Flushes what is buffered and checks the stream. \throw Error(io) on failure.
   void finish() {
     flush();
-    out_.flush();
+    try {
+      out_.flush();
+    } catch (const std::ios_base::failure&) {
+      throw Error(ErrorCategory::io, "writing the output failed");
+    }
     if (!out_) throw Error(ErrorCategory::io, "writing the output failed");
   }
 
@@ -70,7 +75,11 @@ class TextWriter {
     return s.size() > 40 ? s.substr(0, 40) + "..." : s;
   }
   void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    try {
+      out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    } catch (const std::ios_base::failure&) {
+      throw Error(ErrorCategory::io, "writing the output failed");
+    }
     buffer_.clear();
     if (!out_) throw Error(ErrorCategory::io, "writing the output failed");
   }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <locale>
 #include <random>
 #include <sstream>
@@ -86,6 +87,22 @@ TEST(Io, ReadDispatchesOnFormat) {
   EXPECT_EQ(read(in, FileFormat::obj, "cube.obj").num_faces(), 6u);
   std::istringstream off("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(faces_of(read(off, FileFormat::off, "x")), (Faces{{0, 1, 2}}));
+}
+
+TEST(Io, StreamsWithExceptionsEnabledAndAnUnlimitedByteCap) {
+  std::istringstream in("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  in.exceptions(std::ios::failbit | std::ios::badbit | std::ios::eofbit);
+  PolygonSoup soup = read_off(in, "x", ReadLimits{.max_bytes = std::numeric_limits<std::uint64_t>::max()});
+  EXPECT_EQ(faces_of(soup), (Faces{{0, 1, 2}}));
+}
+
+TEST(Io, Utf8ByteOrderMarkIsSkipped) {
+  std::istringstream off("\xEF\xBB\xBFOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read_off(off, "bom.off").points.size(), 3u);
+  std::istringstream obj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(read_obj(obj, "bom.obj").num_faces(), 1u);
+  std::istringstream stl("\xEF\xBB\xBFsolid x\nendsolid x\n");
+  EXPECT_EQ(read_stl(stl, "bom.stl").num_faces(), 0u);
 }
 
 // ---- writers: exact bytes ---------------------------------------------------
@@ -310,6 +327,10 @@ TEST(Write, FailingStreamIsAnIoError) {
   std::ostringstream out;
   out.setstate(std::ios::badbit);
   EXPECT_TRUE(throws_error([&] { write_off(out, small_soup()); }, ErrorCategory::io, {"writing"}));
+  std::ostringstream throwing;
+  throwing.exceptions(std::ios::badbit | std::ios::failbit);
+  EXPECT_THROW(throwing.setstate(std::ios::badbit), std::ios_base::failure);
+  EXPECT_TRUE(throws_error([&] { write_obj(throwing, small_soup()); }, ErrorCategory::io, {"writing"}));
   EXPECT_TRUE(throws_error([] { write_file("/nonexistent_dir_cvms/x.off", small_soup()); }, ErrorCategory::io,
                            {"/nonexistent_dir_cvms/x.off"}));
   EXPECT_TRUE(throws_error([] { write_file("x.ply", small_soup()); }, ErrorCategory::invalid_argument, {"x.ply"}));
