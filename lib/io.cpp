@@ -23,9 +23,12 @@ FileFormat format_from_extension(const std::filesystem::path& path) {
 
 PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits) {
   switch (format) {
-    case FileFormat::off: return read_off(in, source, limits);
-    case FileFormat::obj: return read_obj(in, source, limits);
-    case FileFormat::stl: return read_stl(in, source, limits);
+    case FileFormat::off:
+      return read_off(in, source, limits);
+    case FileFormat::obj:
+      return read_obj(in, source, limits);
+    case FileFormat::stl:
+      return read_stl(in, source, limits);
   }
   throw Error(ErrorCategory::invalid_argument, "unknown file format");
 }
@@ -39,8 +42,9 @@ PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limit
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     int error = errno;
-    throw Error(ErrorCategory::io, "cannot open '" + path.string() + "'" +
-                                       (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
+    throw Error(ErrorCategory::io,
+                "cannot open '" + path.string() + "'" +
+                    (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
   }
   return read(in, format, path.string(), limits);
 }
@@ -72,8 +76,10 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
     const std::uint64_t index = points.size();
     check_vertex_limit(reader, index + 1);
     bool first_token = true;
-    Vec3 p = parse_point(reader, [&] { return std::exchange(first_token, false) ? x : tokens.next(); }, "point", index);
-    if (!tokens.at_end()) reader.fail("point " + std::to_string(index) + " has more than 3 values: " + quote(tokens.next()));
+    Vec3 p = parse_point(
+        reader, [&] { return std::exchange(first_token, false) ? x : tokens.next(); }, "point", index);
+    if (!tokens.at_end())
+      reader.fail("point " + std::to_string(index) + " has more than 3 values: " + quote(tokens.next()));
     points.push_back(std::move(p));
   }
   return points;
@@ -81,9 +87,12 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
 
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {
   switch (format) {
-    case FileFormat::off: return write_off(out, soup, coordinates);
-    case FileFormat::obj: return write_obj(out, soup, coordinates);
-    case FileFormat::stl: return write_stl(out, soup);
+    case FileFormat::off:
+      return write_off(out, soup, coordinates);
+    case FileFormat::obj:
+      return write_obj(out, soup, coordinates);
+    case FileFormat::stl:
+      return write_stl(out, soup);
   }
   throw Error(ErrorCategory::invalid_argument, "unknown file format");
 }
@@ -94,8 +103,9 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coor
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) {
     int error = errno;
-    throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'" +
-                                       (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
+    throw Error(ErrorCategory::io,
+                "cannot write '" + path.string() + "'" +
+                    (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
   }
   try {
     write(out, soup, format, coordinates);

@@ -19,15 +19,15 @@ namespace {
 
 bool is_ignored_statement(std::string_view keyword) {
   static constexpr std::array<std::string_view, 20> ignored = {
-      "vt", "vn", "vp", "g", "o", "s", "mg", "usemtl", "mtllib", "usemap",
-      "maplib", "l", "p", "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "call"};
+      "vt",     "vn", "vp", "g",     "o",        "s",        "mg",  "usemtl",     "mtllib",    "usemap",
+      "maplib", "l",  "p",  "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "call"};
   return std::find(ignored.begin(), ignored.end(), keyword) != ignored.end();
 }
 
 bool is_free_form_statement(std::string_view keyword) {
   static constexpr std::array<std::string_view, 16> free_form = {
-      "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm",
-      "trim", "hole", "scrv", "sp", "end", "con", "ctech", "stech"};
+      "cstype", "deg",  "bmat", "step", "curv", "curv2", "surf",  "parm",
+      "trim",   "hole", "scrv", "sp",   "end",  "con",   "ctech", "stech"};
   return std::find(free_form.begin(), free_form.end(), keyword) != free_form.end();
 }
 
@@ -70,7 +70,8 @@ PolygonSoup parse_obj(LineReader& reader) {
     if (keyword == "v") {
       const std::uint64_t number = soup.points.size() + 1;  // as OBJ counts
       check_vertex_limit(reader, number);
-      Vec3 p = parse_point(reader, [&] { return tokens.next(); }, "vertex", number);
+      Vec3 p = parse_point(
+          reader, [&] { return tokens.next(); }, "vertex", number);
       auto name = [number] { return "vertex " + std::to_string(number); };
       std::array<std::string_view, 4> extra{};
       std::size_t num_extra = 0;
@@ -93,7 +94,9 @@ PolygonSoup parse_obj(LineReader& reader) {
       face.clear();
       for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
         auto index = parse_face_vertex(t);
-        if (!index) reader.fail(name() + ": " + quote(t) + " is not a vertex reference (i, i/t, i//n or i/t/n, i != 0)");
+        if (!index)
+          reader.fail(name() + ": " + quote(t) +
+                      " is not a vertex reference (i, i/t, i//n or i/t/n, i != 0)");
         std::int64_t count = static_cast<std::int64_t>(soup.points.size());
         std::int64_t resolved = 0;
         if (*index < 0) {

@@ -93,7 +93,8 @@ PolygonSoup parse_off(LineReader& reader) {
   check_vertex_limit(reader, num_vertices);
   check_face_limit(reader, num_faces, 0);
 
-  const std::size_t min_extra = (header->texture ? 2 : 0) + (header->color ? 3 : 0) + (header->normal ? 3 : 0);
+  const std::size_t min_extra =
+      (header->texture ? 2 : 0) + (header->color ? 3 : 0) + (header->normal ? 3 : 0);
   const std::size_t max_extra = min_extra + (header->color ? 1 : 0);
 
   PolygonSoup soup;
@@ -103,7 +104,8 @@ PolygonSoup parse_off(LineReader& reader) {
       fail_end(reader, "the header declares " + std::to_string(num_vertices) + " vertices but only " +
                            std::to_string(v) + " were found");
     bool first_token = true;
-    Vec3 p = parse_point(reader, [&] { return std::exchange(first_token, false) ? token : tokens.next(); }, "vertex", v);
+    Vec3 p = parse_point(
+        reader, [&] { return std::exchange(first_token, false) ? token : tokens.next(); }, "vertex", v);
     std::size_t extra = 0;
     while (!tokens.next().empty()) ++extra;
     if (extra < min_extra || extra > max_extra)

@@ -74,7 +74,8 @@ std::size_t ByteSource::read(char* dst, std::size_t n) {
   // Ask for at most one byte beyond the limit: enough to know it was exceeded.
   // (consumed_ <= max_bytes_ here, or the previous call would have thrown.)
   const std::uint64_t remaining = max_bytes_ - consumed_;
-  const std::uint64_t allowed = remaining == std::numeric_limits<std::uint64_t>::max() ? remaining : remaining + 1;
+  const std::uint64_t allowed =
+      remaining == std::numeric_limits<std::uint64_t>::max() ? remaining : remaining + 1;
   auto want = static_cast<std::streamsize>(std::min<std::uint64_t>(n, allowed));
   try {
     in_.read(dst, want);
@@ -89,8 +90,8 @@ std::size_t ByteSource::read(char* dst, std::size_t n) {
   if (got < static_cast<std::size_t>(want)) at_end_ = true;
   consumed_ += got;
   if (consumed_ > max_bytes_)
-    throw Error(ErrorCategory::limit, source_ + ": input is larger than the limit of " +
-                                          std::to_string(max_bytes_) + " bytes");
+    throw Error(ErrorCategory::limit,
+                source_ + ": input is larger than the limit of " + std::to_string(max_bytes_) + " bytes");
   return got;
 }
 
@@ -140,14 +141,16 @@ bool LineReader::next(std::string_view& line) {
     end_ += got;
   }
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  if (line_number_ == 0 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 byte order mark
+  if (line_number_ == 0 && line.substr(0, 3) == "\xEF\xBB\xBF")
+    line.remove_prefix(3);  // UTF-8 byte order mark
   ++line_number_;
   last_ = line;
   return true;
 }
 
 void LineReader::fail(std::string_view message, ErrorCategory category) const {
-  throw Error(category, std::string(source()) + ":" + std::to_string(line_number_) + ": " + std::string(message));
+  throw Error(category,
+              std::string(source()) + ":" + std::to_string(line_number_) + ": " + std::string(message));
 }
 
 void Tokenizer::skip_space() {
@@ -191,11 +194,11 @@ Rational parse_number(const LineReader& reader, std::string_view token, const Va
     reader.fail(std::string(what) + " has " + std::to_string(token.size()) +
                     " characters, more than the limit of " + std::to_string(reader.limits().max_number_chars),
                 ErrorCategory::limit);
-  if (looks_non_finite(token))
-    reader.fail(std::string(what) + " is not finite: " + quote(token));
+  if (looks_non_finite(token)) reader.fail(std::string(what) + " is not finite: " + quote(token));
   if (is_decimal_with_exponent(token))
-    reader.fail(std::string(what) + " " + quote(token) + " has an exponent beyond +-" + std::to_string(max_exponent),
-                ErrorCategory::limit);
+    reader.fail(
+        std::string(what) + " " + quote(token) + " has an exponent beyond +-" + std::to_string(max_exponent),
+        ErrorCategory::limit);
   reader.fail(std::string(what) + " is not a number: " + quote(token));
 }
 
@@ -226,7 +229,8 @@ std::optional<std::int64_t> parse_signed(std::string_view token) {
 
 void check_vertex_limit(const LineReader& reader, std::uint64_t vertices) {
   // Indices are 32-bit, whatever the configured limit says.
-  std::uint64_t cap = std::min<std::uint64_t>(reader.limits().max_vertices, std::numeric_limits<std::uint32_t>::max());
+  std::uint64_t cap =
+      std::min<std::uint64_t>(reader.limits().max_vertices, std::numeric_limits<std::uint32_t>::max());
   if (vertices > cap)
     reader.fail(std::to_string(vertices) + " vertices exceed the limit of " + std::to_string(cap),
                 ErrorCategory::limit);
@@ -234,8 +238,9 @@ void check_vertex_limit(const LineReader& reader, std::uint64_t vertices) {
 
 void check_face_limit(const LineReader& reader, std::uint64_t faces, std::uint64_t indices) {
   if (faces > reader.limits().max_faces)
-    reader.fail(std::to_string(faces) + " faces exceed the limit of " + std::to_string(reader.limits().max_faces),
-                ErrorCategory::limit);
+    reader.fail(
+        std::to_string(faces) + " faces exceed the limit of " + std::to_string(reader.limits().max_faces),
+        ErrorCategory::limit);
   if (indices > std::numeric_limits<std::uint32_t>::max())
     reader.fail("more than 2^32-1 face indices in total", ErrorCategory::limit);
 }
@@ -246,12 +251,12 @@ void check_soup_for_writing(const PolygonSoup& soup, std::size_t min_size) {
     throw Error(ErrorCategory::invalid_argument, "polygon soup has inconsistent face offsets");
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     if (soup.face_offsets[f + 1] < soup.face_offsets[f])
-      throw Error(ErrorCategory::invalid_argument, "polygon soup has decreasing face offsets at face " +
-                                                       std::to_string(f));
+      throw Error(ErrorCategory::invalid_argument,
+                  "polygon soup has decreasing face offsets at face " + std::to_string(f));
     auto face = soup.face(f);
     if (face.size() < min_size)
-      throw Error(ErrorCategory::invalid_argument, "face " + std::to_string(f) + " has " +
-                                                       std::to_string(face.size()) + " vertices");
+      throw Error(ErrorCategory::invalid_argument,
+                  "face " + std::to_string(f) + " has " + std::to_string(face.size()) + " vertices");
     for (std::uint32_t i : face)
       if (i >= soup.points.size())
         throw Error(ErrorCategory::invalid_argument, "face " + std::to_string(f) + " has index " +

@@ -10,8 +10,8 @@
 #include <istream>
 #include <optional>
 #include <string>
-#include <utility>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cvms/error.hpp"
@@ -71,8 +71,7 @@ class LineReader {
   [[nodiscard]] const ReadLimits& limits() const noexcept { return limits_; }
 
   /// Error(category) with "<source>:<line>: <message>".
-  [[noreturn]] void fail(std::string_view message,
-                         ErrorCategory category = ErrorCategory::parse) const;
+  [[noreturn]] void fail(std::string_view message, ErrorCategory category = ErrorCategory::parse) const;
 
  private:
   std::optional<ByteSource> bytes_;  // empty when reading from memory
@@ -111,8 +110,8 @@ bool looks_non_finite(std::string_view token);
 /// Names a value in messages ("x coordinate of vertex 3", "z coordinate of
 /// vertex 2 of facet 7"); the text is only built when a message needs it.
 struct ValueName {
-  const char* what;      ///< "x coordinate", "color value", ...
-  const char* element;   ///< "vertex", "point"
+  const char* what;     ///< "x coordinate", "color value", ...
+  const char* element;  ///< "vertex", "point"
   std::uint64_t index;
   const char* outer = nullptr;  ///< "facet", or none
   std::uint64_t outer_index = 0;

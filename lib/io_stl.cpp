@@ -26,7 +26,8 @@ constexpr std::size_t record_size = 50;
 
 std::uint32_t load_u32_le(const std::string& data, std::size_t at) {
   std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(data[at + static_cast<std::size_t>(i)]);
+  for (int i = 3; i >= 0; --i)
+    v = (v << 8) | static_cast<unsigned char>(data[at + static_cast<std::size_t>(i)]);
   return v;
 }
 
@@ -70,7 +71,8 @@ struct FloatKeyHash {
 PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::string_view source,
                          const ReadLimits& limits) {
   if (count > limits.max_faces)
-    fail_at(source, 80, std::to_string(count) + " triangles exceed the limit of " + std::to_string(limits.max_faces),
+    fail_at(source, 80,
+            std::to_string(count) + " triangles exceed the limit of " + std::to_string(limits.max_faces),
             ErrorCategory::limit);
   if (std::uint64_t{count} * 3 > std::numeric_limits<std::uint32_t>::max())
     fail_at(source, 80, "more than 2^32-1 face indices in total", ErrorCategory::limit);
@@ -89,16 +91,19 @@ PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::stri
         const std::size_t at = record + 12 + 12 * k + 4 * c;
         std::uint32_t bits = load_u32_le(data, at);
         if (!std::isfinite(std::bit_cast<float>(bits)))
-          fail_at(source, at, "triangle " + std::to_string(t) + " vertex " + std::to_string(k) +
-                                  " has a non-finite coordinate (" + (std::isnan(std::bit_cast<float>(bits)) ? "nan" : "inf") + ")");
+          fail_at(source, at,
+                  "triangle " + std::to_string(t) + " vertex " + std::to_string(k) +
+                      " has a non-finite coordinate (" +
+                      (std::isnan(std::bit_cast<float>(bits)) ? "nan" : "inf") + ")");
         if (bits == 0x80000000u) bits = 0;  // -0 and +0 are the same position
         key.bits[c] = bits;
       }
       auto [it, inserted] = index_of.try_emplace(key, static_cast<std::uint32_t>(soup.points.size()));
       if (inserted) {
         if (soup.points.size() + 1 > max_vertices)
-          fail_at(source, record + 12 + 12 * k, "more than " + std::to_string(max_vertices) +
-                                                    " distinct vertices (the limit)", ErrorCategory::limit);
+          fail_at(source, record + 12 + 12 * k,
+                  "more than " + std::to_string(max_vertices) + " distinct vertices (the limit)",
+                  ErrorCategory::limit);
         soup.points.push_back({rational_from_float(std::bit_cast<float>(key.bits[0])),
                                rational_from_float(std::bit_cast<float>(key.bits[1])),
                                rational_from_float(std::bit_cast<float>(key.bits[2]))});
@@ -170,7 +175,8 @@ PolygonSoup parse_ascii(LineReader& reader) {
     tokens.expect("loop", [] { return std::string("after 'outer'"); });
     for (std::size_t k = 0; k < 3; ++k) {
       tokens.expect("vertex", [&] { return "(" + name() + " needs 3 vertices)"; });
-      Vec3 p = parse_point(reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
+      Vec3 p = parse_point(
+          reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
       auto it = index_of.find(p);
       if (it == index_of.end()) {
         check_vertex_limit(reader, soup.points.size() + 1);
@@ -240,21 +246,24 @@ PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits
     const std::uint32_t count = load_u32_le(data, 80);
     const std::uint64_t expected = header_size + record_size * std::uint64_t{count};
     if (expected == data.size()) return parse_binary(data, count, source, limits);
-    std::string mismatch = "the binary STL header declares " + std::to_string(count) + " triangles, which need " +
-                           std::to_string(expected) + " bytes, but the input has " + std::to_string(data.size());
+    std::string mismatch = "the binary STL header declares " + std::to_string(count) +
+                           " triangles, which need " + std::to_string(expected) +
+                           " bytes, but the input has " + std::to_string(data.size());
     if (!solid) {
       if (expected > data.size()) {
         std::uint64_t complete = (data.size() - header_size) / record_size;
         fail_at(source, header_size + complete * record_size,
                 mismatch + " (truncated in triangle " + std::to_string(complete) + ")");
       }
-      fail_at(source, expected, mismatch + " (" + std::to_string(data.size() - expected) +
-                                    " bytes after the last triangle)");
+      fail_at(source, expected,
+              mismatch + " (" + std::to_string(data.size() - expected) + " bytes after the last triangle)");
     }
-    if (std::memchr(data.data(), '\0', data.size()) != nullptr) binary_hint = "; not binary either: " + mismatch;
+    if (std::memchr(data.data(), '\0', data.size()) != nullptr)
+      binary_hint = "; not binary either: " + mismatch;
   } else if (!solid) {
-    fail_at(source, 0, "input of " + std::to_string(data.size()) +
-                           " bytes neither starts with 'solid' nor holds an 84-byte binary STL header");
+    fail_at(source, 0,
+            "input of " + std::to_string(data.size()) +
+                " bytes neither starts with 'solid' nor holds an 84-byte binary STL header");
   }
   LineReader reader(std::move(data), source, limits);
   try {
@@ -273,10 +282,12 @@ void write_stl(std::ostream& out, const PolygonSoup& soup) {
   std::uint64_t triangles = 0;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) triangles += soup.face(f).size() - 2;
   if (triangles > std::numeric_limits<std::uint32_t>::max())
-    throw Error(ErrorCategory::invalid_argument, std::to_string(triangles) + " triangles do not fit a binary STL");
+    throw Error(ErrorCategory::invalid_argument,
+                std::to_string(triangles) + " triangles do not fit a binary STL");
   std::vector<std::array<float, 3>> rounded;
   rounded.reserve(soup.points.size());
-  for (const Vec3& p : soup.points) rounded.push_back({to_float_nearest(p.x), to_float_nearest(p.y), to_float_nearest(p.z)});
+  for (const Vec3& p : soup.points)
+    rounded.push_back({to_float_nearest(p.x), to_float_nearest(p.y), to_float_nearest(p.z)});
 
   TextWriter w(out);
   char header[80] = "binary STL written by cvms";  // never starts with "solid"
@@ -287,7 +298,8 @@ void write_stl(std::ostream& out, const PolygonSoup& soup) {
     auto face = soup.face(f);
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {
       const std::uint32_t corners[3] = {face[0], face[k], face[k + 1]};
-      for (float c : unit_normal(soup.points[corners[0]], soup.points[corners[1]], soup.points[corners[2]])) put(c);
+      for (float c : unit_normal(soup.points[corners[0]], soup.points[corners[1]], soup.points[corners[2]]))
+        put(c);
       for (std::uint32_t v : corners)
         for (float c : rounded[v]) put(c);
       w.byte('\0').byte('\0');

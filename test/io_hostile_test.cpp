@@ -5,6 +5,7 @@
 // end with the documented error (or a correct result) quickly, and the
 // memory the reader allocates is measured by counting operator new.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -14,7 +15,6 @@
 #include <new>
 #include <random>
 #include <sstream>
-#include <unistd.h>
 
 #include "cvms/io.hpp"
 #include "support/io_expect.hpp"
@@ -150,7 +150,8 @@ struct GeneratedFile {
   std::filesystem::path path;
   GeneratedFile(const std::string& name, const std::string& prefix, char fill, std::size_t count,
                 const std::string& suffix) {
-    path = std::filesystem::temp_directory_path() / ("cvms_io_hostile_" + std::to_string(::getpid()) + "_" + name);
+    path = std::filesystem::temp_directory_path() /
+           ("cvms_io_hostile_" + std::to_string(::getpid()) + "_" + name);
     std::ofstream out(path, std::ios::binary);
     out << prefix;
     std::string block(MiB, fill);
@@ -192,7 +193,8 @@ TEST(Hostile, LyingOffHeadersFinishFastWithBoundedMemory) {
   // Exactly at the default limits: 5e7 vertices and 1e8 faces in a 40-byte input.
   Cost at_limit = measure([] {
     std::istringstream in("OFF\n50000000 100000000 0\n0 0 0\n");
-    EXPECT_TRUE(throws_error([&] { read_off(in, "lie.off"); }, ErrorCategory::parse, {"lie.off:3:", "only 1"}));
+    EXPECT_TRUE(
+        throws_error([&] { read_off(in, "lie.off"); }, ErrorCategory::parse, {"lie.off:3:", "only 1"}));
   });
   for (const Cost& c : {beyond, within, at_limit}) {
     EXPECT_LT(c.peak, 2 * MiB);
@@ -202,8 +204,8 @@ TEST(Hostile, LyingOffHeadersFinishFastWithBoundedMemory) {
 
 TEST(Hostile, LyingBinaryStlCountFinishesFastWithBoundedMemory) {
   Cost c = measure([] {
-    EXPECT_TRUE(throws_error([] { read_file(test::data_path("bad/binary_lying_count.stl")); }, ErrorCategory::parse,
-                             {"binary_lying_count.stl: byte 134:"}));
+    EXPECT_TRUE(throws_error([] { read_file(test::data_path("bad/binary_lying_count.stl")); },
+                             ErrorCategory::parse, {"binary_lying_count.stl: byte 134:"}));
   });
   EXPECT_LT(c.peak, MiB);
   EXPECT_LT(c.seconds, 1.0 * slow_factor);
@@ -214,8 +216,8 @@ TEST(Hostile, LyingBinaryStlCountFinishesFastWithBoundedMemory) {
 TEST(Hostile, HundredMegabyteLineInAFileHitsTheByteLimitEarly) {
   GeneratedFile file("byte_limit.off", "OFF\n", '1', hundred_mb, "\n");
   Cost c = measure([&] {
-    EXPECT_TRUE(throws_error([&] { read_file(file.path, ReadLimits{.max_bytes = MiB}); }, ErrorCategory::limit,
-                             {"byte_limit.off", "1048576 bytes"}));
+    EXPECT_TRUE(throws_error([&] { read_file(file.path, ReadLimits{.max_bytes = MiB}); },
+                             ErrorCategory::limit, {"byte_limit.off", "1048576 bytes"}));
   });
   EXPECT_LT(c.peak, 4 * MiB);
   EXPECT_LT(c.seconds, 1.0 * slow_factor);

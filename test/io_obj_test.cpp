@@ -43,7 +43,8 @@ TEST(ReadObj, ForwardReferencesAreResolvedAtTheEnd) {
 }
 
 TEST(ReadObj, ExactCoordinatesAndCommentsEverywhere) {
-  PolygonSoup soup = obj_from("v 0.1 1/3 -2e-3 # a comment\n  v\t1e400 0 0\n#\nf 1 2 2 # degenerate is not our job\n");
+  PolygonSoup soup =
+      obj_from("v 0.1 1/3 -2e-3 # a comment\n  v\t1e400 0 0\n#\nf 1 2 2 # degenerate is not our job\n");
   mpz_class ten400;
   mpz_ui_pow_ui(ten400.get_mpz_t(), 10, 400);
   EXPECT_EQ(soup.points[0], v3(Rational(1, 10), Rational(1, 3), Rational(-1, 500)));
@@ -54,8 +55,9 @@ TEST(ReadObj, ExactCoordinatesAndCommentsEverywhere) {
 TEST(ReadObj, VertexLimit) {
   EXPECT_TRUE(throws_error([] { obj_from("v 0 0 0\nv 1 0 0\nv 0 1 0\n", ReadLimits{.max_vertices = 2}); },
                            ErrorCategory::limit, {"text.obj:3:", "limit of 2"}));
-  EXPECT_TRUE(throws_error([] { obj_from("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n", ReadLimits{.max_faces = 1}); },
-                           ErrorCategory::limit, {"text.obj:5:", "2 faces"}));
+  EXPECT_TRUE(throws_error(
+      [] { obj_from("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n", ReadLimits{.max_faces = 1}); },
+      ErrorCategory::limit, {"text.obj:5:", "2 faces"}));
 }
 
 TEST(ReadObj, FaceTokenSyntax) {
@@ -105,7 +107,8 @@ TEST(ReadObjBad, FreeFormGeometry) {
   EXPECT_TRUE(bad("free_form.obj", ErrorCategory::parse, {"free_form.obj:4:", "free-form", "'cstype'"}));
 }
 TEST(ReadObjBad, FaceWithTwoVertices) {
-  EXPECT_TRUE(bad("two_vertex_face.obj", ErrorCategory::parse, {"two_vertex_face.obj:4:", "face 1 has 2 vertices"}));
+  EXPECT_TRUE(
+      bad("two_vertex_face.obj", ErrorCategory::parse, {"two_vertex_face.obj:4:", "face 1 has 2 vertices"}));
 }
 TEST(ReadObjBad, NoVertices) {
   EXPECT_TRUE(bad("no_vertices.obj", ErrorCategory::parse, {"no_vertices.obj:3:", "no vertices"}));

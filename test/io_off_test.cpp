@@ -86,10 +86,14 @@ TEST(ReadOff, HeaderVariantsWithTheirExtraValues) {
   // NOFF: normals (3 values); STOFF: texture (2); CNOFF: color (3 or 4) + normal.
   EXPECT_EQ(off_from("NOFF\n4 4 0\n0 0 0 1 1 1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n" + faces).points,
             tetra_points);
-  EXPECT_EQ(off_from("STOFF\n4 4 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n" + faces).points, tetra_points);
-  EXPECT_EQ(off_from("CNOFF\n4 4 0\n0 0 0 1 1 1 9 9 9\n1 0 0 1 0 0 9 9 9 9\n0 1 0 0 1 0 9 9 9\n0 0 1 0 0 1 9 9 9\n" +
-                     faces).points,
+  EXPECT_EQ(off_from("STOFF\n4 4 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n" + faces).points,
             tetra_points);
+  EXPECT_EQ(
+      off_from(
+          "CNOFF\n4 4 0\n0 0 0 1 1 1 9 9 9\n1 0 0 1 0 0 9 9 9 9\n0 1 0 0 1 0 9 9 9\n0 0 1 0 0 1 9 9 9\n" +
+          faces)
+          .points,
+      tetra_points);
   // Counts without E, a comment right after the keyword, counts after the keyword.
   EXPECT_EQ(faces_of(off_from("OFF # comment\n4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces)), tetra_faces);
   EXPECT_EQ(faces_of(off_from("OFF 4 4 6 # counts here\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces)), tetra_faces);
@@ -121,8 +125,9 @@ TEST(ReadOff, LimitsOnCountsAndNumberLength) {
                            {"text.off:2:", "4 faces"}));
   EXPECT_TRUE(throws_error([&] { off_from(tetra, ReadLimits{.max_bytes = 20}); }, ErrorCategory::limit,
                            {"text.off", "20 bytes"}));
-  EXPECT_TRUE(throws_error([&] { off_from("OFF\n1 0 0\n12345678901 0 0\n", ReadLimits{.max_number_chars = 10}); },
-                           ErrorCategory::limit, {"text.off:3:", "11 characters"}));
+  EXPECT_TRUE(
+      throws_error([&] { off_from("OFF\n1 0 0\n12345678901 0 0\n", ReadLimits{.max_number_chars = 10}); },
+                   ErrorCategory::limit, {"text.off:3:", "11 characters"}));
   EXPECT_NO_THROW(off_from("OFF\n1 0 0\n1234567890 0 0\n", ReadLimits{.max_number_chars = 10}));
 }
 
@@ -150,28 +155,31 @@ TEST(ReadOffBad, OnlyComments) {
   EXPECT_TRUE(bad("comments_only.off", ErrorCategory::parse, {"comments_only.off:3:", "'OFF' header"}));
 }
 TEST(ReadOffBad, MissingHeader) {
-  EXPECT_TRUE(bad("no_header.off", ErrorCategory::parse, {"no_header.off:1:", "expected an 'OFF' header, found '8'"}));
+  EXPECT_TRUE(bad("no_header.off", ErrorCategory::parse,
+                  {"no_header.off:1:", "expected an 'OFF' header, found '8'"}));
 }
 TEST(ReadOffBad, TruncatedVertices) {
   EXPECT_TRUE(bad("truncated_vertices.off", ErrorCategory::parse,
                   {"truncated_vertices.off:7:", "end of input", "8 vertices but only 5"}));
 }
 TEST(ReadOffBad, TruncatedFaces) {
-  EXPECT_TRUE(bad("truncated_faces.off", ErrorCategory::parse,
-                  {"truncated_faces.off:8:", "4 faces but only 2"}));
+  EXPECT_TRUE(
+      bad("truncated_faces.off", ErrorCategory::parse, {"truncated_faces.off:8:", "4 faces but only 2"}));
 }
 TEST(ReadOffBad, IndexOutOfRange) {
   EXPECT_TRUE(bad("index_out_of_range.off", ErrorCategory::parse,
                   {"index_out_of_range.off:14: face 3 has index 12 but there are 8 vertices"}));
 }
 TEST(ReadOffBad, NanCoordinate) {
-  EXPECT_TRUE(bad("nan.off", ErrorCategory::parse, {"nan.off:4:", "x coordinate of vertex 1", "not finite", "'nan'"}));
+  EXPECT_TRUE(bad("nan.off", ErrorCategory::parse,
+                  {"nan.off:4:", "x coordinate of vertex 1", "not finite", "'nan'"}));
 }
 TEST(ReadOffBad, InfCoordinate) {
   EXPECT_TRUE(bad("inf.off", ErrorCategory::parse, {"inf.off:5:", "y coordinate of vertex 2", "'-inf'"}));
 }
 TEST(ReadOffBad, LyingHeaderBeyondTheLimit) {
-  EXPECT_TRUE(bad("lying_header.off", ErrorCategory::limit, {"lying_header.off:2:", "1000000000000 vertices"}));
+  EXPECT_TRUE(
+      bad("lying_header.off", ErrorCategory::limit, {"lying_header.off:2:", "1000000000000 vertices"}));
 }
 TEST(ReadOffBad, LyingHeaderWithinTheLimit) {
   EXPECT_TRUE(bad("lying_header_within_limits.off", ErrorCategory::parse,
@@ -189,7 +197,8 @@ TEST(ReadOffBad, FaceListsFewerIndicesThanDeclared) {
                   {"face_count_mismatch.off:8:", "face 1 declares 4 vertices but lists 3"}));
 }
 TEST(ReadOffBad, FaceWithTwoVertices) {
-  EXPECT_TRUE(bad("two_vertex_face.off", ErrorCategory::parse, {"two_vertex_face.off:9:", "face 2 has 2 vertices"}));
+  EXPECT_TRUE(
+      bad("two_vertex_face.off", ErrorCategory::parse, {"two_vertex_face.off:9:", "face 2 has 2 vertices"}));
 }
 TEST(ReadOffBad, NegativeCount) {
   EXPECT_TRUE(bad("negative_count.off", ErrorCategory::parse, {"negative_count.off:2:", "'-4'"}));
@@ -205,7 +214,8 @@ TEST(ReadOffBad, PlainOffVertexWithFourValues) {
                   {"extra_vertex_value.off:3:", "vertex 0 has 4 values, expected 3"}));
 }
 TEST(ReadOffBad, CountBeyond64Bits) {
-  EXPECT_TRUE(bad("count_overflow.off", ErrorCategory::limit, {"count_overflow.off:2:", "vertex count", "beyond 2^64-1"}));
+  EXPECT_TRUE(bad("count_overflow.off", ErrorCategory::limit,
+                  {"count_overflow.off:2:", "vertex count", "beyond 2^64-1"}));
 }
 TEST(ReadOffBad, TooManyValuesAfterFaceIndices) {
   EXPECT_TRUE(bad("too_many_face_values.off", ErrorCategory::parse,
@@ -216,7 +226,8 @@ TEST(ReadOffBad, MissingCoordinate) {
                   {"missing_coordinate.off:4:", "missing z coordinate of vertex 1"}));
 }
 TEST(ReadOffBad, BinaryJunk) {
-  EXPECT_TRUE(bad("binary_junk.off", ErrorCategory::parse, {"binary_junk.off:1:", "expected an 'OFF' header"}));
+  EXPECT_TRUE(
+      bad("binary_junk.off", ErrorCategory::parse, {"binary_junk.off:1:", "expected an 'OFF' header"}));
 }
 
 }  // namespace

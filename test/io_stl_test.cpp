@@ -100,11 +100,13 @@ TEST(ReadStl, Limits) {
 TEST(ReadStlBad, EmptyFile) { EXPECT_TRUE(bad("empty.stl", ErrorCategory::parse, {"empty input"})); }
 TEST(ReadStlBad, BinaryCountLargerThanTheData) {
   EXPECT_TRUE(bad("binary_count_mismatch.stl", ErrorCategory::parse,
-                  {"binary_count_mismatch.stl: byte 184:", "declares 10 triangles", "has 184", "truncated in triangle 2"}));
+                  {"binary_count_mismatch.stl: byte 184:", "declares 10 triangles", "has 184",
+                   "truncated in triangle 2"}));
 }
 TEST(ReadStlBad, BinaryCountSmallerThanTheData) {
-  EXPECT_TRUE(bad("binary_trailing_bytes.stl", ErrorCategory::parse,
-                  {"binary_trailing_bytes.stl: byte 134:", "declares 1 triangles", "50 bytes after the last"}));
+  EXPECT_TRUE(
+      bad("binary_trailing_bytes.stl", ErrorCategory::parse,
+          {"binary_trailing_bytes.stl: byte 134:", "declares 1 triangles", "50 bytes after the last"}));
 }
 TEST(ReadStlBad, BinaryLyingCount) {
   EXPECT_TRUE(bad("binary_lying_count.stl", ErrorCategory::parse,
@@ -116,7 +118,8 @@ TEST(ReadStlBad, BinaryNan) {
                   {"binary_nan.stl: byte 162:", "triangle 1 vertex 1", "nan"}));
 }
 TEST(ReadStlBad, BinaryInf) {
-  EXPECT_TRUE(bad("binary_inf.stl", ErrorCategory::parse, {"binary_inf.stl: byte 96:", "triangle 0 vertex 0", "inf"}));
+  EXPECT_TRUE(bad("binary_inf.stl", ErrorCategory::parse,
+                  {"binary_inf.stl: byte 96:", "triangle 0 vertex 0", "inf"}));
 }
 TEST(ReadStlBad, TooShortForBinary) {
   EXPECT_TRUE(bad("short_binary.stl", ErrorCategory::parse, {"short_binary.stl: byte 0:", "40 bytes"}));
@@ -130,7 +133,8 @@ TEST(ReadStlBad, AsciiTruncated) {
                   {"ascii_truncated.stl:5:", "end of input", "expected 'vertex'"}));
 }
 TEST(ReadStlBad, AsciiMisspelledKeyword) {
-  EXPECT_TRUE(bad("ascii_bad_keyword.stl", ErrorCategory::parse, {"ascii_bad_keyword.stl:3:", "expected 'loop'", "'lop'"}));
+  EXPECT_TRUE(bad("ascii_bad_keyword.stl", ErrorCategory::parse,
+                  {"ascii_bad_keyword.stl:3:", "expected 'loop'", "'lop'"}));
 }
 TEST(ReadStlBad, AsciiInfinity) {
   EXPECT_TRUE(bad("ascii_inf.stl", ErrorCategory::parse,

@@ -5,6 +5,7 @@
 #include "cvms/io.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <array>
 #include <bit>
@@ -16,7 +17,6 @@
 #include <locale>
 #include <random>
 #include <sstream>
-#include <unistd.h>
 
 #include "support/io_expect.hpp"
 
@@ -70,7 +70,8 @@ TEST(Io, FormatFromExtension) {
   EXPECT_EQ(format_from_extension("x.Stl"), FileFormat::stl);
   EXPECT_TRUE(throws_error([] { format_from_extension("points.xyz"); }, ErrorCategory::invalid_argument,
                            {"points.xyz", ".off"}));
-  EXPECT_TRUE(throws_error([] { format_from_extension("noext"); }, ErrorCategory::invalid_argument, {"noext"}));
+  EXPECT_TRUE(
+      throws_error([] { format_from_extension("noext"); }, ErrorCategory::invalid_argument, {"noext"}));
 }
 
 TEST(Io, ReadFileErrors) {
@@ -78,8 +79,10 @@ TEST(Io, ReadFileErrors) {
                            {"does_not_exist.off"}));
   TempDir dir;
   std::filesystem::create_directory(dir.path / "folder.off");
-  EXPECT_TRUE(throws_error([&] { read_file(dir.path / "folder.off"); }, ErrorCategory::io, {"folder.off", "directory"}));
-  EXPECT_TRUE(throws_error([] { read_file(data_path("points.xyz")); }, ErrorCategory::invalid_argument, {"points.xyz"}));
+  EXPECT_TRUE(throws_error([&] { read_file(dir.path / "folder.off"); }, ErrorCategory::io,
+                           {"folder.off", "directory"}));
+  EXPECT_TRUE(throws_error([] { read_file(data_path("points.xyz")); }, ErrorCategory::invalid_argument,
+                           {"points.xyz"}));
 }
 
 TEST(Io, ReadDispatchesOnFormat) {
@@ -108,8 +111,8 @@ TEST(Io, Utf8ByteOrderMarkIsSkipped) {
 // ---- writers: exact bytes ---------------------------------------------------
 
 PolygonSoup small_soup() {
-  return make_soup({v3(0, Rational(1, 3), Rational(-5, 2)), v3(Rational(1, 1000000), 12, Rational(7, 8)), v3(0, 0, 1),
-                    v3(1, 1, 1)},
+  return make_soup({v3(0, Rational(1, 3), Rational(-5, 2)), v3(Rational(1, 1000000), 12, Rational(7, 8)),
+                    v3(0, 0, 1), v3(1, 1, 1)},
                    {{0, 1, 2}, {0, 2, 3, 1}});
 }
 
@@ -121,15 +124,16 @@ TEST(WriteOff, ExactText) {
 TEST(WriteOff, DoubleTextIsShortestRoundTrip) {
   mpz_class ten300;
   mpz_ui_pow_ui(ten300.get_mpz_t(), 10, 300);
-  PolygonSoup soup = make_soup({v3(Rational(1, 10), Rational(1, 3), Rational(ten300)), v3(-2, Rational(1, 1024), 0),
-                                v3(Rational(5e-324), 0, 1)},
+  PolygonSoup soup = make_soup({v3(Rational(1, 10), Rational(1, 3), Rational(ten300)),
+                                v3(-2, Rational(1, 1024), 0), v3(Rational(5e-324), 0, 1)},
                                {{0, 1, 2}});
   EXPECT_EQ(written(soup, FileFormat::off, Coordinates::double_),
             "OFF\n3 1 0\n0.1 0.3333333333333333 1e+300\n-2 0.0009765625 0\n5e-324 0 1\n3 0 1 2\n");
   // The text reads back exactly as the printed decimals, each of which has
   // the written double as its nearest double.
   PolygonSoup back = reread(written(soup, FileFormat::off, Coordinates::double_), FileFormat::off);
-  EXPECT_EQ(back.points[0], v3(Rational(1, 10), Rational(3333333333333333, 10000000000000000), Rational(ten300)));
+  EXPECT_EQ(back.points[0],
+            v3(Rational(1, 10), Rational(3333333333333333, 10000000000000000), Rational(ten300)));
   EXPECT_EQ(back.points[1], soup.points[1]);
   EXPECT_EQ(back.points[2].x.get_d(), 5e-324);
 }
@@ -145,7 +149,8 @@ TEST(WriteObj, ExactAndDoubleText) {
 
 Rational random_rational(std::mt19937_64& rng) {
   switch (rng() % 5) {
-    case 0: return Rational(static_cast<long>(rng() % 2001) - 1000);
+    case 0:
+      return Rational(static_cast<long>(rng() % 2001) - 1000);
     case 1: {  // a large p/q
       mpz_class p, q;
       mpz_ui_pow_ui(p.get_mpz_t(), 3, 50 + rng() % 100);
@@ -176,7 +181,8 @@ Rational random_rational(std::mt19937_64& rng) {
 PolygonSoup random_soup(std::mt19937_64& rng) {
   PolygonSoup soup;
   const std::size_t n = 3 + rng() % 40;
-  for (std::size_t i = 0; i < n; ++i) soup.points.push_back({random_rational(rng), random_rational(rng), random_rational(rng)});
+  for (std::size_t i = 0; i < n; ++i)
+    soup.points.push_back({random_rational(rng), random_rational(rng), random_rational(rng)});
   const std::size_t faces = rng() % 30;
   for (std::size_t f = 0; f < faces; ++f) {
     std::vector<std::uint32_t> face(3 + rng() % 5);
@@ -230,7 +236,8 @@ TEST(RoundTrip, DoubleOffAndObjKeepTheNearestDouble) {
 
 float float_at(const std::string& bytes, std::size_t at) {
   std::uint32_t bits = 0;
-  for (int i = 3; i >= 0; --i) bits = (bits << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
+  for (int i = 3; i >= 0; --i)
+    bits = (bits << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
   return std::bit_cast<float>(bits);
 }
 
@@ -264,10 +271,10 @@ TEST(WriteStl, LayoutFanTriangulationAndExactFloats) {
 }
 
 TEST(WriteStl, NormalsAreUnitAndSurviveExtremeScales) {
-  PolygonSoup soup = make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1), v3(1, -1, 0),
-                                v3(Rational(1e30), 0, 0), v3(0, Rational(1e30), 0), v3(Rational(1e-30), 0, 0),
-                                v3(0, Rational(1e-30), 0), v3(2, 0, 0)},
-                               {{0, 1, 2}, {0, 3, 4}, {0, 5, 6}, {0, 7, 8}, {0, 1, 9}});
+  PolygonSoup soup =
+      make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1), v3(1, -1, 0), v3(Rational(1e30), 0, 0),
+                 v3(0, Rational(1e30), 0), v3(Rational(1e-30), 0, 0), v3(0, Rational(1e-30), 0), v3(2, 0, 0)},
+                {{0, 1, 2}, {0, 3, 4}, {0, 5, 6}, {0, 7, 8}, {0, 1, 9}});
   const std::string bytes = written(soup, FileFormat::stl);
   auto normal = [&bytes](std::size_t t) {
     std::size_t at = 84 + 50 * t;
@@ -288,11 +295,11 @@ TEST(WriteStl, CoordinatesRoundToNearestFloatWithoutDoubleRounding) {
   // 1 + 2^-24 + 2^-60 rounds to the double 1 + 2^-24, a float tie that would
   // go to 1; the exact value is above the tie, so the nearest float is 1 + 2^-23.
   const Rational above_tie = 1 + pow2(-24) + pow2(-60);
-  const Rational tie_down = 1 + pow2(-24);      // tie: even is 1
-  const Rational tie_up = 1 + 3 * pow2(-24);    // tie: even is 1 + 2^-22
+  const Rational tie_down = 1 + pow2(-24);                  // tie: even is 1
+  const Rational tie_up = 1 + 3 * pow2(-24);                // tie: even is 1 + 2^-22
   const Rational near_max = Rational(FLT_MAX) + pow2(102);  // below FLT_MAX + ulp/2
-  PolygonSoup soup = make_soup({v3(above_tie, tie_down, tie_up), v3(near_max, 0, 0), v3(0, 0, Rational(1, 3))},
-                               {{0, 1, 2}});
+  PolygonSoup soup =
+      make_soup({v3(above_tie, tie_down, tie_up), v3(near_max, 0, 0), v3(0, 0, Rational(1, 3))}, {{0, 1, 2}});
   PolygonSoup back = reread(written(soup, FileFormat::stl), FileFormat::stl);
   EXPECT_EQ(back.points[0], v3(1 + pow2(-23), 1, 1 + pow2(-22)));
   EXPECT_EQ(back.points[1], v3(Rational(FLT_MAX), 0, 0));
@@ -309,8 +316,10 @@ TEST(Write, RejectsInvalidSoupsAndUnrepresentableValues) {
   for (FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::stl}) {
     EXPECT_TRUE(throws_error([&] { written(out_of_range, format); }, ErrorCategory::invalid_argument,
                              {"face 0 has index 3 but there are 3 vertices"}));
-    EXPECT_TRUE(throws_error([&] { written(two_gon, format); }, ErrorCategory::invalid_argument, {"face 0 has 2"}));
-    EXPECT_TRUE(throws_error([&] { written(broken_offsets, format); }, ErrorCategory::invalid_argument, {"offsets"}));
+    EXPECT_TRUE(
+        throws_error([&] { written(two_gon, format); }, ErrorCategory::invalid_argument, {"face 0 has 2"}));
+    EXPECT_TRUE(
+        throws_error([&] { written(broken_offsets, format); }, ErrorCategory::invalid_argument, {"offsets"}));
   }
   mpz_class ten400;
   mpz_ui_pow_ui(ten400.get_mpz_t(), 10, 400);
@@ -318,9 +327,10 @@ TEST(Write, RejectsInvalidSoupsAndUnrepresentableValues) {
   EXPECT_NO_THROW(written(huge, FileFormat::off));
   EXPECT_TRUE(throws_error([&] { written(huge, FileFormat::off, Coordinates::double_); },
                            ErrorCategory::invalid_argument, {"range of double"}));
-  PolygonSoup too_big_for_float = make_soup({v3(Rational(1e39), 0, 0), v3(1, 0, 0), v3(0, 1, 0)}, {{0, 1, 2}});
-  EXPECT_TRUE(throws_error([&] { written(too_big_for_float, FileFormat::stl); }, ErrorCategory::invalid_argument,
-                           {"range of float"}));
+  PolygonSoup too_big_for_float =
+      make_soup({v3(Rational(1e39), 0, 0), v3(1, 0, 0), v3(0, 1, 0)}, {{0, 1, 2}});
+  EXPECT_TRUE(throws_error([&] { written(too_big_for_float, FileFormat::stl); },
+                           ErrorCategory::invalid_argument, {"range of float"}));
 }
 
 TEST(Write, FailingStreamIsAnIoError) {
@@ -333,7 +343,8 @@ TEST(Write, FailingStreamIsAnIoError) {
   EXPECT_TRUE(throws_error([&] { write_obj(throwing, small_soup()); }, ErrorCategory::io, {"writing"}));
   EXPECT_TRUE(throws_error([] { write_file("/nonexistent_dir_cvms/x.off", small_soup()); }, ErrorCategory::io,
                            {"/nonexistent_dir_cvms/x.off"}));
-  EXPECT_TRUE(throws_error([] { write_file("x.ply", small_soup()); }, ErrorCategory::invalid_argument, {"x.ply"}));
+  EXPECT_TRUE(
+      throws_error([] { write_file("x.ply", small_soup()); }, ErrorCategory::invalid_argument, {"x.ply"}));
 }
 
 // A locale that groups digits ("1,234"): stream formatting would pick it up.
@@ -381,13 +392,14 @@ std::vector<Vec3> points_from(const std::string& text, const ReadLimits& limits 
 
 TEST(ReadPoints, XyzLinesWithComments) {
   std::ifstream in(data_path("points.xyz"), std::ios::binary);
-  EXPECT_EQ(read_points(in, "points.xyz"), (std::vector<Vec3>{v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0),
-                                                               v3(0, 0, Rational(1, 3)),
-                                                               v3(Rational(1, 4), Rational(1, 4), Rational(1, 4))}));
+  EXPECT_EQ(read_points(in, "points.xyz"),
+            (std::vector<Vec3>{v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, Rational(1, 3)),
+                               v3(Rational(1, 4), Rational(1, 4), Rational(1, 4))}));
 }
 
 TEST(ReadPoints, OffAndObjVertices) {
-  EXPECT_EQ(points_from("# comment first\nOFF\n2 0 0\n1 2 3\n4 5 6\n"), (std::vector<Vec3>{v3(1, 2, 3), v3(4, 5, 6)}));
+  EXPECT_EQ(points_from("# comment first\nOFF\n2 0 0\n1 2 3\n4 5 6\n"),
+            (std::vector<Vec3>{v3(1, 2, 3), v3(4, 5, 6)}));
   EXPECT_EQ(points_from("\nv 1 2 3\nv 4 5 6\n"), (std::vector<Vec3>{v3(1, 2, 3), v3(4, 5, 6)}));
   std::ifstream in(data_path("cube.off"), std::ios::binary);
   EXPECT_EQ(read_points(in, "cube.off").size(), 8u);
@@ -398,7 +410,8 @@ TEST(ReadPoints, BadLines) {
                            {"pts:2:", "missing z coordinate of point 1"}));
   EXPECT_TRUE(throws_error([] { points_from("0 0 0\n1 1 1 1\n"); }, ErrorCategory::parse,
                            {"pts:2:", "point 1 has more than 3 values"}));
-  EXPECT_TRUE(throws_error([] { points_from("#\n\n0 inf 0\n"); }, ErrorCategory::parse, {"pts:3:", "not finite"}));
+  EXPECT_TRUE(
+      throws_error([] { points_from("#\n\n0 inf 0\n"); }, ErrorCategory::parse, {"pts:3:", "not finite"}));
   EXPECT_TRUE(throws_error([] { points_from(""); }, ErrorCategory::parse, {"pts: empty input"}));
   EXPECT_TRUE(throws_error([] { points_from("# only\n\n"); }, ErrorCategory::parse, {"pts:2:", "no points"}));
   EXPECT_TRUE(throws_error([] { points_from("0 0 0\n1 1 1\n", ReadLimits{.max_vertices = 1}); },

@@ -14,9 +14,11 @@
 //    "<source>:<line>: ..." with 1-based lines, OFF vertices/faces 0-based,
 //    OBJ vertices/faces 1-based (as in the file); binary STL messages name
 //    "<source>: byte <offset>: ...".
-//  - An input with no content (0 bytes, or only blanks and comments) is
-//    Error(parse) "empty input". A header declaring zero elements is fine and
-//    gives an empty soup (Mesh::from_soup rejects it later).
+//  - A 0-byte input is Error(parse) "empty input"; one with only blanks and
+//    comments is Error(parse) "unexpected end of input" (OFF, points) or "no
+//    OBJ statements"; an OBJ without any `v` is Error(parse). A header
+//    declaring zero elements is fine and gives an empty soup (Mesh::from_soup
+//    rejects it later). A leading UTF-8 byte order mark is skipped.
 //  - Faces with fewer than 3 vertices and face indices out of range are
 //    Error(parse) naming the line. Repeated indices and other topological
 //    problems are left to Mesh::from_soup.
@@ -68,8 +70,8 @@ namespace cvms {
 /// Caps that protect against absurd or lying inputs; exceeding one raises
 /// Error(limit).
 struct ReadLimits {
-  std::uint64_t max_vertices = 50'000'000;
-  std::uint64_t max_faces = 100'000'000;
+  std::uint64_t max_vertices = 50'000'000;           ///< points in a soup (never more than 2^32-1)
+  std::uint64_t max_faces = 100'000'000;             ///< faces (STL: triangles) in a soup
   std::uint64_t max_bytes = std::uint64_t{4} << 30;  ///< 4 GiB
   /// Longest accepted number token (digits of one coordinate). Exact values
   /// of a million digits are far beyond anything an exact computation on
@@ -89,8 +91,7 @@ PolygonSoup read_obj(std::istream& in, std::string_view source, const ReadLimits
 /// ASCII or binary STL (detected from the content); float32 coordinates are
 /// converted exactly; vertices shared between triangles are merged by exact position.
 PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits = {});
-PolygonSoup read(std::istream& in, FileFormat format, std::string_view source,
-                 const ReadLimits& limits = {});
+PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits = {});
 /// Reads a file in the format of its extension. \throw Error(io) if it cannot be opened.
 PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limits = {});
 
@@ -99,8 +100,7 @@ PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limit
 /// token: an OFF keyword, an OBJ statement (v, vt, vn, f, o, g, s, mtllib,
 /// usemtl), or else a point list. An OFF or OBJ input is read whole (faces
 /// are checked like read_off/read_obj do, then dropped).
-std::vector<Vec3> read_points(std::istream& in, std::string_view source,
-                              const ReadLimits& limits = {});
+std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 
 enum class Coordinates {
   exact,   ///< exact decimals or p/q, see to_string(const Rational&)

@@ -53,7 +53,8 @@ template <class F>
 }
 
 /// A soup from points and faces written out by hand.
-inline PolygonSoup make_soup(std::vector<Vec3> points, std::initializer_list<std::vector<std::uint32_t>> faces) {
+inline PolygonSoup make_soup(std::vector<Vec3> points,
+                             std::initializer_list<std::vector<std::uint32_t>> faces) {
   PolygonSoup soup;
   soup.points = std::move(points);
   for (const auto& f : faces) soup.add_face(std::span<const std::uint32_t>(f.data(), f.size()));
@@ -63,7 +64,8 @@ inline PolygonSoup make_soup(std::vector<Vec3> points, std::initializer_list<std
 /// The faces of a soup as plain vectors, for readable comparisons.
 inline std::vector<std::vector<std::uint32_t>> faces_of(const PolygonSoup& soup) {
   std::vector<std::vector<std::uint32_t>> out;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) out.emplace_back(soup.face(f).begin(), soup.face(f).end());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    out.emplace_back(soup.face(f).begin(), soup.face(f).end());
   return out;
 }
 
