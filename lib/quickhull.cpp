@@ -114,23 +114,17 @@ class Quickhull {
   // dimension of the input. Only comparisons of dot products are used.
   void initial_simplex(std::uint32_t s[4]) const {
     if (n_ == 0) degenerate("there are no points");
-    // Lexicographic minimum and maximum: distinct unless all points are equal.
+    // Extremes along the first axis on which the points differ.
     const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    const ApproxVec3 axes_approx[3] = {ApproxVec3::of(axes[0]), ApproxVec3::of(axes[1]),
-                                       ApproxVec3::of(axes[2])};
-    auto lex = [&](std::uint32_t a, std::uint32_t b) {
-      for (int k = 0; k < 3; ++k) {
-        Sign c = compare_dot(ref(a), ref(b), {axes[k], axes_approx[k]});
-        if (c != Sign::zero) return c;
-      }
-      return Sign::zero;
-    };
     std::uint32_t lo = 0, hi = 0;
-    for (std::uint32_t i = 1; i < n_; ++i) {
-      if (lex(i, lo) == Sign::negative) lo = i;
-      if (lex(i, hi) == Sign::positive) hi = i;
+    for (int k = 0; k < 3 && lo == hi; ++k) {
+      const ApproxVec3 axis_approx = ApproxVec3::of(axes[k]);
+      const Vec3Ref axis{axes[k], axis_approx};
+      lo = extreme(axis, Sign::negative);
+      hi = extreme(axis, Sign::positive);
+      if (compare_dot(ref(lo), ref(hi), axis) == Sign::zero) lo = hi;
     }
-    if (lex(lo, hi) == Sign::zero) degenerate("all " + std::to_string(n_) + " points are equal");
+    if (lo == hi) degenerate("all " + std::to_string(n_) + " points are equal");
     s[0] = lo;
     s[1] = hi;
 
