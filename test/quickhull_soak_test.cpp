@@ -26,12 +26,18 @@ std::vector<Vec3> structured_cloud(std::uint64_t seed) {
       for (int i = 0; i < n; ++i) pts.push_back({Rational(r(2)), Rational(r(2)), Rational(r(2))});
       break;
     case 1: {
-      // Points on random planes a.x = b with small integer a.
+      // Points on three random planes a0 z = b - a1 x - a2 y (a0 is 1 or 2).
+      long plane[3][4];
+      for (auto& pl : plane) {
+        pl[0] = 1 + static_cast<long>(rng() % 2);
+        pl[1] = r(2);
+        pl[2] = r(2);
+        pl[3] = r(5);
+      }
       for (int i = 0; i < n; ++i) {
-        long a0 = 1 + r(1) * r(1), a1 = r(2), a2 = r(2), b = r(5);  // a0 is 1 or 2
+        const long* pl = plane[rng() % 3];
         long x = r(6), y = r(6);
-        // a0 z = b - a1 x - a2 y.
-        Rational z(b - a1 * x - a2 * y, a0);
+        Rational z(pl[3] - pl[1] * x - pl[2] * y, pl[0]);
         z.canonicalize();
         pts.push_back({Rational(x), Rational(y), z});
       }
