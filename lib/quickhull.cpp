@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "cvms/approx.hpp"
 #include "cvms/convex_polyhedron.hpp"
@@ -50,12 +51,22 @@ constexpr std::uint32_t prev3(std::uint32_t i) { return i == 0 ? 2 : i - 1; }
 struct Triangle {
   std::uint32_t v[3];   // point indices, counterclockwise seen from outside
   std::uint32_t nb[3];  // nb[i]: the triangle across edge v[i] -> v[i+1]
-  std::uint32_t head;   // first point of the conflict list (linked through next_)
-  std::uint32_t farthest;
-  std::uint32_t stamp;  // iteration in which `visible` was decided
+  std::uint32_t begin;  // conflict list: pool_[begin, end)
+  std::uint32_t end;
+  std::uint32_t farthest;  // the farthest conflict is pool_[begin + farthest]
+  std::uint32_t stamp;     // iteration in which `visible` was decided
   bool visible;
   bool alive;
   bool has_normal;  // normals_[t] is the exact normal of this triangle
+};
+
+// An outside point in a conflict list, with a copy of its approximation:
+// conflict lists are scanned over and over, and reading them sequentially
+// instead of gathering from the per-point array is much kinder to the cache
+// (about a third faster on 10^6 random points).
+struct Conflict {
+  ApproxVec3 approx;
+  std::uint32_t point;
 };
 
 struct HorizonEdge {
@@ -72,7 +83,6 @@ class Quickhull {
     n_ = static_cast<std::uint32_t>(points.size());
     approx_.reserve(n_);
     for (const Vec3& p : points) approx_.push_back(ApproxVec3::of(p));
-    next_.assign(n_, none);
   }
 
   PolygonSoup run(std::vector<std::uint32_t>* source_index) {
@@ -128,40 +138,36 @@ class Quickhull {
     s[0] = lo;
     s[1] = hi;
 
-    // Third point: extreme along two directions orthogonal to the line; a
-    // point is off the line iff its dot product with one of them differs.
+    // Third point: extreme along one of two directions orthogonal to the
+    // line; a point is off the line iff its dot product with one of them
+    // differs from the line's.
     const Vec3 d = points_[hi] - points_[lo];
-    Vec3 n1 = (sgn(d.y) != 0 || sgn(d.z) != 0) ? Vec3{0, d.z, -d.y} : Vec3{-d.z, 0, d.x};
-    Vec3 n2 = cross(d, n1);
-    bool found = false;
-    for (const Vec3* n : {&n1, &n2}) {
-      ApproxVec3 na = ApproxVec3::of(*n);
-      Vec3Ref nr{*n, na};
-      std::uint32_t top = extreme(nr, Sign::positive), bottom = extreme(nr, Sign::negative);
-      bool top_off = compare_dot(ref(top), ref(lo), nr) != Sign::zero;
-      bool bottom_off = compare_dot(ref(bottom), ref(lo), nr) != Sign::zero;
-      if (!top_off && !bottom_off) continue;
-      // Prefer the one farther from the line's projection: compare
-      // <top - lo, n> with <lo - bottom, n>.
-      Vec3 sum = points_[top] + points_[bottom], twice = points_[lo] + points_[lo];
-      ApproxVec3 sa = ApproxVec3::of(sum), ta = ApproxVec3::of(twice);
-      s[2] = (top_off && (!bottom_off || compare_dot({sum, sa}, {twice, ta}, nr) != Sign::negative)) ? top : bottom;
-      found = true;
-      break;
-    }
-    if (!found) degenerate("all " + std::to_string(n_) + " points are collinear");
+    const Vec3 n1 = (sgn(d.y) != 0 || sgn(d.z) != 0) ? Vec3{0, d.z, -d.y} : Vec3{-d.z, 0, d.x};
+    s[2] = off_extreme(n1, lo);
+    if (s[2] == none) s[2] = off_extreme(cross(d, n1), lo);
+    if (s[2] == none) degenerate("all " + std::to_string(n_) + " points are collinear");
 
-    // Fourth point: extreme along the plane normal on either side.
-    const Vec3 normal = cross(points_[s[1]] - points_[s[0]], points_[s[2]] - points_[s[0]]);
-    ApproxVec3 na = ApproxVec3::of(normal);
-    Vec3Ref nr{normal, na};
-    std::uint32_t top = extreme(nr, Sign::positive), bottom = extreme(nr, Sign::negative);
-    bool top_off = compare_dot(ref(top), ref(lo), nr) != Sign::zero;
-    bool bottom_off = compare_dot(ref(bottom), ref(lo), nr) != Sign::zero;
-    if (!top_off && !bottom_off) degenerate("all " + std::to_string(n_) + " points are coplanar");
-    Vec3 sum = points_[top] + points_[bottom], twice = points_[lo] + points_[lo];
-    ApproxVec3 sa = ApproxVec3::of(sum), ta = ApproxVec3::of(twice);
-    s[3] = (top_off && (!bottom_off || compare_dot({sum, sa}, {twice, ta}, nr) != Sign::negative)) ? top : bottom;
+    // Fourth point: extreme along the plane normal.
+    s[3] = off_extreme(cross(points_[s[1]] - points_[s[0]], points_[s[2]] - points_[s[0]]), lo);
+    if (s[3] == none) degenerate("all " + std::to_string(n_) + " points are coplanar");
+  }
+
+  // Of the points with the largest and the smallest dot product with n, the
+  // one farther from the plane through `base` orthogonal to n (a thin
+  // initial simplex costs up to half again as many predicate calls on random
+  // balls); none if all points lie in that plane.
+  [[nodiscard]] std::uint32_t off_extreme(const Vec3& n, std::uint32_t base) const {
+    const ApproxVec3 na = ApproxVec3::of(n);
+    const Vec3Ref nr{n, na};
+    const std::uint32_t top = extreme(nr, Sign::positive), bottom = extreme(nr, Sign::negative);
+    const bool top_off = compare_dot(ref(top), ref(base), nr) != Sign::zero;
+    const bool bottom_off = compare_dot(ref(bottom), ref(base), nr) != Sign::zero;
+    if (!top_off) return bottom_off ? bottom : none;
+    if (!bottom_off) return top;
+    // <top - base, n> >= <base - bottom, n>  iff  <top + bottom, n> >= <2 base, n>.
+    const Vec3 sum = points_[top] + points_[bottom], twice = points_[base] + points_[base];
+    const ApproxVec3 sa = ApproxVec3::of(sum), ta = ApproxVec3::of(twice);
+    return compare_dot({sum, sa}, {twice, ta}, nr) != Sign::negative ? top : bottom;
   }
 
   // ---- triangles and conflict lists -----------------------------------------
@@ -177,25 +183,21 @@ class Quickhull {
       normals_.emplace_back();
       normal_approx_.emplace_back();
     }
-    tris_[t] = Triangle{{a, b, c}, {none, none, none}, none, none, 0, false, true, false};
+    tris_[t] = Triangle{{a, b, c}, {none, none, none}, 0, 0, 0, 0, false, true, false};
     return t;
   }
 
+  // Only for visible triangles, whose conflicts distribute() has moved.
   void kill(std::uint32_t t) {
+    tris_[t].begin = tris_[t].end = 0;
     tris_[t].alive = false;
     free_.push_back(t);
   }
 
-  // Puts p (strictly above t) into t's conflict list and keeps t's farthest
-  // point up to date by comparing <p, n> with <farthest, n>.
-  void add_conflict(std::uint32_t t, std::uint32_t p) {
+  [[nodiscard]] Vec3Ref conflict_ref(std::uint32_t i) const { return {points_[pool_[i].point], pool_[i].approx}; }
+
+  [[nodiscard]] Vec3Ref normal_ref(std::uint32_t t) {
     Triangle& tr = tris_[t];
-    next_[p] = tr.head;
-    tr.head = p;
-    if (tr.farthest == none) {
-      tr.farthest = p;
-      return;
-    }
     if (!tr.has_normal) {
       // Only triangles with two or more outside points need their normal.
       const Vec3& a = points_[tr.v[0]];
@@ -203,18 +205,70 @@ class Quickhull {
       normal_approx_[t] = ApproxVec3::of(normals_[t]);
       tr.has_normal = true;
     }
-    if (compare_dot(ref(p), ref(tr.farthest), {normals_[t], normal_approx_[t]}) == Sign::positive)
-      tr.farthest = p;
+    return {normals_[t], normal_approx_[t]};
   }
 
-  // Assigns p to the first of the triangles it is strictly above; a point
-  // above none of them is inside or on the hull and is dropped for good.
-  void assign(std::uint32_t p, std::span<const std::uint32_t> candidates) {
-    for (std::uint32_t t : candidates)
-      if (side(t, p) == Sign::positive) {
-        add_conflict(t, p);
-        return;
+  // Moves the conflicts in the pool ranges sources_ (except the point skip)
+  // to the first of the triangles `targets` that they are strictly above,
+  // and finds each target's farthest conflict by comparing <p, n> with
+  // <farthest, n>. A point above none of the targets is inside or on the
+  // hull and is dropped for good. Each target's list becomes one contiguous
+  // range appended to the pool.
+  void distribute(std::uint32_t skip, std::span<const std::uint32_t> targets) {
+    const auto k = static_cast<std::uint32_t>(targets.size());
+    count_.assign(k, 0);
+    far_src_.assign(k, none);
+    moves_.clear();
+    for (auto [b, e] : sources_) {
+      live_ -= e - b;
+      for (std::uint32_t i = b; i < e; ++i) {
+        if (pool_[i].point == skip) continue;
+        const Vec3Ref p = conflict_ref(i);
+        for (std::uint32_t j = 0; j < k; ++j) {
+          const Triangle& tr = tris_[targets[j]];
+          if (orient3d(ref(tr.v[0]), ref(tr.v[1]), ref(tr.v[2]), p) != Sign::positive) continue;
+          moves_.push_back({j, i});
+          ++count_[j];
+          if (far_src_[j] == none ||
+              compare_dot(p, conflict_ref(far_src_[j]), normal_ref(targets[j])) == Sign::positive)
+            far_src_[j] = i;
+          break;
+        }
       }
+    }
+    // Scatter into fresh ranges at the end of the pool.
+    std::uint32_t cursor = static_cast<std::uint32_t>(pool_.size());
+    if (pool_.size() + moves_.size() >= none)
+      throw Error(ErrorCategory::limit, "convex hull: conflict lists exceed 2^32 entries");
+    pool_.resize(pool_.size() + moves_.size());
+    for (std::uint32_t j = 0; j < k; ++j) {
+      Triangle& tr = tris_[targets[j]];
+      tr.begin = tr.end = cursor;
+      cursor += count_[j];
+    }
+    for (auto [j, i] : moves_) {
+      Triangle& tr = tris_[targets[j]];
+      if (i == far_src_[j]) tr.farthest = tr.end - tr.begin;
+      pool_[tr.end++] = pool_[i];
+    }
+    live_ += static_cast<std::uint32_t>(moves_.size());
+  }
+
+  // Rewrites the pool with only the live conflict lists once the dead
+  // entries outnumber the live ones and the triangles (amortised O(1) per
+  // moved entry, memory O(n + triangles)).
+  void compact_pool() {
+    if (pool_.size() - live_ <= live_ + tris_.size() + 4096) return;
+    spare_pool_.clear();
+    spare_pool_.reserve(live_);
+    for (Triangle& tr : tris_) {
+      if (!tr.alive || tr.begin == tr.end) continue;
+      const auto b = static_cast<std::uint32_t>(spare_pool_.size());
+      spare_pool_.insert(spare_pool_.end(), pool_.begin() + tr.begin, pool_.begin() + tr.end);
+      tr.end = b + (tr.end - tr.begin);
+      tr.begin = b;
+    }
+    pool_.swap(spare_pool_);
   }
 
   // Index i of the edge a -> b in triangle t (v[i] == a, v[i+1] == b).
@@ -239,10 +293,14 @@ class Quickhull {
         for (std::uint32_t j = 0; j < 4; ++j)
           if (j != i && edge_index(t[j], to, from) != none) tris_[t[i]].nb[e] = t[j];
       }
+    pool_.reserve(n_);
     for (std::uint32_t p = 0; p < n_; ++p)
-      if (p != a && p != b && p != c && p != d) assign(p, t);
+      if (p != a && p != b && p != c && p != d) pool_.push_back({approx_[p], p});
+    live_ = static_cast<std::uint32_t>(pool_.size());
+    sources_.assign(1, {0, live_});
+    distribute(none, t);
     for (std::uint32_t i : t)
-      if (tris_[i].head != none) pending_.push_back(i);
+      if (tris_[i].begin != tris_[i].end) pending_.push_back(i);
   }
 
   // ---- the main loop --------------------------------------------------------
@@ -254,8 +312,8 @@ class Quickhull {
     // random balls).
     for (std::size_t next_pending = 0; next_pending < pending_.size(); ++next_pending) {
       std::uint32_t start = pending_[next_pending];
-      if (!tris_[start].alive || tris_[start].head == none) continue;
-      const std::uint32_t eye = tris_[start].farthest;
+      if (!tris_[start].alive || tris_[start].begin == tris_[start].end) continue;
+      const std::uint32_t eye = pool_[tris_[start].begin + tris_[start].farthest].point;
       ++stamp;
 
       // Visible region by an explicit depth-first search; record each
@@ -280,13 +338,11 @@ class Quickhull {
         }
       }
 
-      // Collect the orphaned outside points, then free the visible triangles.
-      orphans_.clear();
-      for (std::uint32_t t : visible_) {
-        for (std::uint32_t p = tris_[t].head; p != none; p = next_[p])
-          if (p != eye) orphans_.push_back(p);
-        kill(t);
-      }
+      // The visible triangles' slots are reused only after their conflicts
+      // have moved to the new triangles.
+      sources_.clear();
+      for (std::uint32_t t : visible_)
+        if (tris_[t].begin != tris_[t].end) sources_.push_back({tris_[t].begin, tris_[t].end});
 
       // The cone from the horizon to the eye. start_of_[a] is the new
       // triangle whose horizon edge starts at a.
@@ -304,9 +360,11 @@ class Quickhull {
         tris_[u].nb[2] = t;
       }
 
-      for (std::uint32_t p : orphans_) assign(p, cone_);
+      distribute(eye, cone_);
+      for (std::uint32_t t : visible_) kill(t);
       for (std::uint32_t t : cone_)
-        if (tris_[t].head != none) pending_.push_back(t);
+        if (tris_[t].begin != tris_[t].end) pending_.push_back(t);
+      compact_pool();
     }
   }
 
@@ -403,14 +461,17 @@ class Quickhull {
   std::span<const Vec3> points_;
   std::uint32_t n_ = 0;
   std::vector<ApproxVec3> approx_;
-  std::vector<std::uint32_t> next_;  // conflict-list links, per point
+  std::vector<Conflict> pool_, spare_pool_;  // the conflict lists
+  std::uint32_t live_ = 0;                   // entries of pool_ in live lists
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sources_, moves_;
+  std::vector<std::uint32_t> count_, far_src_;
   std::vector<std::uint32_t> start_of_;
   std::vector<Triangle> tris_;
   std::vector<Vec3> normals_;  // per triangle slot, valid when has_normal
   std::vector<ApproxVec3> normal_approx_;
   std::vector<std::uint32_t> free_;
   std::vector<std::uint32_t> pending_;
-  std::vector<std::uint32_t> visible_, stack_, orphans_, cone_;
+  std::vector<std::uint32_t> visible_, stack_, cone_;
   std::vector<HorizonEdge> horizon_;
 };
 
