@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
 #include "cvms/quickhull.hpp"
 #include "support/oracle.hpp"
 
@@ -54,6 +55,19 @@ std::vector<Vec3> random_cloud(std::uint64_t seed, int n, Kind kind) {
   return pts;
 }
 
+// convex_hull (the trusted construction) gives a polyhedron that passes every
+// independent invariant check and describes the same solid as the soup, and
+// the checked construction from the soup accepts it unchanged.
+void expect_full_path(std::span<const Vec3> pts, const PolygonSoup& soup) {
+  ConvexPolyhedron p = convex_hull(pts);
+  ASSERT_EQ(test::check_invariants(p), "");
+  EXPECT_TRUE(p.is_convex());
+  EXPECT_TRUE(describe(p) == describe(soup)) << difference(describe(soup), describe(p));
+  ConvexPolyhedron checked = ConvexPolyhedron::from_soup(soup);
+  EXPECT_EQ(checked.num_vertices(), soup.points.size());
+  EXPECT_EQ(checked.num_facets(), soup.num_faces());
+}
+
 // The soup is a valid convex polyhedron, its points are input points (as the
 // source indices say), and it equals the brute-force hull.
 void expect_matches_brute_force(std::span<const Vec3> pts) {
@@ -65,6 +79,7 @@ void expect_matches_brute_force(std::span<const Vec3> pts) {
   Shape expected = brute_force_hull(pts);
   Shape actual = describe(soup);
   EXPECT_TRUE(expected == actual) << difference(expected, actual);
+  expect_full_path(pts, soup);
 }
 
 // Checks for clouds too big for brute force: a valid convex polyhedron
@@ -78,6 +93,7 @@ void expect_valid_hull_of(std::span<const Vec3> pts, const PolygonSoup& soup) {
   ASSERT_EQ(s.planes.size(), soup.num_faces());
   for (const Plane& pl : s.planes)
     for (const Vec3& p : input) ASSERT_LE(dot(pl.normal, p), pl.offset) << "an input point is above a facet";
+  expect_full_path(pts, soup);
 }
 
 TEST(HullSoup, RandomCloudsMatchBruteForce) {
@@ -200,6 +216,7 @@ TEST(HullSoup, GridIsACube) {
     EXPECT_EQ(s.vertices, corners);
     EXPECT_EQ(s.planes.size(), 6u);
     EXPECT_EQ(num_edges(soup), 12u);
+    expect_full_path(pts, soup);
   }
 }
 
@@ -223,6 +240,7 @@ TEST(HullSoup, ManyCoplanarPointsOnEachFace) {
     Shape s = describe(soup);
     EXPECT_EQ(s.vertices.size(), 8u);
     EXPECT_EQ(s.planes.size(), 6u);
+    expect_full_path(pts, soup);
   }
 }
 
@@ -245,6 +263,7 @@ TEST(HullSoup, PyramidWithManyPointsOnTheBase) {
   std::size_t biggest = 0;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) biggest = std::max(biggest, soup.face(f).size());
   EXPECT_EQ(biggest, circle);
+  expect_full_path(pts, soup);
 }
 
 std::vector<Vec3> sphere_points(long r2) {
@@ -362,10 +381,13 @@ TEST(HullSoup, TinyAndHugeCoordinates) {
   std::vector<Vec3> pts;
   for (const Vec3& c : signed_permutations(1, 1, 1)) pts.push_back(Vec3{huge, huge, huge} + tiny * c);
   pts.push_back({huge, huge, huge});
+  predicate_counters() = {};
   PolygonSoup soup = hull_soup(pts);
+  EXPECT_GT(predicate_counters().exact, 0u);  // the double filter cannot decide here
   ASSERT_EQ(check_soup_invariants(soup), "");
   EXPECT_EQ(soup.points.size(), 8u);
   EXPECT_EQ(soup.num_faces(), 6u);
+  expect_full_path(pts, soup);
 }
 
 }  // namespace
