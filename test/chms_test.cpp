@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <string>
@@ -163,6 +164,34 @@ TEST(Chms, RandomPairsMatchBruteForce) {
     ++checked;
   }
   EXPECT_GE(checked, 8);
+}
+
+TEST(Chms, CubePlusRoundedSphereCloud) {
+  // Too big for brute force: the sum must be a valid polyhedron whose
+  // vertices are pairwise sums and whose facet planes have every pairwise
+  // sum on or below them.
+  std::mt19937_64 rng(77);
+  std::normal_distribution<double> g;
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 300; ++i) {
+    double x = g(rng), y = g(rng), z = g(rng), r = std::sqrt(x * x + y * y + z * z);
+    pts.push_back({Rational(x / r), Rational(y / r), Rational(z / r)});
+  }
+  ConvexPolyhedron sphere = convex_hull(pts);
+  ConvexPolyhedron cube = convex_hull(signed_permutations(1, 1, 1));
+  ConvexPolyhedron sum = chms(cube, sphere);
+  ASSERT_EQ(check_invariants(sum), "");
+  auto sums = pairwise_sums(vertices(cube), vertices(sphere));
+  std::set<Vec3> all(sums.begin(), sums.end());
+  Shape s = describe(sum);
+  for (const Vec3& q : s.vertices) EXPECT_TRUE(all.count(q));
+  for (const auto& pl : s.planes)
+    for (const Vec3& q : sums) ASSERT_LE(dot(pl.normal, q), pl.offset);
+  // Each facet of the sum is parallel to a facet of an operand or spanned by
+  // an edge of each; the 6 cube directions always appear.
+  std::set<Vec3> normals;
+  for (const auto& pl : s.planes) normals.insert(pl.normal);
+  for (const Vec3& n : signed_permutations(0, 0, 1)) EXPECT_TRUE(normals.count(n));
 }
 
 }  // namespace
