@@ -39,7 +39,8 @@ std::vector<Vec3> geodesic_sphere_points(int k) {
   for (std::size_t i = 0; i < 12; ++i)
     for (std::size_t j = i + 1; j < 12; ++j)
       for (std::size_t l = j + 1; l < 12; ++l)
-        if (std::abs(dist2(i, j) - 4) < 1e-9 && std::abs(dist2(j, l) - 4) < 1e-9 && std::abs(dist2(i, l) - 4) < 1e-9)
+        if (std::abs(dist2(i, j) - 4) < 1e-9 && std::abs(dist2(j, l) - 4) < 1e-9 &&
+            std::abs(dist2(i, l) - 4) < 1e-9)
           tris.push_back({i, j, l});
   auto normalise = [](std::array<double, 3> v) {
     double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -78,7 +79,8 @@ cvms::ConvexPolyhedron cube() {
 
 void cube_plus_sphere(benchmark::State& state) {
   const cvms::ConvexPolyhedron a = cube();
-  const cvms::ConvexPolyhedron b = cvms::convex_hull(geodesic_sphere_points(static_cast<int>(state.range(0))));
+  const cvms::ConvexPolyhedron b =
+      cvms::convex_hull(geodesic_sphere_points(static_cast<int>(state.range(0))));
   cvms::predicate_counters() = {};
   cvms::ConvexPolyhedron sum;
   for (auto _ : state) sum = cvms::chms(a, b);
@@ -87,10 +89,12 @@ void cube_plus_sphere(benchmark::State& state) {
   state.counters["sum_V"] = sum.num_vertices();
   state.counters["sum_E"] = sum.num_edges();
   state.counters["sum_F"] = sum.num_facets();
-  state.counters["facets_per_second"] = benchmark::Counter(
-      static_cast<double>(sum.num_facets()) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["facets_per_second"] =
+      benchmark::Counter(static_cast<double>(sum.num_facets()) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
   state.counters["exact_rate"] =
-      c.filtered + c.exact == 0 ? 0.0 : static_cast<double>(c.exact) / static_cast<double>(c.filtered + c.exact);
+      c.filtered + c.exact == 0 ? 0.0
+                                : static_cast<double>(c.exact) / static_cast<double>(c.filtered + c.exact);
 }
 
 BENCHMARK(cube_plus_sphere)->Name("chms/cube+sphere")->DenseRange(1, 6)->Unit(benchmark::kMillisecond);

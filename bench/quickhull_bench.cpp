@@ -51,7 +51,8 @@ void hull(benchmark::State& state) {
   state.counters["predicates"] =
       benchmark::Counter(static_cast<double>(c.filtered + c.exact), benchmark::Counter::kAvgIterations);
   state.counters["exact_rate"] =
-      c.filtered + c.exact == 0 ? 0.0 : static_cast<double>(c.exact) / static_cast<double>(c.filtered + c.exact);
+      c.filtered + c.exact == 0 ? 0.0
+                                : static_cast<double>(c.exact) / static_cast<double>(c.filtered + c.exact);
 }
 
 void sizes(benchmark::internal::Benchmark* b) {

@@ -78,8 +78,8 @@ class Quickhull {
  public:
   explicit Quickhull(std::span<const Vec3> points) : points_(points) {
     if (points.size() >= none)
-      throw Error(ErrorCategory::limit, "convex hull: " + std::to_string(points.size()) +
-                                            " points exceed the limit of 2^32 - 2");
+      throw Error(ErrorCategory::limit,
+                  "convex hull: " + std::to_string(points.size()) + " points exceed the limit of 2^32 - 2");
     n_ = static_cast<std::uint32_t>(points.size());
     approx_.reserve(n_);
     for (const Vec3& p : points) approx_.push_back(ApproxVec3::of(p));
@@ -194,7 +194,9 @@ class Quickhull {
     free_.push_back(t);
   }
 
-  [[nodiscard]] Vec3Ref conflict_ref(std::uint32_t i) const { return {points_[pool_[i].point], pool_[i].approx}; }
+  [[nodiscard]] Vec3Ref conflict_ref(std::uint32_t i) const {
+    return {points_[pool_[i].point], pool_[i].approx};
+  }
 
   [[nodiscard]] Vec3Ref normal_ref(std::uint32_t t) {
     Triangle& tr = tris_[t];
@@ -400,7 +402,7 @@ class Quickhull {
       if (!tris_[seed].alive || group[seed] != none) continue;
       const std::uint32_t g = num_groups++;
       members.clear();
-      boundary.clear();  // pairs (triangle, edge index)
+      boundary.clear();              // pairs (triangle, edge index)
       std::uint32_t witness = none;  // a point strictly below the plane
       group[seed] = g;
       stack_.assign(1, seed);

@@ -41,13 +41,19 @@ std::vector<Vec3> random_cloud(std::uint64_t seed, int n, Kind kind) {
     Vec3 p;
     for (int k = 0; k < 3; ++k) {
       switch (kind) {
-        case Kind::small_integers: p[k] = Rational(static_cast<long>(rng() % 5) - 2); break;
-        case Kind::integers: p[k] = Rational(static_cast<long>(rng() % 2001) - 1000); break;
+        case Kind::small_integers:
+          p[k] = Rational(static_cast<long>(rng() % 5) - 2);
+          break;
+        case Kind::integers:
+          p[k] = Rational(static_cast<long>(rng() % 2001) - 1000);
+          break;
         case Kind::decimals:
           p[k] = Rational(static_cast<long>(rng() % 20001) - 10000, 10);
           p[k].canonicalize();  // gmpxx does not reduce p/q on construction
           break;
-        case Kind::doubles: p[k] = Rational(std::uniform_real_distribution<double>(-1.0, 1.0)(rng)); break;
+        case Kind::doubles:
+          p[k] = Rational(std::uniform_real_distribution<double>(-1.0, 1.0)(rng));
+          break;
       }
     }
     pts.push_back(p);
@@ -356,9 +362,15 @@ TEST(HullSoup, CoplanarInAxisAndSkewPlanes) {
     for (int i = 0; i < 100; ++i) {
       long a = r(), b = r();
       switch (plane) {
-        case 0: pts.push_back(v(a, b, 0)); break;  // xy
-        case 1: pts.push_back(v(a, 7, b)); break;  // xz (at y = 7)
-        case 2: pts.push_back(v(-3, a, b)); break;  // yz (at x = -3)
+        case 0:
+          pts.push_back(v(a, b, 0));
+          break;  // xy
+        case 1:
+          pts.push_back(v(a, 7, b));
+          break;  // xz (at y = 7)
+        case 2:
+          pts.push_back(v(-3, a, b));
+          break;   // yz (at x = -3)
         case 3: {  // x + 2y + 3z = 5
           Rational z(5 - a - 2 * b, 3);
           z.canonicalize();
