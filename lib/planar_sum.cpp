@@ -32,9 +32,9 @@ int half_turn(const Vec2& d) {
 }
 
 // Sign of angle(a) - angle(b) with angles taken in [0, 2pi); a, b nonzero.
-Sign compare_angle(const Vec2& a, const Vec2& b) {
-  int ha = half_turn(a);
-  int hb = half_turn(b);
+Sign compare_angle(Vec2Ref a, Vec2Ref b) {
+  int ha = half_turn(a.exact);
+  int hb = half_turn(b.exact);
   if (ha != hb) return ha < hb ? Sign::negative : Sign::positive;
   // Within one half-turn, b counterclockwise of a means angle(a) < angle(b),
   // and a zero cross product means the same direction (opposite ones lie in
@@ -43,10 +43,13 @@ Sign compare_angle(const Vec2& a, const Vec2& b) {
 }
 
 // One operand prepared for the merge: its lowest vertex and its edge vectors
-// in counterclockwise order starting there.
+// in counterclockwise order starting there, with their approximations
+// computed once for the predicate filters.
 struct Walk {
   std::uint32_t start = 0;
   std::vector<Vec2> edges;
+  std::vector<ApproxVec2> approx;
+  [[nodiscard]] Vec2Ref edge(std::size_t k) const { return {edges[k], approx[k]}; }
 };
 
 [[noreturn]] void fail(const char* operand, const std::string& what) {
@@ -77,11 +80,13 @@ Walk prepare(std::span<const Vec2> poly, const char* operand) {
     if (sgn(walk.edges.back().x) == 0 && sgn(walk.edges.back().y) == 0)
       fail(operand, "vertices " + std::to_string(i) + " and " + std::to_string(j) + " coincide");
   }
+  walk.approx.reserve(n);
+  for (const Vec2& e : walk.edges) walk.approx.push_back(ApproxVec2::of(e));
   // A segment's two edges d, -d are ordered automatically (d starts at the
   // lowest point, so it lies in [0, pi)); only polygons need the check.
   if (n >= 3) {
     for (std::uint32_t k = 0; k + 1 < n; ++k) {
-      if (compare_angle(walk.edges[k], walk.edges[k + 1]) != Sign::negative) {
+      if (compare_angle(walk.edge(k), walk.edge(k + 1)) != Sign::negative) {
         std::uint32_t v = (walk.start + k + 1) % n;
         fail(operand, "not strictly convex and counterclockwise at vertex " + std::to_string(v));
       }
@@ -111,7 +116,7 @@ std::vector<IndexPair> planar_sum_indices(std::span<const Vec2> p, std::span<con
     Sign order = Sign::zero;
     if (a == ep) order = Sign::positive;       // only q's edges left
     else if (b == eq) order = Sign::negative;  // only p's edges left
-    else order = compare_angle(wp.edges[a], wq.edges[b]);
+    else order = compare_angle(wp.edge(a), wq.edge(b));
     if (order != Sign::positive) { i = (i + 1) % np; ++a; }
     if (order != Sign::negative) { j = (j + 1) % nq; ++b; }
     if (a == ep && b == eq) break;  // back at the start

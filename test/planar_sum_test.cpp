@@ -271,6 +271,27 @@ TEST(PlanarSum, HugeAndTinyCoordinates) {
   expect_sum(needle, v2({{0, 0}, {1, 0}}));
 }
 
+TEST(PlanarSum, NearlyParallelEdgesBeyondDoublePrecision) {
+  // Edge directions (N+1, N), (N, N-1), (2N+2, 2N) with N = 2^60: the first
+  // two differ by an angle far below double resolution, the first and third
+  // are exactly parallel. Only exact decisions get all three sums right.
+  const Rational n(mpz_class(1) << 60);
+  const Rational one(1);
+  auto tri = [](const Rational& dx, const Rational& dy) {
+    return Poly{{Rational(0), Rational(0)}, {dx, dy}, {Rational(0), dy}};
+  };
+  Poly a = tri(n + one, n);
+  Poly b = tri(n, n - one);
+  Poly c = tri(2 * (n + one), 2 * n);
+  expect_sum(a, b);
+  expect_sum(a, c);
+  expect_sum(b, c);
+  expect_sum(a, negated(b));
+  EXPECT_EQ(planar_sum(a, c).size(), 3U);  // a and c are homothetic
+  EXPECT_EQ(planar_sum(a, b).size(), 4U);  // the near-parallel long edges stay apart
+  expect_sum(a, Poly{{Rational(0), Rational(0)}, {n, n - one}});
+}
+
 void expect_invalid(const Poly& p, const Poly& q, const std::string& fragment) {
   try {
     (void)planar_sum_indices(p, q);
