@@ -294,7 +294,7 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
   write_text("broken.off", "OFF\n4 4 0\n0 0 0\n1 0 zero\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
   expect_bad_input("check broken.off", "broken.off");
   Outcome parse = run("check broken.off");
-  EXPECT_NE(parse.err.find("4"), std::string::npos) << "line 4 not named: " << parse.err;
+  EXPECT_NE(parse.err.find("broken.off:4"), std::string::npos) << "line 4 not named: " << parse.err;
   expect_bad_input("sum cube.off broken.off -o s.off", "broken.off");
   EXPECT_FALSE(fs::exists(file("s.off")));
   // Missing file.

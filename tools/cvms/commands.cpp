@@ -65,6 +65,7 @@ const char* algorithm_name(Algorithm algorithm) noexcept {
 
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
+  check_output_directory(args.output);
   ConvexPolyhedron a = read_polyhedron(args.a);
   ConvexPolyhedron b = read_polyhedron(args.b);
   Timed sum = timed_sum(a, b, args.algorithm);
@@ -78,6 +79,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 }
 
 void run_hull(const HullArgs& args) {
+  check_output_directory(args.output);
   std::vector<Vec3> points = read_point_cloud(args.input);
   ConvexPolyhedron hull;
   try {
@@ -101,6 +103,7 @@ void run_gen(const GenArgs& args) {
   if (args.seed_given && s != "random") throw UsageError("--seed applies only to random");
   if (args.points != 0 && !counted) throw UsageError("--points applies only to random and prism");
 
+  check_output_directory(args.output);
   ConvexPolyhedron p;
   if (s == "tetrahedron") p = shapes::tetrahedron();
   else if (s == "cube") p = shapes::cube();

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -27,8 +28,13 @@ bool is_std_stream(const std::string& path) { return path == "-"; }
 }
 
 std::ifstream open_input(const std::string& path) {
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(ErrorCategory::io, path + ": cannot open: " + std::strerror(errno));
+  if (!in) {
+    int error = errno;
+    throw Error(ErrorCategory::io,
+                "cannot open '" + path + "'" + (error != 0 ? std::string(": ") + std::strerror(error) : ""));
+  }
   return in;
 }
 
@@ -38,9 +44,7 @@ std::string input_name(const std::string& path) { return is_std_stream(path) ? "
 
 PolygonSoup read_soup(const std::string& path) {
   if (is_std_stream(path)) return read_off(std::cin, input_name(path));
-  FileFormat format = format_from_extension(path);
-  std::ifstream in = open_input(path);
-  return read(in, format, path);
+  return read_file(path);
 }
 
 ConvexPolyhedron read_polyhedron(const std::string& path) { return to_polyhedron(read_soup(path), path); }
@@ -75,6 +79,14 @@ void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordi
   } catch (const Error& e) {
     rethrow_naming(e, path);
   }
+}
+
+void check_output_directory(const std::string& path) {
+  if (is_std_stream(path)) return;
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
+    throw Error(ErrorCategory::io, "cannot write '" + path + "': no directory '" + dir.string() + "'");
 }
 
 std::string check_mesh_path(const std::string& path) {

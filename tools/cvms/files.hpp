@@ -33,6 +33,10 @@ std::vector<Vec3> read_point_cloud(const std::string& path);
 /// Writes a polyhedron. \throw Error(io) naming the file if it cannot be written.
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates);
 
+/// Fails early, before a long computation, if the output's directory does
+/// not exist. \throw Error(io) naming the file.
+void check_output_directory(const std::string& path);
+
 /// Empty if path is "-" or ends in .off/.obj/.stl (any case), else a message;
 /// used as a CLI11 validator so a wrong extension is a usage error.
 std::string check_mesh_path(const std::string& path);

@@ -6,7 +6,6 @@
 
 #include <exception>
 #include <iostream>
-#include <map>
 #include <new>
 #include <string>
 
@@ -28,11 +27,16 @@ std::string one_line(std::string text) {
 
 const CLI::Validator mesh_path{cvms::cli::check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
 
-void add_algorithm_option(CLI::App& command, cvms::Algorithm& algorithm, const char* default_text) {
-  static const std::map<std::string, cvms::Algorithm> names = {
-      {"cvms", cvms::Algorithm::cvms}, {"essdms", cvms::Algorithm::essdms}, {"chms", cvms::Algorithm::chms}};
-  command.add_option("--algorithm", algorithm, "cvms, essdms or chms")
-      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case))
+CLI::Option* add_algorithm_option(CLI::App& command, cvms::Algorithm& algorithm, const char* default_text) {
+  return command
+      .add_option_function<std::string>(
+          "--algorithm",
+          [&algorithm](const std::string& name) {
+            for (cvms::Algorithm a : {cvms::Algorithm::cvms, cvms::Algorithm::essdms, cvms::Algorithm::chms})
+              if (name == cvms::cli::algorithm_name(a)) algorithm = a;
+          },
+          "cvms, essdms or chms")
+      ->transform(CLI::IsMember({"cvms", "essdms", "chms"}, CLI::ignore_case))
       ->default_str(default_text);
 }
 
@@ -48,7 +52,7 @@ int main(int argc, char** argv) {
   CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B");
   sum_cmd->add_option("A", sum.a, "first operand")->required()->check(mesh_path);
   sum_cmd->add_option("B", sum.b, "second operand")->required()->check(mesh_path);
-  sum_cmd->add_option("-o,--output", sum.output, "result file")->check(mesh_path)->default_str("-");
+  sum_cmd->add_option("-o,--output", sum.output, "result file (default -, OFF on stdout)")->check(mesh_path)->default_str("-");
   add_algorithm_option(*sum_cmd, sum.algorithm, default_algorithm);
   sum_cmd->add_flag("--float", sum.float_output, "round output coordinates to the nearest double");
   sum_cmd->add_flag("--stats", sum.stats, "print counts, time and algorithm statistics");
@@ -56,7 +60,7 @@ int main(int argc, char** argv) {
   HullArgs hull;
   CLI::App* hull_cmd = app.add_subcommand("hull", "exact convex hull of points");
   hull_cmd->add_option("POINTS", hull.input, "OFF/OBJ/STL vertices or one 'x y z' per line")->required();
-  hull_cmd->add_option("-o,--output", hull.output, "result file")->check(mesh_path)->default_str("-");
+  hull_cmd->add_option("-o,--output", hull.output, "result file (default -, OFF on stdout)")->check(mesh_path)->default_str("-");
   hull_cmd->add_flag("--float", hull.float_output, "round output coordinates to the nearest double");
 
   GenArgs gen;
@@ -71,7 +75,7 @@ int main(int argc, char** argv) {
   CLI::Option* seed_opt = gen_cmd->add_option("--seed", gen.seed, "seed of random");
   gen_cmd->add_option("--points", gen.points, "points of random (default 100), sides of prism (default 6)")
       ->check(CLI::Range(1, 10'000'000));
-  gen_cmd->add_option("-o,--output", gen.output, "result file")->check(mesh_path)->default_str("-");
+  gen_cmd->add_option("-o,--output", gen.output, "result file (default -, OFF on stdout)")->check(mesh_path)->default_str("-");
   gen_cmd->add_flag("--float", gen.float_output, "round output coordinates to the nearest double");
 
   std::string check_input;
@@ -80,9 +84,7 @@ int main(int argc, char** argv) {
 
   DemoArgs demo;
   CLI::App* demo_cmd = app.add_subcommand("demo", "Cube + Sphere4 with counts and time");
-  CLI::Option* demo_algorithm_opt = nullptr;
-  add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
-  demo_algorithm_opt = demo_cmd->get_option("--algorithm");
+  CLI::Option* demo_algorithm_opt = add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
 
   try {
     app.parse(argc, argv);
