@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <ostream>
 #include <random>
 #include <set>
 #include <string>
@@ -425,6 +426,180 @@ TEST(Box, RejectsEmptyOrFlatBoxes) {
     expect_error([&] { (void)shapes::box(lo, hi); }, ErrorCategory::degenerate);
     hi[axis] = -1;
     expect_error([&] { (void)shapes::box(lo, hi); }, ErrorCategory::degenerate);
+  }
+}
+
+
+// ---- polyhedra ------------------------------------------------------------------------
+
+using test::brute_force_hull;
+using test::check_invariants;
+using test::describe;
+using test::difference;
+
+struct Counts {
+  std::uint32_t v, e, f;
+  friend bool operator==(const Counts&, const Counts&) = default;
+};
+Counts counts(const ConvexPolyhedron& p) { return {p.num_vertices(), p.num_edges(), p.num_facets()}; }
+std::ostream& operator<<(std::ostream& out, const Counts& c) {
+  return out << c.v << "/" << c.e << "/" << c.f;
+}
+
+// Checks p against the brute-force hull of the points it is meant to be the
+// hull of, and its invariants.
+void expect_hull_of(const ConvexPolyhedron& p, const std::vector<Vec3>& points) {
+  EXPECT_EQ(check_invariants(p), "");
+  EXPECT_TRUE(p.is_convex());
+  test::Shape expected = brute_force_hull(points);
+  ASSERT_FALSE(expected.planes.empty());
+  test::Shape actual = describe(p);
+  EXPECT_TRUE(expected == actual) << difference(expected, actual);
+}
+
+std::vector<Vec3> sign_combinations(const Vec3& v) {
+  std::vector<Vec3> out;
+  for (int s = 0; s < 8; ++s) out.push_back({(s & 1) ? -v.x : v.x, (s & 2) ? -v.y : v.y, (s & 4) ? -v.z : v.z});
+  return out;
+}
+
+TEST(Platonic, TetrahedronIsTheHullOfItsFourAlternateCubeCorners) {
+  ConvexPolyhedron t = shapes::tetrahedron();
+  EXPECT_EQ(counts(t), (Counts{4, 6, 4}));
+  std::vector<Vec3> corners{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  expect_hull_of(t, corners);
+  // Planes by hand: x + y + z = -1 opposite (1,1,1), and its reflections.
+  std::set<test::Plane> planes{{{-1, -1, -1}, 1}, {{-1, 1, 1}, 1}, {{1, -1, 1}, 1}, {{1, 1, -1}, 1}};
+  EXPECT_TRUE(describe(t).planes == planes);
+}
+
+TEST(Platonic, CubeIsMinusOneOneCubed) {
+  ConvexPolyhedron c = shapes::cube();
+  EXPECT_EQ(counts(c), (Counts{8, 12, 6}));
+  expect_hull_of(c, sign_combinations({1, 1, 1}));
+}
+
+TEST(Platonic, OctahedronIsTheUnitCrossPolytope) {
+  ConvexPolyhedron o = shapes::octahedron();
+  EXPECT_EQ(counts(o), (Counts{6, 12, 8}));
+  std::vector<Vec3> points{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  expect_hull_of(o, points);
+  std::set<test::Plane> planes;
+  for (const Vec3& n : sign_combinations({1, 1, 1})) planes.insert({n, 1});
+  EXPECT_TRUE(describe(o).planes == planes);
+}
+
+TEST(Platonic, TruncatedCubeHasSixOctagonsAndEightTriangles) {
+  ConvexPolyhedron t = shapes::truncated_cube();
+  EXPECT_EQ(counts(t), (Counts{24, 36, 14}));
+  std::vector<Vec3> points;
+  for (const Vec3& v : {Vec3{Rational(1, 3), 1, 1}, Vec3{1, Rational(1, 3), 1}, Vec3{1, 1, Rational(1, 3)}})
+    for (const Vec3& w : sign_combinations(v)) points.push_back(w);
+  expect_hull_of(t, points);
+  std::set<test::Plane> planes;
+  for (const Vec3& n : sign_combinations({1, 1, 1})) planes.insert({n, Rational(7, 3)});
+  for (int a = 0; a < 3; ++a)
+    for (int s : {-1, 1}) {
+      Vec3 n{0, 0, 0};
+      n[a] = s;
+      planes.insert({n, 1});
+    }
+  EXPECT_TRUE(describe(t).planes == planes);
+  int octagons = 0, triangles = 0;
+  for (FaceId f : t.mesh().faces()) {
+    std::uint32_t d = t.mesh().degree(f);
+    octagons += d == 8;
+    triangles += d == 3;
+  }
+  EXPECT_EQ(octagons, 6);
+  EXPECT_EQ(triangles, 8);
+}
+
+TEST(Box, IsTheHullOfItsCorners) {
+  Vec3 lo{Rational(-1, 2), 3, -7}, hi{Rational(1, 3), 4, 100};
+  ConvexPolyhedron b = shapes::box(lo, hi);
+  EXPECT_EQ(counts(b), (Counts{8, 12, 6}));
+  std::vector<Vec3> corners;
+  for (int i = 0; i < 8; ++i) corners.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
+  expect_hull_of(b, corners);
+}
+
+TEST(Prism, IsTheHullOfTwoCirclePolygons) {
+  for (int n = 3; n <= 12; ++n) {
+    SCOPED_TRACE("n " + std::to_string(n));
+    ConvexPolyhedron p = shapes::prism(n, Rational(5, 2));
+    EXPECT_EQ(counts(p), (Counts{static_cast<std::uint32_t>(2 * n), static_cast<std::uint32_t>(3 * n),
+                                 static_cast<std::uint32_t>(n + 2)}));
+    std::vector<Vec3> points;
+    for (const Vec2& q : shapes::circle_polygon(n))
+      for (const Rational& z : {Rational(-5, 4), Rational(5, 4)}) points.push_back({q.x, q.y, z});
+    expect_hull_of(p, points);
+  }
+  ConvexPolyhedron big = shapes::prism(500, 1);
+  EXPECT_EQ(counts(big), (Counts{1000, 1500, 502}));
+  EXPECT_EQ(check_invariants(big), "");
+}
+
+TEST(RandomHull, IsTheBruteForceHullOfItsPoints) {
+  for (std::uint64_t seed : {1ULL, 2ULL, 3ULL, 99ULL}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_hull_of(shapes::random_hull(seed, 25, 100), shapes::random_points(seed, 25, 100));
+  }
+  // Tiny range: many coplanar and duplicate points.
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_hull_of(shapes::random_hull(seed, 12, 1), shapes::random_points(seed, 12, 1));
+  }
+}
+
+// ---- geodesic spheres ------------------------------------------------------------
+
+TEST(GeodesicSphere, LevelsOneAndTwoAreTheBruteForceHullOfTheirPoints) {
+  for (bool rotated : {false, true})
+    for (int k = 1; k <= 2; ++k) {
+      SCOPED_TRACE("k " + std::to_string(k) + " rotated " + std::to_string(rotated));
+      ConvexPolyhedron s = rotated ? shapes::rotated_geodesic_sphere(k) : shapes::geodesic_sphere(k);
+      expect_hull_of(s, geodesic_sphere_points(k, rotated));
+    }
+}
+
+TEST(GeodesicSphere, EveryPointIsAVertexAndCountsAreNearTheSubdivision) {
+  // All points are extreme (they are on the sphere up to 1e-16, and the
+  // subdivision's dihedral sag is far larger); rounding can only merge
+  // triangles into coplanar polygons or flip diagonals of nearly planar quads,
+  // so F <= 20 * 4^(k-1) and V - E + F = 2.
+  for (bool rotated : {false, true})
+    for (int k = 1; k <= 4; ++k) {
+      SCOPED_TRACE("k " + std::to_string(k) + " rotated " + std::to_string(rotated));
+      ConvexPolyhedron s = rotated ? shapes::rotated_geodesic_sphere(k) : shapes::geodesic_sphere(k);
+      std::vector<Vec3> points = geodesic_sphere_points(k, rotated);
+      std::set<Vec3> vertices;
+      for (VertexId v : s.mesh().vertices()) vertices.insert(s.vertex(v));
+      EXPECT_TRUE(vertices == std::set<Vec3>(points.begin(), points.end()));
+      const std::uint32_t triangles = 20u << (2 * (k - 1));
+      EXPECT_LE(s.num_facets(), triangles);
+      EXPECT_GE(s.num_facets(), triangles * 9 / 10);
+      EXPECT_EQ(s.euler_characteristic(), 2);
+      if (k <= 3) {
+        EXPECT_EQ(check_invariants(s), "");
+      }
+    }
+}
+
+// No facet normal of one sphere is parallel to one of the other, or on a
+// great circle through an edge's two facet normals (plain rational
+// arithmetic): the two Gaussian maps are in general position.
+TEST(GeodesicSphere, RotatedGaussianMapIsInGeneralPosition) {
+  for (int k = 1; k <= 2; ++k) {
+    SCOPED_TRACE("k " + std::to_string(k));
+    ConvexPolyhedron a = shapes::geodesic_sphere(k), b = shapes::rotated_geodesic_sphere(k);
+    for (auto [p, q] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+      for (FaceId f : p->mesh().faces()) {
+        const Vec3& n = p->normal(f);
+        for (FaceId g : q->mesh().faces()) ASSERT_FALSE(is_zero(cross(n, q->normal(g))));
+        for (EdgeId e : q->mesh().edges()) ASSERT_NE(sgn(dot(n, q->edge_vector(Mesh::halfedge(e)))), 0);
+      }
+    }
   }
 }
 
