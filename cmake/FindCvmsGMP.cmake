@@ -1,25 +1,126 @@
 # Finds GMP and its C++ layer gmpxx. Namespaced (CvmsGMP::) so it never
-# clashes with another project's FindGMP. Works with Debian's packages, vcpkg
-# and conan: pkg-config gives hints when available, then find_path /
-# find_library search the usual prefixes (CMAKE_PREFIX_PATH, toolchains).
+# clashes with another project's FindGMP. It is installed next to
+# cvmsConfig.cmake, which re-runs it for consumers.
 #
-# Result: CvmsGMP_FOUND, imported targets CvmsGMP::gmp and CvmsGMP::gmpxx
-# (gmpxx links gmp).
+# Search order, first hit wins:
+#   1. A CMake package config named gmp that defines gmp::gmpxx: what conan's
+#      CMakeDeps generates for conan-center's gmp (targets gmp::libgmp,
+#      gmp::gmpxx, gmp::gmp). Its targets are used as they are, so conan's
+#      static/shared and Debug/Release choices carry through.
+#   2. find_path / find_library, with pkg-config's gmp.pc and gmpxx.pc as
+#      hints when pkg-config is there. This covers Debian/Ubuntu packages,
+#      vcpkg (whose gmp config has no C++ target; its toolchain puts the
+#      installed tree on CMAKE_PREFIX_PATH), Homebrew, a hand-built GMP in
+#      CMAKE_PREFIX_PATH or GMP_ROOT / CvmsGMP_ROOT, and conan without
+#      CMakeDeps (CMakeToolchain puts the package folders on
+#      CMAKE_LIBRARY_PATH / CMAKE_INCLUDE_PATH).
+#
+# Input:
+#   CvmsGMP_USE_STATIC_LIBS  ON: only accept static libgmp.a/libgmpxx.a (for
+#                            fully static executables). Ignored when the
+#                            conan targets are used.
+#   CvmsGMP_NO_CONFIG        ON: skip step 1.
+# Result:
+#   CvmsGMP_FOUND, CvmsGMP_VERSION (from gmp.h when it can be read),
+#   CvmsGMP_FROM_CONFIG (TRUE when step 1 supplied the targets),
+#   imported targets CvmsGMP::gmp and CvmsGMP::gmpxx (gmpxx links gmp).
 include(FindPackageHandleStandardArgs)
 
+# 1. conan's CMakeDeps config. Not probed under vcpkg: vcpkg's gmp config
+# defines only the C library and aborts configuration (find_library
+# REQUIRED) on release-only triplets. Not loaded twice either.
+if(NOT TARGET CvmsGMP::gmpxx AND NOT CvmsGMP_NO_CONFIG)
+  if(NOT TARGET gmp::gmpxx AND NOT TARGET gmp::gmp AND NOT VCPKG_TOOLCHAIN)
+    find_package(gmp CONFIG QUIET)
+  endif()
+  if(TARGET gmp::gmpxx)
+    add_library(CvmsGMP::gmpxx INTERFACE IMPORTED)
+    set_target_properties(CvmsGMP::gmpxx PROPERTIES INTERFACE_LINK_LIBRARIES gmp::gmpxx)
+    if(NOT TARGET CvmsGMP::gmp)
+      add_library(CvmsGMP::gmp INTERFACE IMPORTED)
+      if(TARGET gmp::libgmp)
+        set_target_properties(CvmsGMP::gmp PROPERTIES INTERFACE_LINK_LIBRARIES gmp::libgmp)
+      else()
+        set_target_properties(CvmsGMP::gmp PROPERTIES INTERFACE_LINK_LIBRARIES gmp::gmp)
+      endif()
+    endif()
+    set(CvmsGMP_FROM_CONFIG TRUE)
+    if(gmp_DIR)
+      set(CvmsGMP_CONFIG_SOURCE "${gmp_DIR}")
+    else()
+      set(CvmsGMP_CONFIG_SOURCE "gmp::gmpxx")
+    endif()
+  endif()
+endif()
+if(CvmsGMP_FROM_CONFIG)
+  set(CvmsGMP_VERSION "${gmp_VERSION}")
+  find_package_handle_standard_args(CvmsGMP REQUIRED_VARS CvmsGMP_CONFIG_SOURCE VERSION_VAR CvmsGMP_VERSION)
+  return()
+endif()
+
+# 2. pkg-config hints, then the usual search.
 find_package(PkgConfig QUIET)
 if(PKG_CONFIG_FOUND)
   pkg_check_modules(PC_CVMS_GMP QUIET gmp)
   pkg_check_modules(PC_CVMS_GMPXX QUIET gmpxx)
 endif()
 
-find_path(CvmsGMP_INCLUDE_DIR NAMES gmp.h HINTS ${PC_CVMS_GMP_INCLUDE_DIRS})
-find_path(CvmsGMP_GMPXX_INCLUDE_DIR NAMES gmpxx.h HINTS ${PC_CVMS_GMPXX_INCLUDE_DIRS} ${CvmsGMP_INCLUDE_DIR})
-find_library(CvmsGMP_LIBRARY NAMES gmp libgmp HINTS ${PC_CVMS_GMP_LIBRARY_DIRS})
-find_library(CvmsGMP_GMPXX_LIBRARY NAMES gmpxx libgmpxx HINTS ${PC_CVMS_GMPXX_LIBRARY_DIRS})
+set(_cvms_gmp_roots ${CvmsGMP_ROOT} $ENV{CvmsGMP_ROOT} ${GMP_ROOT} $ENV{GMP_ROOT})
+
+find_path(CvmsGMP_INCLUDE_DIR NAMES gmp.h
+  HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMP_INCLUDEDIR} ${PC_CVMS_GMP_INCLUDE_DIRS}
+  PATH_SUFFIXES include)
+find_path(CvmsGMP_GMPXX_INCLUDE_DIR NAMES gmpxx.h
+  HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMPXX_INCLUDEDIR} ${PC_CVMS_GMPXX_INCLUDE_DIRS} ${CvmsGMP_INCLUDE_DIR}
+  PATH_SUFFIXES include)
+
+if(CvmsGMP_USE_STATIC_LIBS)
+  set(_cvms_gmp_suffixes ${CMAKE_FIND_LIBRARY_SUFFIXES})
+  if(WIN32)
+    set(CMAKE_FIND_LIBRARY_SUFFIXES .lib .a)
+  else()
+    set(CMAKE_FIND_LIBRARY_SUFFIXES .a)
+  endif()
+endif()
+# vcpkg's and MSVC builds name the import library gmp.lib or libgmp.lib.
+find_library(CvmsGMP_LIBRARY NAMES gmp libgmp NAMES_PER_DIR
+  HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMP_LIBDIR} ${PC_CVMS_GMP_LIBRARY_DIRS}
+  PATH_SUFFIXES lib)
+find_library(CvmsGMP_GMPXX_LIBRARY NAMES gmpxx libgmpxx NAMES_PER_DIR
+  HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMPXX_LIBDIR} ${PC_CVMS_GMPXX_LIBRARY_DIRS}
+  PATH_SUFFIXES lib)
+if(CvmsGMP_USE_STATIC_LIBS)
+  set(CMAKE_FIND_LIBRARY_SUFFIXES ${_cvms_gmp_suffixes})
+  unset(_cvms_gmp_suffixes)
+endif()
+unset(_cvms_gmp_roots)
+
+# The version gmp.h declares (the same header gmpxx.h includes).
+if(CvmsGMP_INCLUDE_DIR AND EXISTS "${CvmsGMP_INCLUDE_DIR}/gmp.h")
+  file(STRINGS "${CvmsGMP_INCLUDE_DIR}/gmp.h" _cvms_gmp_version_lines
+    REGEX "^#define[ \t]+__GNU_MP_VERSION(_MINOR|_PATCHLEVEL)?[ \t]+[0-9]+")
+  set(_cvms_gmp_parts "")
+  foreach(_part IN ITEMS "" _MINOR _PATCHLEVEL)
+    foreach(_line IN LISTS _cvms_gmp_version_lines)
+      if(_line MATCHES "__GNU_MP_VERSION${_part}[ \t]+([0-9]+)")
+        list(APPEND _cvms_gmp_parts "${CMAKE_MATCH_1}")
+      endif()
+    endforeach()
+  endforeach()
+  list(LENGTH _cvms_gmp_parts _cvms_gmp_count)
+  if(_cvms_gmp_count EQUAL 3)
+    list(JOIN _cvms_gmp_parts "." CvmsGMP_VERSION)
+  endif()
+  unset(_cvms_gmp_version_lines)
+  unset(_cvms_gmp_parts)
+  unset(_cvms_gmp_count)
+elseif(PC_CVMS_GMP_VERSION)
+  set(CvmsGMP_VERSION "${PC_CVMS_GMP_VERSION}")
+endif()
 
 find_package_handle_standard_args(CvmsGMP
-  REQUIRED_VARS CvmsGMP_LIBRARY CvmsGMP_GMPXX_LIBRARY CvmsGMP_INCLUDE_DIR CvmsGMP_GMPXX_INCLUDE_DIR)
+  REQUIRED_VARS CvmsGMP_LIBRARY CvmsGMP_GMPXX_LIBRARY CvmsGMP_INCLUDE_DIR CvmsGMP_GMPXX_INCLUDE_DIR
+  VERSION_VAR CvmsGMP_VERSION)
 
 if(CvmsGMP_FOUND)
   if(NOT TARGET CvmsGMP::gmp)

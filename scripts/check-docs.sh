@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Runs doxygen over the public headers (Doxyfile: include/cvms) and reports
+# every undocumented public declaration or documentation error.
+#
+# Installs doxygen with apt-get when it is missing and we are root; otherwise
+# skips with a note. Reports but does not fail, unless CVMS_DOCS_STRICT=1:
+# then any warning fails the check. HTML goes to build/docs/html.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if ! command -v doxygen >/dev/null; then
+  if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null; then
+    echo "cvms: installing doxygen" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends doxygen >/dev/null
+  else
+    echo "docs: doxygen not installed, check skipped (sudo apt-get install -y doxygen)"
+    [ "${CVMS_DOCS_STRICT:-0}" = 1 ] && exit 1
+    exit 0
+  fi
+fi
+
+mkdir -p build/docs
+log=build/docs/warnings.log
+rm -f "$log"
+# The script decides about failing, so doxygen itself must not stop early.
+status=0
+{ cat Doxyfile; echo "WARN_AS_ERROR = NO"; } | doxygen - >build/docs/doxygen.out 2>&1 || status=$?
+if [ "$status" -ne 0 ]; then
+  echo "docs: doxygen failed (exit $status):"
+  cat build/docs/doxygen.out
+  exit 1
+fi
+
+# doxygen 1.9.4 reports "Internal inconsistency: scope for class std::hash<...>"
+# for std::hash specialisations written as `struct std::hash<T>`; not ours to
+# document (EXCLUDE_SYMBOLS hides the rest of std).
+warnings=$(grep -v "Internal inconsistency: scope for class std::" "$log" | sed "s|^$PWD/||" || true)
+count=0
+[ -n "$warnings" ] && count=$(printf '%s\n' "$warnings" | wc -l)
+
+if [ "$count" -eq 0 ]; then
+  echo "docs: every public declaration in include/cvms is documented"
+  exit 0
+fi
+echo "docs: $count doxygen warnings in include/cvms (undocumented or malformed docs); per header:"
+printf '%s\n' "$warnings" | sed -n 's/^\(include\/cvms\/[^:]*\):.*/\1/p' | sort | uniq -c | sed 's/^/  /'
+if [ "${CVMS_DOCS_STRICT:-0}" = 1 ]; then
+  printf '%s\n' "$warnings" | sed 's/^/  /'
+  echo "docs: FAILED (CVMS_DOCS_STRICT=1)"
+  exit 1
+fi
+echo "  first ones (all: $log, or CVMS_DOCS_STRICT=1 scripts/check-docs.sh):"
+printf '%s\n' "$warnings" | sed -n '1,25s/^/    /p'
+echo "docs: reported only; set CVMS_DOCS_STRICT=1 to fail on these"
