@@ -1,16 +1,58 @@
 // SPDX-License-Identifier: MIT
+// Approx::of: the double of a rational with a proven error bound, without
+// allocating (the plain-vector predicates call it on every evaluation).
 #include "cvms/approx.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "exact_double.hpp"
 
 namespace cvms {
 
 Approx Approx::of(const Rational& q) noexcept {
-  // mpq_get_d truncates toward zero: |q - d| < ulp(d) <= |d| 2^-52 for normal
-  // d, and < 2^-1074 in the subnormal range; the sum bounds both.
+  // mpq_get_d truncates toward zero (GMP manual; subnormals included, and
+  // an exponent beyond the double range gives infinity). So q lies strictly
+  // between d and the next double away from zero: |q - d| < ulp(d), where
+  // ulp(d) = 2^(e-52) for 2^e <= |d| < 2^(e+1), e >= -1022, and 2^-1074 for
+  // subnormal d. fl(|d| 2^-52) >= 2^(e-52) (the exact product is at least
+  // that, and 2^(e-52) is a double, so rounding cannot go below it), and
+  // adding 2^-1074 covers the subnormal case; rounding of the sum is
+  // monotone, so error >= ulp(d) > |q - d|.
+  mpz_srcptr num = q.get_num_mpz_t();
+  mpz_srcptr den = q.get_den_mpz_t();
+  // Fast path, all inline: one-limb numerator and power-of-two one-limb
+  // denominator (every double of moderate magnitude). A numerator of at most
+  // 53 significant bits converts exactly, and scaling by 2^-k (k < 64, a
+  // normal double) is then exact too.
+  if (mpz_size(den) == 1 && mpz_size(num) <= 1) {
+    mp_limb_t den_limb = mpz_getlimbn(den, 0);
+    mp_limb_t num_limb = mpz_getlimbn(num, 0);  // 0 when q == 0
+    if (std::has_single_bit(den_limb) &&
+        (num_limb == 0 || std::bit_width(num_limb) - std::countr_zero(num_limb) <= 53)) {
+      int k = std::countr_zero(den_limb);
+      double scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - k) << 52);
+      double m = static_cast<double>(num_limb) * scale;
+      return {mpz_sgn(num) < 0 ? -m : m, 0.0};
+    }
+  }
+  // Second fast path: a fraction of two integers below 2^53 (small decimals
+  // like 0.1 = 1/10). Both convert exactly, the quotient is rounded to
+  // nearest once, and |q| > 2^-64 is normal, so |fl(n/d) - q| <= u |fl(n/d)|
+  // (Higham, 2.5): the bound |value| 2^-53 is exact and sufficient.
+  if (mpz_size(den) == 1 && mpz_size(num) == 1) {
+    mp_limb_t den_limb = mpz_getlimbn(den, 0);
+    mp_limb_t num_limb = mpz_getlimbn(num, 0);
+    if (std::bit_width(num_limb) <= 53 && std::bit_width(den_limb) <= 53) {
+      double v = static_cast<double>(num_limb) / static_cast<double>(den_limb);
+      return {mpz_sgn(num) < 0 ? -v : v, v * 0x1p-53};
+    }
+  }
+  if (is_double_exact_fast(q)) return {q.get_d(), 0.0};  // truncation of a double is itself
   double d = q.get_d();
-  if (!std::isfinite(d)) return {d, INFINITY};
-  if (cmp(Rational(d), q) == 0) return {d, 0.0};
+  if (!std::isfinite(d)) return {d, std::numeric_limits<double>::infinity()};
   return {d, std::fabs(d) * 0x1p-52 + 0x1p-1074};
 }
 

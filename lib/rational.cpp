@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "cvms/error.hpp"
+#include "exact_double.hpp"
 
 namespace cvms {
 namespace {
@@ -69,7 +70,11 @@ std::optional<Rational> try_parse_rational(std::string_view text, long max_expon
     digits.append(text.substr(frac_start, i - frac_start));
   }
   if (!has_int && !has_frac) return std::nullopt;
+  // The exponent is accumulated saturating at max_exponent + 1, so that no
+  // digit string (and no max_exponent up to LONG_MAX) can overflow it.
+  if (max_exponent < 0) max_exponent = 0;
   long exponent = 0;
+  bool exponent_too_big = false;
   if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
     ++i;
     bool exp_negative = false;
@@ -79,23 +84,29 @@ std::optional<Rational> try_parse_rational(std::string_view text, long max_expon
     }
     std::size_t exp_start = i;
     while (i < text.size() && is_digit(text[i])) {
-      // Saturate instead of overflowing; anything beyond the cap is rejected below.
-      if (exponent <= max_exponent) exponent = exponent * 10 + (text[i] - '0');
+      long digit = text[i] - '0';
+      if (exponent > max_exponent / 10 || exponent * 10 > max_exponent - digit)
+        exponent_too_big = true;
+      else
+        exponent = exponent * 10 + digit;
       ++i;
     }
     if (i == exp_start) return std::nullopt;
     if (exp_negative) exponent = -exponent;
   }
   if (i != text.size()) return std::nullopt;
-  if (exponent > max_exponent || exponent < -max_exponent) return std::nullopt;
+  if (exponent_too_big) return std::nullopt;
 
   mpz_class mantissa;
   if (!parse_digits(digits, mantissa)) return std::nullopt;
   if (negative) mantissa = -mantissa;
-  long scale = exponent - frac_len;  // value = mantissa * 10^scale
+  // value = mantissa * 10^scale. |exponent| <= max_exponent and frac_len is
+  // bounded by the text length, so this cannot overflow; a negative scale
+  // costs memory proportional to the text plus max_exponent, which is the
+  // bound we promise.
+  if (exponent <= std::numeric_limits<long>::min() + frac_len) return std::nullopt;  // absurd max_exponent
+  long scale = exponent - frac_len;
   if (mantissa == 0) return Rational(0);
-  if (scale > max_exponent || scale < -(max_exponent + static_cast<long>(digits.size())))
-    return std::nullopt;
   mpz_class power;
   mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));
   Rational r = scale >= 0 ? Rational(mantissa * power) : Rational(mantissa, power);
@@ -140,30 +151,26 @@ std::string to_string(const Rational& value) {
 }
 
 double to_double_nearest(const Rational& value) {
-  double truncated = value.get_d();  // rounds toward zero
-  if (std::isinf(truncated)) return truncated;
-  if (is_double_exact(value)) return truncated;
+  double truncated = value.get_d();  // rounds toward zero; infinity beyond the range
+  if (std::isinf(truncated) || is_double_exact(value)) return truncated;
+  // A negative value that rounds to zero is -0, as IEEE rounding gives.
+  if (truncated == 0.0) truncated = std::copysign(0.0, static_cast<double>(sgn(value)));
   double away = std::nextafter(truncated, sgn(value) > 0 ? std::numeric_limits<double>::infinity()
                                                          : -std::numeric_limits<double>::infinity());
-  if (std::isinf(away)) {
-    // Between DBL_MAX and infinity: nearest is DBL_MAX unless beyond DBL_MAX + ulp/2.
-    Rational half_ulp_above = Rational(truncated) + Rational(truncated - std::nextafter(truncated, 0.0)) / 2;
-    return abs(value) >= abs(half_ulp_above) ? away : truncated;
-  }
-  Rational to_truncated = abs(value - Rational(truncated));
-  Rational to_away = abs(Rational(away) - value);
-  int c = cmp(to_truncated, to_away);
+  // The candidates are truncated and away; when away is infinite the
+  // midpoint is DBL_MAX + ulp(DBL_MAX)/2 = 2^1024 - 2^970, and at the tie
+  // IEEE rounds to infinity (DBL_MAX's significand is odd).
+  Rational upper =
+      std::isinf(away) ? Rational(truncated) * 2 - Rational(std::nextafter(truncated, 0.0)) : Rational(away);
+  Rational midpoint = (Rational(truncated) + upper) / 2;
+  int c = cmp(abs(value), abs(midpoint));
   if (c < 0) return truncated;
   if (c > 0) return away;
   // Tie: the one whose significand is even (last bit of the encoding zero,
-  // which also holds for subnormals).
+  // which also holds for subnormals and for the overflow case above).
   return (std::bit_cast<std::uint64_t>(truncated) & 1u) == 0 ? truncated : away;
 }
 
-bool is_double_exact(const Rational& value) {
-  double d = value.get_d();
-  if (!std::isfinite(d)) return false;
-  return cmp(Rational(d), value) == 0;
-}
+bool is_double_exact(const Rational& value) { return is_double_exact_fast(value); }
 
 }  // namespace cvms

@@ -1,12 +1,28 @@
 // SPDX-License-Identifier: MIT
+// Exact parsing, printing and double conversion of rationals, against
+// independent constructions (integer arithmetic, exact midpoints between
+// consecutive doubles).
 #include "cvms/rational.hpp"
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cfloat>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
 #include "cvms/error.hpp"
+#include "support/random_numbers.hpp"
 
 namespace cvms {
 namespace {
+
+using test::fraction;
+using test::power_of_ten;
+using test::power_of_two;
 
 TEST(Rational, DecimalIsExact) {
   EXPECT_EQ(parse_rational("0.1"), Rational(1, 10));
@@ -20,25 +36,296 @@ TEST(Rational, DecimalIsExact) {
   EXPECT_EQ(tiny, Rational(mpz_class(1), den));
 }
 
+TEST(Rational, ParsesEveryForm) {
+  struct Case {
+    const char* text;
+    Rational expected;
+  };
+  const Case cases[] = {
+      {"0", 0},
+      {"-0", 0},
+      {"+0", 0},
+      {"12", 12},
+      {"-12", -12},
+      {"+12", 12},
+      {"00012", 12},
+      {"0.1", fraction(1, 10)},
+      {"-0.1", fraction(-1, 10)},
+      {"+0.1", fraction(1, 10)},
+      {".5", fraction(1, 2)},
+      {"+.5", fraction(1, 2)},
+      {"-.5", fraction(-1, 2)},
+      {"5.", 5},
+      {"-5.", -5},
+      {"1e3", 1000},
+      {"1E3", 1000},
+      {"1e+3", 1000},
+      {"1e-3", fraction(1, 1000)},
+      {"-2.5E+7", -25000000},
+      {".5e1", 5},
+      {"5.e-1", fraction(1, 2)},
+      {"0012.500", fraction(25, 2)},
+      {"1e0000000000000000000000003", 1000},  // leading zeros of the exponent are fine
+      {"0e5", 0},
+      {"0.000e-7", 0},
+      {"6/4", fraction(3, 2)},
+      {"-6/4", fraction(-3, 2)},
+      {"+6/4", fraction(3, 2)},
+      {"0/7", 0},
+      {"-0/7", 0},
+      {"007/014", fraction(1, 2)},
+      {"123456789012345678901234567890", Rational(mpz_class("123456789012345678901234567890"))},
+      {"1/123456789012345678901234567890", fraction(1, mpz_class("123456789012345678901234567890"))},
+      {"3.14159265358979323846264338327950288", fraction(mpz_class("314159265358979323846264338327950288"),
+                                                         mpz_class("100000000000000000000000000000000000"))},
+      {"1e-300", power_of_ten(-300)},
+      {"-1.5e300", Rational(-15) * power_of_ten(299)},
+      {"4.9406564584124654e-324", Rational(49406564584124654) * power_of_ten(-340)},
+  };
+  for (const Case& c : cases) {
+    std::optional<Rational> r = try_parse_rational(c.text);
+    ASSERT_TRUE(r.has_value()) << c.text;
+    EXPECT_EQ(*r, c.expected) << c.text;
+    EXPECT_EQ(parse_rational(c.text), c.expected) << c.text;
+  }
+}
+
+TEST(Rational, ExponentLimits) {
+  EXPECT_EQ(try_parse_rational("1e5", 5), Rational(100000));
+  EXPECT_EQ(try_parse_rational("1e-5", 5), fraction(1, 100000));
+  EXPECT_FALSE(try_parse_rational("1e6", 5).has_value());
+  EXPECT_FALSE(try_parse_rational("1e-6", 5).has_value());
+  EXPECT_FALSE(try_parse_rational("0e6", 5).has_value());  // the limit is on the text, whatever the value
+  EXPECT_TRUE(try_parse_rational("1e100000").has_value());
+  EXPECT_TRUE(try_parse_rational("1e-100000").has_value());
+  EXPECT_FALSE(try_parse_rational("1e100001").has_value());
+  EXPECT_FALSE(try_parse_rational("1e-100001").has_value());
+  EXPECT_FALSE(try_parse_rational("1e999999999999999999999999999999").has_value());
+  // No overflow even when the caller allows everything (UBSan checks this).
+  EXPECT_FALSE(try_parse_rational("1e999999999999999999999999999999", LONG_MAX).has_value());
+  EXPECT_FALSE(try_parse_rational("0.5e-9223372036854775807", LONG_MAX).has_value());
+  EXPECT_FALSE(try_parse_rational("1e9223372036854775808", LONG_MAX).has_value());
+  EXPECT_EQ(try_parse_rational("2.5e1", LONG_MAX), Rational(25));
+  // A negative limit means no exponent at all.
+  EXPECT_EQ(try_parse_rational("1e0", -3), Rational(1));
+  EXPECT_FALSE(try_parse_rational("1e1", -3).has_value());
+}
+
 TEST(Rational, RejectsJunk) {
-  for (const char* bad : {"", "-", ".", "e5", "1e", "1/0", "nan", "inf", "1.2.3", "1 ", "0x10", "1e999999999"})
+  for (const char* bad :
+       {"",      "-",    "+",    ".",        "+.",    "-.",    "e",    "e5",  "1e",    "1e+",   "1e-",
+        "1.2.3", "1..2", " 1",   "1 ",       "1,5",   "0x10",  "nan",  "NaN", "inf",   "-inf",  "1/0",
+        "1/",    "/2",   "1/-2", "1/+2",     "1.5/2", "1/2/3", "--1",  "+-1", "1e5.5", "1e5e5", "1_000",
+        "1e 5",  "1/ 2", "- 1",  "Infinity", "1d5",   "1f",    "1.0.", "١"})
     EXPECT_FALSE(try_parse_rational(bad).has_value()) << bad;
-  EXPECT_THROW(parse_rational("abc"), Error);
+  EXPECT_FALSE(try_parse_rational(std::string_view("1\0", 2)).has_value());
+  try {
+    parse_rational("abc");
+    FAIL() << "no exception";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::parse);
+    EXPECT_NE(std::string(e.what()).find("abc"), std::string::npos);
+  }
+  try {
+    parse_rational(std::string(200, '7') + "x");
+    FAIL() << "no exception";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::parse);
+    EXPECT_LT(std::string(e.what()).size(), 150u);  // the echoed text is shortened
+  }
 }
 
 TEST(Rational, PrintsExactDecimalOrFraction) {
-  EXPECT_EQ(to_string(Rational(1, 10)), "0.1");
-  EXPECT_EQ(to_string(Rational(-5, 2)), "-2.5");
-  EXPECT_EQ(to_string(Rational(1, 3)), "1/3");
-  EXPECT_EQ(to_string(Rational(12)), "12");
-  EXPECT_EQ(to_string(Rational(1, 1000000)), "0.000001");
+  struct Case {
+    Rational value;
+    const char* text;
+  };
+  const Case cases[] = {
+      {0, "0"},
+      {fraction(1, 10), "0.1"},
+      {fraction(-5, 2), "-2.5"},
+      {fraction(-1, 2), "-0.5"},
+      {fraction(1, 3), "1/3"},
+      {fraction(-1, 3), "-1/3"},
+      {fraction(1, 6), "1/6"},
+      {fraction(22, 7), "22/7"},
+      {12, "12"},
+      {-12, "-12"},
+      {fraction(1, 1000000), "0.000001"},
+      {fraction(1, 8), "0.125"},
+      {fraction(1, 1024), "0.0009765625"},
+      {fraction(3, 20), "0.15"},
+      {fraction(7, 5), "1.4"},
+      {fraction(123, 100), "1.23"},
+      {fraction(-100001, 1000), "-100.001"},
+      {Rational(1000000) * 1000000, "1000000000000"},
+  };
+  for (const Case& c : cases) EXPECT_EQ(to_string(c.value), c.text);
+  // The smallest subnormal: 1074 decimal places, no exponent.
+  std::string s = to_string(Rational(5e-324));
+  EXPECT_EQ(s.size(), 1076u);
+  EXPECT_EQ(s.substr(0, 2), "0.");
+  EXPECT_EQ(s.substr(2 + 323, 10), "4940656458");
+  EXPECT_EQ(parse_rational(s), Rational(5e-324));
+}
+
+// Builds the decimal text of m * 10^-places by hand (the oracle for printing).
+std::string decimal_text(mpz_class m, unsigned places) {
+  bool negative = m < 0;
+  if (negative) m = -m;
+  std::string digits = m.get_str();
+  if (places > 0) {
+    if (digits.size() <= places) digits.insert(0, places + 1 - digits.size(), '0');
+    digits.insert(digits.size() - places, 1, '.');
+  }
+  return negative ? "-" + digits : digits;
+}
+
+TEST(Rational, DecimalTextRoundTrips) {
+  test::Rng rng(3);
+  for (int i = 0; i < 5000; ++i) {
+    mpz_class m = test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 120));
+    unsigned places = static_cast<unsigned>(rng() % 40);
+    if (places > 0 && m % 10 == 0) m += (m < 0 ? -1 : 1);  // canonical text has no trailing zero
+    if (m == 0) places = 0;
+    std::string text = decimal_text(m, places);
+    SCOPED_TRACE(text);
+    Rational q = parse_rational(text);
+    ASSERT_EQ(q, Rational(m) * power_of_ten(-static_cast<long>(places)));
+    ASSERT_EQ(to_string(q), text);
+    // Other spellings of the same number parse to the same value.
+    ASSERT_EQ(parse_rational(text + (places > 0 ? "000e0" : ".000e0")), q) << "trailing zeros";
+    ASSERT_EQ(parse_rational(m.get_str() + "e-" + std::to_string(places)), q);
+  }
+}
+
+TEST(Rational, AnyRationalRoundTripsThroughText) {
+  test::Rng rng(4);
+  for (int i = 0; i < 5000; ++i) {
+    Rational q = test::random_rational(rng);
+    std::string text = to_string(q);
+    ASSERT_EQ(parse_rational(text), q) << text.substr(0, 100);
+    // A finite decimal exactly when the denominator is 2^a 5^b.
+    mpz_class den = q.get_den();
+    while (den % 2 == 0) den /= 2;
+    while (den % 5 == 0) den /= 5;
+    ASSERT_EQ(text.find('/') == std::string::npos, den == 1) << text.substr(0, 100);
+    if (text.find('.') != std::string::npos) {
+      ASSERT_NE(text.back(), '0');  // shortest decimal
+      ASSERT_NE(text.back(), '.');
+    }
+  }
 }
 
 TEST(Rational, DoubleRoundTrip) {
-  for (double d : {0.1, -1e300, 5e-324, 1.0 / 3.0, 123456789.125}) {
+  for (double d : {0.1, -1e300, 5e-324, 1.0 / 3.0, 123456789.125, DBL_MAX, -DBL_MAX, DBL_MIN, -DBL_MIN,
+                   DBL_MIN / 3, -5e-324, 0.0}) {
     Rational q = rational_from_double(d);
     EXPECT_EQ(to_double_nearest(q), d);
+    EXPECT_TRUE(is_double_exact(q));
     EXPECT_EQ(parse_rational(to_string(q)), q);
+  }
+  test::Rng rng(5);
+  for (int i = 0; i < 20000; ++i) {
+    double d = test::random_double_bits(rng);
+    Rational q = rational_from_double(d);
+    ASSERT_EQ(to_double_nearest(q), d) << d;
+    ASSERT_TRUE(is_double_exact(q)) << d;
+    if (i % 10 == 0) {
+      ASSERT_EQ(parse_rational(to_string(q)), q) << d;
+    }
+  }
+  for (int i = 0; i < 2000; ++i) {
+    float f = std::bit_cast<float>(static_cast<std::uint32_t>(rng()));
+    if (!std::isfinite(f)) continue;
+    Rational q = rational_from_float(f);
+    ASSERT_EQ(q, Rational(static_cast<double>(f)));
+    ASSERT_EQ(static_cast<float>(to_double_nearest(q)), f);
+  }
+}
+
+TEST(Rational, NonFiniteDoublesAreRejected) {
+  for (double d : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                   -std::numeric_limits<double>::infinity()}) {
+    try {
+      (void)rational_from_double(d);
+      FAIL() << "no exception for " << d;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+    }
+  }
+  EXPECT_THROW((void)rational_from_float(std::numeric_limits<float>::infinity()), Error);
+}
+
+bool even(double d) { return (std::bit_cast<std::uint64_t>(d) & 1u) == 0; }
+
+TEST(Rational, NearestDoubleTiesToEven) {
+  test::Rng rng(6);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 20000; ++i) {
+    double d = test::random_double_bits(rng);
+    double next = std::nextafter(d, inf);
+    if (!std::isfinite(next)) continue;
+    Rational lo(d), hi(next);
+    Rational mid = (lo + hi) / 2;
+    Rational nudge = (hi - lo) / (1 << 20);
+    SCOPED_TRACE(std::to_string(i) + ": " + std::to_string(d));
+    double tie = even(d) ? d : next;
+    ASSERT_EQ(to_double_nearest(mid), tie);
+    ASSERT_EQ(to_double_nearest(mid + nudge), next);
+    ASSERT_EQ(to_double_nearest(mid - nudge), d);
+    ASSERT_EQ(to_double_nearest(lo + nudge), d);
+    ASSERT_EQ(to_double_nearest(hi - nudge), next);
+    ASSERT_FALSE(is_double_exact(mid));
+    ASSERT_FALSE(is_double_exact(lo + nudge));
+  }
+}
+
+TEST(Rational, NearestDoubleAtTheEdges) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Rational max(DBL_MAX);
+  Rational half_ulp = power_of_two(970);  // ulp(DBL_MAX) = 2^971
+  EXPECT_EQ(to_double_nearest(max + half_ulp - 1), DBL_MAX);
+  EXPECT_EQ(to_double_nearest(max + half_ulp), inf);  // tie: DBL_MAX is odd
+  EXPECT_EQ(to_double_nearest(-(max + half_ulp)), -inf);
+  EXPECT_EQ(to_double_nearest(-(max + half_ulp - 1)), -DBL_MAX);
+  EXPECT_EQ(to_double_nearest(power_of_two(1024)), inf);
+  EXPECT_EQ(to_double_nearest(power_of_two(5000)), inf);
+  // Below the smallest subnormal 2^-1074.
+  EXPECT_EQ(to_double_nearest(power_of_two(-1075)), 0.0);  // tie: 0 is even
+  EXPECT_EQ(to_double_nearest(power_of_two(-1075) + power_of_two(-1200)), 5e-324);
+  EXPECT_EQ(to_double_nearest(power_of_two(-1076)), 0.0);
+  EXPECT_TRUE(std::signbit(to_double_nearest(-power_of_two(-1076))));  // -0, as IEEE rounds
+  EXPECT_EQ(to_double_nearest(power_of_two(-5000)), 0.0);
+  EXPECT_EQ(to_double_nearest(power_of_two(-1075) * 3), 0x1p-1073);  // tie between 1 and 2 ulps: even
+  EXPECT_EQ(to_double_nearest(Rational(1, 3)), 1.0 / 3.0);
+  EXPECT_EQ(to_double_nearest(Rational(1, 10)), 0.1);
+  EXPECT_EQ(to_double_nearest(parse_rational("2.2250738585072011e-308")), 2.2250738585072011e-308);
+  EXPECT_EQ(to_double_nearest(power_of_two(53) + 1), 0x1p53);  // tie: 2^53 is even
+  EXPECT_EQ(to_double_nearest(power_of_two(53) + 3), 0x1p53 + 4);
+}
+
+TEST(Rational, IsDoubleExact) {
+  EXPECT_TRUE(is_double_exact(0));
+  EXPECT_TRUE(is_double_exact(power_of_two(-1074)));
+  EXPECT_TRUE(is_double_exact(-power_of_two(-1074)));
+  EXPECT_TRUE(is_double_exact(power_of_two(1023)));
+  EXPECT_TRUE(is_double_exact(Rational(DBL_MAX)));
+  EXPECT_TRUE(is_double_exact(power_of_two(53) + 2));
+  EXPECT_TRUE(is_double_exact(power_of_two(-1074) * (power_of_two(53) - 1)));
+  EXPECT_FALSE(is_double_exact(power_of_two(-1075)));
+  EXPECT_FALSE(is_double_exact(power_of_two(-1075) * 3));
+  EXPECT_FALSE(is_double_exact(power_of_two(1024)));
+  EXPECT_FALSE(is_double_exact(Rational(DBL_MAX) + power_of_two(971)));
+  EXPECT_FALSE(is_double_exact(power_of_two(53) + 1));
+  EXPECT_FALSE(is_double_exact(fraction(1, 3)));
+  EXPECT_FALSE(is_double_exact(fraction(1, 10)));
+  // Against the definition, on random rationals.
+  test::Rng rng(8);
+  for (int i = 0; i < 20000; ++i) {
+    Rational q = test::random_rational(rng);
+    bool expected = abs(q) <= Rational(DBL_MAX) && Rational(q.get_d()) == q;
+    ASSERT_EQ(is_double_exact(q), expected) << to_string(q).substr(0, 80);
   }
 }
 

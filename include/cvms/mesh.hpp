@@ -20,43 +20,59 @@ namespace cvms {
 template <class Tag>
 class Handle {
  public:
+  /// The index of a default-constructed (invalid) handle.
   static constexpr std::uint32_t invalid_index = std::numeric_limits<std::uint32_t>::max();
   constexpr Handle() noexcept = default;
+  /// The handle of element `index`.
   constexpr explicit Handle(std::uint32_t index) noexcept : index_(index) {}
+  /// The element's position in its mesh array.
   [[nodiscard]] constexpr std::uint32_t index() const noexcept { return index_; }
+  /// False for a default-constructed handle.
   [[nodiscard]] constexpr bool is_valid() const noexcept { return index_ != invalid_index; }
+  /// Same index.
   friend constexpr bool operator==(Handle a, Handle b) noexcept { return a.index_ == b.index_; }
+  /// Ordered by index.
   friend constexpr auto operator<=>(Handle a, Handle b) noexcept { return a.index_ <=> b.index_; }
 
  private:
   std::uint32_t index_ = invalid_index;
 };
 
-using VertexId = Handle<struct VertexTag>;
-using HalfedgeId = Handle<struct HalfedgeTag>;
-using EdgeId = Handle<struct EdgeTag>;
-using FaceId = Handle<struct FaceTag>;
+using VertexId = Handle<struct VertexTag>;      ///< a vertex of a Mesh
+using HalfedgeId = Handle<struct HalfedgeTag>;  ///< a directed edge; twin is h ^ 1
+using EdgeId = Handle<struct EdgeTag>;          ///< an undirected edge: halfedges 2e and 2e + 1
+using FaceId = Handle<struct FaceTag>;          ///< a face (facet) of a Mesh
 
 /// A range over the handles 0..n-1 of one kind, for range-for.
 template <class Id>
 class IdRange {
  public:
+  /// Forward iterator yielding Id(0), Id(1), ...
   class iterator {
    public:
-    using value_type = Id;
-    using difference_type = std::ptrdiff_t;
+    using value_type = Id;                   ///< the handle type
+    using difference_type = std::ptrdiff_t;  ///< for the iterator concepts
     iterator() = default;
+    /// At handle i.
     explicit iterator(std::uint32_t i) : i_(i) {}
+    /// The current handle.
     Id operator*() const { return Id(i_); }
+    /// The next handle.
     iterator& operator++() { ++i_; return *this; }
+    /// The next handle (postfix).
     iterator operator++(int) { iterator t = *this; ++i_; return t; }
+    /// At the same handle.
     friend bool operator==(iterator a, iterator b) { return a.i_ == b.i_; }
    private:
     std::uint32_t i_ = 0;
   };
+  /// The handles 0..n-1.
   explicit IdRange(std::uint32_t n) : n_(n) {}
+  /// At handle 0.
   [[nodiscard]] iterator begin() const { return iterator(0); }
+  /// Past the last handle.
   [[nodiscard]] iterator end() const { return iterator(n_); }
+  /// The number of handles.
   [[nodiscard]] std::uint32_t size() const { return n_; }
  private:
   std::uint32_t n_;
@@ -68,17 +84,27 @@ class Mesh;
 /// a vertex (following twin(prev(h)), i.e. counterclockwise seen from outside).
 class HalfedgeCirculator {
  public:
-  enum class Kind { face, vertex };
+  /// Which cycle to follow.
+  enum class Kind {
+    face,   ///< the halfedges of a face, by next
+    vertex  ///< the halfedges leaving a vertex, by twin(prev(h))
+  };
+  /// Forward iterator over one cycle; it ends when the cycle is back at its start.
   class iterator {
    public:
-    using value_type = HalfedgeId;
-    using difference_type = std::ptrdiff_t;
+    using value_type = HalfedgeId;           ///< the handle type
+    using difference_type = std::ptrdiff_t;  ///< for the iterator concepts
     iterator() = default;
+    /// At halfedge h of the cycle of `kind`; at_end marks the past-the-end position.
     iterator(const Mesh* mesh, HalfedgeId h, Kind kind, bool at_end)
         : mesh_(mesh), h_(h), kind_(kind), at_end_(at_end) {}
+    /// The current halfedge.
     HalfedgeId operator*() const { return h_; }
+    /// The next halfedge of the cycle.
     iterator& operator++();
+    /// The next halfedge of the cycle (postfix).
     iterator operator++(int) { iterator t = *this; ++*this; return t; }
+    /// Same position (both past the end, or both at the same halfedge).
     friend bool operator==(const iterator& a, const iterator& b) {
       return a.h_ == b.h_ && a.at_end_ == b.at_end_;
     }
@@ -88,9 +114,13 @@ class HalfedgeCirculator {
     Kind kind_ = Kind::face;
     bool at_end_ = true;
   };
+  /// The cycle of `kind` through `start`, which must be the face's or the
+  /// vertex's stored halfedge (Mesh::halfedge(f) / Mesh::halfedge(v)).
   HalfedgeCirculator(const Mesh* mesh, HalfedgeId start, Kind kind)
       : mesh_(mesh), start_(start), kind_(kind) {}
+  /// At the start halfedge (empty range if start is invalid).
   [[nodiscard]] iterator begin() const { return {mesh_, start_, kind_, !start_.is_valid()}; }
+  /// Past the end.
   [[nodiscard]] iterator end() const { return {mesh_, start_, kind_, true}; }
  private:
   const Mesh* mesh_;
@@ -98,29 +128,47 @@ class HalfedgeCirculator {
   Kind kind_;
 };
 
+/// A closed, consistently oriented 2-manifold polygon mesh (see the file
+/// comment). Immutable once built; copy and move are cheap array copies/moves.
 class Mesh {
  public:
   Mesh() = default;
 
   /// Builds the half-edge structure of a closed, consistently oriented
-  /// 2-manifold polygon mesh. Points are moved in unchanged; every point must
-  /// be used by a face.
+  /// 2-manifold polygon mesh. Points are moved in (coordinates canonicalised,
+  /// values unchanged); every point must be used by a face.
   /// \throw Error(topology) naming the offending element: a face with fewer
   ///   than 3 vertices or a repeated vertex, an index out of range, an edge
   ///   used by other than 2 faces, an edge used twice in the same direction
   ///   (inconsistent orientation), a boundary edge (open surface), a vertex
   ///   whose faces do not form one cycle (non-manifold vertex), an unreferenced
-  ///   vertex, or two vertices at the same point.
+  ///   vertex, two vertices at the same point, or an empty soup.
+  /// \throw Error(invalid_argument) if face_offsets is malformed (not starting
+  ///   at 0, decreasing, or not ending at face_indices.size()).
+  /// \throw Error(limit) if the counts do not fit the 32-bit handles.
+  /// Numbering: vertices and faces keep their soup order; edges are sorted by
+  /// their (smaller, larger) vertex pair and halfedge 2e runs from the smaller
+  /// to the larger index; face f's stored halfedge leaves its first listed
+  /// vertex; vertex v's stored halfedge is its lowest-numbered outgoing one.
+  /// Complexity: O(n log n) in the number of face corners.
   static Mesh from_soup(PolygonSoup soup);
 
+  /// Number of vertices.
   [[nodiscard]] std::uint32_t num_vertices() const noexcept { return static_cast<std::uint32_t>(positions_.size()); }
+  /// Number of halfedges (twice the number of edges).
   [[nodiscard]] std::uint32_t num_halfedges() const noexcept { return static_cast<std::uint32_t>(he_to_.size()); }
+  /// Number of undirected edges.
   [[nodiscard]] std::uint32_t num_edges() const noexcept { return num_halfedges() / 2; }
+  /// Number of faces.
   [[nodiscard]] std::uint32_t num_faces() const noexcept { return static_cast<std::uint32_t>(face_he_.size()); }
 
+  /// All vertex handles, for range-for.
   [[nodiscard]] IdRange<VertexId> vertices() const { return IdRange<VertexId>(num_vertices()); }
+  /// All halfedge handles, for range-for.
   [[nodiscard]] IdRange<HalfedgeId> halfedges() const { return IdRange<HalfedgeId>(num_halfedges()); }
+  /// All edge handles, for range-for.
   [[nodiscard]] IdRange<EdgeId> edges() const { return IdRange<EdgeId>(num_edges()); }
+  /// All face handles, for range-for.
   [[nodiscard]] IdRange<FaceId> faces() const { return IdRange<FaceId>(num_faces()); }
 
   /// The halfedges of face f in counterclockwise order (seen from outside).
@@ -132,10 +180,15 @@ class Mesh {
     return {this, vertex_he_[v.index()], HalfedgeCirculator::Kind::vertex};
   }
 
+  /// The opposite halfedge: same edge, other direction, other face.
   [[nodiscard]] static HalfedgeId twin(HalfedgeId h) noexcept { return HalfedgeId(h.index() ^ 1u); }
+  /// The undirected edge of h.
   [[nodiscard]] static EdgeId edge(HalfedgeId h) noexcept { return EdgeId(h.index() >> 1); }
+  /// The first halfedge of e (from_soup: from the smaller to the larger vertex index).
   [[nodiscard]] static HalfedgeId halfedge(EdgeId e) noexcept { return HalfedgeId(e.index() << 1); }
+  /// The halfedge after h in its face (counterclockwise from outside).
   [[nodiscard]] HalfedgeId next(HalfedgeId h) const noexcept { return he_next_[h.index()]; }
+  /// The halfedge before h in its face.
   [[nodiscard]] HalfedgeId prev(HalfedgeId h) const noexcept { return he_prev_[h.index()]; }
   /// The vertex h points to.
   [[nodiscard]] VertexId to(HalfedgeId h) const noexcept { return he_to_[h.index()]; }
@@ -147,9 +200,12 @@ class Mesh {
   [[nodiscard]] HalfedgeId halfedge(FaceId f) const noexcept { return face_he_[f.index()]; }
   /// One halfedge leaving v.
   [[nodiscard]] HalfedgeId halfedge(VertexId v) const noexcept { return vertex_he_[v.index()]; }
+  /// The number of vertices (and halfedges) of face f. O(degree).
   [[nodiscard]] std::uint32_t degree(FaceId f) const noexcept;
 
+  /// The exact position of v.
   [[nodiscard]] const Vec3& position(VertexId v) const noexcept { return positions_[v.index()]; }
+  /// All positions, indexed by vertex.
   [[nodiscard]] const std::vector<Vec3>& positions() const noexcept { return positions_; }
 
   /// Checks every stored reference (ranges, twin/next/prev/face/vertex
@@ -160,6 +216,11 @@ class Mesh {
   /// The mesh as points plus face index lists (faces in order, each starting
   /// at the face's stored halfedge).
   [[nodiscard]] PolygonSoup to_soup() const;
+
+  /// The same connectivity with new vertex positions (one per vertex, in
+  /// vertex order); no checks on the positions.
+  /// \throw Error(invalid_argument) if the count differs from num_vertices().
+  [[nodiscard]] Mesh with_positions(std::vector<Vec3> positions) const;
 
  private:
   std::vector<Vec3> positions_;

@@ -18,13 +18,12 @@ namespace cvms {
 
 enum class Sign : int { negative = -1, zero = 0, positive = 1 };
 
-inline Sign sign_of(int s) noexcept {
-  return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero);
-}
+inline Sign sign_of(int s) noexcept { return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero); }
 inline Sign operator-(Sign s) noexcept { return static_cast<Sign>(-static_cast<int>(s)); }
 
 /// How often the floating-point filter answered and how often exact
-/// arithmetic was needed. Per thread: predicates running in different threads
+/// arithmetic was needed: one count per sign evaluation (ccw_in_between
+/// makes two to four; a true is_parallel is always an exact evaluation). Per thread: predicates running in different threads
 /// never share counters, so the library stays free of shared mutable state.
 struct PredicateCounters {
   std::uint64_t filtered = 0;  ///< answered by the double filter
@@ -42,11 +41,16 @@ Sign orient2d(Vec2Ref a, Vec2Ref b, Vec2Ref c);
 Sign sign_cross2(const Vec2& u, const Vec2& v);
 Sign sign_cross2(Vec2Ref u, Vec2Ref v);
 
+/// Sign of dot(u, v) (2D): positive iff the angle between u and v is acute.
+Sign sign_dot(const Vec2& u, const Vec2& v);
+Sign sign_dot(Vec2Ref u, Vec2Ref v);
+
 /// True iff direction d lies strictly inside the counterclockwise angular
 /// sector that starts at direction d1 and ends at direction d2 (d1, d2, d
 /// nonzero). When d1 and d2 have the same direction the sector is the whole
 /// turn minus that direction. Used to order edges in the planar convolution.
 bool ccw_in_between(const Vec2& d, const Vec2& d1, const Vec2& d2);
+bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
 
 /// Sign of dot(b - a, cross(c - a, d - a)) = det[b - a, c - a, d - a]:
 /// positive iff d lies on the side of the plane through a, b, c into which
@@ -68,12 +72,17 @@ Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
 /// Sign of dot(p, n) - offset: positive iff p is strictly above the plane
 /// {x : dot(x, n) = offset} (in the direction n).
 Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset);
+/// As above with cached approximations (offset_approx of offset, e.g. a
+/// facet plane's stored offset).
+Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_approx);
 
 /// Sign of the triple product det[u, v, w] = dot(u, cross(v, w)).
 Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w);
 Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
 
-/// True iff cross(u, v) == 0 (u, v parallel or one of them zero). Exact.
+/// True iff cross(u, v) == 0 (u, v parallel or one of them zero). Exact; the
+/// filter can only prove "not parallel", so a true answer always costs an
+/// exact evaluation.
 bool is_parallel(const Vec3& u, const Vec3& v);
 bool is_parallel(Vec3Ref u, Vec3Ref v);
 

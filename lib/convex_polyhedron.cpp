@@ -1,0 +1,565 @@
+// SPDX-License-Identifier: MIT
+// ConvexPolyhedron: exact convexity verification of a closed mesh, merging of
+// coplanar faces into maximal facets, removal of non-extreme vertices, and the
+// cached normals, plane offsets and double approximations.
+//
+// from_mesh works in O(V + E + F) predicates:
+//  1. topology: one connected component and Euler characteristic 2 (a sphere);
+//  2. every face: exact area vector N_f (its orientation normal); zero area is
+//     `degenerate`; a face must be planar and a convex polygon (collinear
+//     vertices allowed), else `not_convex`;
+//  3. all vertices on one plane: `degenerate` (flat, zero volume);
+//  4. every edge between faces f, g with halfedge h in f and direction d:
+//     coplanar if N_f, N_g are parallel (same direction: merged into one
+//     facet; opposite: a zero-angle fold, `not_convex`), else convex iff
+//     det[N_f, N_g, d] > 0. The global orientation is the one under which the
+//     majority of the non-coplanar edges are convex (a consistently inward mesh
+//     has every edge reflex and is flipped); the first edge that is reflex
+//     under it is reported;
+//  5. merged facets (union-find over coplanar edges) must each have exactly one
+//     boundary cycle, and that cycle must be a strictly convex polygon after
+//     dropping the vertices where it runs straight;
+//  6. a vertex is extreme iff it lies on >= 3 facets (counted as region
+//     changes around its fan); extreme vertices must be corners of all their
+//     facets and the others must not be;
+//  7. global check, on the result: a point o inside a tetrahedron of vertices
+//     must be strictly below every facet plane, and a ray from o through the
+//     interior of facet 0 must meet no other (closed) facet.
+//
+// Why 1-7 prove that the result bounds a convex polytope: by (7) every facet
+// is seen from o from its inner side, so the central projection from o onto a
+// sphere around o is orientation preserving on every facet; across an edge the
+// two facets then project to opposite sides of the edge's image, so the
+// projection is a branched covering of the sphere by the (connected, closed)
+// surface, and its degree is the number of preimages of the regular direction
+// of the ray: exactly 1. A covering of degree 1 is a homeomorphism, so the
+// surface is star-shaped from o and bounds a closed star-shaped body K. Near a
+// vertex v the surface is then the graph (over a plane transversal to o - v) of
+// a piecewise-linear, positively homogeneous function that is concave across
+// every ray (the edges are convex, step 4) and hence, by continuity along lines
+// through v approximated by lines avoiding v, concave: K is locally convex at
+// every point, and a connected closed locally convex set is convex
+// (Tietze-Nakajima). Inside a facet, the input faces are convex polygons with
+// the facet's orientation and the facet boundary winds once, so they tile the
+// facet exactly (degree argument in the plane): the input surface is the
+// surface of the result.
+#include "cvms/convex_polyhedron.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
+
+namespace cvms {
+namespace {
+
+constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+std::string str(std::uint32_t i) { return std::to_string(i); }
+
+std::string edge_name(std::uint32_t a, std::uint32_t b) {
+  return "edge (" + str(std::min(a, b)) + ", " + str(std::max(a, b)) + ")";
+}
+
+[[noreturn]] void not_convex(const std::string& message) { throw Error(ErrorCategory::not_convex, message); }
+
+// Outcome of checking a closed planar polygon for strict convexity.
+enum class PolygonFault { none, right_turn, reversal, too_few_corners, winds_more_than_once };
+
+struct PolygonCheck {
+  PolygonFault fault = PolygonFault::none;
+  std::size_t at = 0;        // polygon position of the fault
+  std::vector<char> corner;  // per position: strict left turn (1) or straight (0)
+};
+
+// Checks that p[0..m) (m >= 3, consecutive points distinct) is, seen from the
+// side n points to, a strictly convex counterclockwise polygon once the
+// vertices where it runs straight on are dropped. All turns must be left or
+// straight on; then the polygon is convex iff its corners' edge directions turn
+// around exactly once, i.e. (every turn being in (0, pi)) iff their angles,
+// measured counterclockwise from the first corner edge, descend exactly once.
+PolygonCheck check_convex_polygon(const std::vector<const Vec3*>& p, const Vec3& n) {
+  const std::size_t m = p.size();
+  PolygonCheck r;
+  r.corner.assign(m, 0);
+  std::vector<std::size_t> corners;
+  for (std::size_t i = 0; i < m; ++i) {
+    const Vec3& prev = *p[(i + m - 1) % m];
+    const Vec3& next = *p[(i + 1) % m];
+    const Vec3 a = *p[i] - prev, b = next - *p[i];
+    const Sign s = sign_triple(n, a, b);
+    if (s == Sign::negative) return {PolygonFault::right_turn, i, {}};
+    if (s == Sign::zero) {
+      if (sign_dot(a, b) != Sign::positive) return {PolygonFault::reversal, i, {}};
+    } else {
+      r.corner[i] = 1;
+      corners.push_back(i);
+    }
+  }
+  const std::size_t k = corners.size();
+  if (k < 3) return {PolygonFault::too_few_corners, 0, {}};
+  std::vector<Vec3> e(k);
+  for (std::size_t j = 0; j < k; ++j) e[j] = *p[corners[(j + 1) % k]] - *p[corners[j]];
+  const Vec3& ref = e[0];
+  // Half 0: angle in [0, pi) from ref, half 1: [pi, 2 pi).
+  auto half = [&](const Vec3& v) {
+    const Sign s = sign_triple(n, ref, v);
+    return (s == Sign::positive || (s == Sign::zero && sign_dot(ref, v) == Sign::positive)) ? 0 : 1;
+  };
+  auto angle_less = [&](const Vec3& a, const Vec3& b) {
+    const int ha = half(a), hb = half(b);
+    if (ha != hb) return ha < hb;
+    return sign_triple(n, a, b) == Sign::positive;
+  };
+  std::size_t descents = 0;
+  for (std::size_t j = 0; j < k; ++j)
+    if (angle_less(e[(j + 1) % k], e[j])) ++descents;
+  if (descents != 1) return {PolygonFault::winds_more_than_once, 0, {}};
+  return r;
+}
+
+std::string describe_fault(const PolygonCheck& c, const std::vector<std::uint32_t>& vertex_ids) {
+  switch (c.fault) {
+    case PolygonFault::right_turn: return "has a reflex corner at vertex " + str(vertex_ids[c.at]);
+    case PolygonFault::reversal: return "turns back on itself at vertex " + str(vertex_ids[c.at]);
+    case PolygonFault::too_few_corners: return "has fewer than 3 corners";
+    case PolygonFault::winds_more_than_once: return "winds around more than once (self-intersecting)";
+    case PolygonFault::none: break;
+  }
+  return "";
+}
+
+// The orientation normal (twice the vector area) of a planar polygon.
+Vec3 area_vector(const std::vector<const Vec3*>& p) {
+  Vec3 n{0, 0, 0};
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) n += cross(*p[i] - *p[0], *p[i + 1] - *p[0]);
+  return n;
+}
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::uint32_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+enum class EdgeKind : unsigned char { coplanar, fold, convex, reflex };
+
+}  // namespace
+
+Vec3 primitive_direction(const Vec3& v) {
+  if (is_zero(v)) throw Error(ErrorCategory::invalid_argument, "primitive_direction of the zero vector");
+  mpz_class l = 1;
+  for (int i = 0; i < 3; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), v[i].get_den_mpz_t());
+  mpz_class c[3];
+  mpz_class g = 0;
+  for (int i = 0; i < 3; ++i) {
+    c[i] = v[i].get_num() * (l / v[i].get_den());
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c[i].get_mpz_t());
+  }
+  return {Rational(c[0] / g), Rational(c[1] / g), Rational(c[2] / g)};
+}
+
+ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) { return from_mesh(Mesh::from_soup(std::move(soup))); }
+
+ConvexPolyhedron ConvexPolyhedron::from_trusted_soup(PolygonSoup soup) {
+  ConvexPolyhedron p;
+  p.mesh_ = Mesh::from_soup(std::move(soup));
+  p.compute_caches();
+  return p;
+}
+
+void ConvexPolyhedron::compute_caches() {
+  const Mesh& m = mesh_;
+  vertex_approx_.clear();
+  vertex_approx_.reserve(m.num_vertices());
+  for (VertexId v : m.vertices()) vertex_approx_.push_back(ApproxVec3::of(m.position(v)));
+  normals_.clear();
+  normal_approx_.clear();
+  offsets_.clear();
+  normals_.reserve(m.num_faces());
+  normal_approx_.reserve(m.num_faces());
+  offsets_.reserve(m.num_faces());
+  for (FaceId f : m.faces()) {
+    // Facets are strictly convex and counterclockwise from outside, so any
+    // corner gives the outward normal.
+    const HalfedgeId h = m.halfedge(f);
+    const Vec3& a = m.position(m.from(h));
+    const Vec3& b = m.position(m.to(h));
+    const Vec3& c = m.position(m.to(m.next(h)));
+    Vec3 n = cross(b - a, c - b);
+    if (is_zero(n))
+      throw Error(ErrorCategory::invalid_argument,
+                  "facet " + str(f.index()) + " starts with three collinear vertices (trusted input is not convex)");
+    n = primitive_direction(n);
+    offsets_.push_back(dot(n, a));
+    normal_approx_.push_back(ApproxVec3::of(n));
+    normals_.push_back(std::move(n));
+  }
+}
+
+ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
+  const std::uint32_t nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = mesh.num_halfedges();
+  if (nf == 0 || nv == 0) throw Error(ErrorCategory::topology, "empty mesh");
+
+  // 1. Topology: connected and a sphere.
+  {
+    UnionFind components(nf);
+    for (EdgeId e : mesh.edges()) {
+      const HalfedgeId h = Mesh::halfedge(e);
+      components.unite(mesh.face(h).index(), mesh.face(Mesh::twin(h)).index());
+    }
+    std::uint32_t count = 0;
+    for (std::uint32_t f = 0; f < nf; ++f) count += components.find(f) == f;
+    if (count != 1)
+      throw Error(ErrorCategory::topology,
+                  "the surface has " + str(count) + " connected components (a convex polyhedron has one)");
+    const long long chi = static_cast<long long>(nv) - mesh.num_edges() + nf;
+    if (chi != 2)
+      throw Error(ErrorCategory::topology, "the surface has Euler characteristic " + std::to_string(chi) +
+                                               " (genus " + std::to_string((2 - chi) / 2) +
+                                               "); a convex polyhedron is a sphere (2)");
+  }
+
+  // 2. Faces: orientation normal, zero area, planarity, convexity.
+  std::vector<Vec3> face_normal(nf);
+  {
+    std::vector<const Vec3*> pts;
+    std::vector<std::uint32_t> ids;
+    for (FaceId f : mesh.faces()) {
+      pts.clear();
+      ids.clear();
+      for (HalfedgeId h : mesh.face_halfedges(f)) {
+        pts.push_back(&mesh.position(mesh.from(h)));
+        ids.push_back(mesh.from(h).index());
+      }
+      Vec3 n = area_vector(pts);
+      if (is_zero(n)) {
+        bool collinear = true;
+        for (std::size_t i = 2; i < pts.size() && collinear; ++i)
+          collinear = is_parallel(*pts[1] - *pts[0], *pts[i] - *pts[0]);
+        if (collinear)
+          throw Error(ErrorCategory::degenerate,
+                      "face " + str(f.index()) + " has zero area (its vertices are collinear)");
+        not_convex("face " + str(f.index()) + " has zero signed area (it is not a convex polygon)");
+      }
+      if (pts.size() > 3) {
+        for (std::size_t i = 1; i < pts.size(); ++i)
+          if (sign_dot(n, *pts[i] - *pts[0]) != Sign::zero)
+            not_convex("face " + str(f.index()) + " is not planar (vertex " + str(ids[i]) +
+                       " is off the plane of the others)");
+        PolygonCheck c = check_convex_polygon(pts, n);
+        if (c.fault != PolygonFault::none)
+          not_convex("face " + str(f.index()) + " is not a convex polygon: it " + describe_fault(c, ids));
+      }
+      face_normal[f.index()] = std::move(n);
+    }
+  }
+
+  // 3. Flat: every vertex on the plane of face 0.
+  {
+    const Vec3& n = face_normal[0];
+    const Vec3& p0 = mesh.position(mesh.from(mesh.halfedge(FaceId(0))));
+    bool flat = true;
+    for (VertexId v : mesh.vertices())
+      if (sign_dot(n, mesh.position(v) - p0) != Sign::zero) {
+        flat = false;
+        break;
+      }
+    if (flat) throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
+  }
+
+  // 4. Edges.
+  std::vector<EdgeKind> kind(mesh.num_edges());
+  std::size_t num_convex = 0, num_reflex = 0;
+  UnionFind regions_uf(nf);
+  for (EdgeId e : mesh.edges()) {
+    const HalfedgeId h = Mesh::halfedge(e);
+    const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
+    const Vec3& n_f = face_normal[f];
+    const Vec3& n_g = face_normal[g];
+    EdgeKind k;
+    if (is_parallel(n_f, n_g)) {
+      k = sign_dot(n_f, n_g) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
+    } else {
+      const Vec3 d = mesh.position(mesh.to(h)) - mesh.position(mesh.from(h));
+      k = sign_triple(n_f, n_g, d) == Sign::positive ? EdgeKind::convex : EdgeKind::reflex;
+    }
+    kind[e.index()] = k;
+    if (k == EdgeKind::coplanar) regions_uf.unite(f, g);
+    if (k == EdgeKind::fold)
+      not_convex(edge_name(mesh.from(h).index(), mesh.to(h).index()) + ": faces " + str(f) + " and " + str(g) +
+                 " fold back onto each other (zero dihedral angle)");
+    num_convex += k == EdgeKind::convex;
+    num_reflex += k == EdgeKind::reflex;
+  }
+  const bool flip = num_reflex > num_convex;
+  const EdgeKind wrong = flip ? EdgeKind::convex : EdgeKind::reflex;
+  for (EdgeId e : mesh.edges())
+    if (kind[e.index()] == wrong) {
+      const HalfedgeId h = Mesh::halfedge(e);
+      not_convex("reflex " + edge_name(mesh.from(h).index(), mesh.to(h).index()) + " between faces " +
+                 str(mesh.face(h).index()) + " and " + str(mesh.face(Mesh::twin(h)).index()));
+    }
+
+  // 5. Regions (merged facets), numbered by their smallest face.
+  std::vector<std::uint32_t> region(nf);
+  std::vector<std::uint32_t> region_first_face;
+  {
+    std::vector<std::uint32_t> id_of_root(nf, none);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      const std::uint32_t r = regions_uf.find(f);
+      if (id_of_root[r] == none) {
+        id_of_root[r] = static_cast<std::uint32_t>(region_first_face.size());
+        region_first_face.push_back(f);
+      }
+      region[f] = id_of_root[r];
+    }
+  }
+  const auto nr = static_cast<std::uint32_t>(region_first_face.size());
+  auto region_of = [&](HalfedgeId h) { return region[mesh.face(h).index()]; };
+  auto is_border = [&](HalfedgeId h) { return region_of(h) != region_of(Mesh::twin(h)); };
+  auto facet_name = [&](std::uint32_t r) {
+    return "the facet containing face " + str(region_first_face[r]);
+  };
+
+  // Boundary cycles: from a border halfedge h, the next border halfedge of the
+  // same region leaves to(h); rotate clockwise around to(h) through the
+  // region's faces until the face across is outside the region.
+  std::vector<std::vector<HalfedgeId>> cycle(nr);
+  {
+    std::vector<char> visited(nh, 0);
+    for (HalfedgeId start : mesh.halfedges()) {
+      if (visited[start.index()] || !is_border(start)) continue;
+      const std::uint32_t r = region_of(start);
+      if (!cycle[r].empty())
+        not_convex(facet_name(r) + " (coplanar faces merged) has more than one boundary cycle (a hole)");
+      HalfedgeId h = start;
+      std::uint32_t steps = 0;
+      do {
+        visited[h.index()] = 1;
+        cycle[r].push_back(h);
+        HalfedgeId n = mesh.next(h);
+        while (!is_border(n) && ++steps <= nh) n = mesh.next(Mesh::twin(n));
+        h = n;
+      } while (h != start && ++steps <= 2 * nh);
+      if (h != start) throw Error(ErrorCategory::topology, "corrupt mesh: a facet boundary does not close");
+    }
+    for (std::uint32_t r = 0; r < nr; ++r)
+      if (cycle[r].size() < 3) not_convex(facet_name(r) + " has no proper boundary");
+  }
+
+  // 6. Extreme vertices: on >= 3 facets.
+  std::vector<std::uint32_t> facets_at(nv, 0);
+  for (HalfedgeId h : mesh.halfedges())
+    if (is_border(h)) ++facets_at[mesh.from(h).index()];
+  auto extreme = [&](std::uint32_t v) { return facets_at[v] >= 3; };
+
+  // Facet polygons, and corners agree with extremality.
+  std::vector<std::vector<std::uint32_t>> facet_corners(nr);
+  {
+    std::vector<const Vec3*> pts;
+    std::vector<std::uint32_t> ids;
+    for (std::uint32_t r = 0; r < nr; ++r) {
+      pts.clear();
+      ids.clear();
+      for (HalfedgeId h : cycle[r]) {
+        pts.push_back(&mesh.position(mesh.from(h)));
+        ids.push_back(mesh.from(h).index());
+      }
+      PolygonCheck c = check_convex_polygon(pts, face_normal[region_first_face[r]]);
+      if (c.fault != PolygonFault::none)
+        not_convex(facet_name(r) + " (coplanar faces merged) is not a convex polygon: it " + describe_fault(c, ids));
+      for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (c.corner[i] != 0 && !extreme(ids[i]))
+          not_convex("vertex " + str(ids[i]) + " is a corner of " + facet_name(r) + " but lies on only " +
+                     str(facets_at[ids[i]]) + " facets");
+        if (c.corner[i] == 0 && extreme(ids[i]))
+          not_convex("vertex " + str(ids[i]) + " lies on " + str(facets_at[ids[i]]) +
+                     " facets but on a straight side of " + facet_name(r));
+        if (c.corner[i] != 0) facet_corners[r].push_back(ids[i]);
+      }
+    }
+  }
+
+  // 7. The result: extreme vertices in input order, facets ordered by their
+  // smallest input face, each starting at its smallest vertex index.
+  PolygonSoup out;
+  std::vector<std::uint32_t> new_index(nv, none);
+  for (std::uint32_t v = 0; v < nv; ++v)
+    if (extreme(v)) {
+      new_index[v] = static_cast<std::uint32_t>(out.points.size());
+      out.points.push_back(mesh.position(VertexId(v)));
+    }
+  std::vector<std::uint32_t> facet;
+  for (std::uint32_t r = 0; r < nr; ++r) {
+    facet.clear();
+    for (std::uint32_t v : facet_corners[r]) facet.push_back(new_index[v]);
+    if (flip) std::reverse(facet.begin(), facet.end());
+    std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
+    out.add_face(facet);
+  }
+  ConvexPolyhedron p;
+  try {
+    p.mesh_ = Mesh::from_soup(std::move(out));
+  } catch (const Error& e) {
+    not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
+  }
+  p.compute_caches();
+
+  // 8. Global: an interior point o below every facet, and a ray from o that
+  // crosses facet 0 only.
+  const Mesh& m = p.mesh_;
+  const HalfedgeId h0 = m.halfedge(FaceId(0));
+  const Vec3& a = m.position(m.from(h0));
+  const Vec3& b = m.position(m.to(h0));
+  const Vec3& c = m.position(m.to(m.next(h0)));
+  const Vec3* w = nullptr;
+  for (VertexId v : m.vertices())
+    if (side_of_plane(m.position(v), p.normals_[0], p.offsets_[0]) == Sign::negative) {
+      w = &m.position(v);
+      break;
+    }
+  if (w == nullptr) not_convex(facet_name(0) + " has every vertex on its plane");
+  const Vec3 o = Rational(1, 4) * (a + b + c + *w);
+  const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
+  for (FaceId f : m.faces()) {
+    if (side_of_plane(o, p.normals_[f.index()], p.offsets_[f.index()]) != Sign::negative)
+      not_convex("the surface is locally convex but not convex: an interior point lies above " +
+                 facet_name(f.index()));
+  }
+  for (FaceId f : m.faces()) {
+    if (f.index() == 0 || sign_dot(p.normals_[f.index()], dir) != Sign::positive) continue;
+    bool hit = true;
+    for (HalfedgeId h : m.face_halfedges(f))
+      if (sign_triple(m.position(m.from(h)) - o, m.position(m.to(h)) - o, dir) == Sign::negative) {
+        hit = false;
+        break;
+      }
+    if (hit)
+      not_convex("the surface is locally convex but winds around its interior more than once (" +
+                 facet_name(0) + " and " + facet_name(f.index()) + " overlap as seen from inside)");
+  }
+  return p;
+}
+
+bool ConvexPolyhedron::is_convex() const {
+  const Mesh& m = mesh_;
+  try {
+    m.validate();
+  } catch (const Error&) {
+    return false;
+  }
+  if (euler_characteristic() != 2) return false;
+  if (vertex_approx_.size() != m.num_vertices() || normals_.size() != m.num_faces() ||
+      normal_approx_.size() != m.num_faces() || offsets_.size() != m.num_faces())
+    return false;
+  std::vector<const Vec3*> pts;
+  for (FaceId f : m.faces()) {
+    pts.clear();
+    for (HalfedgeId h : m.face_halfedges(f)) pts.push_back(&m.position(m.from(h)));
+    const Vec3 n = cross(*pts[1] - *pts[0], *pts[2] - *pts[1]);
+    if (is_zero(n) || primitive_direction(n) != normals_[f.index()]) return false;
+    if (dot(normals_[f.index()], *pts[0]) != offsets_[f.index()]) return false;
+    for (const Vec3* q : pts)
+      if (side_of_plane(*q, normals_[f.index()], offsets_[f.index()]) != Sign::zero) return false;
+    PolygonCheck c = check_convex_polygon(pts, n);
+    if (c.fault != PolygonFault::none) return false;
+    if (std::count(c.corner.begin(), c.corner.end(), 1) != static_cast<std::ptrdiff_t>(pts.size())) return false;
+  }
+  for (VertexId v : m.vertices()) {
+    std::uint32_t on = 0;
+    for (FaceId f : m.faces()) {
+      const Sign s = side_of_plane(m.position(v), normals_[f.index()], offsets_[f.index()]);
+      if (s == Sign::positive) return false;
+      on += s == Sign::zero;
+    }
+    if (on < 3) return false;
+  }
+  // Distinct planes: with every vertex on or below every plane, two facets
+  // with equal normals would lie in one plane (covering it twice).
+  std::set<Vec3> distinct(normals_.begin(), normals_.end());
+  if (distinct.size() != normals_.size()) return false;
+  for (VertexId v : m.vertices()) {
+    const ApproxVec3 a = ApproxVec3::of(m.position(v));
+    const ApproxVec3& b = vertex_approx_[v.index()];
+    if (a.x.value != b.x.value || a.y.value != b.y.value || a.z.value != b.z.value) return false;
+  }
+  return true;
+}
+
+int ConvexPolyhedron::euler_characteristic() const noexcept {
+  return static_cast<int>(num_vertices()) - static_cast<int>(num_edges()) + static_cast<int>(num_facets());
+}
+
+ConvexPolyhedron ConvexPolyhedron::transformed(const Mat3& linear, const Vec3& offset) const {
+  const Vec3 r0{linear.m[0][0], linear.m[0][1], linear.m[0][2]};
+  const Vec3 r1{linear.m[1][0], linear.m[1][1], linear.m[1][2]};
+  const Vec3 r2{linear.m[2][0], linear.m[2][1], linear.m[2][2]};
+  const Sign det = sign_triple(r0, r1, r2);
+  if (det == Sign::zero) throw Error(ErrorCategory::invalid_argument, "transformed: singular linear map");
+  std::vector<Vec3> pts;
+  pts.reserve(num_vertices());
+  for (VertexId v : mesh_.vertices()) {
+    pts.push_back(linear * vertex(v) + offset);
+    for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();  // in case the caller's matrix was not
+  }
+  if (det == Sign::positive) {
+    ConvexPolyhedron p;
+    p.mesh_ = mesh_.with_positions(std::move(pts));
+    p.compute_caches();
+    return p;
+  }
+  // Orientation reversing: reverse every facet so it stays counterclockwise
+  // seen from outside.
+  PolygonSoup soup = mesh_.to_soup();
+  soup.points = std::move(pts);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    std::reverse(soup.face_indices.begin() + soup.face_offsets[f], soup.face_indices.begin() + soup.face_offsets[f + 1]);
+  return from_trusted_soup(std::move(soup));
+}
+
+ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
+  std::vector<Vec3> pts;
+  pts.reserve(num_vertices());
+  for (VertexId v : mesh_.vertices()) {
+    pts.push_back(vertex(v) + offset);
+    for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();
+  }
+  ConvexPolyhedron p;
+  p.mesh_ = mesh_.with_positions(std::move(pts));
+  p.vertex_approx_.reserve(p.num_vertices());
+  for (VertexId v : p.mesh_.vertices()) p.vertex_approx_.push_back(ApproxVec3::of(p.vertex(v)));
+  p.normals_ = normals_;
+  p.normal_approx_ = normal_approx_;
+  p.offsets_.reserve(offsets_.size());
+  for (FaceId f : mesh_.faces()) {
+    p.offsets_.push_back(offsets_[f.index()] + dot(normals_[f.index()], offset));
+    p.offsets_.back().canonicalize();
+  }
+  return p;
+}
+
+ConvexPolyhedron ConvexPolyhedron::reflected() const {
+  Mat3 minus;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) minus.m[i][j] = (i == j) ? -1 : 0;
+  return transformed(minus, Vec3{0, 0, 0});
+}
+
+}  // namespace cvms

@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: MIT
+// Half-edge mesh construction from a polygon soup with full topology checks,
+// the reference validator, and conversion back to a soup.
+#include "cvms/mesh.hpp"
+
+#include <algorithm>
+#include <string>
+#include <unordered_set>
+#include <utility>
+
+#include "cvms/error.hpp"
+
+namespace cvms {
+namespace {
+
+constexpr std::uint32_t invalid = std::numeric_limits<std::uint32_t>::max();
+
+[[noreturn]] void fail(const std::string& message) { throw Error(ErrorCategory::topology, message); }
+
+std::string str(std::uint32_t i) { return std::to_string(i); }
+
+std::string edge_name(std::uint32_t a, std::uint32_t b) {
+  return "edge (" + str(std::min(a, b)) + ", " + str(std::max(a, b)) + ")";
+}
+
+}  // namespace
+
+std::uint32_t Mesh::degree(FaceId f) const noexcept {
+  std::uint32_t n = 0;
+  HalfedgeId start = face_he_[f.index()];
+  HalfedgeId h = start;
+  do {
+    ++n;
+    h = he_next_[h.index()];
+  } while (h != start && n <= num_halfedges());
+  return n;
+}
+
+Mesh Mesh::from_soup(PolygonSoup soup) {
+  const auto& offsets = soup.face_offsets;
+  const auto& indices = soup.face_indices;
+  if (offsets.empty() || offsets.front() != 0 || offsets.back() != indices.size())
+    throw Error(ErrorCategory::invalid_argument,
+                "malformed polygon soup: face_offsets must start at 0 and end at face_indices.size()");
+  const std::size_t num_faces = offsets.size() - 1;
+  for (std::size_t f = 0; f < num_faces; ++f)
+    if (offsets[f + 1] < offsets[f])
+      throw Error(ErrorCategory::invalid_argument,
+                  "malformed polygon soup: face_offsets decrease at face " + std::to_string(f));
+  if (soup.points.empty() || num_faces == 0)
+    fail("empty mesh: " + std::to_string(soup.points.size()) + " points and " + std::to_string(num_faces) +
+         " faces");
+  // Halfedge ids go up to the number of corners; keep every id below the
+  // invalid marker, and edge ids (h >> 1) well defined.
+  if (soup.points.size() >= invalid || indices.size() >= (std::size_t{1} << 31) || num_faces >= invalid)
+    throw Error(ErrorCategory::limit, "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) +
+                                          " points, " + std::to_string(indices.size()) + " face corners");
+  const auto n = static_cast<std::uint32_t>(soup.points.size());
+  const auto num_corners = static_cast<std::uint32_t>(indices.size());
+
+  // Faces: size, range, repeated vertices. stamp[v] is the last face using v.
+  std::vector<std::uint32_t> stamp(n, invalid);
+  for (std::uint32_t f = 0; f < num_faces; ++f) {
+    const std::uint32_t deg = offsets[f + 1] - offsets[f];
+    if (deg < 3) fail("face " + str(f) + " has " + str(deg) + " vertices (at least 3 are needed)");
+    for (std::uint32_t c = offsets[f]; c < offsets[f + 1]; ++c) {
+      const std::uint32_t v = indices[c];
+      if (v >= n) fail("face " + str(f) + ": vertex index " + str(v) + " out of range (" + str(n) + " points)");
+      if (stamp[v] == f) fail("face " + str(f) + " uses vertex " + str(v) + " more than once");
+      stamp[v] = f;
+    }
+  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (stamp[v] == invalid) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
+
+  // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
+  // caller that built 0/3 by hand would otherwise get wrong answers.
+  for (Vec3& p : soup.points)
+    for (int i = 0; i < 3; ++i) p[i].canonicalize();
+
+  // Duplicate points: a hash set of indices keyed by exact position.
+  {
+    const std::vector<Vec3>& pts = soup.points;
+    auto hash = [&pts](std::uint32_t i) { return hash_value(pts[i]); };
+    auto equal = [&pts](std::uint32_t a, std::uint32_t b) { return pts[a] == pts[b]; };
+    std::unordered_set<std::uint32_t, decltype(hash), decltype(equal)> seen(n, hash, equal);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      auto [it, inserted] = seen.insert(v);
+      if (!inserted) fail("vertices " + str(*it) + " and " + str(v) + " are at the same point (duplicate point)");
+    }
+  }
+
+  // Corners: the directed edge of corner c runs from indices[c] to
+  // indices[corner_next[c]].
+  std::vector<std::uint32_t> corner_face(num_corners), corner_next(num_corners), corner_prev(num_corners);
+  for (std::uint32_t f = 0; f < num_faces; ++f) {
+    const std::uint32_t b = offsets[f], e = offsets[f + 1];
+    for (std::uint32_t c = b; c < e; ++c) {
+      corner_face[c] = f;
+      corner_next[c] = (c + 1 == e) ? b : c + 1;
+      corner_prev[c] = (c == b) ? e - 1 : c - 1;
+    }
+  }
+
+  // Group the directed edges by their undirected vertex pair.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(num_corners);
+  for (std::uint32_t c = 0; c < num_corners; ++c) {
+    const std::uint64_t a = indices[c], b = indices[corner_next[c]];
+    keyed[c] = {(std::min(a, b) << 32) | std::max(a, b), c};
+  }
+  std::sort(keyed.begin(), keyed.end());
+
+  // Scan all groups first, then report by severity: a non-manifold edge
+  // explains the orientation and boundary symptoms it causes.
+  std::string non_manifold, inconsistent, boundary;
+  std::uint32_t num_edges = 0;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    const std::uint32_t c0 = keyed[i].second;
+    const std::uint32_t a = indices[c0], b = indices[corner_next[c0]];
+    if (j - i > 2) {
+      if (non_manifold.empty()) {
+        non_manifold = edge_name(a, b) + " is shared by " + std::to_string(j - i) + " faces (";
+        for (std::size_t k = i; k < j && k < i + 6; ++k)
+          non_manifold += (k == i ? "" : ", ") + str(corner_face[keyed[k].second]);
+        non_manifold += (j - i > 6 ? ", ...)" : ")");
+        non_manifold += ": non-manifold edge";
+      }
+    } else if (j - i == 2) {
+      const std::uint32_t c1 = keyed[i + 1].second;
+      if (indices[c1] == a && inconsistent.empty())
+        inconsistent = edge_name(a, b) + " is used in the same direction " + str(a) + " -> " + str(b) +
+                       " by faces " + str(corner_face[c0]) + " and " + str(corner_face[c1]) +
+                       ": inconsistent orientation (flipped face?)";
+    } else if (boundary.empty()) {
+      boundary = edge_name(a, b) + " of face " + str(corner_face[c0]) +
+                 " has no opposite face: the surface is open (boundary edge)";
+    }
+    ++num_edges;
+    i = j;
+  }
+  if (!non_manifold.empty()) fail(non_manifold);
+  if (!inconsistent.empty()) fail(inconsistent);
+  if (!boundary.empty()) fail(boundary);
+
+  Mesh m;
+  m.positions_ = std::move(soup.points);
+  std::vector<HalfedgeId> corner_he(num_corners);
+  for (std::uint32_t e = 0; e < num_edges; ++e) {
+    for (std::uint32_t k = 0; k < 2; ++k) {
+      const std::uint32_t c = keyed[2 * e + k].second;
+      const bool ascending = indices[c] < indices[corner_next[c]];
+      corner_he[c] = HalfedgeId(2 * e + (ascending ? 0u : 1u));
+    }
+  }
+  m.he_to_.resize(num_corners);
+  m.he_next_.resize(num_corners);
+  m.he_prev_.resize(num_corners);
+  m.he_face_.resize(num_corners);
+  for (std::uint32_t c = 0; c < num_corners; ++c) {
+    const std::uint32_t h = corner_he[c].index();
+    m.he_to_[h] = VertexId(indices[corner_next[c]]);
+    m.he_next_[h] = corner_he[corner_next[c]];
+    m.he_prev_[h] = corner_he[corner_prev[c]];
+    m.he_face_[h] = FaceId(corner_face[c]);
+  }
+  m.face_he_.resize(num_faces);
+  for (std::uint32_t f = 0; f < num_faces; ++f) m.face_he_[f] = corner_he[offsets[f]];
+  m.vertex_he_.assign(n, HalfedgeId());
+  std::vector<std::uint32_t> out_degree(n, 0);
+  for (std::uint32_t h = 0; h < num_corners; ++h) {
+    const std::uint32_t v = m.from(HalfedgeId(h)).index();
+    if (!m.vertex_he_[v].is_valid()) m.vertex_he_[v] = HalfedgeId(h);
+    ++out_degree[v];
+  }
+
+  // Manifold vertices: the fan around v, followed with twin(prev(h)), must
+  // reach every halfedge leaving v. (Each step is a permutation of the
+  // halfedges leaving v, so the walk always returns to its start.)
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const HalfedgeId start = m.vertex_he_[v];
+    HalfedgeId h = start;
+    std::uint32_t len = 0;
+    do {
+      ++len;
+      h = twin(m.prev(h));
+    } while (h != start && len <= out_degree[v]);
+    if (len != out_degree[v])
+      fail("vertex " + str(v) + ": its faces form more than one fan (non-manifold vertex)");
+  }
+  return m;
+}
+
+void Mesh::validate() const {
+  const std::size_t nh = he_to_.size();
+  if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
+    fail("validate: halfedge arrays have inconsistent sizes");
+  if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
+  if (nh >= invalid || positions_.size() >= invalid || face_he_.size() >= invalid)
+    fail("validate: element counts exceed 32-bit handles");
+  const std::uint32_t H = num_halfedges(), V = num_vertices(), F = num_faces();
+  if (V == 0 || F == 0) fail("validate: empty mesh");
+
+  for (std::uint32_t i = 0; i < H; ++i) {
+    const HalfedgeId h(i);
+    if (to(h).index() >= V) fail("validate: halfedge " + str(i) + " points to an invalid vertex");
+    if (next(h).index() >= H || prev(h).index() >= H)
+      fail("validate: halfedge " + str(i) + " has an invalid next or prev");
+    if (face(h).index() >= F) fail("validate: halfedge " + str(i) + " has no valid face (open surface)");
+  }
+  for (std::uint32_t i = 0; i < H; ++i) {
+    const HalfedgeId h(i);
+    if (prev(next(h)) != h || next(prev(h)) != h) fail("validate: halfedge " + str(i) + ": next and prev disagree");
+    if (face(next(h)) != face(h)) fail("validate: halfedge " + str(i) + " and its next lie in different faces");
+    if (from(next(h)) != to(h)) fail("validate: halfedge " + str(i) + ": next does not start where it ends");
+    if (from(h) == to(h)) fail("validate: halfedge " + str(i) + " is a loop at vertex " + str(to(h).index()));
+  }
+  // Faces: since next is a permutation that keeps the face, the face cycles
+  // cover every halfedge exactly once iff their lengths sum to H.
+  std::vector<std::uint32_t> stamp(V, invalid);
+  std::uint64_t total = 0;
+  for (std::uint32_t f = 0; f < F; ++f) {
+    const HalfedgeId start = face_he_[f];
+    if (start.index() >= H || face(start) != FaceId(f))
+      fail("validate: face " + str(f) + " has an invalid stored halfedge");
+    HalfedgeId h = start;
+    std::uint32_t len = 0;
+    do {
+      const std::uint32_t v = to(h).index();
+      if (stamp[v] == f) fail("validate: face " + str(f) + " visits vertex " + str(v) + " twice");
+      stamp[v] = f;
+      ++len;
+      h = next(h);
+    } while (h != start && len <= H);
+    if (h != start) fail("validate: face " + str(f) + " has no closed cycle");
+    if (len < 3) fail("validate: face " + str(f) + " has fewer than 3 halfedges");
+    total += len;
+  }
+  if (total != H) fail("validate: some face has more than one halfedge cycle");
+  // Vertex fans, likewise: twin(prev(.)) permutes the halfedges leaving a vertex.
+  total = 0;
+  for (std::uint32_t v = 0; v < V; ++v) {
+    const HalfedgeId start = vertex_he_[v];
+    if (start.index() >= H || from(start) != VertexId(v))
+      fail("validate: vertex " + str(v) + " has an invalid stored halfedge (unreferenced vertex?)");
+    HalfedgeId h = start;
+    std::uint32_t len = 0;
+    do {
+      ++len;
+      h = twin(prev(h));
+    } while (h != start && len <= H);
+    if (h != start) fail("validate: the fan of vertex " + str(v) + " is not closed");
+    total += len;
+  }
+  if (total != H) fail("validate: some vertex has more than one fan (non-manifold vertex)");
+  // No two edges between the same pair of vertices.
+  std::vector<std::uint64_t> keys(num_edges());
+  for (std::uint32_t e = 0; e < num_edges(); ++e) {
+    const std::uint64_t a = to(HalfedgeId(2 * e)).index(), b = to(HalfedgeId(2 * e + 1)).index();
+    keys[e] = (std::min(a, b) << 32) | std::max(a, b);
+  }
+  std::sort(keys.begin(), keys.end());
+  auto dup = std::adjacent_find(keys.begin(), keys.end());
+  if (dup != keys.end())
+    fail("validate: " + edge_name(static_cast<std::uint32_t>(*dup >> 32), static_cast<std::uint32_t>(*dup)) +
+         " appears more than once");
+}
+
+PolygonSoup Mesh::to_soup() const {
+  PolygonSoup soup;
+  soup.points = positions_;
+  soup.face_indices.reserve(num_halfedges());
+  soup.face_offsets.reserve(num_faces() + 1);
+  for (FaceId f : faces()) {
+    for (HalfedgeId h : face_halfedges(f)) soup.face_indices.push_back(from(h).index());
+    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
+  }
+  return soup;
+}
+
+Mesh Mesh::with_positions(std::vector<Vec3> positions) const {
+  if (positions.size() != positions_.size())
+    throw Error(ErrorCategory::invalid_argument, "with_positions: got " + std::to_string(positions.size()) +
+                                                     " positions for " + std::to_string(positions_.size()) +
+                                                     " vertices");
+  Mesh m;
+  m.positions_ = std::move(positions);
+  m.vertex_he_ = vertex_he_;
+  m.he_to_ = he_to_;
+  m.he_next_ = he_next_;
+  m.he_prev_ = he_prev_;
+  m.he_face_ = he_face_;
+  m.face_he_ = face_he_;
+  return m;
+}
+
+}  // namespace cvms

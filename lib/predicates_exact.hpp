@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// Exact rational evaluation of every predicate, without the floating-point
+// filter and without touching the counters. The fallback of the filtered
+// predicates (predicates.cpp), and the baseline of the benchmark.
+#pragma once
+
+#include "cvms/predicates.hpp"
+
+namespace cvms::exact {
+
+// Same conventions as the public predicates of the same name.
+Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c);
+Sign sign_cross2(const Vec2& u, const Vec2& v);
+Sign sign_dot(const Vec2& u, const Vec2& v);
+Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+Sign sign_dot(const Vec3& u, const Vec3& v);
+Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n);
+Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset);
+Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w);
+bool is_parallel(const Vec3& u, const Vec3& v);
+
+}  // namespace cvms::exact

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+// Approx::of: the bound |value - q| <= error holds, checked exactly, and
+// error == 0 exactly when q is a double.
+#include "cvms/approx.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "support/random_numbers.hpp"
+
+namespace cvms {
+namespace {
+
+using test::power_of_two;
+
+// The oracle for "q is a double": mpq_set_d is exact, so compare.
+bool is_a_double(const Rational& q) {
+  if (abs(q) > Rational(DBL_MAX)) return false;
+  return Rational(to_double_nearest(q)) == q;
+}
+
+// Checks the contract of Approx::of for q; returns "" or a message.
+std::string check(const Rational& q) {
+  Approx a = Approx::of(q);
+  if (std::isnan(a.value) || std::isnan(a.error)) return "NaN for " + to_string(q);
+  if (!(a.error >= 0)) return "negative error for " + to_string(q);
+  if (!std::isfinite(a.value) || !std::isfinite(a.error)) {
+    // Unknown is allowed only beyond the double range.
+    if (abs(q) < power_of_two(1024)) return "non-finite for in-range " + to_string(q);
+    return "";
+  }
+  Rational diff = abs(Rational(a.value) - q);
+  if (diff > Rational(a.error)) return "bound violated for " + to_string(q);
+  if ((a.error == 0) != is_a_double(q)) return "exactness wrong for " + to_string(q);
+  // The value is one of the two doubles around q (nearest or truncated): q
+  // lies strictly between it and the next double toward q.
+  if (a.error != 0) {
+    double toward = std::nextafter(a.value, Rational(a.value) < q ? INFINITY : -INFINITY);
+    if (std::isfinite(toward) && (Rational(toward) - q) * (Rational(a.value) - q) >= 0)
+      return "value not adjacent to " + to_string(q);
+  }
+  return "";
+}
+
+TEST(Approx, ExactDoublesHaveZeroError) {
+  for (double d : {0.0, 1.0, -1.0, 0.1, -1e300, 1e-300, 5e-324, -5e-324, DBL_MAX, -DBL_MAX, DBL_MIN,
+                   DBL_MIN / 3, 123456789.125, std::ldexp(1.0, -1074), std::ldexp(1.0, 1023)}) {
+    Approx a = Approx::of(Rational(d));
+    EXPECT_EQ(a.value, d);
+    EXPECT_EQ(a.error, 0.0) << d;
+  }
+}
+
+TEST(Approx, HandPickedBoundaries) {
+  std::vector<Rational> cases = {
+      Rational(1, 3),
+      Rational(-1, 3),
+      Rational(1, 10),
+      power_of_two(1024) - 1,  // truncates to DBL_MAX
+      -(power_of_two(1024) - 1),
+      power_of_two(1024),
+      power_of_two(5000),
+      -power_of_two(1030),  // beyond the range
+      power_of_two(-1075),  // truncates to 0
+      -power_of_two(-1075),
+      power_of_two(-3000),
+      power_of_two(-1074) * 3 / 2,                                               // between two subnormals
+      power_of_two(-1022) - power_of_two(-1080),                                 // just below DBL_MIN
+      power_of_two(-1022) + power_of_two(-1080),                                 // just above DBL_MIN
+      power_of_two(53) + 1,                                                      // 54 significant bits
+      power_of_two(-1074) * (power_of_two(53) - 1),                              // 53 bits, lowest 2^-1074
+      power_of_two(-1075) * (power_of_two(53) - 1),                              // one bit too low
+      power_of_two(-1074) * (power_of_two(54) - 1),                              // 54 bits
+      Rational(power_of_two(1023) * (power_of_two(53) - 1) / power_of_two(52)),  // DBL_MAX exactly
+      // Fractions of integers with at most / just over 53 bits (the division fast path).
+      test::fraction(mpz_class(1) << 53, 3) - 1,
+      test::fraction((mpz_class(1) << 53) - 1, (mpz_class(1) << 52) + 1),
+      test::fraction(-((mpz_class(1) << 53) - 1), (mpz_class(1) << 53) - 3),
+      test::fraction((mpz_class(1) << 53) + 1, 3),
+      test::fraction(1, (mpz_class(1) << 53) + 1),
+      test::fraction(mpz_class("18446744073709551615"), 7),
+      test::fraction(1, 7),
+      test::fraction(-22, 7),
+  };
+  for (const Rational& q : cases) EXPECT_EQ(check(q), "") << to_string(q).substr(0, 80);
+  EXPECT_EQ(Approx::of(power_of_two(-1075)).value, 0.0);
+  EXPECT_GT(Approx::of(power_of_two(-1075)).error, 0.0);
+  EXPECT_EQ(Approx::of(power_of_two(1024) - 1).value, DBL_MAX);
+  EXPECT_FALSE(std::isfinite(Approx::of(power_of_two(1024)).error));
+}
+
+TEST(Approx, RandomRationalsBoundHolds) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    test::Rng rng(seed);
+    int inexact = 0;
+    for (int i = 0; i < 20000; ++i) {
+      Rational q = test::random_rational(rng);
+      std::string message = check(q);
+      ASSERT_EQ(message, "") << "case " << i;
+      if (Approx::of(q).error != 0) ++inexact;
+    }
+    EXPECT_GT(inexact, 1000);  // the generator does produce non-doubles
+  }
+}
+
+TEST(Approx, RandomDoubleNeighbours) {
+  // Values just off a double (by a fraction of its ulp), all exponents.
+  test::Rng rng(7);
+  for (int i = 0; i < 20000; ++i) {
+    double d = test::random_double_bits(rng);
+    double next = std::nextafter(d, std::numeric_limits<double>::infinity());
+    if (!std::isfinite(next)) continue;
+    Rational lo(d), hi(next);
+    Rational t = test::fraction(static_cast<long>(rng() % 1000) + 1, 1001);
+    ASSERT_EQ(check(lo + (hi - lo) * t), "") << d;
+  }
+}
+
+TEST(Approx, VectorsApproximateEachCoordinate) {
+  Vec3 v{Rational(1, 3), Rational(2), Rational(-1, 10)};
+  ApproxVec3 a = ApproxVec3::of(v);
+  EXPECT_EQ(a.y.error, 0.0);
+  EXPECT_GT(a.x.error, 0.0);
+  EXPECT_LE(abs(Rational(a.z.value) - v.z), Rational(a.z.error));
+  ApproxVec2 b = ApproxVec2::of(Vec2{Rational(5), Rational(1, 3)});
+  EXPECT_EQ(b.x.value, 5.0);
+  EXPECT_GT(b.y.error, 0.0);
+}
+
+}  // namespace
+}  // namespace cvms

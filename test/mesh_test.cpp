@@ -1,0 +1,248 @@
+// SPDX-License-Identifier: MIT
+// Tests of the half-edge mesh: construction, navigation, circulators, round
+// trip to a soup, and every topology error of Mesh::from_soup.
+#include "cvms/mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "cvms/error.hpp"
+#include "support/hand_solids.hpp"
+
+namespace cvms {
+namespace {
+
+using test::make_soup;
+using test::v3;
+
+// Expects from_soup to throw Error(category) whose message contains every
+// string of `parts`.
+void expect_error(const PolygonSoup& soup, ErrorCategory category, std::initializer_list<std::string> parts) {
+  try {
+    (void)Mesh::from_soup(soup);
+    ADD_FAILURE() << "no error thrown";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), category) << e.what();
+    for (const std::string& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST(Mesh, TetrahedronCountsAndNavigation) {
+  PolygonSoup soup = test::tetrahedron();
+  Mesh m = Mesh::from_soup(soup);
+  EXPECT_EQ(m.num_vertices(), 4u);
+  EXPECT_EQ(m.num_edges(), 6u);
+  EXPECT_EQ(m.num_halfedges(), 12u);
+  EXPECT_EQ(m.num_faces(), 4u);
+  EXPECT_NO_THROW(m.validate());
+  for (HalfedgeId h : m.halfedges()) {
+    EXPECT_EQ(Mesh::twin(Mesh::twin(h)), h);
+    EXPECT_EQ(Mesh::edge(h), Mesh::edge(Mesh::twin(h)));
+    EXPECT_EQ(m.from(h), m.to(Mesh::twin(h)));
+    EXPECT_EQ(m.next(m.prev(h)), h);
+    EXPECT_EQ(m.face(m.next(h)), m.face(h));
+    EXPECT_NE(m.face(h), m.face(Mesh::twin(h)));
+  }
+  // Halfedge 2e runs from the smaller to the larger vertex index.
+  for (EdgeId e : m.edges()) {
+    HalfedgeId h = Mesh::halfedge(e);
+    EXPECT_LT(m.from(h).index(), m.to(h).index());
+    EXPECT_EQ(Mesh::edge(h), e);
+  }
+  for (VertexId v : m.vertices()) EXPECT_EQ(m.from(m.halfedge(v)), v);
+}
+
+TEST(Mesh, FaceCirculatorFollowsInputOrder) {
+  PolygonSoup soup = test::cube_quads();
+  Mesh m = Mesh::from_soup(soup);
+  ASSERT_EQ(m.num_faces(), 6u);
+  for (FaceId f : m.faces()) {
+    std::vector<std::uint32_t> got;
+    for (HalfedgeId h : m.face_halfedges(f)) got.push_back(m.from(h).index());
+    auto want = soup.face(f.index());
+    EXPECT_EQ(got, std::vector<std::uint32_t>(want.begin(), want.end()));
+    EXPECT_EQ(m.degree(f), 4u);
+  }
+}
+
+TEST(Mesh, VertexCirculatorIsCounterclockwiseFromOutside) {
+  // Cube centred at (1/2, 1/2, 1/2): the outward direction at v is v - centre.
+  for (const PolygonSoup& soup : {test::cube_quads(), test::cube_triangles(), test::octahedron()}) {
+    Mesh m = Mesh::from_soup(soup);
+    Vec3 centre{0, 0, 0};
+    for (const Vec3& p : soup.points) centre += p;
+    centre = Rational(1, static_cast<long>(soup.points.size())) * centre;
+    for (VertexId v : m.vertices()) {
+      std::vector<HalfedgeId> out;
+      for (HalfedgeId h : m.outgoing_halfedges(v)) {
+        EXPECT_EQ(m.from(h), v);
+        out.push_back(h);
+        ASSERT_LE(out.size(), m.num_halfedges());
+      }
+      std::set<HalfedgeId> unique(out.begin(), out.end());
+      EXPECT_EQ(unique.size(), out.size());
+      const Vec3 up = m.position(v) - centre;
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        HalfedgeId h = out[i], g = out[(i + 1) % out.size()];
+        EXPECT_EQ(g, Mesh::twin(m.prev(h)));
+        Vec3 a = m.position(m.to(h)) - m.position(v), b = m.position(m.to(g)) - m.position(v);
+        EXPECT_GT(dot(cross(a, b), up), 0) << "vertex " << v.index() << " step " << i;
+      }
+    }
+  }
+}
+
+TEST(Mesh, EveryHalfedgeAppearsOnceInFacesAndFans) {
+  Mesh m = Mesh::from_soup(test::subdivided(test::prism(), 1));
+  std::vector<int> in_face(m.num_halfedges(), 0), in_fan(m.num_halfedges(), 0);
+  for (FaceId f : m.faces())
+    for (HalfedgeId h : m.face_halfedges(f)) {
+      ++in_face[h.index()];
+      EXPECT_EQ(m.face(h), f);
+    }
+  for (VertexId v : m.vertices())
+    for (HalfedgeId h : m.outgoing_halfedges(v)) ++in_fan[h.index()];
+  for (HalfedgeId h : m.halfedges()) {
+    EXPECT_EQ(in_face[h.index()], 1);
+    EXPECT_EQ(in_fan[h.index()], 1);
+  }
+  EXPECT_EQ(static_cast<int>(m.num_vertices()) - static_cast<int>(m.num_edges()) + static_cast<int>(m.num_faces()), 2);
+}
+
+TEST(Mesh, SoupRoundTrip) {
+  PolygonSoup soup = test::subdivided(test::cube_quads(), 1);
+  Mesh m = Mesh::from_soup(soup);
+  PolygonSoup back = m.to_soup();
+  EXPECT_EQ(back.points, soup.points);
+  EXPECT_EQ(back.face_offsets, soup.face_offsets);
+  EXPECT_EQ(back.face_indices, soup.face_indices);
+}
+
+TEST(Mesh, WithPositionsKeepsConnectivity) {
+  Mesh m = Mesh::from_soup(test::tetrahedron());
+  std::vector<Vec3> moved;
+  for (VertexId v : m.vertices()) moved.push_back(m.position(v) + v3(5, 6, 7));
+  Mesh t = m.with_positions(moved);
+  EXPECT_NO_THROW(t.validate());
+  EXPECT_EQ(t.positions(), moved);
+  for (HalfedgeId h : m.halfedges()) EXPECT_EQ(t.next(h), m.next(h));
+  try {
+    (void)m.with_positions({v3(0, 0, 0)});
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+  }
+}
+
+TEST(Mesh, TwoSidedPolygonIsAValidClosedSurface) {
+  // Topologically a sphere (V - E + F = 3 - 3 + 2); geometry is not Mesh's business.
+  Mesh m = Mesh::from_soup(make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0)}, {{0, 1, 2}, {0, 2, 1}}));
+  EXPECT_EQ(m.num_edges(), 3u);
+  EXPECT_NO_THROW(m.validate());
+}
+
+// ---- bad input: one test per case -------------------------------------------
+
+TEST(MeshBadInput, EmptySoup) {
+  expect_error(PolygonSoup{}, ErrorCategory::topology, {"empty"});
+  expect_error(make_soup({v3(0, 0, 0)}, {}), ErrorCategory::topology, {"empty"});
+}
+
+TEST(MeshBadInput, MalformedOffsets) {
+  PolygonSoup s = test::tetrahedron();
+  s.face_offsets.back() += 1;
+  expect_error(s, ErrorCategory::invalid_argument, {"face_offsets"});
+  PolygonSoup t = test::tetrahedron();
+  t.face_offsets.clear();
+  expect_error(t, ErrorCategory::invalid_argument, {"face_offsets"});
+  PolygonSoup u = test::tetrahedron();
+  std::swap(u.face_offsets[1], u.face_offsets[2]);
+  expect_error(u, ErrorCategory::invalid_argument, {"face 1"});
+}
+
+TEST(MeshBadInput, FaceWithTwoVertices) {
+  PolygonSoup s = test::tetrahedron();
+  s.add_face({0, 1});
+  expect_error(s, ErrorCategory::topology, {"face 4", "2 vertices"});
+}
+
+TEST(MeshBadInput, RepeatedVertexInFace) {
+  PolygonSoup s = make_soup(test::tetrahedron().points, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2, 3}, {1, 2, 3}});
+  expect_error(s, ErrorCategory::topology, {"face 2", "vertex 3", "more than once"});
+}
+
+TEST(MeshBadInput, IndexOutOfRange) {
+  PolygonSoup s = make_soup(test::tetrahedron().points, {{0, 2, 1}, {0, 1, 3}, {0, 3, 7}, {1, 2, 3}});
+  expect_error(s, ErrorCategory::topology, {"face 2", "index 7", "out of range"});
+}
+
+TEST(MeshBadInput, OpenMesh) {
+  PolygonSoup cube = test::cube_quads();
+  PolygonSoup s;
+  s.points = cube.points;
+  for (std::size_t f = 1; f < cube.num_faces(); ++f) s.add_face(cube.face(f));  // bottom face missing
+  expect_error(s, ErrorCategory::topology, {"boundary edge", "open", "edge (0, 1)"});
+}
+
+TEST(MeshBadInput, NonManifoldEdge) {
+  // Two tetrahedra sharing edge (0, 1): four faces on that edge.
+  std::vector<Vec3> p{v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1), v3(0, -1, 0), v3(0, 0, -1)};
+  PolygonSoup s = make_soup(p, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},    // tetra 0,1,2,3
+                                {0, 4, 1}, {0, 1, 5}, {0, 5, 4}, {1, 4, 5}});  // tetra 0,1,4,5
+  expect_error(s, ErrorCategory::topology, {"edge (0, 1)", "4 faces", "non-manifold edge"});
+}
+
+TEST(MeshBadInput, NonManifoldVertex) {
+  // Two tetrahedra sharing only vertex 0.
+  std::vector<Vec3> p{v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1), v3(-1, 0, 0), v3(0, -1, 0), v3(0, 0, -1)};
+  PolygonSoup s = make_soup(p, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},    //
+                                {0, 4, 5}, {0, 5, 6}, {0, 6, 4}, {4, 6, 5}});  //
+  expect_error(s, ErrorCategory::topology, {"vertex 0", "non-manifold vertex"});
+}
+
+TEST(MeshBadInput, OneFlippedFace) {
+  PolygonSoup cube = test::cube_triangles();
+  PolygonSoup s;
+  s.points = cube.points;
+  for (std::size_t f = 0; f < cube.num_faces(); ++f) {
+    auto face = cube.face(f);
+    if (f == 5)
+      s.add_face({face[0], face[2], face[1]});
+    else
+      s.add_face(face);
+  }
+  expect_error(s, ErrorCategory::topology, {"same direction", "inconsistent orientation", "faces 5 and"});
+}
+
+TEST(MeshBadInput, InconsistentOrientationNamesEdgeAndFaces) {
+  // Half of a tetrahedron flipped: edge (1, 2) used 1 -> 2 by faces 0 and 3... build it by hand.
+  PolygonSoup s = make_soup(test::tetrahedron().points, {{0, 1, 2}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+  // faces 0 and 1 both use 0 -> 1.
+  expect_error(s, ErrorCategory::topology, {"edge (0, 1)", "faces 0 and 1", "inconsistent orientation"});
+}
+
+TEST(MeshBadInput, DuplicatePoints) {
+  PolygonSoup s = test::tetrahedron();
+  s.points.push_back(v3(1, 0, 0));  // equal to vertex 1
+  s.add_face({4, 2, 3});           // keep it referenced; topology errors follow, but duplicates come first
+  expect_error(s, ErrorCategory::topology, {"vertices 1 and 4", "same point"});
+}
+
+TEST(MeshBadInput, DuplicatePointsWrittenDifferently) {
+  // 0/3 built without canonicalisation still equals 0.
+  PolygonSoup s = test::tetrahedron();
+  s.points.push_back(Vec3{Rational(0, 3), Rational(2, 2), Rational(0)});  // equal to vertex 2
+  s.add_face({4, 1, 3});
+  expect_error(s, ErrorCategory::topology, {"vertices 2 and 4", "same point"});
+}
+
+TEST(MeshBadInput, UnreferencedVertex) {
+  PolygonSoup s = test::tetrahedron();
+  s.points.push_back(v3(5, 5, 5));
+  expect_error(s, ErrorCategory::topology, {"vertex 4", "unreferenced"});
+}
+
+}  // namespace
+}  // namespace cvms

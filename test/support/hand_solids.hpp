@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: MIT
+// Hand-built solids as polygon soups for mesh and polyhedron tests, and soup
+// manipulations (subdivision, reversal, triangulation, vertex shuffling) that
+// keep the described solid unchanged. Plain rational arithmetic only.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "cvms/polygon_soup.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms::test {
+
+inline PolygonSoup make_soup(std::vector<Vec3> points, const std::vector<std::vector<std::uint32_t>>& faces) {
+  PolygonSoup s;
+  s.points = std::move(points);
+  for (const auto& f : faces) s.add_face(f);
+  return s;
+}
+
+inline Vec3 v3(long x, long y, long z) { return {Rational(x), Rational(y), Rational(z)}; }
+
+/// Unit tetrahedron (0,0,0), e_x, e_y, e_z, outward.
+inline PolygonSoup tetrahedron() {
+  return make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1)}, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+}
+
+/// Cube [0,s]^3 as 6 quads; vertex i = (x, y, z) with bits x + 2y + 4z.
+inline PolygonSoup cube_quads(long s = 1) {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.push_back(v3((i & 1) ? s : 0, (i & 2) ? s : 0, (i & 4) ? s : 0));
+  return make_soup(p, {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
+}
+
+/// Every face split into a fan from its first vertex.
+inline PolygonSoup fan_triangulated(const PolygonSoup& in) {
+  PolygonSoup s;
+  s.points = in.points;
+  for (std::size_t f = 0; f < in.num_faces(); ++f) {
+    auto face = in.face(f);
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) s.add_face({face[0], face[i], face[i + 1]});
+  }
+  return s;
+}
+
+inline PolygonSoup cube_triangles() { return fan_triangulated(cube_quads()); }
+
+/// Octahedron with vertices +-e_i: 8 triangles, outward.
+inline PolygonSoup octahedron() {
+  std::vector<Vec3> p{v3(1, 0, 0), v3(-1, 0, 0), v3(0, 1, 0), v3(0, -1, 0), v3(0, 0, 1), v3(0, 0, -1)};
+  PolygonSoup s;
+  s.points = p;
+  for (int sx = 0; sx < 2; ++sx)
+    for (int sy = 0; sy < 2; ++sy)
+      for (int sz = 0; sz < 2; ++sz) {
+        std::uint32_t a = sx, b = 2 + sy, c = 4 + sz;
+        Vec3 n = cross(p[b] - p[a], p[c] - p[a]);
+        if (dot(n, p[a]) < 0) std::swap(b, c);
+        s.add_face({a, b, c});
+      }
+  return s;
+}
+
+/// Triangular prism: base (0,0,0), (3,0,0), (0,3,0), height 2; quads on the sides.
+inline PolygonSoup prism() {
+  return make_soup({v3(0, 0, 0), v3(3, 0, 0), v3(0, 3, 0), v3(0, 0, 2), v3(3, 0, 2), v3(0, 3, 2)},
+                   {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}});
+}
+
+/// Each triangle split into 4 at its edge midpoints (shared between faces),
+/// `levels` times. Non-triangles are fan-triangulated first.
+inline PolygonSoup subdivided(const PolygonSoup& in, int levels) {
+  PolygonSoup s = fan_triangulated(in);
+  for (int l = 0; l < levels; ++l) {
+    PolygonSoup t;
+    t.points = s.points;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+      auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      auto i = static_cast<std::uint32_t>(t.points.size());
+      t.points.push_back(Rational(1, 2) * (s.points[a] + s.points[b]));
+      mid.emplace(key, i);
+      return i;
+    };
+    for (std::size_t f = 0; f < s.num_faces(); ++f) {
+      auto face = s.face(f);
+      std::uint32_t a = face[0], b = face[1], c = face[2];
+      std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      t.add_face({a, ab, ca});
+      t.add_face({ab, b, bc});
+      t.add_face({ca, bc, c});
+      t.add_face({ab, bc, ca});
+    }
+    s = std::move(t);
+  }
+  return s;
+}
+
+/// Every face reversed (inward orientation for a closed outward surface).
+inline PolygonSoup reversed(PolygonSoup s) {
+  for (std::size_t f = 0; f < s.num_faces(); ++f)
+    std::reverse(s.face_indices.begin() + s.face_offsets[f], s.face_indices.begin() + s.face_offsets[f + 1]);
+  return s;
+}
+
+/// The same surface with vertices renumbered, faces reordered and each face
+/// list rotated, all at random.
+inline PolygonSoup shuffled(const PolygonSoup& in, std::mt19937& rng) {
+  std::vector<std::uint32_t> perm(in.points.size());
+  std::iota(perm.begin(), perm.end(), 0u);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  PolygonSoup s;
+  s.points.resize(in.points.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) s.points[perm[i]] = in.points[i];
+  std::vector<std::size_t> order(in.num_faces());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::shuffle(order.begin(), order.end(), rng);
+  for (std::size_t f : order) {
+    auto face = in.face(f);
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t v : face) out.push_back(perm[v]);
+    std::rotate(out.begin(), out.begin() + static_cast<long>(rng() % out.size()), out.end());
+    s.add_face(out);
+  }
+  return s;
+}
+
+/// x -> linear * x + offset applied to every point (faces unchanged).
+inline PolygonSoup mapped(PolygonSoup s, const Mat3& linear, const Vec3& offset) {
+  for (Vec3& p : s.points) p = linear * p + offset;
+  return s;
+}
+
+}  // namespace cvms::test
