@@ -115,17 +115,19 @@ void check_count(int n, int lo, int hi, const char* what) {
 
 // ---- geodesic spheres ------------------------------------------------------
 
-// The icosahedron (0, +-1, +-phi) and cyclic permutations; faces are index
-// triples, counterclockwise seen from outside.
+// The icosahedron: (+-1, +-phi, 0), (0, +-1, +-phi), (+-phi, 0, +-1), where
+// 2 stands for phi below. Faces are index triples, counterclockwise seen from
+// outside.
+// clang-format off
 constexpr std::array<std::array<int, 3>, 12> kIcosaVertices{{
-    {-1, 2, 0}, {1, 2, 0}, {-1, -2, 0}, {1, -2, 0},   // (+-1, +-phi, 0); 2 stands for phi
-    {0, -1, 2}, {0, 1, 2}, {0, -1, -2}, {0, 1, -2},   // (0, +-1, +-phi)
-    {2, 0, -1}, {2, 0, 1}, {-2, 0, -1}, {-2, 0, 1},   // (+-phi, 0, +-1)
-}};
+    {-1, 2, 0}, {1, 2, 0}, {-1, -2, 0}, {1, -2, 0},
+    {0, -1, 2}, {0, 1, 2}, {0, -1, -2}, {0, 1, -2},
+    {2, 0, -1}, {2, 0, 1}, {-2, 0, -1}, {-2, 0, 1}}};
+// clang-format on
 constexpr std::array<std::array<std::uint32_t, 3>, 20> kIcosaFaces{{
-    {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-    {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-    {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1},
+    {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+    {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1},
 }};
 
 // The fixed generic rotation of rotated_geodesic_sphere, as the quaternion
@@ -175,8 +177,8 @@ std::vector<D3> geodesic_points(int k, bool rotated) {
       auto [it, inserted] = midpoints.try_emplace(key, static_cast<std::uint32_t>(points.size()));
       if (inserted) {
         const D3 pa = points[a], pb = points[b];
-        points.push_back(normalised({mul(add(pa.x, pb.x), 0.5), mul(add(pa.y, pb.y), 0.5),
-                                     mul(add(pa.z, pb.z), 0.5)}));
+        points.push_back(
+            normalised({mul(add(pa.x, pb.x), 0.5), mul(add(pa.y, pb.y), 0.5), mul(add(pa.z, pb.z), 0.5)}));
       }
       return it->second;
     };
@@ -216,11 +218,20 @@ class SpanTracker {
  public:
   void add(const Vec3& p) {
     switch (basis_.size()) {
-      case 0: basis_.push_back(p); break;
-      case 1: if (p != basis_[0]) basis_.push_back(p); break;
-      case 2: if (!is_parallel(basis_[1] - basis_[0], p - basis_[0])) basis_.push_back(p); break;
-      case 3: if (orient3d(basis_[0], basis_[1], basis_[2], p) != Sign::zero) basis_.push_back(p); break;
-      default: break;
+      case 0:
+        basis_.push_back(p);
+        break;
+      case 1:
+        if (p != basis_[0]) basis_.push_back(p);
+        break;
+      case 2:
+        if (!is_parallel(basis_[1] - basis_[0], p - basis_[0])) basis_.push_back(p);
+        break;
+      case 3:
+        if (orient3d(basis_[0], basis_[1], basis_[2], p) != Sign::zero) basis_.push_back(p);
+        break;
+      default:
+        break;
     }
   }
   [[nodiscard]] bool spans_3d() const { return basis_.size() == 4; }
@@ -334,7 +345,8 @@ ConvexPolyhedron box(const Vec3& lo, const Vec3& hi) {
   for (int i = 0; i < 3; ++i)
     if (!(lo[i] < hi[i]))
       throw Error(ErrorCategory::degenerate, "box: lo[" + std::to_string(i) + "] = " + to_string(lo[i]) +
-                                                 " is not below hi[" + std::to_string(i) + "] = " + to_string(hi[i]));
+                                                 " is not below hi[" + std::to_string(i) +
+                                                 "] = " + to_string(hi[i]));
   PolygonSoup soup;
   soup.points = box_corners(lo, hi);
   add_box_faces(soup);
@@ -367,7 +379,8 @@ std::vector<Vec2> circle_polygon(int n) {
 
 ConvexPolyhedron prism(int n, const Rational& height) {
   check_count(n, 3, 1000000, "prism: n");
-  if (sgn(height) <= 0) throw Error(ErrorCategory::invalid_argument, "prism: height " + to_string(height) + " is not positive");
+  if (sgn(height) <= 0)
+    throw Error(ErrorCategory::invalid_argument, "prism: height " + to_string(height) + " is not positive");
   const Rational half = height / 2;
   const std::uint32_t m = static_cast<std::uint32_t>(n);
   PolygonSoup soup;
@@ -393,7 +406,8 @@ ConvexPolyhedron prism(int n, const Rational& height) {
 std::vector<Vec3> random_points(std::uint64_t seed, int n, std::int64_t range) {
   check_count(n, 4, 10000000, "random_points: n");
   if (range < 1 || range > (std::int64_t{1} << 62))
-    throw Error(ErrorCategory::invalid_argument, "random_points: range " + std::to_string(range) + " is outside 1..2^62");
+    throw Error(ErrorCategory::invalid_argument,
+                "random_points: range " + std::to_string(range) + " is outside 1..2^62");
   std::mt19937_64 engine(seed);
   std::vector<Vec3> points;
   points.reserve(static_cast<std::size_t>(n));
@@ -404,7 +418,8 @@ std::vector<Vec3> random_points(std::uint64_t seed, int n, std::int64_t range) {
   const std::size_t cap = static_cast<std::size_t>(n) + 10000;
   while (points.size() < static_cast<std::size_t>(n) || !span.spans_3d()) {
     if (points.size() >= cap)
-      throw Error(ErrorCategory::degenerate, "random_points: seed " + std::to_string(seed) + " gave no 3D cloud");
+      throw Error(ErrorCategory::degenerate,
+                  "random_points: seed " + std::to_string(seed) + " gave no 3D cloud");
     Vec3 p;
     for (int i = 0; i < 3; ++i) p[i] = Rational(integer(draw(engine, range)));
     span.add(p);

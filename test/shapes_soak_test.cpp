@@ -30,8 +30,8 @@ TEST(GeodesicSphereSoak, LevelsOneToSix) {
       if (k <= 4) {  // check_invariants is O(V F)
         EXPECT_EQ(test::check_invariants(s), "");
       }
-      std::cout << (rotated ? "rotated_geodesic_sphere(" : "geodesic_sphere(") << k << "): V/E/F = " << s.num_vertices()
-                << "/" << s.num_edges() << "/" << s.num_facets() << "\n";
+      std::cout << (rotated ? "rotated_geodesic_sphere(" : "geodesic_sphere(") << k
+                << "): V/E/F = " << s.num_vertices() << "/" << s.num_edges() << "/" << s.num_facets() << "\n";
     }
 }
 

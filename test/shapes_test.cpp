@@ -78,7 +78,8 @@ TEST(GeodesicSpherePoints, AreDistinctDoublesOnTheUnitSphere) {
         // Exact |p|^2 - 1: each coordinate is within an ulp or so of the
         // true unit vector's.
         Rational norm2 = dot(p, p) - 1;
-        ASSERT_LT(std::fabs(norm2.get_d()), 1e-15) << to_string(p.x) << " " << to_string(p.y) << " " << to_string(p.z);
+        ASSERT_LT(std::fabs(norm2.get_d()), 1e-15)
+            << to_string(p.x) << " " << to_string(p.y) << " " << to_string(p.z);
       }
     }
 }
@@ -140,7 +141,8 @@ TEST(GeodesicSpherePoints, NearestNeighbourDistanceHalvesPerLevel) {
     std::vector<Vec3> points = geodesic_sphere_points(k);
     double nearest = 10;
     for (std::size_t i = 0; i < points.size(); ++i)
-      for (std::size_t j = i + 1; j < points.size(); ++j) nearest = std::min(nearest, distance(to_p3(points[i]), to_p3(points[j])));
+      for (std::size_t j = i + 1; j < points.size(); ++j)
+        nearest = std::min(nearest, distance(to_p3(points[i]), to_p3(points[j])));
     EXPECT_GT(nearest, 0.7 * edge) << "k " << k;
     EXPECT_LT(nearest, 1.1 * edge) << "k " << k;
     edge /= 2;
@@ -161,7 +163,8 @@ TEST(GeodesicSpherePoints, RotatedIcosahedronIsARotationOfTheIcosahedron) {
 }
 
 TEST(GeodesicSpherePoints, AreDeterministic) {
-  for (bool rotated : {false, true}) EXPECT_EQ(geodesic_sphere_points(4, rotated), geodesic_sphere_points(4, rotated));
+  for (bool rotated : {false, true})
+    EXPECT_EQ(geodesic_sphere_points(4, rotated), geodesic_sphere_points(4, rotated));
 }
 
 // FNV-1a over the bits of every coordinate. A change means the shapes differ
@@ -252,7 +255,8 @@ TEST(RationalRotation, IsOrthogonalWithDeterminantOneAndFixesItsAxis) {
     quaternions.push_back(q);
   }
   for (const auto& [a, b, c, d] : quaternions) {
-    SCOPED_TRACE(std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d));
+    SCOPED_TRACE(std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + " " +
+                 std::to_string(d));
     Mat3 r = shapes::rational_rotation(a, b, c, d);
     EXPECT_TRUE(equal(transpose(r) * r, Mat3::identity()));
     EXPECT_EQ(r.determinant(), 1);
@@ -429,7 +433,6 @@ TEST(Box, RejectsEmptyOrFlatBoxes) {
   }
 }
 
-
 // ---- polyhedra ------------------------------------------------------------------------
 
 using test::brute_force_hull;
@@ -459,7 +462,8 @@ void expect_hull_of(const ConvexPolyhedron& p, const std::vector<Vec3>& points) 
 
 std::vector<Vec3> sign_combinations(const Vec3& v) {
   std::vector<Vec3> out;
-  for (int s = 0; s < 8; ++s) out.push_back({(s & 1) ? -v.x : v.x, (s & 2) ? -v.y : v.y, (s & 4) ? -v.z : v.z});
+  for (int s = 0; s < 8; ++s)
+    out.push_back({(s & 1) ? -v.x : v.x, (s & 2) ? -v.y : v.y, (s & 4) ? -v.z : v.z});
   return out;
 }
 
@@ -520,7 +524,8 @@ TEST(Box, IsTheHullOfItsCorners) {
   ConvexPolyhedron b = shapes::box(lo, hi);
   EXPECT_EQ(counts(b), (Counts{8, 12, 6}));
   std::vector<Vec3> corners;
-  for (int i = 0; i < 8; ++i) corners.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
+  for (int i = 0; i < 8; ++i)
+    corners.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
   expect_hull_of(b, corners);
 }
 
