@@ -139,7 +139,7 @@ std::vector<D3> icosahedron_points(bool rotated) {
   auto coordinate = [phi](int c) { return c == 2 ? phi : (c == -2 ? -phi : static_cast<double>(c)); };
   // Integer numerators of rational_rotation's matrix (all small, exact in
   // double), divided by the common denominator after the products.
-  double m[3][3];
+  double m[3][3] = {};
   double denominator = 1.0;
   if (rotated) {
     auto [a, b, c, d] = kSphereRotation;
