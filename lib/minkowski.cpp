@@ -4,6 +4,7 @@
 #include "cvms/minkowski.hpp"
 
 #include "cvms.hpp"
+#include "essdms.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
 
@@ -26,8 +27,8 @@ MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron&
       result.polyhedron = chms(a, b);
       break;
     case Algorithm::essdms:
-      throw Error(ErrorCategory::not_implemented,
-                  "minkowski_sum: the essdms algorithm is not implemented yet");
+      result.polyhedron = detail::essdms_sum(a, b, result.stats);
+      break;
     default:
       throw Error(ErrorCategory::invalid_argument,
                   "minkowski_sum: unknown algorithm " + std::to_string(static_cast<int>(options.algorithm)));

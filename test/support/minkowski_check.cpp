@@ -24,6 +24,16 @@ std::vector<Vec3> edge_vectors(const ConvexPolyhedron& p) {
   return out;
 }
 
+// How many facets of p have a normal that no facet of q has: the corner
+// facets of q + p.
+std::uint64_t normals_missing_from(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
+  std::set<Vec3> normals_q;
+  for (const Plane& pl : describe(q).planes) normals_q.insert(pl.normal);
+  std::uint64_t n = 0;
+  for (const Plane& pl : describe(p).planes) n += normals_q.count(pl.normal) == 0;
+  return n;
+}
+
 }  // namespace
 
 std::string check_facet_origins(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Shape& sum) {
@@ -80,14 +90,18 @@ std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
     const std::uint64_t bound =
         std::uint64_t{a.num_facets()} + b.num_facets() + std::uint64_t{a.num_edges()} * b.num_edges();
     if (f > bound) out << name << ": F = " << f << " exceeds f_A + f_B + e_A e_B = " << bound << "\n";
-    if (options.algorithm == Algorithm::cvms) {
+    if (options.algorithm == Algorithm::cvms || options.algorithm == Algorithm::essdms) {
       const Stats& s = r->stats;
       const std::uint64_t first = r == &ab ? a.num_facets() : b.num_facets();
+      const std::uint64_t corners = r == &ab ? normals_missing_from(b, a) : normals_missing_from(a, b);
       if (s.translated_facets + s.corner_facets + s.edge_facets != f)
         out << name << ": stats " << s.translated_facets << " + " << s.corner_facets << " + " << s.edge_facets
             << " do not add up to F = " << f << "\n";
       if (s.translated_facets != first)
         out << name << ": translated facets " << s.translated_facets << " != f_A\n";
+      if (s.corner_facets != corners)
+        out << name << ": corner facets " << s.corner_facets << " != " << corners
+            << " (facets of B with a normal no facet of A has)\n";
       if (s.predicate_exact + s.predicate_filtered == 0) out << name << ": no predicate calls counted\n";
     }
   }

@@ -20,7 +20,8 @@ std::string check_facet_origins(const ConvexPolyhedron& a, const ConvexPolyhedro
 /// Runs `options.algorithm` on a + b and on b + a and checks: the invariants
 /// of both results, equality with `expected` and between the two orders
 /// (commutativity), F <= f_A + f_B + e_A e_B, the facet origins, and for CVMS
-/// that the stats add up to F (and that translated facets = f_A). Returns ""
+/// and ESSDMS that the stats add up to F, that translated facets = f_A and
+/// that corner facets = the facets of B whose normal no facet of A has. Returns ""
 /// or a message. \p check_origins can be switched off for big inputs.
 std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Shape& expected,
                       const Options& options = {}, bool check_origins = true);
