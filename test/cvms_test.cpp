@@ -384,7 +384,7 @@ TEST_P(Cvms, InputTriangulatedWithManyCoplanarTriangles) {
 // ---------------------------------------------------------------------------
 // Conventions the algorithm relies on, checked with plain rationals.
 
-TEST_P(Cvms, GaussianArcRunsCounterclockwiseAboutTheEdge) {
+TEST(Conventions, GaussianArcRunsCounterclockwiseAboutTheEdge) {
   // cross(n(face(h)), n(face(twin(h)))) is a positive multiple of
   // to(h) - from(h): lib/cvms.cpp uses the edge vector as the arc's pole.
   for (const auto& p : {shapes::cube(), shapes::truncated_cube(), shapes::geodesic_sphere(2),
@@ -397,6 +397,118 @@ TEST_P(Cvms, GaussianArcRunsCounterclockwiseAboutTheEdge) {
       ASSERT_GT(sgn(dot(pole, d)), 0);
     }
   }
+}
+
+// ---------------------------------------------------------------------------
+// Arc geometry: configurations of Gaussian arcs that stress the slope-diagram
+// merge of ESSDMS (paper Section 5.2); every algorithm must agree on them.
+
+// The rotation about z by the angle with cosine 3/5 and sine 4/5 (exact).
+Mat3 rotation_z_3_4_5() {
+  Mat3 m;
+  m.m[0][0] = Rational(3, 5);
+  m.m[0][1] = Rational(-4, 5);
+  m.m[1][0] = Rational(4, 5);
+  m.m[1][1] = Rational(3, 5);
+  m.m[2][2] = 1;
+  return m;
+}
+
+// A bipyramid over an integer hexagon in z = 0 with apexes (0, 0, +-h): for
+// small h its facet normals crowd the poles and the arcs of its six equator
+// edges run almost from pole to pole (nearly antipodal ends).
+ConvexPolyhedron flat_bipyramid(const Rational& h) {
+  return hull({v3(2, 0, 0), v3(1, 2, 0), v3(-1, 2, 0), v3(-2, 0, 0), v3(-1, -2, 0), v3(1, -2, 0), v3(0, 0, h),
+               v3(0, 0, -h)});
+}
+
+TEST_P(Cvms, ArcsOverlappingOnOneGreatCircle) {
+  // The arcs of the vertical edges of a cube lie on the equator. Against a
+  // box they coincide; against an octagonal prism (normals (+-1, 0, 0),
+  // (0, +-1, 0), (+-1, +-1, 0)) each is split by a facet point; against a
+  // rotated cube they overlap partly, each arc having one end strictly
+  // inside an arc of the other. Parallel edges: no edge facet from them.
+  const auto c = shapes::cube();
+  const auto octagonal_prism = hull({v3(2, 1, 1), v3(1, 2, 1), v3(-1, 2, 1), v3(-2, 1, 1), v3(-2, -1, 1),
+                                     v3(-1, -2, 1), v3(1, -2, 1), v3(2, -1, 1), v3(2, 1, -1), v3(1, 2, -1),
+                                     v3(-1, 2, -1), v3(-2, 1, -1), v3(-2, -1, -1), v3(-1, -2, -1),
+                                     v3(1, -2, -1), v3(2, -1, -1)});
+  ASSERT_EQ(octagonal_prism.num_facets(), 10u);
+  const auto rotated = c.transformed(rotation_z_3_4_5(), {});
+  const auto box = shapes::box(v3(0, 0, 0), v3(3, 1, Rational(1, 2)));
+  EXPECT_SUM(c, octagonal_prism, test::chms_shape(c, octagonal_prism));
+  EXPECT_SUM(c, rotated, brute_force_sum(c, rotated));
+  EXPECT_SUM(box, rotated, brute_force_sum(box, rotated));
+  const auto p6 = shapes::prism(6, 2);
+  const auto p6r = p6.transformed(rotation_z_3_4_5(), {});
+  EXPECT_SUM(p6, p6r, test::chms_shape(p6, p6r));
+  if (counts_facets()) {
+    // Each of the 4 side facets of the octagonal prism lying on an arc of
+    // the cube is f_B + e_A; its 6 other facets pair with the cube's.
+    const auto r = cvms_sum(c, octagonal_prism);
+    EXPECT_EQ(r.stats.corner_facets, 4u);
+    EXPECT_EQ(r.stats.edge_facets, 0u);
+    // Two rotated cubes: the vertical arcs overlap (no edge facet), only the
+    // arcs of the horizontal edges can cross.
+    const auto s = cvms_sum(c, rotated);
+    EXPECT_EQ(s.stats.translated_facets, 6u);
+    EXPECT_EQ(s.stats.corner_facets, 4u);  // the rotated cube's top and bottom pair with the cube's
+  }
+}
+
+TEST_P(Cvms, ArcEndingOnAnotherArc) {
+  // B has the facet x + y = 1 with normal (1, 1, 0), strictly inside the arc
+  // of the cube edge {x = 1, y = 1}; B's other facet normals (3, 3, -8),
+  // (7, -9, 8) and (-15, 1, 8) lie on no great circle of the cube, so B's
+  // arcs from (1, 1, 0) end on the cube's arc without crossing it.
+  const auto c = shapes::cube();
+  const auto b = hull({v3(1, 0, 0), v3(0, 1, 0), v3(Rational(1, 2), Rational(1, 2), 1), v3(-2, -5, -3)});
+  EXPECT_SUM(c, b, brute_force_sum(c, b));
+  // B2 has two facets, x + y = 1 and x - y = 1, strictly inside cube arcs;
+  // the B2 arc joining them runs along the equator, overlapping two cube
+  // arcs, through the cube's facet point (1, 0, 0).
+  const auto b2 = hull({v3(1, 0, 0), v3(0, 1, 0), v3(1, 0, 1), v3(-1, -2, -3)});
+  EXPECT_SUM(c, b2, brute_force_sum(c, b2));
+  // The same after one exact rotation of both (no axis-aligned coordinates
+  // left for the double filter).
+  const auto rot = shapes::rational_rotation(1, 2, 3, 4);
+  const auto cr = c.transformed(rot, {});
+  const auto br = b.transformed(rot, {});
+  EXPECT_SUM(cr, br, brute_force_sum(cr, br));
+  // Against a shape with many arcs parallel to the cube's.
+  const auto t = shapes::truncated_cube();
+  EXPECT_SUM(t, b, test::chms_shape(t, b));
+  EXPECT_SUM(t, b2, test::chms_shape(t, b2));
+  if (counts_facets()) {
+    // (1, 1, 0) on the cube's arc: the corner facet f_B + e_A, the only
+    // facet of either operand with two contributing vertices.
+    const auto r = cvms_sum(c, b);
+    EXPECT_EQ(r.stats.corner_facets, 4u);
+    EXPECT_EQ(r.stats.contributing_ties, 1u);
+    // B2: (1, 1, 0) and (1, -1, 0) on cube arcs, and the cube's (1, 0, 0) on
+    // B2's arc.
+    EXPECT_EQ(cvms_sum(c, b2).stats.contributing_ties, 3u);
+  }
+}
+
+TEST_P(Cvms, FlatPolyhedraWithNearlyAntipodalArcs) {
+  const Rational h(1, 1000000);
+  const auto flat = flat_bipyramid(h);
+  ASSERT_EQ(flat.num_facets(), 12u);
+  const auto c = shapes::cube();
+  const auto flat_rotated = flat.transformed(shapes::rational_rotation(1, 1, 2, 0), {});
+  const auto tilted = flat.transformed(shapes::rational_rotation(100, 1, 0, 0), {});  // a slight tilt
+  const auto flat_tetra = hull({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(Rational(1, 3), Rational(1, 3), h)});
+  const auto slab = shapes::box(v3(0, 0, 0), v3(1000, 1000, Rational(1, 1000)));
+  EXPECT_SUM(flat, c, brute_force_sum(flat, c));
+  EXPECT_SUM(flat, flat.reflected(), shape_of(scaled(flat, 2)));  // centrally symmetric: -P = P
+  EXPECT_SUM(flat, flat_rotated, test::chms_shape(flat, flat_rotated));
+  EXPECT_SUM(flat, tilted, test::chms_shape(flat, tilted));
+  EXPECT_SUM(flat_tetra, flat_tetra.reflected(), brute_force_sum(flat_tetra, flat_tetra.reflected()));
+  EXPECT_SUM(flat_tetra, flat, test::chms_shape(flat_tetra, flat));
+  EXPECT_SUM(slab, tilted, test::chms_shape(slab, tilted));
+  const auto s = shapes::geodesic_sphere(2);
+  EXPECT_SUM(tilted, s, test::chms_shape(tilted, s));
 }
 
 // ---------------------------------------------------------------------------
