@@ -142,7 +142,8 @@ void facet_points_on_arcs(Operand which, const ConvexPolyhedron& p, std::vector<
       const HalfedgeId h = arcs_q.halfedges[i];
       const Vec3Ref s = q.normal_ref(mq.face(h));
       const Vec3Ref t = q.normal_ref(mq.face(Mesh::twin(h)));
-      if (sign_triple(s, n, pole) != Sign::positive || sign_triple(n, t, pole) != Sign::positive) continue;  // Eq. 9
+      if (sign_triple(s, n, pole) != Sign::positive || sign_triple(n, t, pole) != Sign::positive)
+        continue;  // Eq. 9
       loc[f.index()] = {Location::on_arc, h.index()};
       out.add_facet_plus_edge(which, f, mq.from(h), mq.to(h));
       ++stats.contributing_ties;
@@ -165,7 +166,8 @@ void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
       // point of q, which cases 1 and 2 would have found for a valid operand.
       throw Error(ErrorCategory::invalid_argument,
                   std::string("minkowski_sum: operands are not valid ConvexPolyhedra: facet ") +
-                      std::to_string(f.index()) + " of " + name_of(which) + " has " + std::to_string(cv.size()) +
+                      std::to_string(f.index()) + " of " + name_of(which) + " has " +
+                      std::to_string(cv.size()) +
                       " contributing vertices but lies on no facet point or edge arc of the other operand");
     }
     loc[f.index()] = {Location::in_vertex_region, cv[0].index()};
@@ -176,7 +178,8 @@ void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
 
 // The contributing vertices of every facet of p (in q), read off the
 // locations found by cases 1, 2 and 4.
-ContributingVertices contributing_vertices(const ConvexPolyhedron& p, const std::vector<FacetPointLocation>& loc,
+ContributingVertices contributing_vertices(const ConvexPolyhedron& p,
+                                           const std::vector<FacetPointLocation>& loc,
                                            const ConvexPolyhedron& q) {
   const Mesh& mq = q.mesh();
   ContributingVertices cv(p.num_facets());
@@ -250,11 +253,11 @@ ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const EdgeArcs arcs_a(a);
   const EdgeArcs arcs_b(b);
 
-  coincident_facet_points(a, b, loc_a, loc_b, out, stats);                  // case 1
-  facet_points_on_arcs(Operand::a, a, loc_a, b, arcs_b, out, stats);        // case 2, f_A + e_B
-  facet_points_on_arcs(Operand::b, b, loc_b, a, arcs_a, out, stats);        // case 2, f_B + e_A
-  facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats);     // case 4, f_A + v_B
-  facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats);     // case 4, f_B + v_A
+  coincident_facet_points(a, b, loc_a, loc_b, out, stats);              // case 1
+  facet_points_on_arcs(Operand::a, a, loc_a, b, arcs_b, out, stats);    // case 2, f_A + e_B
+  facet_points_on_arcs(Operand::b, b, loc_b, a, arcs_a, out, stats);    // case 2, f_B + e_A
+  facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats);  // case 4, f_A + v_B
+  facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats);  // case 4, f_B + v_A
 
   const ContributingVertices cv_a = contributing_vertices(a, loc_a, b);
   const ContributingVertices cv_b = contributing_vertices(b, loc_b, a);

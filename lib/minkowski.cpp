@@ -4,9 +4,9 @@
 #include "cvms/minkowski.hpp"
 
 #include "cvms.hpp"
-#include "essdms.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "essdms.hpp"
 
 namespace cvms {
 

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <functional>
 #include <map>
+#include <ostream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -26,6 +27,21 @@
 #include "support/random_clouds.hpp"
 
 namespace cvms {
+
+std::string algorithm_name(Algorithm a) {
+  switch (a) {
+    case Algorithm::cvms:
+      return "cvms";
+    case Algorithm::essdms:
+      return "essdms";
+    case Algorithm::chms:
+      return "chms";
+  }
+  return "unknown";
+}
+// How gtest prints the parameter of a failing test (found by ADL).
+void PrintTo(Algorithm a, std::ostream* os) { *os << algorithm_name(a); }
+
 namespace {
 
 Mat3 scaling(const Rational& s) {
@@ -74,15 +90,11 @@ class Cvms : public ::testing::TestWithParam<Algorithm> {
 };
 
 std::string algorithm_name(const ::testing::TestParamInfo<Algorithm>& info) {
-  switch (info.param) {
-    case Algorithm::cvms: return "cvms";
-    case Algorithm::essdms: return "essdms";
-    case Algorithm::chms: return "chms";
-  }
-  return "unknown";
+  return algorithm_name(info.param);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllAlgorithms, Cvms, ::testing::Values(Algorithm::cvms, Algorithm::essdms, Algorithm::chms),
+INSTANTIATE_TEST_SUITE_P(AllAlgorithms, Cvms,
+                         ::testing::Values(Algorithm::cvms, Algorithm::essdms, Algorithm::chms),
                          algorithm_name);
 
 #define EXPECT_SUM(a, b, expected) EXPECT_EQ(test::check_sum((a), (b), (expected), options()), "")
@@ -174,8 +186,9 @@ TEST_P(Cvms, PaperShapesEveryPairAgreesWithChms) {
       const auto& [na, a] = shapes_list[i];
       const auto& [nb, b] = shapes_list[j];
       SCOPED_TRACE(na + " + " + nb);
-      EXPECT_EQ(test::check_sum(a, b, test::chms_shape(a, b), options(), a.num_facets() * b.num_facets() < 20000),
-                "");
+      EXPECT_EQ(
+          test::check_sum(a, b, test::chms_shape(a, b), options(), a.num_facets() * b.num_facets() < 20000),
+          "");
     }
   }
 }
@@ -429,10 +442,10 @@ TEST_P(Cvms, ArcsOverlappingOnOneGreatCircle) {
   // rotated cube they overlap partly, each arc having one end strictly
   // inside an arc of the other. Parallel edges: no edge facet from them.
   const auto c = shapes::cube();
-  const auto octagonal_prism = hull({v3(2, 1, 1), v3(1, 2, 1), v3(-1, 2, 1), v3(-2, 1, 1), v3(-2, -1, 1),
-                                     v3(-1, -2, 1), v3(1, -2, 1), v3(2, -1, 1), v3(2, 1, -1), v3(1, 2, -1),
-                                     v3(-1, 2, -1), v3(-2, 1, -1), v3(-2, -1, -1), v3(-1, -2, -1),
-                                     v3(1, -2, -1), v3(2, -1, -1)});
+  const auto octagonal_prism =
+      hull({v3(2, 1, 1), v3(1, 2, 1), v3(-1, 2, 1), v3(-2, 1, 1), v3(-2, -1, 1), v3(-1, -2, 1), v3(1, -2, 1),
+            v3(2, -1, 1), v3(2, 1, -1), v3(1, 2, -1), v3(-1, 2, -1), v3(-2, 1, -1), v3(-2, -1, -1),
+            v3(-1, -2, -1), v3(1, -2, -1), v3(2, -1, -1)});
   ASSERT_EQ(octagonal_prism.num_facets(), 10u);
   const auto rotated = c.transformed(rotation_z_3_4_5(), {});
   const auto box = shapes::box(v3(0, 0, 0), v3(3, 1, Rational(1, 2)));
@@ -498,7 +511,8 @@ TEST_P(Cvms, FlatPolyhedraWithNearlyAntipodalArcs) {
   const auto c = shapes::cube();
   const auto flat_rotated = flat.transformed(shapes::rational_rotation(1, 1, 2, 0), {});
   const auto tilted = flat.transformed(shapes::rational_rotation(100, 1, 0, 0), {});  // a slight tilt
-  const auto flat_tetra = hull({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(Rational(1, 3), Rational(1, 3), h)});
+  const auto flat_tetra =
+      hull({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(Rational(1, 3), Rational(1, 3), h)});
   const auto slab = shapes::box(v3(0, 0, 0), v3(1000, 1000, Rational(1, 1000)));
   EXPECT_SUM(flat, c, brute_force_sum(flat, c));
   EXPECT_SUM(flat, flat.reflected(), shape_of(scaled(flat, 2)));  // centrally symmetric: -P = P
@@ -540,8 +554,8 @@ TEST_P(Cvms, RandomPairsAgreeWithChms) {
     EXPECT_GT(with_edge_ties, pairs / 10);
     EXPECT_GT(with_parallel_facets, pairs / 20);
     if (GetParam() == Algorithm::cvms) {
-    EXPECT_GT(with_rejections, 10);
-  }
+      EXPECT_GT(with_rejections, 10);
+    }
     EXPECT_GT(with_edge_facets, pairs / 2);
   }
 }

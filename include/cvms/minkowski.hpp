@@ -36,10 +36,12 @@ struct Stats {
   std::uint64_t translated_facets = 0;  ///< facets parallel to a facet of A
   std::uint64_t corner_facets = 0;      ///< facets parallel to a facet of B only
   std::uint64_t edge_facets = 0;        ///< edge(A) + edge(B) facets
-  /// Facets of A and of B with 2 or more contributing vertices (CVMS).
+  /// Facets of A and of B with 2 or more contributing vertices (CVMS, ESSDMS).
   std::uint64_t contributing_ties = 0;
   /// (edge of A, horizon edge of B) pairs that passed Property 1 and were
-  /// tested with the normal-orientation criterion (CVMS, paper search).
+  /// tested with the normal-orientation criterion (CVMS, paper search); for
+  /// ESSDMS, the (arc of A, arc of B) pairs that passed the contributing-vertex
+  /// pre-check and were tested for a proper crossing.
   std::uint64_t edge_candidates = 0;
   /// Candidates the paper's criterion alone (Eq. 4 with "not invisible"
   /// including parallel facets, plus Eq. 5) would accept but the exact
@@ -57,7 +59,8 @@ struct MinkowskiResult {
 
 /// A + B = {a + b : a in A, b in B}. Exact. Thread-safe (no shared state).
 /// CVMS with the paper's search costs O(f_A v_B + f_B v_A + e_A' (f_B + e_B'))
-/// predicates, e' counting the edges that pass Property 1, plus the output.
+/// predicates, e' counting the edges that pass Property 1, plus the output;
+/// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
 /// \throw Error(invalid_argument) for an empty (default-constructed) operand
 ///   or an unknown option value;
 /// \throw Error(not_implemented) if the algorithm is not available.
