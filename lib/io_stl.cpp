@@ -174,7 +174,13 @@ PolygonSoup parse_ascii(LineReader& reader) {
     tokens.expect("outer", [&] { return "after the normal of " + name(); });
     tokens.expect("loop", [] { return std::string("after 'outer'"); });
     for (std::size_t k = 0; k < 3; ++k) {
-      tokens.expect("vertex", [&] { return "(" + name() + " needs 3 vertices)"; });
+      tokens.expect("vertex", [&] {
+        // Built by appending: GCC 12's -O3 -Wrestrict misfires on "(" + std::string.
+        std::string context = name();
+        context.insert(0, 1, '(');
+        context += " needs 3 vertices)";
+        return context;
+      });
       Vec3 p = parse_point(
           reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
       auto it = index_of.find(p);
