@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -196,15 +197,18 @@ TEST_F(Cli, SumStatsAndFloatOutput) {
                        std::to_string(exact.num_edges()) + " F " + std::to_string(exact.num_facets())),
             std::string::npos)
       << o.out;
-  // --float: every coordinate is the double nearest to the exact one.
-  std::set<Vec3> rounded;
-  for (VertexId v : exact.mesh().vertices()) {
-    const Vec3& p = exact.vertex(v);
-    rounded.insert({rational_from_double(to_double_nearest(p.x)), rational_from_double(to_double_nearest(p.y)),
-                    rational_from_double(to_double_nearest(p.z))});
-  }
-  std::vector<Vec3> got = read_file(file("s.off")).points;
-  EXPECT_EQ(std::set<Vec3>(got.begin(), got.end()), rounded);
+  // --float: every coordinate is the double nearest to the exact one (the
+  // file holds the shortest decimal that reads back to that double).
+  using Doubles = std::array<double, 3>;
+  auto nearest = [](const Vec3& p) {
+    return Doubles{to_double_nearest(p.x), to_double_nearest(p.y), to_double_nearest(p.z)};
+  };
+  std::set<Doubles> rounded;
+  for (VertexId v : exact.mesh().vertices()) rounded.insert(nearest(exact.vertex(v)));
+  std::set<Doubles> got;
+  for (const Vec3& p : read_file(file("s.off")).points) got.insert(nearest(p));
+  EXPECT_EQ(got, rounded);
+  EXPECT_EQ(got.size(), exact.num_vertices());
 }
 
 TEST_F(Cli, StdinAndStdout) {
