@@ -4,7 +4,6 @@
 // read back with the library and compared exactly with independent results
 // (hand-counted shapes, brute-force hulls of pairwise sums, CHMS).
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,8 +52,7 @@ class Cli : public ::testing::Test {
     GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
 #else
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("cvms_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() / ("cvms_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
 #endif
@@ -95,7 +93,8 @@ class Cli : public ::testing::Test {
   }
 
   // A failing run must exit 1 with exactly one line on stderr naming `what`.
-  void expect_bad_input(const std::string& args, const std::string& what, const std::string& input = "") const {
+  void expect_bad_input(const std::string& args, const std::string& what,
+                        const std::string& input = "") const {
     SCOPED_TRACE("cvms " + args);
     Outcome o = run(args, input);
     EXPECT_EQ(o.code, 1) << o.err;
