@@ -53,8 +53,7 @@ struct Walk {
 };
 
 [[noreturn]] void fail(const char* operand, const std::string& what) {
-  throw Error(ErrorCategory::invalid_argument,
-              std::string("planar_sum: operand ") + operand + ": " + what);
+  throw Error(ErrorCategory::invalid_argument, std::string("planar_sum: operand ") + operand + ": " + what);
 }
 
 // Finds the lowest vertex and the edge vectors, and checks the precondition
@@ -63,8 +62,7 @@ struct Walk {
 // differences) this is exactly "strictly convex and counterclockwise".
 Walk prepare(std::span<const Vec2> poly, const char* operand) {
   if (poly.empty()) fail(operand, "empty");
-  if (poly.size() > std::numeric_limits<std::uint32_t>::max())
-    fail(operand, "more than 2^32 - 1 vertices");
+  if (poly.size() > std::numeric_limits<std::uint32_t>::max()) fail(operand, "more than 2^32 - 1 vertices");
   const auto n = static_cast<std::uint32_t>(poly.size());
   Walk walk;
   for (std::uint32_t i = 1; i < n; ++i) {
@@ -114,11 +112,20 @@ std::vector<IndexPair> planar_sum_indices(std::span<const Vec2> p, std::span<con
   std::size_t b = 0;  // next edge of q
   while (a < ep || b < eq) {
     Sign order = Sign::zero;
-    if (a == ep) order = Sign::positive;       // only q's edges left
-    else if (b == eq) order = Sign::negative;  // only p's edges left
-    else order = compare_angle(wp.edge(a), wq.edge(b));
-    if (order != Sign::positive) { i = (i + 1) % np; ++a; }
-    if (order != Sign::negative) { j = (j + 1) % nq; ++b; }
+    if (a == ep)
+      order = Sign::positive;  // only q's edges left
+    else if (b == eq)
+      order = Sign::negative;  // only p's edges left
+    else
+      order = compare_angle(wp.edge(a), wq.edge(b));
+    if (order != Sign::positive) {
+      i = (i + 1) % np;
+      ++a;
+    }
+    if (order != Sign::negative) {
+      j = (j + 1) % nq;
+      ++b;
+    }
     if (a == ep && b == eq) break;  // back at the start
     out.emplace_back(i, j);
   }

@@ -4,11 +4,11 @@
 // read back with the library and compared exactly with independent results
 // (hand-counted shapes, brute-force hulls of pairwise sums, CHMS).
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -52,8 +52,7 @@ class Cli : public ::testing::Test {
     GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
 #else
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("cvms_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() / ("cvms_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
 #endif
@@ -94,7 +93,8 @@ class Cli : public ::testing::Test {
   }
 
   // A failing run must exit 1 with exactly one line on stderr naming `what`.
-  void expect_bad_input(const std::string& args, const std::string& what, const std::string& input = "") const {
+  void expect_bad_input(const std::string& args, const std::string& what,
+                        const std::string& input = "") const {
     SCOPED_TRACE("cvms " + args);
     Outcome o = run(args, input);
     EXPECT_EQ(o.code, 1) << o.err;
@@ -196,15 +196,18 @@ TEST_F(Cli, SumStatsAndFloatOutput) {
                        std::to_string(exact.num_edges()) + " F " + std::to_string(exact.num_facets())),
             std::string::npos)
       << o.out;
-  // --float: every coordinate is the double nearest to the exact one.
-  std::set<Vec3> rounded;
-  for (VertexId v : exact.mesh().vertices()) {
-    const Vec3& p = exact.vertex(v);
-    rounded.insert({rational_from_double(to_double_nearest(p.x)), rational_from_double(to_double_nearest(p.y)),
-                    rational_from_double(to_double_nearest(p.z))});
-  }
-  std::vector<Vec3> got = read_file(file("s.off")).points;
-  EXPECT_EQ(std::set<Vec3>(got.begin(), got.end()), rounded);
+  // --float: every coordinate is the double nearest to the exact one (the
+  // file holds the shortest decimal that reads back to that double).
+  using Doubles = std::array<double, 3>;
+  auto nearest = [](const Vec3& p) {
+    return Doubles{to_double_nearest(p.x), to_double_nearest(p.y), to_double_nearest(p.z)};
+  };
+  std::set<Doubles> rounded;
+  for (VertexId v : exact.mesh().vertices()) rounded.insert(nearest(exact.vertex(v)));
+  std::set<Doubles> got;
+  for (const Vec3& p : read_file(file("s.off")).points) got.insert(nearest(p));
+  EXPECT_EQ(got, rounded);
+  EXPECT_EQ(got.size(), exact.num_vertices());
 }
 
 TEST_F(Cli, StdinAndStdout) {

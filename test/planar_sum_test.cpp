@@ -80,7 +80,8 @@ void expect_sum(const Poly& p, const Poly& q) {
 // Starts the vertex list at a different index (the input need not start at
 // the lowest vertex).
 Poly rotated_start(Poly poly, std::size_t shift) {
-  if (!poly.empty()) std::rotate(poly.begin(), poly.begin() + static_cast<std::ptrdiff_t>(shift % poly.size()), poly.end());
+  if (!poly.empty())
+    std::rotate(poly.begin(), poly.begin() + static_cast<std::ptrdiff_t>(shift % poly.size()), poly.end());
   return poly;
 }
 
@@ -255,7 +256,7 @@ TEST(PlanarSum, RandomConvexPolygons) {
 TEST(PlanarSum, HugeAndTinyCoordinates) {
   std::mt19937_64 rng(7);
   const Rational huge = Rational(mpz_class("1000000000000"));  // 1e12
-  const Rational tiny = 1 / huge;                             // 1e-12
+  const Rational tiny = 1 / huge;                              // 1e-12
   const Vec2 far{Rational(mpz_class("1000000000"), 3), Rational(-1000000000)};
   for (int round = 0; round < 30; ++round) {
     SCOPED_TRACE("round " + std::to_string(round));
@@ -308,11 +309,11 @@ TEST(PlanarSum, RejectsBadInput) {
   expect_invalid(sq, {}, "operand q: empty");
   expect_invalid(v2({{1, 1}, {1, 1}}), sq, "coincide");
   expect_invalid(sq, v2({{0, 0}, {1, 0}, {1, 0}, {0, 1}}), "coincide");
-  expect_invalid(v2({{0, 0}, {0, 1}, {1, 1}, {1, 0}}), sq, "counterclockwise");   // clockwise
+  expect_invalid(v2({{0, 0}, {0, 1}, {1, 1}, {1, 0}}), sq, "counterclockwise");  // clockwise
   expect_invalid(v2({{0, 0}, {1, 0}, {2, 0}, {1, 1}}), sq, "vertex 1");          // collinear
   expect_invalid(v2({{0, 0}, {2, 1}, {1, 0}}), sq, "counterclockwise");          // clockwise triangle
-  expect_invalid(v2({{0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}}), sq, "vertex");     // reflex
-  expect_invalid(v2({{0, 0}, {1, 0}, {2, 0}}), sq, "counterclockwise");           // flat
+  expect_invalid(v2({{0, 0}, {2, 0}, {1, 1}, {2, 2}, {0, 2}}), sq, "vertex");    // reflex
+  expect_invalid(v2({{0, 0}, {1, 0}, {2, 0}}), sq, "counterclockwise");          // flat
   // A pentagram turns left at every vertex but winds twice.
   expect_invalid(v2({{0, 0}, {4, 3}, {-1, 3}, {3, 0}, {2, 5}}), sq, "counterclockwise");
 }

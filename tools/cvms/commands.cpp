@@ -46,8 +46,8 @@ Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm 
 }
 
 void print_stats(std::ostream& report, const Stats& s) {
-  report << "facets: translated " << s.translated_facets << ", corner " << s.corner_facets
-         << ", edge " << s.edge_facets << "\n"
+  report << "facets: translated " << s.translated_facets << ", corner " << s.corner_facets << ", edge "
+         << s.edge_facets << "\n"
          << "contributing-vertex ties: " << s.contributing_ties << "\n"
          << "predicates: filtered " << s.predicate_filtered << ", exact " << s.predicate_exact << "\n";
 }
@@ -56,9 +56,12 @@ void print_stats(std::ostream& report, const Stats& s) {
 
 const char* algorithm_name(Algorithm algorithm) noexcept {
   switch (algorithm) {
-    case Algorithm::cvms: return "cvms";
-    case Algorithm::essdms: return "essdms";
-    case Algorithm::chms: return "chms";
+    case Algorithm::cvms:
+      return "cvms";
+    case Algorithm::essdms:
+      return "essdms";
+    case Algorithm::chms:
+      return "chms";
   }
   return "?";
 }
@@ -105,13 +108,20 @@ void run_gen(const GenArgs& args) {
 
   check_output_directory(args.output);
   ConvexPolyhedron p;
-  if (s == "tetrahedron") p = shapes::tetrahedron();
-  else if (s == "cube") p = shapes::cube();
-  else if (s == "octahedron") p = shapes::octahedron();
-  else if (s == "truncated-cube") p = shapes::truncated_cube();
-  else if (s == "sphere") p = shapes::geodesic_sphere(args.subdivisions);
-  else if (s == "rotated-sphere") p = shapes::rotated_geodesic_sphere(args.subdivisions);
-  else if (s == "box") p = shapes::box({Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(2), Rational(3)});
+  if (s == "tetrahedron")
+    p = shapes::tetrahedron();
+  else if (s == "cube")
+    p = shapes::cube();
+  else if (s == "octahedron")
+    p = shapes::octahedron();
+  else if (s == "truncated-cube")
+    p = shapes::truncated_cube();
+  else if (s == "sphere")
+    p = shapes::geodesic_sphere(args.subdivisions);
+  else if (s == "rotated-sphere")
+    p = shapes::rotated_geodesic_sphere(args.subdivisions);
+  else if (s == "box")
+    p = shapes::box({Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(2), Rational(3)});
   else if (s == "prism") {
     int n = args.points != 0 ? args.points : 6;
     if (n < 3) throw UsageError("prism needs --points >= 3");

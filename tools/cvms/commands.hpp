@@ -46,8 +46,8 @@ struct GenArgs {
   bool float_output = false;
 };
 /// The shape names gen accepts, in the order help lists them.
-inline constexpr const char* gen_shapes[] = {"tetrahedron", "cube",  "octahedron", "truncated-cube",
-                                             "sphere",      "rotated-sphere", "box", "prism",
+inline constexpr const char* gen_shapes[] = {"tetrahedron", "cube",           "octahedron", "truncated-cube",
+                                             "sphere",      "rotated-sphere", "box",        "prism",
                                              "random"};
 void run_gen(const GenArgs& args);
 

@@ -3,7 +3,6 @@
 // CLI11 and maps outcomes to exit codes: 0 success, 1 bad input (one line on
 // stderr, from the library's Error), 2 usage.
 #include <CLI/CLI.hpp>
-
 #include <exception>
 #include <iostream>
 #include <new>
@@ -52,7 +51,9 @@ int main(int argc, char** argv) {
   CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B");
   sum_cmd->add_option("A", sum.a, "first operand")->required()->check(mesh_path);
   sum_cmd->add_option("B", sum.b, "second operand")->required()->check(mesh_path);
-  sum_cmd->add_option("-o,--output", sum.output, "result file (default -, OFF on stdout)")->check(mesh_path)->default_str("-");
+  sum_cmd->add_option("-o,--output", sum.output, "result file (default -, OFF on stdout)")
+      ->check(mesh_path)
+      ->default_str("-");
   add_algorithm_option(*sum_cmd, sum.algorithm, default_algorithm);
   sum_cmd->add_flag("--float", sum.float_output, "round output coordinates to the nearest double");
   sum_cmd->add_flag("--stats", sum.stats, "print counts, time and algorithm statistics");
@@ -60,7 +61,9 @@ int main(int argc, char** argv) {
   HullArgs hull;
   CLI::App* hull_cmd = app.add_subcommand("hull", "exact convex hull of points");
   hull_cmd->add_option("POINTS", hull.input, "OFF/OBJ/STL vertices or one 'x y z' per line")->required();
-  hull_cmd->add_option("-o,--output", hull.output, "result file (default -, OFF on stdout)")->check(mesh_path)->default_str("-");
+  hull_cmd->add_option("-o,--output", hull.output, "result file (default -, OFF on stdout)")
+      ->check(mesh_path)
+      ->default_str("-");
   hull_cmd->add_flag("--float", hull.float_output, "round output coordinates to the nearest double");
 
   GenArgs gen;
@@ -71,15 +74,19 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(gen_shapes), std::end(gen_shapes))));
   CLI::Option* subdivisions_opt =
-      gen_cmd->add_option("--subdivisions", gen.subdivisions, "K for Sphere_K (1..9)")->check(CLI::Range(1, 9));
+      gen_cmd->add_option("--subdivisions", gen.subdivisions, "K for Sphere_K (1..9)")
+          ->check(CLI::Range(1, 9));
   CLI::Option* seed_opt = gen_cmd->add_option("--seed", gen.seed, "seed of random");
   gen_cmd->add_option("--points", gen.points, "points of random (default 100), sides of prism (default 6)")
       ->check(CLI::Range(1, 10'000'000));
-  gen_cmd->add_option("-o,--output", gen.output, "result file (default -, OFF on stdout)")->check(mesh_path)->default_str("-");
+  gen_cmd->add_option("-o,--output", gen.output, "result file (default -, OFF on stdout)")
+      ->check(mesh_path)
+      ->default_str("-");
   gen_cmd->add_flag("--float", gen.float_output, "round output coordinates to the nearest double");
 
   std::string check_input;
-  CLI::App* check_cmd = app.add_subcommand("check", "validate a convex polyhedron, print V E F and facet degrees");
+  CLI::App* check_cmd =
+      app.add_subcommand("check", "validate a convex polyhedron, print V E F and facet degrees");
   check_cmd->add_option("F", check_input, "the file")->required()->check(mesh_path);
 
   DemoArgs demo;
@@ -94,13 +101,16 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*sum_cmd) run_sum(sum, sum.output == "-" ? std::cerr : std::cout);
-    else if (*hull_cmd) run_hull(hull);
+    if (*sum_cmd)
+      run_sum(sum, sum.output == "-" ? std::cerr : std::cout);
+    else if (*hull_cmd)
+      run_hull(hull);
     else if (*gen_cmd) {
       gen.subdivisions_given = subdivisions_opt->count() > 0;
       gen.seed_given = seed_opt->count() > 0;
       run_gen(gen);
-    } else if (*check_cmd) run_check(check_input, std::cout);
+    } else if (*check_cmd)
+      run_check(check_input, std::cout);
     else if (*demo_cmd) {
       demo.algorithm_given = demo_algorithm_opt->count() > 0;
       run_demo(demo, std::cout);
