@@ -8,13 +8,13 @@
 #include <cvms/rational.hpp>
 #include <cvms/vec.hpp>
 #include <iostream>
-#include <string>
 #include <vector>
 
 namespace {
 
-std::string to_string(const cvms::Vec2& p) {
-  return "(" + cvms::to_string(p.x) + ", " + cvms::to_string(p.y) + ")";
+// cvms::to_string prints exact decimals ("1.1") where they exist, else p/q.
+void print(const cvms::Vec2& p) {
+  std::cout << '(' << cvms::to_string(p.x) << ", " << cvms::to_string(p.y) << ')';
 }
 
 }  // namespace
@@ -29,7 +29,11 @@ int main() {
   // The sum as points, counterclockwise from the lowest (then leftmost) one.
   const std::vector<cvms::Vec2> sum = cvms::planar_sum(square, triangle);
   std::cout << "square + triangle has " << sum.size() << " vertices:\n";
-  for (const cvms::Vec2& p : sum) std::cout << "  " << to_string(p) << '\n';
+  for (const cvms::Vec2& p : sum) {
+    std::cout << "  ";
+    print(p);
+    std::cout << '\n';
+  }
 
   // The same sum as index pairs: vertex k is square[i] + triangle[j]. This is
   // how the 3D algorithms identify the vertices of a sum.
@@ -40,7 +44,10 @@ int main() {
   // Degenerate operands are fine: a segment sweeps the square into a longer box.
   const std::vector<cvms::Vec2> segment{{0, 0}, {2, 0}};
   std::cout << "square + segment:";
-  for (const cvms::Vec2& p : cvms::planar_sum(square, segment)) std::cout << ' ' << to_string(p);
+  for (const cvms::Vec2& p : cvms::planar_sum(square, segment)) {
+    std::cout << ' ';
+    print(p);
+  }
   std::cout << '\n';
   return 0;
 }
