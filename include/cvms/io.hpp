@@ -3,6 +3,57 @@
 // in a header for allocation beyond what the input can hold, and report every
 // malformation as Error(parse) naming the source and line (text) or byte
 // offset (binary). Writers write exact coordinates unless asked otherwise.
+//
+// What the readers accept and reject (each case has a test in test/io_*_test.cpp):
+//  - Numbers are parsed exactly (try_parse_rational): integers, decimals with
+//    an optional exponent, and p/q. Any size is accepted ("1e400" is the exact
+//    integer 10^400) up to an exponent of +-100000; a larger exponent, or a
+//    number token longer than ReadLimits::max_number_chars, raises
+//    Error(limit). "nan", "inf" and the like raise Error(parse) naming the line.
+//  - Text formats are line based; '\n' and "\r\n" end lines. Messages name
+//    "<source>:<line>: ..." with 1-based lines, OFF vertices/faces 0-based,
+//    OBJ vertices/faces 1-based (as in the file); binary STL messages name
+//    "<source>: byte <offset>: ...".
+//  - A 0-byte input is Error(parse) "empty input"; one with only blanks and
+//    comments is Error(parse) "unexpected end of input" (OFF, points) or "no
+//    OBJ statements"; an OBJ without any `v` is Error(parse). A header
+//    declaring zero elements is fine and gives an empty soup (Mesh::from_soup
+//    rejects it later). A leading UTF-8 byte order mark is skipped.
+//  - Faces with fewer than 3 vertices and face indices out of range are
+//    Error(parse) naming the line. Repeated indices and other topological
+//    problems are left to Mesh::from_soup.
+//  - A count in a header above ReadLimits raises Error(limit) at once, even
+//    if the input is too short to hold it; a count within the limits that the
+//    input does not hold raises Error(parse) "unexpected end of input" naming
+//    the line. Nothing is reserved beyond a small fixed amount before the data
+//    is actually read.
+//  - OFF: the header keyword is [ST][C][N]OFF (4OFF, nOFF and "OFF BINARY"
+//    are rejected); the counts "V F [E]" may follow on the same line; E is
+//    ignored. One vertex per line: x y z, followed by exactly the values the
+//    prefixes announce (ST: 2, C: 3 or 4, N: 3), which are ignored; a plain OFF
+//    vertex line with a 4th value is rejected (it may be homogeneous). One face
+//    per line: n i_1 .. i_n, then up to 4 numeric color values (ignored).
+//    After the last face only blanks and comments may follow; anything else
+//    is rejected (a header that undercounts is not silently truncated).
+//  - OBJ: `v x y z`, `v x y z w` with w exactly 1 (any other w is rejected,
+//    since OBJ's w is a rational-curve weight, not a homogeneous divisor),
+//    `v x y z r g b` (colors ignored). `f` takes i, i/t, i//n, i/t/n with
+//    positive (possibly forward) or negative (relative) indices, never 0.
+//    vt, vn, vp, g, o, s, mg, usemtl, mtllib, usemap, maplib, l, p, bevel,
+//    c_interp, d_interp, lod, shadow_obj, trace_obj, call are ignored;
+//    free-form geometry (cstype, curv, surf, ...) and unknown statements are
+//    rejected. Line continuation with '\' is not supported.
+//  - STL: the input is read whole (bounded by max_bytes). It is binary iff it
+//    is at least 84 bytes long and exactly 84 + 50 n bytes for the n in its
+//    header, even if the header starts with "solid"; otherwise it is ASCII if
+//    it starts with "solid", else a binary file whose size does not match its
+//    count (Error(parse) naming the byte offset where it is truncated or where
+//    the extra bytes start). Non-finite float32 coordinates are rejected; the
+//    normals and attribute bytes are ignored. ASCII keywords are matched
+//    case-insensitively; several solids in one file are concatenated.
+//  - Memory stays within a small multiple of the input size and of
+//    max_bytes: a line is buffered whole, so a single 100 MB line costs about
+//    100-200 MB (set max_bytes lower to refuse such inputs early).
 #pragma once
 
 #include <cstdint>
@@ -10,6 +61,7 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cvms/polygon_soup.hpp"
 
@@ -18,9 +70,13 @@ namespace cvms {
 /// Caps that protect against absurd or lying inputs; exceeding one raises
 /// Error(limit).
 struct ReadLimits {
-  std::uint64_t max_vertices = 50'000'000;
-  std::uint64_t max_faces = 100'000'000;
+  std::uint64_t max_vertices = 50'000'000;           ///< points in a soup (never more than 2^32-1)
+  std::uint64_t max_faces = 100'000'000;             ///< faces (STL: triangles) in a soup
   std::uint64_t max_bytes = std::uint64_t{4} << 30;  ///< 4 GiB
+  /// Longest accepted number token (digits of one coordinate). Exact values
+  /// of a million digits are far beyond anything an exact computation on
+  /// sane inputs produces, and parsing them costs superlinear time.
+  std::uint64_t max_number_chars = std::uint64_t{1} << 20;
 };
 
 enum class FileFormat { off, obj, stl };
@@ -35,21 +91,29 @@ PolygonSoup read_obj(std::istream& in, std::string_view source, const ReadLimits
 /// ASCII or binary STL (detected from the content); float32 coordinates are
 /// converted exactly; vertices shared between triangles are merged by exact position.
 PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits = {});
-PolygonSoup read(std::istream& in, FileFormat format, std::string_view source,
-                 const ReadLimits& limits = {});
+PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits = {});
 /// Reads a file in the format of its extension. \throw Error(io) if it cannot be opened.
 PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limits = {});
 
 /// Points only, for hulls: OFF/OBJ vertices or one "x y z" per line
-/// ('#' comments and blank lines allowed).
-std::vector<Vec3> read_points(std::istream& in, std::string_view source,
-                              const ReadLimits& limits = {});
+/// ('#' comments and blank lines allowed). The format is chosen by the first
+/// token: an OFF keyword, an OBJ statement (v, vt, vn, f, o, g, s, mtllib,
+/// usemtl), or else a point list. An OFF or OBJ input is read whole (faces
+/// are checked like read_off/read_obj do, then dropped).
+std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 
 enum class Coordinates {
   exact,   ///< exact decimals or p/q, see to_string(const Rational&)
-  double_  ///< the nearest double, printed with enough digits to round-trip
+  double_  ///< the nearest double, printed as the shortest decimal that parses
+           ///< back to that double (std::to_chars). Read back by cvms, the text
+           ///< is that decimal exactly ("0.1" is 1/10), not the double itself.
 };
 
+/// Writers take any soup whose faces have >= 3 indices, all in range
+/// (\throw Error(invalid_argument) otherwise, and when Coordinates::double_
+/// or the float32 of STL cannot hold a coordinate). Numbers are formatted
+/// without the stream's locale, so the bytes depend only on the soup.
+/// \throw Error(io) if the stream fails.
 void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
 void write_obj(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
 /// Binary STL with fan-triangulated faces (float32, so always rounded).

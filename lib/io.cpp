@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+// Format dispatch (by file extension), file reading and writing with io
+// errors, and the point-list reader used for hulls (OFF, OBJ or "x y z" lines).
+#include <cerrno>
+#include <fstream>
+#include <system_error>
+#include <utility>
+
+#include "io_reader.hpp"
+
+namespace cvms {
+
+FileFormat format_from_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  if (ext == ".off") return FileFormat::off;
+  if (ext == ".obj") return FileFormat::obj;
+  if (ext == ".stl") return FileFormat::stl;
+  throw Error(ErrorCategory::invalid_argument, "cannot tell the format of '" + path.string() +
+                                                   "' from its extension (expected .off, .obj or .stl)");
+}
+
+PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits) {
+  switch (format) {
+    case FileFormat::off:
+      return read_off(in, source, limits);
+    case FileFormat::obj:
+      return read_obj(in, source, limits);
+    case FileFormat::stl:
+      return read_stl(in, source, limits);
+  }
+  throw Error(ErrorCategory::invalid_argument, "unknown file format");
+}
+
+PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limits) {
+  FileFormat format = format_from_extension(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(ErrorCategory::io, "cannot read '" + path.string() + "': it is a directory");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    int error = errno;
+    throw Error(ErrorCategory::io,
+                "cannot open '" + path.string() + "'" +
+                    (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
+  }
+  return read(in, format, path.string(), limits);
+}
+
+std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits) {
+  using namespace io_detail;
+  LineReader reader(in, source, limits);
+  std::string_view line;
+  std::string_view first;
+  while (reader.next(line)) {
+    first = Tokenizer(line).next();
+    if (!first.empty()) break;
+  }
+  if (first.empty()) {
+    if (reader.line_number() == 0) throw Error(ErrorCategory::parse, std::string(source) + ": empty input");
+    reader.fail("no points in the input");
+  }
+  reader.unread();
+  if (is_off_keyword(first)) return parse_off(reader).points;
+  if (first == "v" || first == "vt" || first == "vn" || first == "f" || first == "o" || first == "g" ||
+      first == "mtllib" || first == "usemtl" || first == "s")
+    return parse_obj(reader).points;
+
+  std::vector<Vec3> points;
+  while (reader.next(line)) {
+    Tokenizer tokens(line);
+    std::string_view x = tokens.next();
+    if (x.empty()) continue;
+    const std::uint64_t index = points.size();
+    check_vertex_limit(reader, index + 1);
+    bool first_token = true;
+    Vec3 p = parse_point(
+        reader, [&] { return std::exchange(first_token, false) ? x : tokens.next(); }, "point", index);
+    if (!tokens.at_end())
+      reader.fail("point " + std::to_string(index) + " has more than 3 values: " + quote(tokens.next()));
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
+void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {
+  switch (format) {
+    case FileFormat::off:
+      return write_off(out, soup, coordinates);
+    case FileFormat::obj:
+      return write_obj(out, soup, coordinates);
+    case FileFormat::stl:
+      return write_stl(out, soup);
+  }
+  throw Error(ErrorCategory::invalid_argument, "unknown file format");
+}
+
+void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coordinates coordinates) {
+  FileFormat format = format_from_extension(path);
+  errno = 0;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    int error = errno;
+    throw Error(ErrorCategory::io,
+                "cannot write '" + path.string() + "'" +
+                    (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
+  }
+  try {
+    write(out, soup, format, coordinates);
+  } catch (const Error& e) {
+    if (e.category() != ErrorCategory::io) throw;
+    throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'");
+  }
+  out.close();
+  if (!out) throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'");
+}
+
+}  // namespace cvms

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// OFF reader and writer. The reader is line based: the header keyword
+// ([ST][C][N]OFF), the counts "V F [E]" (on the header line or the next
+// one), one vertex per line, one face "n i_1 ... i_n [color]" per line; '#'
+// starts a comment anywhere and blank lines are skipped. Counts are checked
+// against ReadLimits but never used to allocate more than a small fixed
+// reserve, so a header that lies costs nothing.
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "io_reader.hpp"
+#include "io_writer.hpp"
+
+namespace cvms {
+namespace io_detail {
+namespace {
+
+// Which optional per-vertex values the header announces (COFF, NOFF, STOFF, ...).
+struct OffHeader {
+  bool texture = false;  // ST: 2 values
+  bool color = false;    // C: 3 or 4 values
+  bool normal = false;   // N: 3 values
+  bool four_d = false;   // 4: unsupported
+  bool n_dim = false;    // n: unsupported
+};
+
+std::optional<OffHeader> parse_off_keyword(std::string_view token) {
+  OffHeader h;
+  auto take = [&token](std::string_view prefix) {
+    if (token.substr(0, prefix.size()) != prefix) return false;
+    token.remove_prefix(prefix.size());
+    return true;
+  };
+  h.texture = take("ST");
+  h.color = take("C");
+  h.normal = take("N");
+  h.four_d = take("4");
+  h.n_dim = take("n");
+  if (token != "OFF") return std::nullopt;
+  return h;
+}
+
+// The next line holding a token (comments and blank lines skipped), with a
+// tokenizer positioned after that first token. False at the end of input.
+bool next_content_line(LineReader& reader, Tokenizer& tokens, std::string_view& first) {
+  std::string_view line;
+  while (reader.next(line)) {
+    tokens = Tokenizer(line);
+    first = tokens.next();
+    if (!first.empty()) return true;
+  }
+  return false;
+}
+
+[[noreturn]] void fail_end(const LineReader& reader, const std::string& message) {
+  if (reader.line_number() == 0)
+    throw Error(ErrorCategory::parse, std::string(reader.source()) + ": empty input (" + message + ")");
+  reader.fail("unexpected end of input: " + message);
+}
+
+std::uint64_t parse_count(const LineReader& reader, std::string_view token, const char* what) {
+  if (token.empty()) reader.fail(std::string("missing ") + what + " count in the OFF header");
+  auto value = parse_unsigned(token);
+  if (!value) reader.fail(std::string(what) + " count " + quote(token) + " is not a non-negative integer");
+  if (*value == std::numeric_limits<std::uint64_t>::max())
+    reader.fail(std::string(what) + " count " + quote(token) + " is beyond 2^64-1", ErrorCategory::limit);
+  return *value;
+}
+
+}  // namespace
+
+bool is_off_keyword(std::string_view token) { return parse_off_keyword(token).has_value(); }
+
+PolygonSoup parse_off(LineReader& reader) {
+  Tokenizer tokens{std::string_view{}};
+  std::string_view first;
+  if (!next_content_line(reader, tokens, first)) fail_end(reader, "expected an 'OFF' header");
+  auto header = parse_off_keyword(first);
+  if (!header) reader.fail("expected an 'OFF' header, found " + quote(first));
+  if (header->four_d || header->n_dim) reader.fail("only 3D OFF is supported, not " + quote(first));
+
+  // Counts follow on the header line or on the next content line.
+  std::string_view token = tokens.next();
+  if (token == "BINARY") reader.fail("binary OFF is not supported");
+  if (token.empty()) {
+    if (!next_content_line(reader, tokens, token)) fail_end(reader, "expected the counts 'V F E'");
+  }
+  std::uint64_t num_vertices = parse_count(reader, token, "vertex");
+  std::uint64_t num_faces = parse_count(reader, tokens.next(), "face");
+  if (std::string_view edges = tokens.next(); !edges.empty()) parse_count(reader, edges, "edge");
+  if (!tokens.at_end()) reader.fail("unexpected " + quote(tokens.next()) + " after the counts 'V F E'");
+  check_vertex_limit(reader, num_vertices);
+  check_face_limit(reader, num_faces, 0);
+
+  const std::size_t min_extra =
+      (header->texture ? 2 : 0) + (header->color ? 3 : 0) + (header->normal ? 3 : 0);
+  const std::size_t max_extra = min_extra + (header->color ? 1 : 0);
+
+  PolygonSoup soup;
+  soup.points.reserve(safe_reserve(num_vertices));
+  for (std::uint64_t v = 0; v < num_vertices; ++v) {
+    if (!next_content_line(reader, tokens, token))
+      fail_end(reader, "the header declares " + std::to_string(num_vertices) + " vertices but only " +
+                           std::to_string(v) + " were found");
+    bool first_token = true;
+    Vec3 p = parse_point(
+        reader, [&] { return std::exchange(first_token, false) ? token : tokens.next(); }, "vertex", v);
+    std::size_t extra = 0;
+    while (!tokens.next().empty()) ++extra;
+    if (extra < min_extra || extra > max_extra)
+      reader.fail("vertex " + std::to_string(v) + " has " + std::to_string(3 + extra) + " values, expected " +
+                  std::to_string(3 + min_extra) +
+                  (max_extra != min_extra ? " or " + std::to_string(3 + max_extra) : std::string()) +
+                  " for a '" + std::string(first) + "' file");
+    soup.points.push_back(std::move(p));
+  }
+
+  soup.face_offsets.reserve(safe_reserve(num_faces) + 1);
+  soup.face_indices.reserve(safe_reserve(num_faces) * 3);
+  for (std::uint64_t f = 0; f < num_faces; ++f) {
+    if (!next_content_line(reader, tokens, token))
+      fail_end(reader, "the header declares " + std::to_string(num_faces) + " faces but only " +
+                           std::to_string(f) + " were found");
+    const std::string name = "face " + std::to_string(f);
+    auto size = parse_unsigned(token);
+    if (!size) reader.fail(name + ": vertex count " + quote(token) + " is not a non-negative integer");
+    if (*size < 3) reader.fail(name + " has " + std::to_string(*size) + " vertices, at least 3 are needed");
+    for (std::uint64_t k = 0; k < *size; ++k) {
+      std::string_view t = tokens.next();
+      if (t.empty())
+        reader.fail(name + " declares " + std::to_string(*size) + " vertices but lists " + std::to_string(k));
+      auto index = parse_unsigned(t);
+      if (!index) reader.fail(name + ": index " + quote(t) + " is not a non-negative integer");
+      if (*index >= num_vertices)
+        reader.fail(name + " has index " + std::to_string(*index) + " but there are " +
+                    std::to_string(num_vertices) + " vertices");
+      soup.face_indices.push_back(static_cast<std::uint32_t>(*index));
+      if (soup.face_indices.size() % 4096 == 0) check_face_limit(reader, f + 1, soup.face_indices.size());
+    }
+    check_face_limit(reader, f + 1, soup.face_indices.size());
+    // Up to four color components may follow the indices; they are ignored.
+    std::size_t extra = 0;
+    for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
+      if (++extra > 4)
+        reader.fail(name + " has more than 4 values after its " + std::to_string(*size) + " indices");
+      if (!try_parse_rational(t, 10)) reader.fail(name + ": color value " + quote(t) + " is not a number");
+    }
+    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
+  }
+
+  if (next_content_line(reader, tokens, token))
+    reader.fail("unexpected " + quote(token) + " after the last of the " + std::to_string(num_faces) +
+                " faces the header declares");
+  return soup;
+}
+
+}  // namespace io_detail
+
+PolygonSoup read_off(std::istream& in, std::string_view source, const ReadLimits& limits) {
+  io_detail::LineReader reader(in, source, limits);
+  return io_detail::parse_off(reader);
+}
+
+void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates) {
+  io_detail::check_soup_for_writing(soup, 3);
+  io_detail::TextWriter w(out);
+  w.text("OFF\n").integer(soup.points.size()).byte(' ').integer(soup.num_faces()).text(" 0\n");
+  for (const Vec3& p : soup.points) {
+    w.coordinate(p.x, coordinates).byte(' ').coordinate(p.y, coordinates).byte(' ');
+    w.coordinate(p.z, coordinates).byte('\n');
+  }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    auto face = soup.face(f);
+    w.integer(face.size());
+    for (std::uint32_t i : face) w.byte(' ').integer(i);
+    w.byte('\n');
+  }
+  w.finish();
+}
+
+}  // namespace cvms

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+// Private building blocks shared by the OFF, OBJ, STL and point readers: a
+// bounded reader over a (possibly non-seekable) stream, a line splitter whose
+// memory is bounded by the longest line, a whitespace tokenizer, and helpers
+// that turn tokens into exact coordinates, counts and indices while producing
+// error messages of the form "<source>:<line>: <what>".
+#pragma once
+
+#include <cstdint>
+#include <istream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "cvms/error.hpp"
+#include "cvms/io.hpp"
+#include "cvms/polygon_soup.hpp"
+#include "cvms/rational.hpp"
+
+namespace cvms::io_detail {
+
+/// The exponent cap passed to try_parse_rational; see io.hpp.
+inline constexpr long max_exponent = 100000;
+
+/// A token shown in a message: at most 40 characters, non-printable bytes as \xNN.
+std::string quote(std::string_view token);
+
+/// Reads raw bytes from a stream in chunks, never more than limits.max_bytes
+/// in total (one byte more is requested to detect the overrun, which raises
+/// Error(limit)); a stream failure other than end of input raises Error(io).
+class ByteSource {
+ public:
+  ByteSource(std::istream& in, std::string_view source, std::uint64_t max_bytes)
+      : in_(in), source_(source), max_bytes_(max_bytes) {}
+  /// Reads up to n bytes into dst; returns how many were read (0 only at the end).
+  std::size_t read(char* dst, std::size_t n);
+  /// Reads everything that is left (bounded by max_bytes).
+  std::string read_all();
+  [[nodiscard]] std::uint64_t consumed() const noexcept { return consumed_; }
+  [[nodiscard]] std::string_view source() const noexcept { return source_; }
+
+ private:
+  std::istream& in_;
+  std::string source_;
+  std::uint64_t max_bytes_;
+  std::uint64_t consumed_ = 0;
+  bool at_end_ = false;
+};
+
+/// Splits the input into lines ('\n' or "\r\n"). A line is returned as a view
+/// into an internal buffer that stays valid until the next call to next().
+/// The buffer only grows to hold the longest line, so memory is bounded by
+/// the input size and by limits.max_bytes.
+class LineReader {
+ public:
+  LineReader(std::istream& in, std::string_view source, const ReadLimits& limits)
+      : bytes_(std::in_place, in, source, limits.max_bytes), source_(source), limits_(limits) {}
+  /// Lines of data already in memory (read through a ByteSource, so bounded).
+  LineReader(std::string data, std::string_view source, const ReadLimits& limits)
+      : source_(source), limits_(limits), buffer_(std::move(data)), end_(buffer_.size()), eof_(true) {}
+
+  /// The next line without its terminator; false at the end of the input.
+  bool next(std::string_view& line);
+  /// Makes the next call to next() return the last line again.
+  void unread() noexcept { replay_ = true; }
+  /// 1-based number of the line last returned by next().
+  [[nodiscard]] std::uint64_t line_number() const noexcept { return line_number_; }
+  [[nodiscard]] std::string_view source() const noexcept { return source_; }
+  [[nodiscard]] const ReadLimits& limits() const noexcept { return limits_; }
+
+  /// Error(category) with "<source>:<line>: <message>".
+  [[noreturn]] void fail(std::string_view message, ErrorCategory category = ErrorCategory::parse) const;
+
+ private:
+  std::optional<ByteSource> bytes_;  // empty when reading from memory
+  std::string source_;
+  ReadLimits limits_;
+  std::string buffer_;
+  std::size_t begin_ = 0;    // start of the unread data in buffer_
+  std::size_t end_ = 0;      // end of the data in buffer_
+  std::size_t scanned_ = 0;  // [begin_, scanned_) is known to hold no '\n'
+  bool eof_ = false;
+  bool replay_ = false;
+  std::string_view last_;
+  std::uint64_t line_number_ = 0;
+};
+
+/// Splits a line into whitespace-separated tokens; '#' starts a comment that
+/// runs to the end of the line when comments are enabled.
+class Tokenizer {
+ public:
+  explicit Tokenizer(std::string_view line, bool comments = true) : rest_(line), comments_(comments) {}
+  /// The next token, or an empty view when the line is exhausted.
+  std::string_view next();
+  /// True when only whitespace (and a comment) is left.
+  bool at_end();
+
+ private:
+  void skip_space();
+  std::string_view rest_;
+  bool comments_;
+};
+
+/// True for the spellings of NaN and infinity that C and common exporters
+/// produce ("nan", "-nan(ind)", "inf", "+Infinity", "1.#INF", ...).
+bool looks_non_finite(std::string_view token);
+
+/// Names a value in messages ("x coordinate of vertex 3", "z coordinate of
+/// vertex 2 of facet 7"); the text is only built when a message needs it.
+struct ValueName {
+  const char* what;     ///< "x coordinate", "color value", ...
+  const char* element;  ///< "vertex", "point"
+  std::uint64_t index;
+  const char* outer = nullptr;  ///< "facet", or none
+  std::uint64_t outer_index = 0;
+  [[nodiscard]] std::string str() const;
+};
+
+/// The exact value of a number token, or a message-bearing failure: Error(parse)
+/// naming the line for NaN/inf and junk, Error(limit) for a token longer than
+/// limits.max_number_chars or an exponent beyond max_exponent.
+Rational parse_number(const LineReader& reader, std::string_view token, const ValueName& name);
+/// Three coordinates x y z from the next three tokens of `next()`.
+template <class NextToken>
+Vec3 parse_point(const LineReader& reader, NextToken&& next, const char* element, std::uint64_t index,
+                 const char* outer = nullptr, std::uint64_t outer_index = 0) {
+  Vec3 p;
+  p.x = parse_number(reader, next(), {"x coordinate", element, index, outer, outer_index});
+  p.y = parse_number(reader, next(), {"y coordinate", element, index, outer, outer_index});
+  p.z = parse_number(reader, next(), {"z coordinate", element, index, outer, outer_index});
+  return p;
+}
+
+/// A non-negative decimal integer token (no sign, no exponent); nullopt if the
+/// token is not one; values beyond 2^64-1 saturate to UINT64_MAX.
+std::optional<std::uint64_t> parse_unsigned(std::string_view token);
+/// A decimal integer token with optional sign; values beyond +-2^63 saturate.
+std::optional<std::int64_t> parse_signed(std::string_view token);
+
+/// Raises Error(limit) unless the soup may grow to `vertices` points.
+void check_vertex_limit(const LineReader& reader, std::uint64_t vertices);
+/// Raises Error(limit) unless the soup may grow to `faces` faces with
+/// `indices` indices in total (indices must fit the 32-bit offsets).
+void check_face_limit(const LineReader& reader, std::uint64_t faces, std::uint64_t indices);
+
+/// How many elements to reserve for a header count that has not been checked
+/// against the input yet: never more than a small fixed cap, so a lying header
+/// cannot make us allocate.
+inline std::size_t safe_reserve(std::uint64_t declared) {
+  constexpr std::uint64_t cap = 1u << 12;
+  return static_cast<std::size_t>(declared < cap ? declared : cap);
+}
+
+/// Parsers that continue on a LineReader (so that read_points can look at the
+/// first line before choosing one).
+PolygonSoup parse_off(LineReader& reader);
+PolygonSoup parse_obj(LineReader& reader);
+/// True if the token is an OFF header keyword we recognise (OFF, COFF, NOFF,
+/// STOFF, ... and the unsupported 4OFF/nOFF, which parse_off rejects).
+bool is_off_keyword(std::string_view token);
+
+/// Validation for writers: every face has >= min_size indices, each < points.size().
+void check_soup_for_writing(const PolygonSoup& soup, std::size_t min_size);
+
+}  // namespace cvms::io_detail

@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: MIT
+// STL reader (ASCII and binary) and binary writer. The input is read whole
+// (bounded by ReadLimits::max_bytes) because telling the two kinds apart
+// needs the size: a binary file is exactly 84 + 50 n bytes for the n its
+// header declares, and that test wins even when the 80-byte header starts
+// with "solid" (many exporters write such headers). Vertices are merged by
+// exact position, in order of first appearance.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <unordered_map>
+
+#include "io_reader.hpp"
+#include "io_writer.hpp"
+
+namespace cvms {
+namespace io_detail {
+namespace {
+
+constexpr std::size_t header_size = 84;
+constexpr std::size_t record_size = 50;
+
+std::uint32_t load_u32_le(const std::string& data, std::size_t at) {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i)
+    v = (v << 8) | static_cast<unsigned char>(data[at + static_cast<std::size_t>(i)]);
+  return v;
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    char c = a[i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != b[i]) return false;
+  }
+  return true;
+}
+
+bool starts_with_solid(const std::string& data) {
+  std::size_t i = data.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // UTF-8 byte order mark
+  while (i < data.size() && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n')) ++i;
+  if (!iequals(std::string_view(data).substr(i, 5), "solid")) return false;
+  i += 5;
+  return i == data.size() || data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n';
+}
+
+[[noreturn]] void fail_at(std::string_view source, std::uint64_t offset, const std::string& message,
+                          ErrorCategory category = ErrorCategory::parse) {
+  throw Error(category, std::string(source) + ": byte " + std::to_string(offset) + ": " + message);
+}
+
+struct FloatKey {
+  std::uint32_t bits[3];
+  friend bool operator==(const FloatKey& a, const FloatKey& b) {
+    return a.bits[0] == b.bits[0] && a.bits[1] == b.bits[1] && a.bits[2] == b.bits[2];
+  }
+};
+struct FloatKeyHash {
+  std::size_t operator()(const FloatKey& k) const noexcept {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (std::uint32_t b : k.bits) h = (h ^ b) * 0x100000001b3ull + (h >> 29);
+    return static_cast<std::size_t>(h);
+  }
+};
+
+PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::string_view source,
+                         const ReadLimits& limits) {
+  if (count > limits.max_faces)
+    fail_at(source, 80,
+            std::to_string(count) + " triangles exceed the limit of " + std::to_string(limits.max_faces),
+            ErrorCategory::limit);
+  if (std::uint64_t{count} * 3 > std::numeric_limits<std::uint32_t>::max())
+    fail_at(source, 80, "more than 2^32-1 face indices in total", ErrorCategory::limit);
+  const std::uint64_t max_vertices =
+      std::min<std::uint64_t>(limits.max_vertices, std::numeric_limits<std::uint32_t>::max());
+  PolygonSoup soup;
+  // The size check above proved that the input holds `count` triangles.
+  soup.face_offsets.reserve(std::size_t{count} + 1);
+  soup.face_indices.reserve(std::size_t{count} * 3);
+  std::unordered_map<FloatKey, std::uint32_t, FloatKeyHash> index_of;
+  for (std::uint32_t t = 0; t < count; ++t) {
+    const std::size_t record = header_size + record_size * t;
+    for (std::size_t k = 0; k < 3; ++k) {
+      FloatKey key{};
+      for (std::size_t c = 0; c < 3; ++c) {
+        const std::size_t at = record + 12 + 12 * k + 4 * c;
+        std::uint32_t bits = load_u32_le(data, at);
+        if (!std::isfinite(std::bit_cast<float>(bits)))
+          fail_at(source, at,
+                  "triangle " + std::to_string(t) + " vertex " + std::to_string(k) +
+                      " has a non-finite coordinate (" +
+                      (std::isnan(std::bit_cast<float>(bits)) ? "nan" : "inf") + ")");
+        if (bits == 0x80000000u) bits = 0;  // -0 and +0 are the same position
+        key.bits[c] = bits;
+      }
+      auto [it, inserted] = index_of.try_emplace(key, static_cast<std::uint32_t>(soup.points.size()));
+      if (inserted) {
+        if (soup.points.size() + 1 > max_vertices)
+          fail_at(source, record + 12 + 12 * k,
+                  "more than " + std::to_string(max_vertices) + " distinct vertices (the limit)",
+                  ErrorCategory::limit);
+        soup.points.push_back({rational_from_float(std::bit_cast<float>(key.bits[0])),
+                               rational_from_float(std::bit_cast<float>(key.bits[1])),
+                               rational_from_float(std::bit_cast<float>(key.bits[2]))});
+      }
+      soup.face_indices.push_back(it->second);
+    }
+    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
+  }
+  return soup;
+}
+
+// Tokens of an ASCII STL across line breaks; a token stays valid until the next call.
+class TokenStream {
+ public:
+  explicit TokenStream(LineReader& reader) : reader_(reader) {}
+  std::string_view next() {
+    for (;;) {
+      std::string_view t = tokens_.next();
+      if (!t.empty()) return t;
+      std::string_view line;
+      if (!reader_.next(line)) return {};
+      tokens_ = Tokenizer(line, false);
+    }
+  }
+  void skip_rest_of_line() { tokens_ = Tokenizer(std::string_view{}, false); }
+  /// Consumes `keyword`; `context` makes the rest of the message, only on failure.
+  template <class Context>
+  void expect(std::string_view keyword, Context&& context) {
+    std::string_view t = next();
+    if (!t.empty() && iequals(t, keyword)) return;
+    const std::string expected = "expected '" + std::string(keyword) + "' " + context();
+    if (t.empty()) reader_.fail("unexpected end of input, " + expected);
+    reader_.fail(expected + ", found " + quote(t));
+  }
+
+ private:
+  LineReader& reader_;
+  Tokenizer tokens_{std::string_view{}, false};
+};
+
+PolygonSoup parse_ascii(LineReader& reader) {
+  TokenStream tokens(reader);
+  PolygonSoup soup;
+  std::unordered_map<Vec3, std::uint32_t> index_of;
+  tokens.expect("solid", [] { return std::string("at the start of an ASCII STL"); });
+  tokens.skip_rest_of_line();  // the solid's name
+  for (;;) {
+    std::string_view t = tokens.next();
+    if (t.empty()) reader.fail("unexpected end of input, expected 'facet' or 'endsolid'");
+    if (iequals(t, "endsolid")) {
+      tokens.skip_rest_of_line();
+      t = tokens.next();
+      if (t.empty()) break;
+      if (!iequals(t, "solid")) reader.fail("unexpected " + quote(t) + " after 'endsolid'");
+      tokens.skip_rest_of_line();
+      continue;
+    }
+    if (!iequals(t, "facet")) reader.fail("expected 'facet' or 'endsolid', found " + quote(t));
+    const std::size_t f = soup.num_faces();
+    auto name = [f] { return "facet " + std::to_string(f); };
+    tokens.expect("normal", [] { return std::string("after 'facet'"); });
+    for (int c = 0; c < 3; ++c) {
+      // The normal is ignored, but must be there; exporters write nan for degenerate facets.
+      t = tokens.next();
+      if (t.empty() || !(try_parse_rational(t, 400) || looks_non_finite(t)))
+        reader.fail(name() + ": normal component " + quote(t) + " is not a number");
+    }
+    tokens.expect("outer", [&] { return "after the normal of " + name(); });
+    tokens.expect("loop", [] { return std::string("after 'outer'"); });
+    for (std::size_t k = 0; k < 3; ++k) {
+      tokens.expect("vertex", [&] { return "(" + name() + " needs 3 vertices)"; });
+      Vec3 p = parse_point(
+          reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
+      auto it = index_of.find(p);
+      if (it == index_of.end()) {
+        check_vertex_limit(reader, soup.points.size() + 1);
+        it = index_of.emplace(p, static_cast<std::uint32_t>(soup.points.size())).first;
+        soup.points.push_back(std::move(p));
+      }
+      soup.face_indices.push_back(it->second);
+    }
+    tokens.expect("endloop", [&] { return "after the 3 vertices of " + name(); });
+    tokens.expect("endfacet", [&] { return "at the end of " + name(); });
+    check_face_limit(reader, f + 1, soup.face_indices.size());
+    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
+  }
+  return soup;
+}
+
+// The float nearest to an exact value (ties to even), without the double
+// rounding of going through double. \throw Error(invalid_argument) beyond the float range.
+float to_float_nearest(const Rational& value) {
+  // Values at or beyond FLT_MAX + ulp/2 round to infinity in IEEE arithmetic.
+  static const Rational overflow = Rational(FLT_MAX) + Rational(std::ldexp(1.0, 103));
+  if (abs(value) >= overflow)
+    throw Error(ErrorCategory::invalid_argument, "coordinate " + to_string(value).substr(0, 40) +
+                                                     " is beyond the range of float (binary STL)");
+  float guess = static_cast<float>(to_double_nearest(value));
+  float best = guess;
+  Rational best_distance = abs(value - Rational(guess));
+  for (float candidate : {std::nextafter(guess, -FLT_MAX), std::nextafter(guess, FLT_MAX)}) {
+    if (!std::isfinite(candidate)) continue;
+    Rational distance = abs(value - Rational(candidate));
+    int c = cmp(distance, best_distance);
+    if (c < 0 || (c == 0 && (std::bit_cast<std::uint32_t>(candidate) & 1u) == 0)) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+// The unit normal of triangle abc in float: the exact cross product, scaled
+// exactly so that its largest component is +-1 (no overflow or underflow),
+// then normalised in double. Zero for a degenerate triangle.
+std::array<float, 3> unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Vec3 n = cross(b - a, c - a);
+  if (is_zero(n)) return {0.0f, 0.0f, 0.0f};
+  Rational largest = abs(n.x);
+  if (cmp(abs(n.y), largest) > 0) largest = abs(n.y);
+  if (cmp(abs(n.z), largest) > 0) largest = abs(n.z);
+  double x = to_double_nearest(n.x / largest);
+  double y = to_double_nearest(n.y / largest);
+  double z = to_double_nearest(n.z / largest);
+  double length = std::sqrt(x * x + y * y + z * z);
+  return {static_cast<float>(x / length), static_cast<float>(y / length), static_cast<float>(z / length)};
+}
+
+}  // namespace
+}  // namespace io_detail
+
+PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits) {
+  using namespace io_detail;
+  ByteSource bytes(in, source, limits.max_bytes);
+  std::string data = bytes.read_all();
+  if (data.empty()) throw Error(ErrorCategory::parse, std::string(source) + ": empty input");
+  const bool solid = starts_with_solid(data);
+  std::string binary_hint;
+  if (data.size() >= header_size) {
+    const std::uint32_t count = load_u32_le(data, 80);
+    const std::uint64_t expected = header_size + record_size * std::uint64_t{count};
+    if (expected == data.size()) return parse_binary(data, count, source, limits);
+    std::string mismatch = "the binary STL header declares " + std::to_string(count) +
+                           " triangles, which need " + std::to_string(expected) +
+                           " bytes, but the input has " + std::to_string(data.size());
+    if (!solid) {
+      if (expected > data.size()) {
+        std::uint64_t complete = (data.size() - header_size) / record_size;
+        fail_at(source, header_size + complete * record_size,
+                mismatch + " (truncated in triangle " + std::to_string(complete) + ")");
+      }
+      fail_at(source, expected,
+              mismatch + " (" + std::to_string(data.size() - expected) + " bytes after the last triangle)");
+    }
+    if (std::memchr(data.data(), '\0', data.size()) != nullptr)
+      binary_hint = "; not binary either: " + mismatch;
+  } else if (!solid) {
+    fail_at(source, 0,
+            "input of " + std::to_string(data.size()) +
+                " bytes neither starts with 'solid' nor holds an 84-byte binary STL header");
+  }
+  LineReader reader(std::move(data), source, limits);
+  try {
+    return parse_ascii(reader);
+  } catch (const Error& e) {
+    if (binary_hint.empty() || e.category() != ErrorCategory::parse) throw;
+    std::string message = e.what();
+    message.erase(0, std::strlen(to_string(e.category())) + 2);  // the "parse: " prefix
+    throw Error(e.category(), message + binary_hint);
+  }
+}
+
+void write_stl(std::ostream& out, const PolygonSoup& soup) {
+  using namespace io_detail;
+  check_soup_for_writing(soup, 3);
+  std::uint64_t triangles = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) triangles += soup.face(f).size() - 2;
+  if (triangles > std::numeric_limits<std::uint32_t>::max())
+    throw Error(ErrorCategory::invalid_argument,
+                std::to_string(triangles) + " triangles do not fit a binary STL");
+  std::vector<std::array<float, 3>> rounded;
+  rounded.reserve(soup.points.size());
+  for (const Vec3& p : soup.points)
+    rounded.push_back({to_float_nearest(p.x), to_float_nearest(p.y), to_float_nearest(p.z)});
+
+  TextWriter w(out);
+  char header[80] = "binary STL written by cvms";  // never starts with "solid"
+  w.text(std::string_view(header, sizeof header));
+  w.u32_le(static_cast<std::uint32_t>(triangles));
+  auto put = [&w](float value) { w.u32_le(std::bit_cast<std::uint32_t>(value)); };
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    auto face = soup.face(f);
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+      const std::uint32_t corners[3] = {face[0], face[k], face[k + 1]};
+      for (float c : unit_normal(soup.points[corners[0]], soup.points[corners[1]], soup.points[corners[2]]))
+        put(c);
+      for (std::uint32_t v : corners)
+        for (float c : rounded[v]) put(c);
+      w.byte('\0').byte('\0');
+    }
+  }
+  w.finish();
+}
+
+}  // namespace cvms

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// Private helper for the writers: a buffered, locale-independent text and
+// byte sink. Numbers are formatted with std::to_chars (never through the
+// stream's locale), so the output is byte-identical across runs and machines.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <ios>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "cvms/error.hpp"
+#include "cvms/io.hpp"
+#include "cvms/rational.hpp"
+
+namespace cvms::io_detail {
+
+class TextWriter {
+ public:
+  explicit TextWriter(std::ostream& out) : out_(out) { buffer_.reserve(flush_at + 256); }
+  TextWriter(const TextWriter&) = delete;
+  TextWriter& operator=(const TextWriter&) = delete;
+  ~TextWriter() = default;  // call finish(); a destructor must not throw
+
+  TextWriter& text(std::string_view s) {
+    buffer_.append(s);
+    if (buffer_.size() >= flush_at) flush();
+    return *this;
+  }
+  TextWriter& byte(char c) {
+    buffer_.push_back(c);
+    if (buffer_.size() >= flush_at) flush();
+    return *this;
+  }
+  TextWriter& integer(std::uint64_t value) {
+    char digits[24];
+    auto result = std::to_chars(digits, digits + sizeof digits, value);
+    return text(std::string_view(digits, static_cast<std::size_t>(result.ptr - digits)));
+  }
+  TextWriter& u32_le(std::uint32_t value) {
+    for (int i = 0; i < 4; ++i) byte(static_cast<char>((value >> (8 * i)) & 0xffu));
+    return *this;
+  }
+  /// An exact coordinate, or the nearest double printed in the shortest form
+  /// that reads back to the same double. \throw Error(invalid_argument) when the
+  /// value is beyond the double range.
+  TextWriter& coordinate(const Rational& value, Coordinates mode) {
+    if (mode == Coordinates::exact) return text(to_string(value));
+    double d = to_double_nearest(value);
+    if (!std::isfinite(d))
+      throw Error(ErrorCategory::invalid_argument,
+                  "coordinate " + abbreviated(value) + " is beyond the range of double");
+    char digits[32];
+    auto result = std::to_chars(digits, digits + sizeof digits, d);
+    return text(std::string_view(digits, static_cast<std::size_t>(result.ptr - digits)));
+  }
+  /// Flushes what is buffered and checks the stream. \throw Error(io) on failure.
+  void finish() {
+    flush();
+    try {
+      out_.flush();
+    } catch (const std::ios_base::failure&) {
+      throw Error(ErrorCategory::io, "writing the output failed");
+    }
+    if (!out_) throw Error(ErrorCategory::io, "writing the output failed");
+  }
+
+ private:
+  static constexpr std::size_t flush_at = std::size_t{1} << 16;
+  static std::string abbreviated(const Rational& value) {
+    std::string s = value.get_str();
+    return s.size() > 40 ? s.substr(0, 40) + "..." : s;
+  }
+  void flush() {
+    try {
+      out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    } catch (const std::ios_base::failure&) {
+      throw Error(ErrorCategory::io, "writing the output failed");
+    }
+    buffer_.clear();
+    if (!out_) throw Error(ErrorCategory::io, "writing the output failed");
+  }
+  std::ostream& out_;
+  std::string buffer_;
+};
+
+}  // namespace cvms::io_detail
