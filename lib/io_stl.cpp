@@ -174,7 +174,14 @@ PolygonSoup parse_ascii(LineReader& reader) {
     tokens.expect("outer", [&] { return "after the normal of " + name(); });
     tokens.expect("loop", [] { return std::string("after 'outer'"); });
     for (std::size_t k = 0; k < 3; ++k) {
-      tokens.expect("vertex", [&] { return "(" + name() + " needs 3 vertices)"; });
+      // Appended, not "(" + name(): GCC 12 at -O3 reports a false -Wrestrict
+      // overlap for prepending to a temporary string.
+      tokens.expect("vertex", [&] {
+        std::string context = "(";
+        context += name();
+        context += " needs 3 vertices)";
+        return context;
+      });
       Vec3 p = parse_point(
           reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
       auto it = index_of.find(p);
