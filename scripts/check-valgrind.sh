@@ -23,7 +23,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # Bad solids the readers accept but the polyhedron checks reject.
-cat >"$work/reflex.off" <<'OFF'
+cat >"$work/reflex.off" <<'END'
 OFF
 # a tetrahedron whose base is dented upwards to (1, 1, 1/2): reflex edges
 5 6 0
@@ -38,8 +38,8 @@ OFF
 3 0 2 4
 3 2 1 4
 3 1 0 4
-OFF
-cat >"$work/open.off" <<'OFF'
+END
+cat >"$work/open.off" <<'END'
 OFF
 4 3 0
 0 0 0
@@ -49,7 +49,7 @@ OFF
 3 0 2 1
 3 0 1 3
 3 0 3 2
-OFF
+END
 printf 'OFF\n1000000000000 1 0\n0 0 0\n' >"$work/lying.off"
 
 passed=0
@@ -86,6 +86,6 @@ for bad in test/data/bad/truncated_faces.off test/data/bad/nan.off test/data/bad
 done
 expect 0 hull_points hull test/data/points.xyz -o "$work/hull.off"
 expect 0 sum_cube_tetra sum test/data/cube.off test/data/tetra_exact.off -o "$work/sum.off"
-expect 0 sum_cube_tetra_stl sum test/data/cube.off test/data/tetra_exact.off --algorithm chms -o "$work/sum.stl"
+expect 0 sum_cube_tetra_stl sum test/data/cube.off test/data/tetra_colors.off --algorithm chms -o "$work/sum.stl"
 echo "valgrind: $passed passed, $failed failed"
 [[ $failed -eq 0 ]]
