@@ -60,6 +60,68 @@ Shape describe(const ConvexPolyhedron& p) {
   return s;
 }
 
+namespace {
+Vec3 area_vector(const PolygonSoup& soup, std::size_t f) {
+  auto face = soup.face(f);
+  Vec3 n{0, 0, 0};
+  for (std::size_t i = 0; i < face.size(); ++i)
+    n += cross(soup.points[face[i]], soup.points[face[(i + 1) % face.size()]]);
+  return n;
+}
+}  // namespace
+
+Shape describe(const PolygonSoup& soup) {
+  Shape s;
+  s.vertices.insert(soup.points.begin(), soup.points.end());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    Vec3 n = area_vector(soup, f);
+    if (!is_zero(n) && !soup.face(f).empty()) s.planes.insert(plane_of(n, soup.points[soup.face(f)[0]]));
+  }
+  return s;
+}
+
+std::string check_soup_invariants(const PolygonSoup& soup) {
+  const std::size_t nv = soup.points.size(), nf = soup.num_faces();
+  if (std::set<Vec3>(soup.points.begin(), soup.points.end()).size() != nv) return "two points are equal";
+  std::vector<int> used(nv, 0);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> directed;
+  std::vector<Plane> planes(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::string name = "face " + std::to_string(f);
+    auto face = soup.face(f);
+    if (face.size() < 3) return name + " has fewer than 3 vertices";
+    for (std::uint32_t i : face) {
+      if (i >= nv) return name + " has an index out of range";
+      ++used[i];
+    }
+    Vec3 n = area_vector(soup, f);
+    if (is_zero(n)) return name + " has zero area";
+    planes[f] = plane_of(n, soup.points[face[0]]);
+    const Plane& pl = planes[f];
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const Vec3& a = soup.points[face[i]];
+      const Vec3& b = soup.points[face[(i + 1) % face.size()]];
+      const Vec3& c = soup.points[face[(i + 2) % face.size()]];
+      if (dot(pl.normal, a) != pl.offset) return name + " is not planar";
+      if (sgn(dot(cross(b - a, c - b), pl.normal)) <= 0) return name + " is not strictly convex";
+      if (!directed.insert({face[i], face[(i + 1) % face.size()]}).second)
+        return name + " repeats a directed edge";
+    }
+    for (const Vec3& q : soup.points)
+      if (dot(pl.normal, q) > pl.offset) return "a point is above " + name;
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (used[v] == 0) return "point " + std::to_string(v) + " is unused";
+  for (const auto& [a, b] : directed)
+    if (!directed.count({b, a})) return "edge without a twin";
+  const long euler = static_cast<long>(nv) - static_cast<long>(directed.size() / 2) + static_cast<long>(nf);
+  if (euler != 2) return "Euler characteristic " + std::to_string(euler);
+  // On a convex polyhedron no two faces lie in one plane (a stronger check
+  // than "faces sharing an edge are not coplanar").
+  if (std::set<Plane>(planes.begin(), planes.end()).size() != nf) return "two faces are coplanar";
+  return "";
+}
+
 Shape brute_force_hull(std::span<const Vec3> input) {
   std::set<Vec3> unique(input.begin(), input.end());
   std::vector<Vec3> pts(unique.begin(), unique.end());
@@ -71,8 +133,9 @@ Shape brute_force_hull(std::span<const Vec3> input) {
         Vec3 normal = cross(pts[j] - pts[i], pts[k] - pts[i]);
         if (is_zero(normal)) continue;
         bool any_above = false, any_below = false;
+        const Rational offset = dot(normal, pts[i]);
         for (const Vec3& q : pts) {
-          int side = sgn(dot(normal, q - pts[i]));
+          int side = cmp(dot(normal, q), offset);
           any_above |= side > 0;
           any_below |= side < 0;
           if (any_above && any_below) break;

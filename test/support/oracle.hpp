@@ -39,6 +39,19 @@ struct Shape {
 /// wrong cached normal shows up as a difference.
 Shape describe(const ConvexPolyhedron& p);
 
+/// The description of a polygon soup: its points, and for each face the
+/// plane of its exact area vector sum(cross(p_i, p_i+1)) (so a clockwise face
+/// gives the opposite plane). Faces of zero area are skipped.
+Shape describe(const PolygonSoup& soup);
+
+/// Checks a soup meant to be a convex polyhedron with maximal facets: every
+/// point used and distinct, every face at least a triangle, planar, strictly
+/// convex and counterclockwise from outside, every point on or below every
+/// face plane, every directed edge used once and its reverse once, Euler
+/// characteristic 2, faces sharing an edge not coplanar.
+/// Returns "" when valid, else a message.
+std::string check_soup_invariants(const PolygonSoup& soup);
+
 /// The hull of points by brute force, O(n^4): every plane through three
 /// points with all points on one side is a facet plane; the extreme points
 /// are those that are not in the convex hull of the others. Only for small n.

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Private entry point of the exact 3D quickhull: the hull as a plain polygon
+// soup, so that it can be tested (and used by CHMS) without the mesh layer.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cvms/polygon_soup.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms {
+
+/// The convex hull of points as a soup with MAXIMAL polygonal facets: every
+/// facet is a strictly convex polygon, counterclockwise seen from outside,
+/// no two facets sharing an edge are coplanar, and the points of the soup are
+/// exactly the extreme points of the input (copied, each once, numbered in
+/// order of first use by the faces).
+/// If source_index is given, it receives for every soup point the index of
+/// one input point at that position.
+/// \throw Error(degenerate) if the points do not span 3D, saying whether there
+///   are none, or they are all equal, all collinear or all coplanar.
+/// \throw Error(limit) for 2^32 - 1 or more points.
+/// Complexity: O(n log n) expected for random input, O(n) extra memory.
+PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* source_index = nullptr);
+
+}  // namespace cvms
