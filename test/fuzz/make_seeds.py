@@ -79,7 +79,20 @@ def main():
           bytes([0, 4]) + cloud(pyr) + bytes([1, 0, 3, 2, 1]) +
           b"".join(bytes([0, a, b, 4]) for a, b in ((0, 1), (1, 2), (2, 3), (3, 0))))
 
-    # minkowski: mode (bit 0 grid, bits 1-2: B independent / -A / scaled A / subset of A)
+    # hull mode with tiny moves (bit 2) and an extreme scale (bit 3): two
+    # cube corners moved by 2^-50, then everything scaled by 2^(8 * -100).
+    write("from_soup", "hull_cube_tiny_moves_tiny_scale.bin",
+          bytes([13, 4]) + cloud(CUBE) + bytes([3, 30, 0, 0, 0, 0, 0, 0, 9, 30, 0]) + bytes([256 - 100]) + bytes([0, 0]))
+    write("from_soup", "hull_octa_huge_scale.bin", bytes([9, 2]) + cloud(OCTA) + bytes([126]) + bytes([1, 0]))
+
+    # minkowski, bit 3: tiny moves of both clouds, then an extreme scale.
+    write("minkowski", "cube_tetra_huge.bin",
+          bytes([8, 4]) + cloud(CUBE) + bytes([0]) + cloud(TETRA) + bytes(12) + bytes([127]))
+    write("minkowski", "cube_minus_cube_nearly.bin",
+          bytes([10, 4]) + cloud(CUBE) + bytes([1, 40, 0, 0, 3, 45, 0, 0, 5, 59] + [0] * 6) + bytes([256 - 128]))
+
+    # minkowski: mode (bit 0 grid, bits 1-2: B independent / -A / scaled A / subset of A,
+    # bit 3: tiny moves and an extreme scale)
     write("minkowski", "cube_tetra.bin", bytes([0, 4]) + cloud(CUBE) + bytes([0]) + cloud(TETRA))
     write("minkowski", "cube_minus_cube.bin", bytes([2, 4]) + cloud(CUBE))
     write("minkowski", "octa_scaled.bin", bytes([4, 2]) + cloud(OCTA) + bytes([1, 1]) + cloud([(3, -2, (1, 2))]))

@@ -60,6 +60,32 @@ Vec3 decode_point(ByteStream& in, bool grid) {
   return p;
 }
 
+// 2^e exactly, for any e.
+Rational power_of_two(long e) {
+  mpz_class p = 1;
+  mpz_mul_2exp(p.get_mpz_t(), p.get_mpz_t(), static_cast<mp_bitcnt_t>(e < 0 ? -e : e));
+  return e < 0 ? Rational(mpz_class(1), p) : Rational(p);
+}
+
+// Scales every point by 2^e, e in [-1024, 1016]: coordinates beyond the
+// double range or in its subnormal range, where the predicate filters must
+// fall back to exact arithmetic rather than trust inf or 0.
+void scale_extreme(std::vector<Vec3>& points, ByteStream& in) {
+  const Rational s = power_of_two(static_cast<long>(static_cast<std::int8_t>(in.next())) * 8);
+  for (Vec3& p : points) p = s * p;
+}
+
+// Moves some points by tiny steps (k * 2^-(20..79)): nearly coplanar and
+// nearly collinear configurations that a double evaluation gets wrong.
+void perturb_tiny(std::vector<Vec3>& points, ByteStream& in) {
+  for (Vec3& p : points) {
+    const std::uint8_t b = in.next();
+    if ((b & 1) == 0) continue;
+    const long k = static_cast<long>((b >> 1) % 7) - 3;
+    p[(b >> 4) % 3] += Rational(k) * power_of_two(-20 - static_cast<long>(in.next() % 60));
+  }
+}
+
 std::vector<Vec3> decode_cloud(ByteStream& in, std::size_t count, bool grid) {
   std::vector<Vec3> points;
   points.reserve(count);
@@ -427,6 +453,8 @@ void read_points_target(std::span<const std::uint8_t> data) {
 
 void from_soup_target(std::span<const std::uint8_t> data) {
   ByteStream in(data);
+  // mode: bit 0 raw faces / edited hull, bit 1 grid coordinates; for hulls,
+  // bit 2 tiny moves, bit 3 an extreme scale.
   const std::uint8_t mode = in.next();
   const bool grid = (mode & 2) != 0;
   PolygonSoup soup;
@@ -447,6 +475,8 @@ void from_soup_target(std::span<const std::uint8_t> data) {
   } else {
     // Edited hull: up to 31 points, their hull, then edits.
     std::vector<Vec3> points = decode_cloud(in, 4 + in.next() % 28, grid);
+    if ((mode & 4) != 0) perturb_tiny(points, in);
+    if ((mode & 8) != 0) scale_extreme(points, in);
     ConvexPolyhedron hull;
     try {
       hull = convex_hull(points);
@@ -470,6 +500,8 @@ void from_soup_target(std::span<const std::uint8_t> data) {
 
 void minkowski_target(std::span<const std::uint8_t> data) {
   ByteStream in(data);
+  // mode: bit 0 grid coordinates, bits 1-2 how B relates to A, bit 3 tiny
+  // moves and an extreme scale.
   const std::uint8_t mode = in.next();
   const bool grid = (mode & 1) != 0;
   std::vector<Vec3> pa = decode_cloud(in, 4 + in.next() % 27, grid);
@@ -495,6 +527,14 @@ void minkowski_target(std::span<const std::uint8_t> data) {
       pb.insert(pb.end(), more.begin(), more.end());
       break;
     }
+  }
+  if ((mode & 8) != 0) {  // the same tiny moves and the same scale for both clouds
+    const std::size_t at = pa.size();
+    pa.insert(pa.end(), pb.begin(), pb.end());
+    perturb_tiny(pa, in);
+    scale_extreme(pa, in);
+    pb.assign(pa.begin() + static_cast<std::ptrdiff_t>(at), pa.end());
+    pa.resize(at);
   }
   ConvexPolyhedron a, b;
   try {
