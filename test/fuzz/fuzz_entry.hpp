@@ -13,13 +13,13 @@
 
 #include "support/fuzz_targets.hpp"
 
-#define CVMS_FUZZ_ENTRY(target)                                                   \
+#define CVMS_FUZZ_ENTRY(target)                                                       \
   extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { \
-    try {                                                                         \
-      ::cvms::fuzz::target(std::span<const std::uint8_t>(data, size));            \
-    } catch (const ::cvms::fuzz::FuzzFinding& finding) {                          \
-      std::fprintf(stderr, "FUZZ FINDING (%s): %s\n", #target, finding.what());   \
-      __builtin_trap();                                                           \
-    }                                                                             \
-    return 0;                                                                     \
+    try {                                                                             \
+      ::cvms::fuzz::target(std::span<const std::uint8_t>(data, size));                \
+    } catch (const ::cvms::fuzz::FuzzFinding& finding) {                              \
+      std::fprintf(stderr, "FUZZ FINDING (%s): %s\n", #target, finding.what());       \
+      __builtin_trap();                                                               \
+    }                                                                                 \
+    return 0;                                                                         \
   }

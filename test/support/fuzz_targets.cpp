@@ -136,7 +136,8 @@ using Reader = PolygonSoup (*)(std::istream&, std::string_view, const ReadLimits
 using Writer = void (*)(std::ostream&, const PolygonSoup&);
 
 // Runs a reader; returns false if it rejected the input with an Error.
-bool read_bytes(std::span<const std::uint8_t> data, Reader reader, const ReadLimits& limits, PolygonSoup& soup) {
+bool read_bytes(std::span<const std::uint8_t> data, Reader reader, const ReadLimits& limits,
+                PolygonSoup& soup) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data.data()), data.size()));
   try {
     soup = reader(in, "<fuzz>", limits);
@@ -219,7 +220,8 @@ void check_planes(const ConvexPolyhedron& p, const std::string& who) {
     }
     if (g != 1) finding(who + ": facet normal is not primitive");
     for (HalfedgeId h : m.face_halfedges(f))
-      if (dot(n, p.vertex(m.from(h))) != p.plane_offset(f)) finding(who + ": a facet vertex is off its plane");
+      if (dot(n, p.vertex(m.from(h))) != p.plane_offset(f))
+        finding(who + ": a facet vertex is off its plane");
   }
 }
 
@@ -244,7 +246,8 @@ PolygonSoup reversed(const PolygonSoup& soup) {
 // The faces of a soup as separate index vectors, for editing.
 std::vector<std::vector<std::uint32_t>> faces_of(const PolygonSoup& soup) {
   std::vector<std::vector<std::uint32_t>> faces;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) faces.emplace_back(soup.face(f).begin(), soup.face(f).end());
+  for (std::size_t f = 0; f < soup.num_faces(); ++f)
+    faces.emplace_back(soup.face(f).begin(), soup.face(f).end());
   return faces;
 }
 
@@ -256,8 +259,8 @@ PolygonSoup soup_of(std::vector<Vec3> points, const std::vector<std::vector<std:
 }
 
 // The face (other than `skip`) that has the directed edge b -> a; or faces.size().
-std::size_t face_with_edge(const std::vector<std::vector<std::uint32_t>>& faces, std::uint32_t b, std::uint32_t a,
-                           std::size_t skip) {
+std::size_t face_with_edge(const std::vector<std::vector<std::uint32_t>>& faces, std::uint32_t b,
+                           std::uint32_t a, std::size_t skip) {
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (f == skip) continue;
     const auto& face = faces[f];
