@@ -174,11 +174,10 @@ PolygonSoup parse_ascii(LineReader& reader) {
     tokens.expect("outer", [&] { return "after the normal of " + name(); });
     tokens.expect("loop", [] { return std::string("after 'outer'"); });
     for (std::size_t k = 0; k < 3; ++k) {
-      // Appended, not "(" + name(): GCC 12 at -O3 reports a false -Wrestrict
-      // overlap for prepending to a temporary string.
       tokens.expect("vertex", [&] {
-        std::string context = "(";
-        context += name();
+        // Built by appending: GCC 12's -O3 -Wrestrict misfires on "(" + std::string.
+        std::string context = name();
+        context.insert(0, 1, '(');
         context += " needs 3 vertices)";
         return context;
       });

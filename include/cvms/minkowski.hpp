@@ -14,17 +14,42 @@ enum class Algorithm {
   chms,    ///< exact hull of all pairwise vertex sums (the reference oracle)
 };
 
-struct Options {
-  Algorithm algorithm = Algorithm::cvms;
+/// How CVMS finds its edge facets (paper Section 4.3, step 3).
+enum class EdgeFacetSearch {
+  /// The paper's search: for every edge of A that passes Property 1, the
+  /// visibility of every facet of B (Eq. 4) gives the horizon edges, and the
+  /// normal-orientation criterion (Eq. 5) selects among them; the final
+  /// decision is made exact with the Gaussian-map crossing test.
+  /// O(e_A (f_B + e_B)) predicates: the reference for faster variants.
+  paper,
 };
 
+/// How minkowski_sum computes the sum.
+struct Options {
+  Algorithm algorithm = Algorithm::cvms;                       ///< which algorithm
+  EdgeFacetSearch edge_facet_search = EdgeFacetSearch::paper;  ///< CVMS only
+};
+
+/// What an algorithm did. For CVMS, translated + corner + edge facets equals
+/// the number of facets of the result.
 struct Stats {
   std::uint64_t translated_facets = 0;  ///< facets parallel to a facet of A
   std::uint64_t corner_facets = 0;      ///< facets parallel to a facet of B only
   std::uint64_t edge_facets = 0;        ///< edge(A) + edge(B) facets
-  std::uint64_t contributing_ties = 0;  ///< facets with 2 or more contributing vertices
-  std::uint64_t predicate_filtered = 0; ///< predicate calls the double filter answered
-  std::uint64_t predicate_exact = 0;    ///< predicate calls that needed exact arithmetic
+  /// Facets of A and of B with 2 or more contributing vertices (CVMS, ESSDMS).
+  std::uint64_t contributing_ties = 0;
+  /// (edge of A, horizon edge of B) pairs that passed Property 1 and were
+  /// tested with the normal-orientation criterion (CVMS, paper search); for
+  /// ESSDMS, the (arc of A, arc of B) pairs that passed the contributing-vertex
+  /// pre-check and were tested for a proper crossing.
+  std::uint64_t edge_candidates = 0;
+  /// Candidates the paper's criterion alone (Eq. 4 with "not invisible"
+  /// including parallel facets, plus Eq. 5) would accept but the exact
+  /// Gaussian-map test rejects: the facet of B is parallel to the edge of A,
+  /// and the true facet is the corner facet f_B + e_A (see lib/cvms.cpp).
+  std::uint64_t edge_paper_rejections = 0;
+  std::uint64_t predicate_filtered = 0;  ///< predicate calls the double filter answered
+  std::uint64_t predicate_exact = 0;     ///< predicate calls that needed exact arithmetic
 };
 
 struct MinkowskiResult {
@@ -33,6 +58,11 @@ struct MinkowskiResult {
 };
 
 /// A + B = {a + b : a in A, b in B}. Exact. Thread-safe (no shared state).
+/// CVMS with the paper's search costs O(f_A v_B + f_B v_A + e_A' (f_B + e_B'))
+/// predicates, e' counting the edges that pass Property 1, plus the output;
+/// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
+/// \throw Error(invalid_argument) for an empty (default-constructed) operand
+///   or an unknown option value;
 /// \throw Error(not_implemented) if the algorithm is not available.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});

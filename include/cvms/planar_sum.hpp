@@ -22,8 +22,14 @@ using IndexPair = std::pair<std::uint32_t, std::uint32_t>;
 /// result is a strictly convex polygon (or a segment or a point when both
 /// operands are degenerate in compatible ways). Starts at the pair of the
 /// lowest (smallest y, then smallest x) vertices.
-/// \throw Error(invalid_argument) for empty input.
-/// Complexity: O(|p| + |q|) predicates.
+/// The output has at most |p| + |q| vertices; p[i] + q[j] for each pair.
+/// \throw Error(invalid_argument) for empty input, and for the precondition
+///   violations found at no extra cost: coinciding consecutive vertices, and
+///   a polygon (3 or more vertices) whose edge directions do not strictly
+///   increase over one counterclockwise turn (clockwise, collinear consecutive
+///   vertices, reflex or self-overlapping). The message names the operand and
+///   the vertex.
+/// Complexity: O(|p| + |q|) predicates, O(|p| + |q|) memory.
 std::vector<IndexPair> planar_sum_indices(std::span<const Vec2> p, std::span<const Vec2> q);
 
 /// The same sum as points.

@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// Private entry point of the CVMS algorithm (paper Section 4), called by
+// minkowski_sum.
+#pragma once
+
+#include "cvms/minkowski.hpp"
+
+namespace cvms::detail {
+
+/// A + B by contributing vertices. Adds its facet counts, ties and edge
+/// candidate counts to `stats` (not the predicate counters: the caller
+/// measures those). \pre a and b are non-empty.
+ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                          Stats& stats);
+
+}  // namespace cvms::detail

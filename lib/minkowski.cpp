@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// minkowski_sum: checks its operands, dispatches to the chosen algorithm and
+// measures the predicate counters around it.
+#include "cvms/minkowski.hpp"
+
+#include "cvms.hpp"
+#include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
+#include "essdms.hpp"
+
+namespace cvms {
+
+MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
+  if (a.num_facets() == 0 || b.num_facets() == 0) {
+    throw Error(ErrorCategory::invalid_argument, std::string("minkowski_sum: operand ") +
+                                                     (a.num_facets() == 0 ? "A" : "B") +
+                                                     " is an empty (default-constructed) polyhedron");
+  }
+  // The counters are per thread, so the difference is this call's share.
+  const PredicateCounters before = predicate_counters();
+  MinkowskiResult result;
+  switch (options.algorithm) {
+    case Algorithm::cvms:
+      result.polyhedron = detail::cvms_sum(a, b, options, result.stats);
+      break;
+    case Algorithm::chms:
+      result.polyhedron = chms(a, b);
+      break;
+    case Algorithm::essdms:
+      result.polyhedron = detail::essdms_sum(a, b, result.stats);
+      break;
+    default:
+      throw Error(ErrorCategory::invalid_argument,
+                  "minkowski_sum: unknown algorithm " + std::to_string(static_cast<int>(options.algorithm)));
+  }
+  const PredicateCounters& after = predicate_counters();
+  result.stats.predicate_filtered = after.filtered - before.filtered;
+  result.stats.predicate_exact = after.exact - before.exact;
+  return result;
+}
+
+}  // namespace cvms

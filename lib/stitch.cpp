@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// Facets of A + B from features of A and B, glued by vertex pair (paper
+// Section 4.3; shared with the slope-diagram algorithm of Section 5.2).
+#include "stitch.hpp"
+
+#include <unordered_map>
+#include <utility>
+
+#include "cvms/planar_sum.hpp"
+
+namespace cvms::detail {
+namespace {
+
+// Planar sums are computed in 2D by dropping one coordinate. Projection along
+// a coordinate axis not parallel to the plane is an affine bijection from the
+// plane onto the coordinate plane; it is linear on R^3 (so it commutes with
+// +), preserves convexity, parallelism and collinearity exactly, and maps
+// distinct vertices to distinct points, so the index pairs of the planar sum
+// are exactly those of the 3D sum. Every point involved lies in one of two
+// parallel planes with normal n, and the projection of the sum of the two
+// sets is the sum of the projections.
+//
+// Orientation: the signed area of the projection onto the coordinates
+// (k+1, k+2) (cyclic, right-handed) of a polygon counterclockwise about n is
+// the polygon's area times n_k / |n|. Keeping (k+1, k+2) when n_k > 0 and
+// swapping them when n_k < 0 therefore keeps counterclockwise polygons
+// counterclockwise. We drop the axis of the largest |n_k| (any nonzero n_k
+// would do; the largest keeps the projected polygons well shaped for the
+// floating-point filters).
+struct Projection {
+  int u;
+  int v;
+};
+
+Projection projection_along(const Vec3& n) {
+  int k = 0;
+  if (cmp(abs(n.y), abs(n[k])) > 0) k = 1;
+  if (cmp(abs(n.z), abs(n[k])) > 0) k = 2;
+  int u = (k + 1) % 3;
+  int v = (k + 2) % 3;
+  if (sgn(n[k]) < 0) std::swap(u, v);
+  return {u, v};
+}
+
+Vec2 project(const Vec3& p, Projection pr) { return {p[pr.u], p[pr.v]}; }
+
+// A dense pair -> output-index table is used when it is not much larger than
+// the output itself; otherwise a hash map.
+constexpr std::uint64_t dense_table_limit = 1u << 16;
+
+}  // namespace
+
+SumFacetBuilder::SumFacetBuilder(const ConvexPolyhedron& a, const ConvexPolyhedron& b) : a_(a), b_(b) {}
+
+void SumFacetBuilder::add_facet_plus_vertex(Operand which, FaceId f, VertexId v) {
+  const Mesh& m = operand(which).mesh();
+  for (HalfedgeId h : m.face_halfedges(f)) push(which, m.from(h), v);
+  close_facet();
+}
+
+void SumFacetBuilder::add_facet_plus_edge(Operand which, FaceId f, VertexId v0, VertexId v1) {
+  const VertexId other[2] = {v0, v1};
+  add_planar_sum(which, f, other);
+}
+
+void SumFacetBuilder::add_facet_plus_facet(FaceId fa, FaceId fb) {
+  std::vector<VertexId> other;
+  const Mesh& mb = b_.mesh();
+  for (HalfedgeId h : mb.face_halfedges(fb)) other.push_back(mb.from(h));
+  add_planar_sum(Operand::a, fa, other);
+}
+
+void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other) {
+  const ConvexPolyhedron& own = operand(which);
+  const ConvexPolyhedron& oth = operand(which == Operand::a ? Operand::b : Operand::a);
+  const Projection pr = projection_along(own.normal(f));
+  own_vertices_.clear();
+  own_points_.clear();
+  for (HalfedgeId h : own.mesh().face_halfedges(f)) {
+    const VertexId v = own.mesh().from(h);
+    own_vertices_.push_back(v);
+    own_points_.push_back(project(own.vertex(v), pr));
+  }
+  other_points_.clear();
+  for (VertexId v : other) other_points_.push_back(project(oth.vertex(v), pr));
+  for (const auto& [i, j] : planar_sum_indices(own_points_, other_points_)) {
+    push(which, own_vertices_[i], other[j]);
+  }
+  close_facet();
+}
+
+void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation) {
+  const Mesh& ma = a_.mesh();
+  const Mesh& mb = b_.mesh();
+  const std::uint32_t ua = ma.from(ha).index();
+  const std::uint32_t va = ma.to(ha).index();
+  const std::uint32_t ub = mb.from(hb).index();
+  const std::uint32_t vb = mb.to(hb).index();
+  // The cycle ua+ub, va+ub, va+vb, ua+vb has edge vectors d_A, d_B, -d_A,
+  // -d_B, hence normal cross(d_A, d_B); reversed, the opposite normal.
+  const VertexPair cycle[4] = {{ua, ub}, {va, ub}, {va, vb}, {ua, vb}};
+  if (orientation == Sign::positive) {
+    for (int i = 0; i < 4; ++i) pairs_.push_back(cycle[i]);
+  } else {
+    for (int i = 3; i >= 0; --i) pairs_.push_back(cycle[i]);
+  }
+  close_facet();
+}
+
+ConvexPolyhedron SumFacetBuilder::build() const {
+  const std::uint64_t nb = b_.num_vertices();
+  const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
+  PolygonSoup soup;
+  soup.face_offsets = offsets_;
+  soup.face_indices.resize(pairs_.size());
+
+  auto new_vertex = [&](const VertexPair& p) {
+    soup.points.push_back(a_.vertex(VertexId(p.a)) + b_.vertex(VertexId(p.b)));
+    return static_cast<std::uint32_t>(soup.points.size() - 1);
+  };
+
+  if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{pairs_.size()}) {
+    constexpr std::uint32_t unset = ~std::uint32_t{0};
+    std::vector<std::uint32_t> index(table_size, unset);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      std::uint32_t& slot = index[pairs_[i].a * nb + pairs_[i].b];
+      if (slot == unset) slot = new_vertex(pairs_[i]);
+      soup.face_indices[i] = slot;
+    }
+  } else {
+    std::unordered_map<std::uint64_t, std::uint32_t> index;
+    // Each vertex of a convex polyhedron is in at least three facets.
+    index.reserve(pairs_.size() / 3 + 1);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const std::uint64_t key = pairs_[i].a * nb + pairs_[i].b;
+      auto [it, inserted] = index.try_emplace(key, 0u);
+      if (inserted) it->second = new_vertex(pairs_[i]);
+      soup.face_indices[i] = it->second;
+    }
+  }
+  return ConvexPolyhedron::from_trusted_soup(std::move(soup));
+}
+
+}  // namespace cvms::detail

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// Building the facets of A + B from features of A and B, and stitching them
+// into one ConvexPolyhedron (paper Sections 4.3 and 5.2: translated, corner
+// and edge facets). Shared by every algorithm that knows, for each facet of
+// the sum, which features of A and B it comes from (CVMS, ESSDMS).
+//
+// Every vertex of A + B is a_i + b_j for exactly one pair (i, j) of input
+// vertices, so facets are recorded as counterclockwise cycles of index pairs
+// and glued by pair: no coordinates are compared, and each output coordinate
+// is computed once.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cvms/convex_polyhedron.hpp"
+#include "cvms/predicates.hpp"
+
+namespace cvms::detail {
+
+/// Which operand a facet (or edge) belongs to.
+enum class Operand { a, b };
+
+/// The vertex a_i + b_j of the sum.
+struct VertexPair {
+  std::uint32_t a;
+  std::uint32_t b;
+};
+
+class SumFacetBuilder {
+ public:
+  /// The builder keeps references to a and b: they must outlive it.
+  SumFacetBuilder(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
+
+  /// Facet f of `which` translated by vertex v of the other operand (the
+  /// single contributing vertex of f).
+  void add_facet_plus_vertex(Operand which, FaceId f, VertexId v);
+  /// Facet f of `which` plus the segment [v0, v1] of the other operand, an
+  /// edge parallel to f's plane (two contributing vertices).
+  void add_facet_plus_edge(Operand which, FaceId f, VertexId v0, VertexId v1);
+  /// fa + fb for a facet of A and a facet of B with the same outward normal.
+  void add_facet_plus_facet(FaceId fa, FaceId fb);
+  /// The parallelogram e_A + e_B of the edges of halfedges ha (of A) and hb
+  /// (of B), non-parallel, whose outward normal is cross(d_A, d_B) times
+  /// `orientation` (positive or negative), d = to(h) - from(h).
+  void add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation);
+
+  [[nodiscard]] std::size_t num_facets() const noexcept { return offsets_.size() - 1; }
+  /// The pairs of facet i, counterclockwise seen from outside.
+  [[nodiscard]] std::span<const VertexPair> facet(std::size_t i) const noexcept {
+    return {pairs_.data() + offsets_[i], offsets_[i + 1] - offsets_[i]};
+  }
+
+  /// Glues the facets by vertex pair and builds the result. \pre the facets
+  /// are exactly the facets of A + B (each maximal, strictly convex,
+  /// counterclockwise from outside, no two with the same normal).
+  [[nodiscard]] ConvexPolyhedron build() const;
+
+ private:
+  void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
+  void close_facet() { offsets_.push_back(static_cast<std::uint32_t>(pairs_.size())); }
+  void push(Operand which, VertexId own, VertexId other) {
+    pairs_.push_back(which == Operand::a ? VertexPair{own.index(), other.index()}
+                                         : VertexPair{other.index(), own.index()});
+  }
+  [[nodiscard]] const ConvexPolyhedron& operand(Operand which) const noexcept {
+    return which == Operand::a ? a_ : b_;
+  }
+
+  const ConvexPolyhedron& a_;
+  const ConvexPolyhedron& b_;
+  std::vector<std::uint32_t> offsets_{0};
+  std::vector<VertexPair> pairs_;
+  // Scratch buffers, reused between facets.
+  std::vector<VertexId> own_vertices_;
+  std::vector<Vec2> own_points_;
+  std::vector<Vec2> other_points_;
+};
+
+}  // namespace cvms::detail

@@ -1,0 +1,328 @@
+// SPDX-License-Identifier: MIT
+// Tests of the `cvms` command-line tool: runs the built binary on real files
+// and checks exit codes, the one-line error messages, and the output files,
+// read back with the library and compared exactly with independent results
+// (hand-counted shapes, brute-force hulls of pairwise sums, CHMS).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cvms/convex_polyhedron.hpp"
+#include "cvms/io.hpp"
+#include "cvms/minkowski.hpp"
+#include "cvms/rational.hpp"
+#include "cvms/shapes.hpp"
+#include "support/oracle.hpp"
+
+namespace cvms {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t count_lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+#ifndef CVMS_CLI_PATH
+    GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
+#else
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("cvms_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+#endif
+  }
+  void TearDown() override {
+    if (!dir_.empty() && !HasFailure()) fs::remove_all(dir_);
+  }
+
+  fs::path file(const std::string& name) const { return dir_ / name; }
+  std::string path(const std::string& name) const { return file(name).string(); }
+
+  void write_text(const std::string& name, const std::string& text) const {
+    std::ofstream out(file(name), std::ios::binary);
+    out << text;
+  }
+
+  // Runs `cvms <args>` in the test directory; stdin from `input` if given.
+  Outcome run(const std::string& args, const std::string& input = "") const {
+#ifdef CVMS_CLI_PATH
+    std::string command = "cd '" + dir_.string() + "' && '" CVMS_CLI_PATH "' " + args + " > '" +
+                          path("stdout.txt") + "' 2> '" + path("stderr.txt") + "'";
+    if (!input.empty()) command += " < '" + path(input) + "'";
+    int status = std::system(command.c_str());
+    Outcome outcome;
+    outcome.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.out = slurp(file("stdout.txt"));
+    outcome.err = slurp(file("stderr.txt"));
+    return outcome;
+#else
+    (void)args;
+    (void)input;
+    return {};
+#endif
+  }
+
+  ConvexPolyhedron load(const std::string& name) const {
+    return ConvexPolyhedron::from_soup(read_file(file(name)));
+  }
+
+  // A failing run must exit 1 with exactly one line on stderr naming `what`.
+  void expect_bad_input(const std::string& args, const std::string& what,
+                        const std::string& input = "") const {
+    SCOPED_TRACE("cvms " + args);
+    Outcome o = run(args, input);
+    EXPECT_EQ(o.code, 1) << o.err;
+    EXPECT_EQ(count_lines(o.err), 1U) << o.err;
+    EXPECT_NE(o.err.find(what), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("cvms: "), std::string::npos) << o.err;
+  }
+
+  void expect_usage(const std::string& args) const {
+    SCOPED_TRACE("cvms " + args);
+    Outcome o = run(args);
+    EXPECT_EQ(o.code, 2) << o.err;
+    EXPECT_FALSE(o.err.empty());
+  }
+
+  fs::path dir_;
+};
+
+// V E F and the facet degree histogram of each built-in shape, counted by hand.
+struct ShapeCase {
+  const char* args;
+  const char* counts;
+  std::vector<const char*> degrees;
+};
+
+TEST_F(Cli, GenThenCheckRoundTrip) {
+  const std::vector<ShapeCase> cases = {
+      {"tetrahedron", "V 4 E 6 F 4", {"  3: 4"}},
+      {"cube", "V 8 E 12 F 6", {"  4: 6"}},
+      {"octahedron", "V 6 E 12 F 8", {"  3: 8"}},
+      {"truncated-cube", "V 24 E 36 F 14", {"  3: 8", "  8: 6"}},
+      {"sphere --subdivisions 1", "V 12 E 30 F 20", {"  3: 20"}},
+      {"box", "V 8 E 12 F 6", {"  4: 6"}},
+      {"prism", "V 12 E 18 F 8", {"  4: 6", "  6: 2"}},
+      {"prism --points 5", "V 10 E 15 F 7", {"  4: 5", "  5: 2"}},
+  };
+  for (const char* ext : {".off", ".obj", ".stl"}) {
+    for (const ShapeCase& c : cases) {
+      SCOPED_TRACE(std::string(c.args) + ext);
+      std::string name = std::string("shape") + ext;
+      Outcome gen = run(std::string("gen ") + c.args + " -o " + name);
+      ASSERT_EQ(gen.code, 0) << gen.err;
+      Outcome check = run("check " + name);
+      ASSERT_EQ(check.code, 0) << check.err;
+      EXPECT_NE(check.out.find(c.counts), std::string::npos) << check.out;
+      for (const char* d : c.degrees) EXPECT_NE(check.out.find(d), std::string::npos) << check.out;
+    }
+  }
+}
+
+TEST_F(Cli, GenWritesExactShapes) {
+  ASSERT_EQ(run("gen truncated-cube -o t.off").code, 0);
+  EXPECT_EQ(test::describe(load("t.off")), test::describe(shapes::truncated_cube()));
+  ASSERT_EQ(run("gen random --seed 7 --points 40 -o r.obj").code, 0);
+  EXPECT_EQ(test::describe(load("r.obj")), test::describe(shapes::random_hull(7, 40)));
+  ASSERT_EQ(run("gen rotated-sphere --subdivisions 2 -o s.off").code, 0);
+  EXPECT_EQ(test::describe(load("s.off")), test::describe(shapes::rotated_geodesic_sphere(2)));
+}
+
+TEST_F(Cli, SumMatchesBruteForceHullOfPairwiseSums) {
+  ASSERT_EQ(run("gen cube -o a.off").code, 0);
+  ASSERT_EQ(run("gen tetrahedron -o b.obj").code, 0);
+  std::vector<Vec3> a = read_file(file("a.off")).points;
+  std::vector<Vec3> b = read_file(file("b.obj")).points;
+  test::Shape expected = test::brute_force_hull(test::pairwise_sums(a, b));
+  ASSERT_FALSE(expected.vertices.empty());
+  Outcome o = run("sum a.off b.obj --algorithm chms -o s.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  ConvexPolyhedron s = load("s.off");
+  EXPECT_EQ(test::describe(s), expected) << test::difference(expected, test::describe(s));
+}
+
+TEST_F(Cli, SumOfGeneratedFilesEqualsChmsForEveryAlgorithm) {
+  ASSERT_EQ(run("gen truncated-cube -o a.off").code, 0);
+  ASSERT_EQ(run("gen sphere --subdivisions 2 -o b.obj").code, 0);
+  const test::Shape expected = test::describe(chms(load("a.off"), load("b.obj")));
+  for (const char* algorithm : {"", " --algorithm chms", " --algorithm cvms", " --algorithm essdms"}) {
+    SCOPED_TRACE(algorithm);
+    Outcome o = run(std::string("sum a.off b.obj -o s.off") + algorithm);
+    if (o.code == 1 && o.err.find("not_implemented") != std::string::npos) {
+      EXPECT_EQ(count_lines(o.err), 1U);
+      continue;  // not available yet: the tool says so in one line
+    }
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_TRUE(o.out.empty()) << o.out;
+    EXPECT_EQ(test::describe(load("s.off")), expected);
+  }
+}
+
+TEST_F(Cli, SumStatsAndFloatOutput) {
+  ASSERT_EQ(run("gen cube -o a.off").code, 0);
+  ASSERT_EQ(run("gen rotated-sphere --subdivisions 1 -o b.off").code, 0);
+  Outcome o = run("sum a.off b.off --algorithm chms --stats --float -o s.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.out.find("algorithm: chms"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("time: "), std::string::npos) << o.out;
+  ConvexPolyhedron exact = chms(load("a.off"), load("b.off"));
+  EXPECT_NE(o.out.find("A+B: V " + std::to_string(exact.num_vertices()) + " E " +
+                       std::to_string(exact.num_edges()) + " F " + std::to_string(exact.num_facets())),
+            std::string::npos)
+      << o.out;
+  // --float: every coordinate is the double nearest to the exact one (the
+  // file holds the shortest decimal that reads back to that double).
+  using Doubles = std::array<double, 3>;
+  auto nearest = [](const Vec3& p) {
+    return Doubles{to_double_nearest(p.x), to_double_nearest(p.y), to_double_nearest(p.z)};
+  };
+  std::set<Doubles> rounded;
+  for (VertexId v : exact.mesh().vertices()) rounded.insert(nearest(exact.vertex(v)));
+  std::set<Doubles> got;
+  for (const Vec3& p : read_file(file("s.off")).points) got.insert(nearest(p));
+  EXPECT_EQ(got, rounded);
+  EXPECT_EQ(got.size(), exact.num_vertices());
+}
+
+TEST_F(Cli, StdinAndStdout) {
+  // gen to stdout is OFF.
+  Outcome gen = run("gen octahedron -o -");
+  ASSERT_EQ(gen.code, 0) << gen.err;
+  std::istringstream off(gen.out);
+  EXPECT_EQ(test::describe(ConvexPolyhedron::from_soup(read_off(off, "stdout"))),
+            test::describe(shapes::octahedron()));
+  write_text("oct.off", gen.out);
+  // check from stdin.
+  Outcome check = run("check -", "oct.off");
+  ASSERT_EQ(check.code, 0) << check.err;
+  EXPECT_NE(check.out.find("V 6 E 12 F 8"), std::string::npos) << check.out;
+  // sum with one operand on stdin and the result on stdout; stats go to stderr.
+  ASSERT_EQ(run("gen cube -o cube.stl").code, 0);
+  Outcome sum = run("sum - cube.stl --algorithm chms --stats -o -", "oct.off");
+  ASSERT_EQ(sum.code, 0) << sum.err;
+  EXPECT_NE(sum.err.find("algorithm: chms"), std::string::npos) << sum.err;
+  std::istringstream result(sum.out);
+  EXPECT_EQ(test::describe(ConvexPolyhedron::from_soup(read_off(result, "stdout"))),
+            test::describe(chms(shapes::octahedron(), shapes::cube())));
+  // sum with no -o writes to stdout too.
+  Outcome plain = run("sum oct.off cube.stl --algorithm chms");
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.out, sum.out);
+}
+
+TEST_F(Cli, HullOfPointLines) {
+  // The cube's corners, interior points, duplicates and points on its facets.
+  write_text("points.xyz",
+             "# a cube with clutter\n"
+             "-1 -1 -1\n1 -1 -1\n-1 1 -1\n1 1 -1\n-1 -1 1\n1 -1 1\n-1 1 1\n1 1 1\n"
+             "0 0 0\n0.5 -0.25 1/3\n1 0 0\n1 1 1\n0 0 -1\n\n1 1 0\n");
+  Outcome o = run("hull points.xyz -o h.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(test::describe(load("h.off")), test::describe(shapes::cube()));
+  // Points from a mesh file, read on stdin.
+  ASSERT_EQ(run("gen truncated-cube -o t.off").code, 0);
+  Outcome piped = run("hull - -o h2.obj", "t.off");
+  ASSERT_EQ(piped.code, 0) << piped.err;
+  EXPECT_EQ(test::describe(load("h2.obj")), test::describe(shapes::truncated_cube()));
+}
+
+TEST_F(Cli, Demo) {
+  Outcome o = run("demo --algorithm chms");
+  ASSERT_EQ(o.code, 0) << o.err;
+  ConvexPolyhedron sphere = shapes::geodesic_sphere(4);
+  ConvexPolyhedron sum = chms(shapes::cube(), sphere);
+  auto counts = [](const ConvexPolyhedron& p) {
+    return "V " + std::to_string(p.num_vertices()) + " E " + std::to_string(p.num_edges()) + " F " +
+           std::to_string(p.num_facets());
+  };
+  EXPECT_NE(o.out.find("V 8 E 12 F 6"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find(counts(sphere)), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find(counts(sum)), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("algorithm: chms"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("time: "), std::string::npos) << o.out;
+}
+
+TEST_F(Cli, UsageErrorsExitTwo) {
+  ASSERT_EQ(run("gen cube -o a.off").code, 0);
+  expect_usage("");
+  expect_usage("frobnicate");
+  expect_usage("sum a.off");
+  expect_usage("sum a.off a.off --algorithm fastest");
+  expect_usage("sum a.off a.off --bogus");
+  expect_usage("sum a.txt a.off");
+  expect_usage("sum a.off a.off -o out.ply");
+  expect_usage("sum - - -o x.off");
+  expect_usage("gen pyramid");
+  expect_usage("gen cube --subdivisions 3");
+  expect_usage("gen sphere --subdivisions 0");
+  expect_usage("gen sphere --subdivisions 12");
+  expect_usage("gen cube --seed 4");
+  expect_usage("gen random --points 3");
+  expect_usage("check");
+  expect_usage("check a.off extra.off");
+  Outcome help = run("--help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("sum"), std::string::npos);
+}
+
+TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
+  ASSERT_EQ(run("gen cube -o cube.off").code, 0);
+  // A parse error: names the file and the line.
+  write_text("broken.off", "OFF\n4 4 0\n0 0 0\n1 0 zero\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  expect_bad_input("check broken.off", "broken.off");
+  Outcome parse = run("check broken.off");
+  EXPECT_NE(parse.err.find("broken.off:4"), std::string::npos) << "line 4 not named: " << parse.err;
+  expect_bad_input("sum cube.off broken.off -o s.off", "broken.off");
+  EXPECT_FALSE(fs::exists(file("s.off")));
+  // Missing file.
+  expect_bad_input("check missing.off", "missing.off");
+  expect_bad_input("sum missing.stl cube.off", "missing.stl");
+  // Open surface (a cube without its top): topology, names the file.
+  write_text("open.off",
+             "OFF\n8 5 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
+             "4 0 3 2 1\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  expect_bad_input("check open.off", "open.off");
+  // An octahedron whose top vertex is pushed below the equator: reflex edges.
+  write_text("dent.off",
+             "OFF\n6 8 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n0 0 -1/2\n0 0 -1\n"
+             "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n3 1 0 5\n3 2 1 5\n3 3 2 5\n3 0 3 5\n");
+  expect_bad_input("check dent.off", "dent.off");
+  Outcome dent = run("check dent.off");
+  EXPECT_NE(dent.err.find("not_convex"), std::string::npos) << dent.err;
+  // Coplanar points cannot make a hull.
+  write_text("flat.xyz", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n");
+  expect_bad_input("hull flat.xyz -o h.off", "flat.xyz");
+  // Bad input on stdin is named as such.
+  expect_bad_input("check -", "<stdin>", "broken.off");
+  // An unwritable output.
+  expect_bad_input("gen cube -o no/such/dir/x.off", "no/such/dir/x.off");
+}
+
+}  // namespace
+}  // namespace cvms

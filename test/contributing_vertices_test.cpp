@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// Tests of the contributing-vertex search (paper Eq. 3) against a brute-force
+// maximum of <v, n> in plain rational arithmetic.
+#include "contributing_vertices.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "cvms/shapes.hpp"
+
+namespace cvms::detail {
+namespace {
+
+std::vector<VertexId> brute_force_maximisers(const ConvexPolyhedron& q, const Vec3& n) {
+  Rational best;
+  std::vector<VertexId> out;
+  for (VertexId v : q.mesh().vertices()) {
+    const Rational d = dot(q.vertex(v), n);
+    if (out.empty() || d > best) {
+      best = d;
+      out.assign(1, v);
+    } else if (d == best) {
+      out.push_back(v);
+    }
+  }
+  return out;
+}
+
+TEST(ContributingVertices, MaximisersMatchBruteForceForFacetNormalsAndRandomDirections) {
+  const std::vector<ConvexPolyhedron> polys = {shapes::cube(),           shapes::octahedron(),
+                                               shapes::truncated_cube(), shapes::geodesic_sphere(2),
+                                               shapes::prism(7, 2),      shapes::random_hull(3, 40, 5)};
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> small(-2, 2);
+  std::vector<VertexId> got;
+  std::size_t ties = 0;
+  for (const auto& p : polys) {
+    for (const auto& q : polys) {
+      for (FaceId f : p.mesh().faces()) {
+        maximising_vertices(q, p.normal_ref(f), got);
+        ASSERT_EQ(got, brute_force_maximisers(q, p.normal(f)));
+        ties += got.size() > 1;
+      }
+    }
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 n{small(rng), small(rng), small(rng)};
+      if (is_zero(n)) continue;
+      const ApproxVec3 na = ApproxVec3::of(n);
+      maximising_vertices(p, Vec3Ref{n, na}, got);
+      ASSERT_EQ(got, brute_force_maximisers(p, n));
+    }
+  }
+  EXPECT_GT(ties, 0u);
+}
+
+TEST(ContributingVertices, ThreeOrMoreMaximisersAreAParallelFacet) {
+  const auto c = shapes::cube();
+  const auto t = shapes::truncated_cube();
+  std::vector<VertexId> cv;
+  std::vector<VertexId> facet;
+  for (FaceId f : c.mesh().faces()) {
+    maximising_vertices(t, c.normal_ref(f), cv);
+    ASSERT_GE(cv.size(), 3u);
+    const FaceId g = facet_with_normal(t, cv[0], c.normal(f));
+    ASSERT_TRUE(g.is_valid());
+    EXPECT_EQ(t.normal(g), c.normal(f));
+    sorted_facet_vertices(t, g, facet);
+    EXPECT_EQ(facet, cv);
+  }
+  EXPECT_FALSE(facet_with_normal(c, VertexId(0), Vec3{1, 1, 1}).is_valid());
+}
+
+TEST(ContributingVertices, DisjointSorted) {
+  const std::vector<VertexId> a = {VertexId(1), VertexId(4), VertexId(9)};
+  const std::vector<VertexId> b = {VertexId(2), VertexId(5)};
+  const std::vector<VertexId> c = {VertexId(0), VertexId(9)};
+  EXPECT_TRUE(disjoint_sorted(a, b));
+  EXPECT_FALSE(disjoint_sorted(a, c));
+  EXPECT_TRUE(disjoint_sorted(b, c));
+  EXPECT_TRUE(disjoint_sorted({}, a));
+}
+
+TEST(ContributingVertices, StoredPerFacet) {
+  ContributingVertices cv(3);
+  const std::vector<VertexId> x = {VertexId(3)};
+  const std::vector<VertexId> y = {VertexId(1), VertexId(2)};
+  cv.append(x);
+  cv.append(y);
+  cv.append(x);
+  ASSERT_EQ(cv.num_facets(), 3u);
+  EXPECT_EQ(cv.of(FaceId(1)).size(), 2u);
+  EXPECT_EQ(cv.of(FaceId(2))[0], VertexId(3));
+}
+
+}  // namespace
+}  // namespace cvms::detail

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// Tests of the facet constructions and the stitching by vertex pair, checked
+// with plain rational arithmetic and hand-made sums.
+#include "stitch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "cvms/shapes.hpp"
+#include "support/oracle.hpp"
+
+namespace cvms::detail {
+namespace {
+
+Mat3 scaling(const Rational& s) {
+  Mat3 m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m.m[i][j] = i == j ? s : Rational(0);
+  return m;
+}
+
+Vec3 point(const ConvexPolyhedron& a, const ConvexPolyhedron& b, VertexPair p) {
+  return a.vertex(VertexId(p.a)) + b.vertex(VertexId(p.b));
+}
+
+// The normal of a polygon by Newell's rule in rationals (its direction is the
+// counterclockwise normal).
+Vec3 polygon_normal(const std::vector<Vec3>& pts) {
+  Vec3 n{0, 0, 0};
+  for (std::size_t i = 0; i < pts.size(); ++i) n += cross(pts[i], pts[(i + 1) % pts.size()]);
+  return n;
+}
+
+TEST(Stitch, FacetPlusFacetGivesTheDoubledShapeDenseAndHashed) {
+  // Dense pair table for the cube, hash map for Sphere4 (642^2 pairs).
+  for (const auto& p : {shapes::cube(), shapes::geodesic_sphere(4)}) {
+    SumFacetBuilder out(p, p);
+    for (FaceId f : p.mesh().faces()) out.add_facet_plus_facet(f, f);
+    const ConvexPolyhedron s = out.build();
+    EXPECT_EQ(test::check_invariants(s), "");
+    EXPECT_TRUE(test::describe(s) == test::describe(p.transformed(scaling(2), {})));
+  }
+}
+
+TEST(Stitch, FacetPlusEdgeIsTheCounterclockwiseHexagon) {
+  // Top facet of the cube (z = 1) plus the octahedron edge from (1,0,0) to
+  // (0,1,0), which is parallel to it: a hexagon.
+  const auto c = shapes::cube();
+  const auto o = shapes::octahedron();
+  FaceId top;
+  for (FaceId f : c.mesh().faces())
+    if (c.normal(f) == Vec3{0, 0, 1}) top = f;
+  VertexId x;
+  VertexId y;
+  for (VertexId v : o.mesh().vertices()) {
+    if (o.vertex(v) == Vec3{1, 0, 0}) x = v;
+    if (o.vertex(v) == Vec3{0, 1, 0}) y = v;
+  }
+  ASSERT_TRUE(top.is_valid() && x.is_valid() && y.is_valid());
+  for (Operand which : {Operand::a, Operand::b}) {
+    SumFacetBuilder out(which == Operand::a ? c : o, which == Operand::a ? o : c);
+    const ConvexPolyhedron& a = which == Operand::a ? c : o;
+    const ConvexPolyhedron& b = which == Operand::a ? o : c;
+    out.add_facet_plus_edge(which, top, x, y);
+    ASSERT_EQ(out.num_facets(), 1u);
+    std::vector<Vec3> pts;
+    for (VertexPair p : out.facet(0)) pts.push_back(point(a, b, p));
+    const std::set<Vec3> expected = {{0, -1, 1}, {2, -1, 1}, {2, 1, 1}, {1, 2, 1}, {-1, 2, 1}, {-1, 0, 1}};
+    EXPECT_EQ(std::set<Vec3>(pts.begin(), pts.end()), expected);
+    ASSERT_EQ(pts.size(), 6u);
+    const Vec3 n = polygon_normal(pts);
+    EXPECT_GT(sgn(n.z), 0);
+  }
+}
+
+TEST(Stitch, FacetPlusVertexAndEdgePlusEdgeOrientation) {
+  const auto c = shapes::cube();
+  const auto t = shapes::tetrahedron();
+  SumFacetBuilder out(c, t);
+  out.add_facet_plus_vertex(Operand::b, FaceId(0), VertexId(2));
+  std::vector<Vec3> pts;
+  for (VertexPair p : out.facet(0)) {
+    EXPECT_EQ(p.a, 2u);
+    pts.push_back(point(c, t, p));
+  }
+  EXPECT_GT(sgn(dot(polygon_normal(pts), t.normal(FaceId(0)))), 0);
+  // e_A + e_B with both orientations.
+  const HalfedgeId ha(0);
+  const HalfedgeId hb(2);
+  const Vec3 n = cross(c.edge_vector(ha), t.edge_vector(hb));
+  ASSERT_FALSE(is_zero(n));
+  out.add_edge_plus_edge(ha, hb, Sign::positive);
+  out.add_edge_plus_edge(ha, hb, Sign::negative);
+  for (std::size_t i : {1u, 2u}) {
+    pts.clear();
+    for (VertexPair p : out.facet(i)) pts.push_back(point(c, t, p));
+    ASSERT_EQ(pts.size(), 4u);
+    EXPECT_EQ(sgn(dot(polygon_normal(pts), n)), i == 1 ? 1 : -1);
+  }
+}
+
+}  // namespace
+}  // namespace cvms::detail

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// Entry point of the `cvms` command-line tool: parses the command line with
+// CLI11 and maps outcomes to exit codes: 0 success, 1 bad input (one line on
+// stderr, from the library's Error), 2 usage.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <new>
+#include <string>
+
+#include "commands.hpp"
+#include "cvms/error.hpp"
+#include "files.hpp"
+
+namespace {
+
+constexpr int exit_bad_input = 1;
+constexpr int exit_usage = 2;
+
+// One line, whatever the message holds.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+const CLI::Validator mesh_path{cvms::cli::check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
+
+CLI::Option* add_algorithm_option(CLI::App& command, cvms::Algorithm& algorithm, const char* default_text) {
+  return command
+      .add_option_function<std::string>(
+          "--algorithm",
+          [&algorithm](const std::string& name) {
+            for (cvms::Algorithm a : {cvms::Algorithm::cvms, cvms::Algorithm::essdms, cvms::Algorithm::chms})
+              if (name == cvms::cli::algorithm_name(a)) algorithm = a;
+          },
+          "cvms, essdms or chms")
+      ->transform(CLI::IsMember({"cvms", "essdms", "chms"}, CLI::ignore_case))
+      ->default_str(default_text);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cvms::cli;
+  CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL; '-' is OFF on stdin/stdout)"};
+  app.require_subcommand(1);
+  const char* default_algorithm = algorithm_name(cvms::Options{}.algorithm);
+
+  SumArgs sum;
+  CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B");
+  sum_cmd->add_option("A", sum.a, "first operand")->required()->check(mesh_path);
+  sum_cmd->add_option("B", sum.b, "second operand")->required()->check(mesh_path);
+  sum_cmd->add_option("-o,--output", sum.output, "result file (default -, OFF on stdout)")
+      ->check(mesh_path)
+      ->default_str("-");
+  add_algorithm_option(*sum_cmd, sum.algorithm, default_algorithm);
+  sum_cmd->add_flag("--float", sum.float_output, "round output coordinates to the nearest double");
+  sum_cmd->add_flag("--stats", sum.stats, "print counts, time and algorithm statistics");
+
+  HullArgs hull;
+  CLI::App* hull_cmd = app.add_subcommand("hull", "exact convex hull of points");
+  hull_cmd->add_option("POINTS", hull.input, "OFF/OBJ/STL vertices or one 'x y z' per line")->required();
+  hull_cmd->add_option("-o,--output", hull.output, "result file (default -, OFF on stdout)")
+      ->check(mesh_path)
+      ->default_str("-");
+  hull_cmd->add_flag("--float", hull.float_output, "round output coordinates to the nearest double");
+
+  GenArgs gen;
+  std::string shape_list;
+  for (const char* s : gen_shapes) shape_list += std::string(shape_list.empty() ? "" : " ") + s;
+  CLI::App* gen_cmd = app.add_subcommand("gen", "write a built-in shape");
+  gen_cmd->add_option("SHAPE", gen.shape, shape_list + " (box is [0,1]x[0,2]x[0,3], prism has height 2)")
+      ->required()
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(gen_shapes), std::end(gen_shapes))));
+  CLI::Option* subdivisions_opt =
+      gen_cmd->add_option("--subdivisions", gen.subdivisions, "K for Sphere_K (1..9)")
+          ->check(CLI::Range(1, 9));
+  CLI::Option* seed_opt = gen_cmd->add_option("--seed", gen.seed, "seed of random");
+  gen_cmd->add_option("--points", gen.points, "points of random (default 100), sides of prism (default 6)")
+      ->check(CLI::Range(1, 10'000'000));
+  gen_cmd->add_option("-o,--output", gen.output, "result file (default -, OFF on stdout)")
+      ->check(mesh_path)
+      ->default_str("-");
+  gen_cmd->add_flag("--float", gen.float_output, "round output coordinates to the nearest double");
+
+  std::string check_input;
+  CLI::App* check_cmd =
+      app.add_subcommand("check", "validate a convex polyhedron, print V E F and facet degrees");
+  check_cmd->add_option("F", check_input, "the file")->required()->check(mesh_path);
+
+  DemoArgs demo;
+  CLI::App* demo_cmd = app.add_subcommand("demo", "Cube + Sphere4 with counts and time");
+  CLI::Option* demo_algorithm_opt = add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);  // prints help, or the error with a hint
+    return code == 0 ? 0 : exit_usage;
+  }
+
+  try {
+    if (*sum_cmd)
+      run_sum(sum, sum.output == "-" ? std::cerr : std::cout);
+    else if (*hull_cmd)
+      run_hull(hull);
+    else if (*gen_cmd) {
+      gen.subdivisions_given = subdivisions_opt->count() > 0;
+      gen.seed_given = seed_opt->count() > 0;
+      run_gen(gen);
+    } else if (*check_cmd)
+      run_check(check_input, std::cout);
+    else if (*demo_cmd) {
+      demo.algorithm_given = demo_algorithm_opt->count() > 0;
+      run_demo(demo, std::cout);
+    }
+  } catch (const UsageError& e) {
+    std::cerr << "cvms: " << one_line(e.what()) << "\nRun with --help for more information.\n";
+    return exit_usage;
+  } catch (const cvms::Error& e) {
+    std::cerr << "cvms: " << one_line(e.what()) << "\n";
+    return exit_bad_input;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "cvms: out of memory\n";
+    return exit_bad_input;
+  } catch (const std::exception& e) {
+    std::cerr << "cvms: internal error: " << one_line(e.what()) << "\n";
+    return exit_bad_input;
+  }
+  return 0;
+}
