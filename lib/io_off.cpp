@@ -79,6 +79,9 @@ PolygonSoup parse_off(LineReader& reader) {
   auto header = parse_off_keyword(first);
   if (!header) reader.fail("expected an 'OFF' header, found " + quote(first));
   if (header->four_d || header->n_dim) reader.fail("only 3D OFF is supported, not " + quote(first));
+  // A copy: `first` views the reader's line buffer, which the next line
+  // replaces (found by fuzzing: a heap use-after-free in a later message).
+  const std::string keyword(first);
 
   // Counts follow on the header line or on the next content line.
   std::string_view token = tokens.next();
@@ -112,7 +115,7 @@ PolygonSoup parse_off(LineReader& reader) {
       reader.fail("vertex " + std::to_string(v) + " has " + std::to_string(3 + extra) + " values, expected " +
                   std::to_string(3 + min_extra) +
                   (max_extra != min_extra ? " or " + std::to_string(3 + max_extra) : std::string()) +
-                  " for a '" + std::string(first) + "' file");
+                  " for a '" + keyword + "' file");
     soup.points.push_back(std::move(p));
   }
 

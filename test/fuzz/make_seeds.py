@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# Writes the binary seed inputs of test/fuzz/corpus/ (the text seeds are
+# plain files). The byte layouts are the decoders of
+# test/support/fuzz_targets.cpp: keep the two in step.
+import os
+import random
+import struct
+
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
+
+
+def coord(num, den=1):
+    """One byte that decode_coordinate maps to num/den (num in -15..16)."""
+    sel = {1: 0, 2: 5, 3: 6, 4: 7}[den]
+    assert -15 <= num <= 16
+    return (num + 15) | (sel << 5)
+
+
+def cloud(points):
+    return bytes(coord(*c) if isinstance(c, tuple) else coord(c) for p in points for c in p)
+
+
+def write(target, name, data):
+    with open(os.path.join(HERE, target, name), "wb") as f:
+        f.write(data)
+
+
+CUBE = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+TETRA = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+OCTA = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]
+
+
+def binary_stl(triangles, header=b"binary seed"):
+    out = header.ljust(80, b"\0") + struct.pack("<I", len(triangles))
+    for t in triangles:
+        out += struct.pack("<3f", 0, 0, 0)
+        for p in t:
+            out += struct.pack("<3f", *p)
+        out += b"\0\0"
+    return out
+
+
+def main():
+    rng = random.Random(6)
+    # read_stl: a binary tetrahedron, a binary cube (12 triangles), a binary
+    # file with a degenerate (repeated vertex) triangle and a tiny float.
+    t = TETRA
+    write("read_stl", "tetra_binary.stl",
+          binary_stl([(t[0], t[2], t[1]), (t[0], t[1], t[3]), (t[0], t[3], t[2]), (t[1], t[2], t[3])]))
+    quads = [((0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)), ((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)),
+             ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)), ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),
+             ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)), ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1))]
+    write("read_stl", "cube_binary.stl", binary_stl([tri for q in quads for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))]))
+    write("read_stl", "degenerate_binary.stl",
+          binary_stl([((0, 0, 0), (0, 0, 0), (1, 0, 0)), ((1e-45, 0, 0), (0.1, 0.2, 0.3), (-0.0, 3e38, 1))]))
+
+    # from_soup, edited-hull mode (mode bit 0 = 1): count byte, points, flags, edits.
+    write("from_soup", "hull_cube.bin", bytes([1, 4]) + cloud(CUBE) + bytes([0, 0]))
+    # triangulated from varied corners, globally flipped, an edge split (op 3)
+    # and a face centroid fan (op 4): all repairable.
+    write("from_soup", "hull_cube_repairs.bin",
+          bytes([1, 4]) + cloud(CUBE) + bytes([3, 0, 1, 2, 3, 0, 1, 2]) + bytes([3, 1, 2, 1, 4, 3, 0]))
+    # a moved vertex (op 0) and a flipped face (op 1): rejected
+    write("from_soup", "hull_octa_broken.bin",
+          bytes([1, 2]) + cloud(OCTA) + bytes([0, 2, 0, 2, 1, 3, 4, 1, 1, 5, 0]))
+    # grid coordinates (mode bit 1): 24 points of {-2..2}^3, many coplanar
+    write("from_soup", "hull_grid.bin", bytes([3, 20]) + bytes(rng.randrange(256) for _ in range(72)) + bytes([1, 0]))
+    # raw mode (mode bit 0 = 0): count byte, points, then faces (degree byte, indices)
+    tetra_faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+    write("from_soup", "raw_tetra.bin",
+          bytes([0, 3]) + cloud(TETRA) + b"".join(bytes([0, *f]) for f in tetra_faces))
+    octa_faces = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 5, 3)]
+    write("from_soup", "raw_octa_flipped_face.bin",
+          bytes([0, 5]) + cloud(OCTA) + b"".join(bytes([0, *f]) for f in octa_faces))
+    # a square pyramid with a quad base (degree byte 1 = 4 corners)
+    pyr = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (1, 1, 2)]
+    write("from_soup", "raw_pyramid_quad.bin",
+          bytes([0, 4]) + cloud(pyr) + bytes([1, 0, 3, 2, 1]) +
+          b"".join(bytes([0, a, b, 4]) for a, b in ((0, 1), (1, 2), (2, 3), (3, 0))))
+
+    # hull mode with tiny moves (bit 2) and an extreme scale (bit 3): two
+    # cube corners moved by 2^-50, then everything scaled by 2^(8 * -100).
+    write("from_soup", "hull_cube_tiny_moves_tiny_scale.bin",
+          bytes([13, 4]) + cloud(CUBE) + bytes([3, 30, 0, 0, 0, 0, 0, 0, 9, 30, 0]) + bytes([256 - 100]) + bytes([0, 0]))
+    write("from_soup", "hull_octa_huge_scale.bin", bytes([9, 2]) + cloud(OCTA) + bytes([126]) + bytes([1, 0]))
+
+    # minkowski, bit 3: tiny moves of both clouds, then an extreme scale.
+    write("minkowski", "cube_tetra_huge.bin",
+          bytes([8, 4]) + cloud(CUBE) + bytes([0]) + cloud(TETRA) + bytes(12) + bytes([127]))
+    write("minkowski", "cube_minus_cube_nearly.bin",
+          bytes([10, 4]) + cloud(CUBE) + bytes([1, 40, 0, 0, 3, 45, 0, 0, 5, 59] + [0] * 6) + bytes([256 - 128]))
+
+    # minkowski: mode (bit 0 grid, bits 1-2: B independent / -A / scaled A / subset of A,
+    # bit 3: tiny moves and an extreme scale)
+    write("minkowski", "cube_tetra.bin", bytes([0, 4]) + cloud(CUBE) + bytes([0]) + cloud(TETRA))
+    write("minkowski", "cube_minus_cube.bin", bytes([2, 4]) + cloud(CUBE))
+    write("minkowski", "octa_scaled.bin", bytes([4, 2]) + cloud(OCTA) + bytes([1, 1]) + cloud([(3, -2, (1, 2))]))
+    write("minkowski", "tetra_minus_tetra.bin", bytes([2, 0]) + cloud(TETRA))
+    write("minkowski", "grid_subset.bin",
+          bytes([7, 16]) + bytes(rng.randrange(256) for _ in range(60)) + bytes(rng.randrange(256) for _ in range(25)))
+    write("minkowski", "random_wide.bin",
+          bytes([0, 26]) + bytes(rng.randrange(256) for _ in range(90)) + bytes([26]) +
+          bytes(rng.randrange(256) for _ in range(90)))
+    pts = [(rng.randint(-3, 3), rng.randint(-3, 3), rng.choice([-1, 0, 1])) for _ in range(12)]
+    write("minkowski", "flat_ish_prisms.bin", bytes([0, 8]) + cloud(pts) + bytes([8]) + cloud(pts[::-1]))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// The bodies of the libFuzzer harnesses in test/fuzz/, kept here so that the
+// default (gcc) test suite can replay the committed corpora and the
+// regression inputs through exactly the same code (test/fuzz_corpus_test.cpp).
+//
+// Each target takes arbitrary bytes. Error (any category) thrown by the
+// library is the expected way to reject an input and is swallowed. A broken
+// invariant or a disagreement between algorithms throws FuzzFinding; any other
+// exception, a crash or a sanitizer report is a finding too (the harness lets
+// it escape, libFuzzer reports it).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cvms/io.hpp"
+#include "cvms/polygon_soup.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms::fuzz {
+
+/// An invariant the library promises was broken (or two algorithms disagree).
+class FuzzFinding : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+/// The tight limits the reader targets use: 10^5 elements, 1 MiB, 4096-char numbers.
+ReadLimits fuzz_limits();
+
+/// Readers: read, check the soup's invariants, and check that writing the soup
+/// and reading it back gives the same soup (exact formats only).
+void read_off_target(std::span<const std::uint8_t> data);
+void read_obj_target(std::span<const std::uint8_t> data);
+void read_stl_target(std::span<const std::uint8_t> data);
+void read_points_target(std::span<const std::uint8_t> data);
+
+/// ConvexPolyhedron::from_soup on a soup decoded from the bytes (either raw
+/// faces over small rational points, or a triangulated hull with mutations).
+/// Whenever from_soup accepts, the result must be convex (is_convex) and equal
+/// to the exact convex hull of the soup's points, and the globally reversed
+/// soup must give the same polyhedron; an unmutated triangulated hull must be
+/// accepted.
+void from_soup_target(std::span<const std::uint8_t> data);
+
+/// Differential: two small point clouds -> hulls -> minkowski_sum with CVMS,
+/// CHMS (and ESSDMS once implemented) and CVMS with the operands swapped must
+/// give identical polyhedra (vertex sets and facets: normal, offset, vertices).
+void minkowski_target(std::span<const std::uint8_t> data);
+
+/// A target by name ("read_off", "read_obj", "read_stl", "read_points",
+/// "from_soup", "minkowski"); nullptr for an unknown name.
+using Target = void (*)(std::span<const std::uint8_t>);
+Target target_by_name(const std::string& name);
+/// All target names, in a fixed order.
+std::vector<std::string> target_names();
+
+/// The decoders, exposed for regression tests that want to state an input as
+/// points rather than bytes. decode_cloud reads up to max_points points of
+/// three coordinates, one byte each (see fuzz_targets.cpp for the mapping).
+Rational decode_coordinate(std::uint8_t byte);
+
+}  // namespace cvms::fuzz
