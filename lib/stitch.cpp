@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
+#include "trusted_polyhedron.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -55,7 +56,7 @@ SumFacetBuilder::SumFacetBuilder(const ConvexPolyhedron& a, const ConvexPolyhedr
 void SumFacetBuilder::add_facet_plus_vertex(Operand which, FaceId f, VertexId v) {
   const Mesh& m = operand(which).mesh();
   for (HalfedgeId h : m.face_halfedges(f)) push(which, m.from(h), v);
-  close_facet();
+  close_facet(facet_normal(which, f));
 }
 
 void SumFacetBuilder::add_facet_plus_edge(Operand which, FaceId f, VertexId v0, VertexId v1) {
@@ -64,10 +65,10 @@ void SumFacetBuilder::add_facet_plus_edge(Operand which, FaceId f, VertexId v0, 
 }
 
 void SumFacetBuilder::add_facet_plus_facet(FaceId fa, FaceId fb) {
-  std::vector<VertexId> other;
   const Mesh& mb = b_.mesh();
-  for (HalfedgeId h : mb.face_halfedges(fb)) other.push_back(mb.from(h));
-  add_planar_sum(Operand::a, fa, other);
+  other_vertices_.clear();
+  for (HalfedgeId h : mb.face_halfedges(fb)) other_vertices_.push_back(mb.from(h));
+  add_planar_sum(Operand::a, fa, other_vertices_);
 }
 
 void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other) {
@@ -86,7 +87,7 @@ void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const Ve
   for (const auto& [i, j] : planar_sum_indices(own_points_, other_points_)) {
     push(which, own_vertices_[i], other[j]);
   }
-  close_facet();
+  close_facet(facet_normal(which, f));
 }
 
 void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation) {
@@ -104,7 +105,8 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
   } else {
     for (int i = 3; i >= 0; --i) pairs_.push_back(cycle[i]);
   }
-  close_facet();
+  close_facet({orientation == Sign::positive ? NormalKind::edges_positive : NormalKind::edges_negative, ha.index(),
+               hb.index()});
 }
 
 ConvexPolyhedron SumFacetBuilder::build() const {
@@ -138,7 +140,26 @@ ConvexPolyhedron SumFacetBuilder::build() const {
       soup.face_indices[i] = it->second;
     }
   }
-  return ConvexPolyhedron::from_trusted_soup(std::move(soup));
+  std::vector<Vec3> normals;
+  normals.reserve(normals_.size());
+  for (const NormalSource& n : normals_) {
+    switch (n.kind) {
+      case NormalKind::facet_a:
+        normals.push_back(a_.normal(FaceId(n.index)));
+        break;
+      case NormalKind::facet_b:
+        normals.push_back(b_.normal(FaceId(n.index)));
+        break;
+      case NormalKind::edges_positive:
+      case NormalKind::edges_negative: {
+        Vec3 c = cross(a_.edge_vector(HalfedgeId(n.index)), b_.edge_vector(HalfedgeId(n.other)));
+        if (n.kind == NormalKind::edges_negative) c = -c;
+        normals.push_back(primitive_direction(c));
+        break;
+      }
+    }
+  }
+  return ConvexPolyhedronAccess::from_trusted_soup(std::move(soup), std::move(normals));
 }
 
 }  // namespace cvms::detail

@@ -28,6 +28,10 @@
 
 namespace cvms {
 
+namespace detail {
+struct ConvexPolyhedronAccess;  // lib/trusted_polyhedron.hpp: the algorithms' output path
+}  // namespace detail
+
 /// A convex polyhedron with maximal facets, extreme vertices and cached
 /// exact and approximate facet planes (see the file comment).
 class ConvexPolyhedron {
@@ -109,6 +113,7 @@ class ConvexPolyhedron {
   [[nodiscard]] ConvexPolyhedron reflected() const;
 
  private:
+  friend struct detail::ConvexPolyhedronAccess;
   void compute_caches();  // normals, offsets, approximations
 
   Mesh mesh_;
