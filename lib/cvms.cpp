@@ -129,6 +129,11 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
 
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           Stats& stats) {
+  return cvms_facets(a, b, options, stats).build();
+}
+
+SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                            Stats& stats) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   const bool walk_vertices = options.contributing_vertex_search == ContributingVertexSearch::walk;
@@ -240,7 +245,7 @@ ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, 
     }
   }
 
-  return out.build();
+  return out;
 }
 
 }  // namespace cvms::detail

@@ -45,6 +45,25 @@ Projection projection_along(const Vec3& n) {
 
 Vec2 project(const Vec3& p, Projection pr) { return {p[pr.u], p[pr.v]}; }
 
+// primitive_direction(cross(u, v)) for primitive integer vectors u, v: the
+// cross product and one gcd in integers (no rational canonicalisation).
+Vec3 primitive_cross(const Vec3& u, const Vec3& v) {
+  const mpz_class* a[3] = {&u.x.get_num(), &u.y.get_num(), &u.z.get_num()};
+  const mpz_class* b[3] = {&v.x.get_num(), &v.y.get_num(), &v.z.get_num()};
+  mpz_class c[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpz_mul(c[i].get_mpz_t(), a[j]->get_mpz_t(), b[k]->get_mpz_t());
+    mpz_submul(c[i].get_mpz_t(), a[k]->get_mpz_t(), b[j]->get_mpz_t());
+  }
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), c[0].get_mpz_t(), c[1].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c[2].get_mpz_t());
+  if (g != 1)
+    for (mpz_class& x : c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  return {Rational(c[0]), Rational(c[1]), Rational(c[2])};
+}
+
 // A dense pair -> output-index table is used when it is not much larger than
 // the output itself; otherwise a hash map.
 constexpr std::uint64_t dense_table_limit = 1u << 16;
@@ -109,12 +128,13 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
                hb.index()});
 }
 
-ConvexPolyhedron SumFacetBuilder::build() const {
+PolygonSoup SumFacetBuilder::soup() const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
   PolygonSoup soup;
   soup.face_offsets = offsets_;
   soup.face_indices.resize(pairs_.size());
+  soup.points.reserve(pairs_.size() / 3 + 1);  // each vertex is in at least three facets
 
   auto new_vertex = [&](const VertexPair& p) {
     soup.points.push_back(a_.vertex(VertexId(p.a)) + b_.vertex(VertexId(p.b)));
@@ -140,8 +160,23 @@ ConvexPolyhedron SumFacetBuilder::build() const {
       soup.face_indices[i] = it->second;
     }
   }
+  return soup;
+}
+
+ConvexPolyhedron SumFacetBuilder::build() const {
+  PolygonSoup soup = this->soup();
   std::vector<Vec3> normals;
   normals.reserve(normals_.size());
+  // Primitive integer directions of the edges used by edge facets, computed
+  // once per edge rather than once per facet.
+  std::vector<Vec3> dir_a;
+  std::vector<Vec3> dir_b;
+  auto direction = [](std::vector<Vec3>& cache, const ConvexPolyhedron& p, HalfedgeId h) -> const Vec3& {
+    if (cache.empty()) cache.resize(p.num_edges());
+    Vec3& d = cache[Mesh::edge(h).index()];
+    if (is_zero(d)) d = primitive_direction(p.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+    return d;
+  };
   for (const NormalSource& n : normals_) {
     switch (n.kind) {
       case NormalKind::facet_a:
@@ -152,9 +187,12 @@ ConvexPolyhedron SumFacetBuilder::build() const {
         break;
       case NormalKind::edges_positive:
       case NormalKind::edges_negative: {
-        Vec3 c = cross(a_.edge_vector(HalfedgeId(n.index)), b_.edge_vector(HalfedgeId(n.other)));
-        if (n.kind == NormalKind::edges_negative) c = -c;
-        normals.push_back(primitive_direction(c));
+        // The cached directions belong to the even halfedge of each edge.
+        const HalfedgeId ha(n.index), hb(n.other);
+        Vec3 c = primitive_cross(direction(dir_a, a_, ha), direction(dir_b, b_, hb));
+        const bool flip = (n.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
+        if (flip) c = -c;
+        normals.push_back(std::move(c));
         break;
       }
     }

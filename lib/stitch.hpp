@@ -60,6 +60,11 @@ class SumFacetBuilder {
   /// primitive direction of +-cross(d_A, d_B).
   [[nodiscard]] ConvexPolyhedron build() const;
 
+  /// The glued facets as a soup: one point per distinct vertex pair (its
+  /// exact coordinates computed once), facets in the order added. build()
+  /// is Mesh::from_soup of this plus the known facet planes.
+  [[nodiscard]] PolygonSoup soup() const;
+
  private:
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
   // Where the normal of an output facet comes from: facet `index` of A or B,
