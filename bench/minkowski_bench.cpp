@@ -1,16 +1,22 @@
 // SPDX-License-Identifier: MIT
 // The paper's Table 1 family: Cube + {Tetra, Hedra, Truncated cube,
-// Sphere1..Sphere6} for each algorithm, measured side by side in one run.
-// bench/table.py turns the JSON output into the README table.
+// Sphere1..Sphere6} for each algorithm (CHMS, ESSDMS, paper-faithful CVMS,
+// output-sensitive CVMS), measured side by side in one run; the scaling
+// families Sphere_k + rotated Sphere_k and Cube + Sphere_k with the time per
+// output facet; and the limit: building the output alone from the final
+// facet vertex-pair lists. bench/table.py turns the JSON output into the
+// README table.
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <map>
 #include <string>
 
+#include "cvms.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "stitch.hpp"
 
 namespace {
 
@@ -44,12 +50,24 @@ const ConvexPolyhedron& operand(int row) {
   return cache.emplace(row, std::move(p)).first->second;
 }
 
-void run_sum(benchmark::State& state, Algorithm algorithm) {
+// The paper-faithful CVMS: linear scans and the horizon-edge search.
+cvms::Options paper_cvms() {
+  cvms::Options o;
+  o.contributing_vertex_search = cvms::ContributingVertexSearch::scan;
+  o.edge_facet_search = cvms::EdgeFacetSearch::paper;
+  return o;
+}
+
+cvms::Options with_algorithm(Algorithm algorithm) {
+  cvms::Options o;
+  o.algorithm = algorithm;
+  return o;
+}
+
+void run_sum(benchmark::State& state, const cvms::Options& options) {
   const int row = static_cast<int>(state.range(0));
   const ConvexPolyhedron cube = cvms::shapes::cube();
   const ConvexPolyhedron& b = operand(row);
-  cvms::Options options;
-  options.algorithm = algorithm;
   std::uint32_t facets = 0;
   cvms::Stats stats;
   for (auto _ : state) {
@@ -78,12 +96,121 @@ void table_args(benchmark::internal::Benchmark* b) {
   b->Unit(benchmark::kMillisecond);
 }
 
-void BM_CHMS(benchmark::State& state) { run_sum(state, Algorithm::chms); }
-void BM_CVMS(benchmark::State& state) { run_sum(state, Algorithm::cvms); }
-void BM_ESSDMS(benchmark::State& state) { run_sum(state, Algorithm::essdms); }
+void BM_CHMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::chms)); }
+void BM_ESSDMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::essdms)); }
+void BM_CVMS_paper(benchmark::State& state) { run_sum(state, paper_cvms()); }
+void BM_CVMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::cvms)); }
 BENCHMARK(BM_CHMS)->Apply(table_args);
 BENCHMARK(BM_ESSDMS)->Apply(table_args);
+BENCHMARK(BM_CVMS_paper)->Apply(table_args);
 BENCHMARK(BM_CVMS)->Apply(table_args);
+
+// --- Scaling families: Sphere_k + rotated Sphere_k (Gaussian maps in general
+// position, almost every output facet an edge facet) and Cube + Sphere_k.
+
+enum class Family { sphere_rotated = 0, cube_sphere = 1 };
+
+struct Pair {
+  ConvexPolyhedron a;
+  ConvexPolyhedron b;
+};
+
+const Pair& family_pair(Family family, int k) {
+  static std::map<std::pair<int, int>, Pair> cache;
+  const std::pair<int, int> key{static_cast<int>(family), k};
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  Pair p;
+  if (family == Family::sphere_rotated) {
+    p.a = cvms::shapes::geodesic_sphere(k);
+    p.b = cvms::shapes::rotated_geodesic_sphere(k);
+  } else {
+    p.a = cvms::shapes::cube();
+    p.b = cvms::shapes::geodesic_sphere(k);
+  }
+  return cache.emplace(key, std::move(p)).first->second;
+}
+
+std::string family_label(Family family, int k) {
+  return (family == Family::sphere_rotated ? "Sphere" + std::to_string(k) + "+rotSphere" : "Cube+Sphere") +
+         std::to_string(k);
+}
+
+void per_facet_counters(benchmark::State& state, const Pair& p, double facets) {
+  state.counters["input_facets"] = static_cast<double>(p.a.num_facets() + p.b.num_facets());
+  state.counters["output_facets"] = facets;
+  // Seconds per output facet (Google Benchmark prints it in the time unit of the counter: s).
+  state.counters["time_per_output_facet"] =
+      benchmark::Counter(facets, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void run_family(benchmark::State& state, Family family, const cvms::Options& options) {
+  const int k = static_cast<int>(state.range(0));
+  const Pair& p = family_pair(family, k);
+  std::uint32_t facets = 0;
+  cvms::Stats stats;
+  for (auto _ : state) {
+    cvms::MinkowskiResult r = cvms::minkowski_sum(p.a, p.b, options);
+    facets = r.polyhedron.num_facets();
+    stats = r.stats;
+    benchmark::DoNotOptimize(facets);
+  }
+  state.SetLabel(family_label(family, k));
+  per_facet_counters(state, p, facets);
+  state.counters["edge_facets"] = static_cast<double>(stats.edge_facets);
+  const double predicates = static_cast<double>(stats.predicate_filtered + stats.predicate_exact);
+  if (predicates > 0)
+    state.counters["exact_fallback_rate"] = static_cast<double>(stats.predicate_exact) / predicates;
+}
+
+// The limit: only the output construction, from the final facet vertex-pair
+// lists that CVMS computed once before timing. `full` also builds the
+// ConvexPolyhedron caches (normals known, offsets, approximations), i.e. all
+// of what CVMS does after finding the facets; otherwise only the exact vertex
+// coordinates (one per vertex pair) and the half-edge mesh.
+void run_output_only(benchmark::State& state, Family family, bool full) {
+  const int k = static_cast<int>(state.range(0));
+  const Pair& p = family_pair(family, k);
+  cvms::Stats stats;
+  const cvms::detail::SumFacetBuilder facets = cvms::detail::cvms_facets(p.a, p.b, cvms::Options{}, stats);
+  for (auto _ : state) {
+    if (full) {
+      ConvexPolyhedron s = facets.build();
+      benchmark::DoNotOptimize(s);
+    } else {
+      cvms::Mesh m = cvms::Mesh::from_soup(facets.soup());
+      benchmark::DoNotOptimize(m);
+    }
+  }
+  state.SetLabel(family_label(family, k));
+  per_facet_counters(state, p, static_cast<double>(facets.num_facets()));
+}
+
+// k = 3..7 (Sphere7 + rotated Sphere7: 81,920 + 81,920 facets). k = 8 is
+// left out: with exact rational coordinates it needs GBs on a shared machine.
+void family_args(benchmark::internal::Benchmark* b) {
+  for (int k = 3; k <= 7; ++k) b->Arg(k);
+  b->Unit(benchmark::kMillisecond);
+}
+void small_family_args(benchmark::internal::Benchmark* b) {
+  for (int k = 3; k <= 5; ++k) b->Arg(k);
+  b->Unit(benchmark::kMillisecond);
+}
+
+void BM_CVMS_SphereRot(benchmark::State& state) { run_family(state, Family::sphere_rotated, {}); }
+void BM_CVMS_paper_SphereRot(benchmark::State& state) { run_family(state, Family::sphere_rotated, paper_cvms()); }
+void BM_CVMS_CubeSphere(benchmark::State& state) { run_family(state, Family::cube_sphere, {}); }
+void BM_Limit_Mesh_SphereRot(benchmark::State& state) { run_output_only(state, Family::sphere_rotated, false); }
+void BM_Limit_Build_SphereRot(benchmark::State& state) { run_output_only(state, Family::sphere_rotated, true); }
+void BM_Limit_Mesh_CubeSphere(benchmark::State& state) { run_output_only(state, Family::cube_sphere, false); }
+void BM_Limit_Build_CubeSphere(benchmark::State& state) { run_output_only(state, Family::cube_sphere, true); }
+BENCHMARK(BM_CVMS_SphereRot)->Apply(family_args);
+BENCHMARK(BM_Limit_Mesh_SphereRot)->Apply(family_args);
+BENCHMARK(BM_Limit_Build_SphereRot)->Apply(family_args);
+BENCHMARK(BM_CVMS_paper_SphereRot)->Apply(small_family_args);
+BENCHMARK(BM_CVMS_CubeSphere)->Apply(family_args);
+BENCHMARK(BM_Limit_Mesh_CubeSphere)->Apply(family_args);
+BENCHMARK(BM_Limit_Build_CubeSphere)->Apply(family_args);
 
 }  // namespace
 

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Contributing vertices by linear scan (paper Section 4.2, Eq. 3).
+// Contributing vertices (paper Section 4.2, Eq. 3): by linear scan (the
+// paper's search) and by walking (hill-climbing from a neighbour's answer).
 #include "contributing_vertices.hpp"
 
 #include <algorithm>
+#include <string>
 
+#include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
 
 namespace cvms::detail {
@@ -54,6 +57,88 @@ bool disjoint_sorted(std::span<const VertexId> x, std::span<const VertexId> y) n
     }
   }
   return true;
+}
+
+namespace {
+
+[[noreturn]] void invalid_ties(FaceId f, VertexId v, std::size_t ties) {
+  throw Error(ErrorCategory::invalid_argument,
+              "minkowski_sum: operand is not a valid ConvexPolyhedron: the maximiser " + std::to_string(v.index()) +
+                  " for the normal of facet " + std::to_string(f.index()) + " of the other operand has " +
+                  std::to_string(ties) + " tied neighbours but no facet with that normal");
+}
+
+// The contributing vertices of q for direction n (the normal of facet f of
+// the other operand), climbing from `start`. Leaves the sorted list in `out`.
+void climb(const ConvexPolyhedron& q, FaceId f, Vec3Ref n, VertexId start, std::vector<VertexId>& out) {
+  const Mesh& m = q.mesh();
+  VertexId v = start;
+  VertexId tied[3];
+  std::size_t num_tied = 0;
+  for (bool improved = true; improved;) {
+    improved = false;
+    num_tied = 0;
+    for (HalfedgeId h : m.outgoing_halfedges(v)) {
+      const VertexId w = m.to(h);
+      const Sign s = compare_dot(q.vertex_ref(w), q.vertex_ref(v), n);
+      if (s == Sign::positive) {
+        v = w;  // strictly higher: <., n> increases at every move, so the climb ends
+        improved = true;
+        break;
+      }
+      if (s == Sign::zero) {
+        if (num_tied == 3) invalid_ties(f, v, 4);
+        tied[num_tied++] = w;
+      }
+    }
+  }
+  out.clear();
+  if (num_tied <= 1) {
+    out.push_back(v);
+    if (num_tied == 1) out.push_back(tied[0]);
+    std::sort(out.begin(), out.end());
+    return;
+  }
+  if (num_tied > 2) invalid_ties(f, v, num_tied);
+  const FaceId g = facet_with_normal(q, v, n.exact);
+  if (!g.is_valid()) invalid_ties(f, v, num_tied);
+  sorted_facet_vertices(q, g, out);
+}
+
+}  // namespace
+
+void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
+                                std::span<const FaceId> partner, ContributingVertices& out) {
+  const Mesh& mp = p.mesh();
+  const std::uint32_t nf = p.num_facets();
+  // seed[f]: a vertex of q to climb from, set when f is queued; the queue is
+  // the BFS order itself.
+  std::vector<VertexId> seed(nf);
+  std::vector<FaceId> queue;
+  queue.reserve(nf);
+  std::vector<VertexId> list;
+  seed[0] = VertexId(0);
+  queue.push_back(FaceId(0));
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const FaceId f = queue[head];
+    const FaceId g = partner.empty() ? FaceId() : partner[f.index()];
+    if (g.is_valid()) {
+      sorted_facet_vertices(q, g, list);
+    } else {
+      climb(q, f, p.normal_ref(f), seed[f.index()], list);
+    }
+    out.assign(f, list);
+    for (HalfedgeId h : mp.face_halfedges(f)) {
+      const FaceId next = mp.face(Mesh::twin(h));
+      if (seed[next.index()].is_valid()) continue;  // queued already (facet 0 has seed 0)
+      seed[next.index()] = list.front();
+      queue.push_back(next);
+    }
+  }
+  if (queue.size() != nf)
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum: operand is not connected (" +
+                                                     std::to_string(queue.size()) + " of " + std::to_string(nf) +
+                                                     " facets reachable)");
 }
 
 }  // namespace cvms::detail

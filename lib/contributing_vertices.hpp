@@ -30,28 +30,61 @@ FaceId facet_with_normal(const ConvexPolyhedron& q, VertexId v, const Vec3& n);
 void sorted_facet_vertices(const ConvexPolyhedron& p, FaceId f, std::vector<VertexId>& out);
 
 /// Contributing vertices of every facet of one operand with respect to the
-/// other, stored compactly (one sorted list per facet, facets in order).
+/// other, stored compactly (one sorted list per facet). Lists are appended
+/// in facet order (append) or assigned to facets in any order (assign).
 class ContributingVertices {
  public:
   ContributingVertices() = default;
-  explicit ContributingVertices(std::uint32_t num_facets) { offsets_.reserve(num_facets + 1u); }
+  explicit ContributingVertices(std::uint32_t num_facets) { ranges_.reserve(num_facets); }
 
   /// Appends the (sorted) list of the next facet.
   void append(std::span<const VertexId> sorted_vertices) {
-    vertices_.insert(vertices_.end(), sorted_vertices.begin(), sorted_vertices.end());
-    offsets_.push_back(static_cast<std::uint32_t>(vertices_.size()));
+    ranges_.push_back(push(sorted_vertices));
+  }
+  /// Sets the (sorted) list of facet f; facets below f not yet set get empty lists.
+  void assign(FaceId f, std::span<const VertexId> sorted_vertices) {
+    if (f.index() >= ranges_.size()) ranges_.resize(f.index() + 1u);
+    ranges_[f.index()] = push(sorted_vertices);
   }
   [[nodiscard]] std::span<const VertexId> of(FaceId f) const noexcept {
-    return {vertices_.data() + offsets_[f.index()], offsets_[f.index() + 1u] - offsets_[f.index()]};
+    const Range r = ranges_[f.index()];
+    return {vertices_.data() + r.begin, r.size};
   }
-  [[nodiscard]] std::uint32_t num_facets() const noexcept {
-    return static_cast<std::uint32_t>(offsets_.size() - 1u);
-  }
+  [[nodiscard]] std::uint32_t num_facets() const noexcept { return static_cast<std::uint32_t>(ranges_.size()); }
 
  private:
-  std::vector<std::uint32_t> offsets_{0};
+  struct Range {
+    std::uint32_t begin = 0;
+    std::uint32_t size = 0;
+  };
+  Range push(std::span<const VertexId> sorted_vertices) {
+    const Range r{static_cast<std::uint32_t>(vertices_.size()), static_cast<std::uint32_t>(sorted_vertices.size())};
+    vertices_.insert(vertices_.end(), sorted_vertices.begin(), sorted_vertices.end());
+    return r;
+  }
+  std::vector<Range> ranges_;
   std::vector<VertexId> vertices_;
 };
+
+/// The contributing vertices of every facet of p with respect to q, found by
+/// walking instead of scanning (output-sensitive CVMS): the facets of p are
+/// visited in breadth-first order over their adjacency, and each facet's
+/// maximiser is found by hill-climbing on the vertex graph of q from the
+/// maximiser of the facet it was reached from. A linear function on a convex
+/// polyhedron has no local maximum that is not global, so the climb (move to
+/// any strictly better neighbour) ends at a maximiser v; the ties are then
+/// v's neighbours with the same value: none (one contributing vertex), one
+/// (an edge of q perpendicular to the normal) or two (then v lies on the
+/// facet of q with the same normal, whose vertices are the list).
+/// partner[f], if valid (and partner is non-empty), is a facet of q known to
+/// have the normal of f: its vertices are taken without climbing.
+/// The lists equal those of maximising_vertices exactly.
+/// 	hrow Error(invalid_argument) if q breaks the ConvexPolyhedron guarantees
+///   (ties that are neither an edge nor a facet with the same normal).
+/// Cost: O(sum over facets of the climb length times the degrees met) predicates,
+/// in practice O(f_p + v_q) for operands of similar resolution.
+void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
+                                std::span<const FaceId> partner, ContributingVertices& out);
 
 /// True iff two sorted vertex lists have no vertex in common.
 bool disjoint_sorted(std::span<const VertexId> x, std::span<const VertexId> y) noexcept;

@@ -27,9 +27,12 @@
 // every facet normal of A and B.
 #include "cvms.hpp"
 
+#include <algorithm>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "arc_trace.hpp"
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
@@ -126,25 +129,48 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
 
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           Stats& stats) {
+  return cvms_facets(a, b, options, stats).build();
+}
+
+SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                            Stats& stats) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
+  const bool walk_vertices = options.contributing_vertex_search == ContributingVertexSearch::walk;
+  if (!walk_vertices && options.contributing_vertex_search != ContributingVertexSearch::scan) {
+    throw Error(ErrorCategory::invalid_argument,
+                "minkowski_sum: unknown contributing vertex search " +
+                    std::to_string(static_cast<int>(options.contributing_vertex_search)));
+  }
+  if (options.edge_facet_search != EdgeFacetSearch::paper && options.edge_facet_search != EdgeFacetSearch::walk) {
+    throw Error(ErrorCategory::invalid_argument,
+                "minkowski_sum: unknown edge facet search " +
+                    std::to_string(static_cast<int>(options.edge_facet_search)));
+  }
   SumFacetBuilder out(a, b);
   std::vector<VertexId> cv;
 
   // Step 1: translated facets. partner[f_B] is the facet of A with the same
   // normal, if any (then f_B contributes with it, Property 2).
   ContributingVertices cv_a(a.num_facets());
+  if (walk_vertices) {
+    contributing_vertices_walk(a, b, {}, cv_a);
+  } else {
+    for (FaceId fa : ma.faces()) {
+      maximising_vertices(b, a.normal_ref(fa), cv);
+      cv_a.append(cv);
+    }
+  }
   std::vector<FaceId> partner(b.num_facets());
   for (FaceId fa : ma.faces()) {
-    maximising_vertices(b, a.normal_ref(fa), cv);
-    cv_a.append(cv);
-    if (cv.size() == 1) {
-      out.add_facet_plus_vertex(Operand::a, fa, cv[0]);
-    } else if (cv.size() == 2) {
-      out.add_facet_plus_edge(Operand::a, fa, cv[0], cv[1]);
+    const std::span<const VertexId> c = cv_a.of(fa);
+    if (c.size() == 1) {
+      out.add_facet_plus_vertex(Operand::a, fa, c[0]);
+    } else if (c.size() == 2) {
+      out.add_facet_plus_edge(Operand::a, fa, c[0], c[1]);
       ++stats.contributing_ties;
     } else {
-      const FaceId fb = facet_with_normal(b, cv[0], a.normal(fa));
+      const FaceId fb = facet_with_normal(b, c[0], a.normal(fa));
       if (!fb.is_valid()) {
         throw Error(ErrorCategory::invalid_argument,
                     "minkowski_sum: operand B is not a valid ConvexPolyhedron: facet " +
@@ -160,22 +186,31 @@ ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, 
 
   // Step 2: corner facets. The contributing vertices of a facet of B that
   // has a partner are the vertices of the partner (the face of A supporting
-  // A in that direction); we record them for Property 1 without a scan.
+  // A in that direction); we record them for Property 1 without a search.
   ContributingVertices cv_b(b.num_facets());
-  for (FaceId fb : mb.faces()) {
-    const FaceId fa = partner[fb.index()];
-    if (fa.is_valid()) {
-      sorted_facet_vertices(a, fa, cv);
+  if (walk_vertices) {
+    contributing_vertices_walk(b, a, partner, cv_b);
+  } else {
+    for (FaceId fb : mb.faces()) {
+      const FaceId fa = partner[fb.index()];
+      if (fa.is_valid()) {
+        sorted_facet_vertices(a, fa, cv);
+      } else {
+        maximising_vertices(a, b.normal_ref(fb), cv);
+      }
       cv_b.append(cv);
+    }
+  }
+  for (FaceId fb : mb.faces()) {
+    if (partner[fb.index()].is_valid()) {
       ++stats.contributing_ties;
       continue;
     }
-    maximising_vertices(a, b.normal_ref(fb), cv);
-    cv_b.append(cv);
-    if (cv.size() == 1) {
-      out.add_facet_plus_vertex(Operand::b, fb, cv[0]);
-    } else if (cv.size() == 2) {
-      out.add_facet_plus_edge(Operand::b, fb, cv[0], cv[1]);
+    const std::span<const VertexId> c = cv_b.of(fb);
+    if (c.size() == 1) {
+      out.add_facet_plus_vertex(Operand::b, fb, c[0]);
+    } else if (c.size() == 2) {
+      out.add_facet_plus_edge(Operand::b, fb, c[0], c[1]);
       ++stats.contributing_ties;
     } else {
       // >= 3 contributing vertices means a facet of A with the same (primitive)
@@ -191,18 +226,26 @@ ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, 
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
   const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
-  const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
-  switch (options.edge_facet_search) {
-    case EdgeFacetSearch::paper:
-      edge_facets_paper(a, b, edges_a, edges_b, out, stats);
-      break;
-    default:
-      throw Error(ErrorCategory::invalid_argument,
-                  "minkowski_sum: unknown edge facet search " +
-                      std::to_string(static_cast<int>(options.edge_facet_search)));
+  if (options.edge_facet_search == EdgeFacetSearch::paper) {
+    const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
+    edge_facets_paper(a, b, edges_a, edges_b, out, stats);
+  } else {
+    // The walk meets the edges of B in arc order; sorting them by edge index
+    // emits the facets in the paper search's order, so both modes build the
+    // identical polyhedron.
+    std::vector<HalfedgeId> crossed;
+    for (HalfedgeId ha : edges_a) {
+      crossed.clear();
+      trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed,
+                        stats.edge_candidates);
+      std::sort(crossed.begin(), crossed.end(),
+                [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
+      for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
+      stats.edge_facets += crossed.size();
+    }
   }
 
-  return out.build();
+  return out;
 }
 
 }  // namespace cvms::detail

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "cvms/minkowski.hpp"
+#include "stitch.hpp"
 
 namespace cvms::detail {
 
@@ -12,5 +13,10 @@ namespace cvms::detail {
 /// measures those). \pre a and b are non-empty.
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           Stats& stats);
+
+/// The facets cvms_sum glues, before gluing (for benchmarks that time the
+/// output construction alone). The builder refers to a and b.
+SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                            Stats& stats);
 
 }  // namespace cvms::detail

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
+#include "trusted_polyhedron.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -44,6 +45,25 @@ Projection projection_along(const Vec3& n) {
 
 Vec2 project(const Vec3& p, Projection pr) { return {p[pr.u], p[pr.v]}; }
 
+// primitive_direction(cross(u, v)) for primitive integer vectors u, v: the
+// cross product and one gcd in integers (no rational canonicalisation).
+Vec3 primitive_cross(const Vec3& u, const Vec3& v) {
+  const mpz_class* a[3] = {&u.x.get_num(), &u.y.get_num(), &u.z.get_num()};
+  const mpz_class* b[3] = {&v.x.get_num(), &v.y.get_num(), &v.z.get_num()};
+  mpz_class c[3];
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpz_mul(c[i].get_mpz_t(), a[j]->get_mpz_t(), b[k]->get_mpz_t());
+    mpz_submul(c[i].get_mpz_t(), a[k]->get_mpz_t(), b[j]->get_mpz_t());
+  }
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), c[0].get_mpz_t(), c[1].get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c[2].get_mpz_t());
+  if (g != 1)
+    for (mpz_class& x : c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
+  return {Rational(c[0]), Rational(c[1]), Rational(c[2])};
+}
+
 // A dense pair -> output-index table is used when it is not much larger than
 // the output itself; otherwise a hash map.
 constexpr std::uint64_t dense_table_limit = 1u << 16;
@@ -55,7 +75,7 @@ SumFacetBuilder::SumFacetBuilder(const ConvexPolyhedron& a, const ConvexPolyhedr
 void SumFacetBuilder::add_facet_plus_vertex(Operand which, FaceId f, VertexId v) {
   const Mesh& m = operand(which).mesh();
   for (HalfedgeId h : m.face_halfedges(f)) push(which, m.from(h), v);
-  close_facet();
+  close_facet(facet_normal(which, f));
 }
 
 void SumFacetBuilder::add_facet_plus_edge(Operand which, FaceId f, VertexId v0, VertexId v1) {
@@ -64,10 +84,10 @@ void SumFacetBuilder::add_facet_plus_edge(Operand which, FaceId f, VertexId v0, 
 }
 
 void SumFacetBuilder::add_facet_plus_facet(FaceId fa, FaceId fb) {
-  std::vector<VertexId> other;
   const Mesh& mb = b_.mesh();
-  for (HalfedgeId h : mb.face_halfedges(fb)) other.push_back(mb.from(h));
-  add_planar_sum(Operand::a, fa, other);
+  other_vertices_.clear();
+  for (HalfedgeId h : mb.face_halfedges(fb)) other_vertices_.push_back(mb.from(h));
+  add_planar_sum(Operand::a, fa, other_vertices_);
 }
 
 void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other) {
@@ -86,7 +106,7 @@ void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const Ve
   for (const auto& [i, j] : planar_sum_indices(own_points_, other_points_)) {
     push(which, own_vertices_[i], other[j]);
   }
-  close_facet();
+  close_facet(facet_normal(which, f));
 }
 
 void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation) {
@@ -104,15 +124,17 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
   } else {
     for (int i = 3; i >= 0; --i) pairs_.push_back(cycle[i]);
   }
-  close_facet();
+  close_facet({orientation == Sign::positive ? NormalKind::edges_positive : NormalKind::edges_negative, ha.index(),
+               hb.index()});
 }
 
-ConvexPolyhedron SumFacetBuilder::build() const {
+PolygonSoup SumFacetBuilder::soup() const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
   PolygonSoup soup;
   soup.face_offsets = offsets_;
   soup.face_indices.resize(pairs_.size());
+  soup.points.reserve(pairs_.size() / 3 + 1);  // each vertex is in at least three facets
 
   auto new_vertex = [&](const VertexPair& p) {
     soup.points.push_back(a_.vertex(VertexId(p.a)) + b_.vertex(VertexId(p.b)));
@@ -138,7 +160,44 @@ ConvexPolyhedron SumFacetBuilder::build() const {
       soup.face_indices[i] = it->second;
     }
   }
-  return ConvexPolyhedron::from_trusted_soup(std::move(soup));
+  return soup;
+}
+
+ConvexPolyhedron SumFacetBuilder::build() const {
+  PolygonSoup soup = this->soup();
+  std::vector<Vec3> normals;
+  normals.reserve(normals_.size());
+  // Primitive integer directions of the edges used by edge facets, computed
+  // once per edge rather than once per facet.
+  std::vector<Vec3> dir_a;
+  std::vector<Vec3> dir_b;
+  auto direction = [](std::vector<Vec3>& cache, const ConvexPolyhedron& p, HalfedgeId h) -> const Vec3& {
+    if (cache.empty()) cache.resize(p.num_edges());
+    Vec3& d = cache[Mesh::edge(h).index()];
+    if (is_zero(d)) d = primitive_direction(p.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+    return d;
+  };
+  for (const NormalSource& n : normals_) {
+    switch (n.kind) {
+      case NormalKind::facet_a:
+        normals.push_back(a_.normal(FaceId(n.index)));
+        break;
+      case NormalKind::facet_b:
+        normals.push_back(b_.normal(FaceId(n.index)));
+        break;
+      case NormalKind::edges_positive:
+      case NormalKind::edges_negative: {
+        // The cached directions belong to the even halfedge of each edge.
+        const HalfedgeId ha(n.index), hb(n.other);
+        Vec3 c = primitive_cross(direction(dir_a, a_, ha), direction(dir_b, b_, hb));
+        const bool flip = (n.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
+        if (flip) c = -c;
+        normals.push_back(std::move(c));
+        break;
+      }
+    }
+  }
+  return ConvexPolyhedronAccess::from_trusted_soup(std::move(soup), std::move(normals));
 }
 
 }  // namespace cvms::detail

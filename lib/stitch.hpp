@@ -55,11 +55,33 @@ class SumFacetBuilder {
   /// Glues the facets by vertex pair and builds the result. \pre the facets
   /// are exactly the facets of A + B (each maximal, strictly convex,
   /// counterclockwise from outside, no two with the same normal).
+  /// The normals are not recomputed from the output: each is the known
+  /// normal of the facet of A or B it is parallel to, or, for e_A + e_B, the
+  /// primitive direction of +-cross(d_A, d_B).
   [[nodiscard]] ConvexPolyhedron build() const;
+
+  /// The glued facets as a soup: one point per distinct vertex pair (its
+  /// exact coordinates computed once), facets in the order added. build()
+  /// is Mesh::from_soup of this plus the known facet planes.
+  [[nodiscard]] PolygonSoup soup() const;
 
  private:
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
-  void close_facet() { offsets_.push_back(static_cast<std::uint32_t>(pairs_.size())); }
+  // Where the normal of an output facet comes from: facet `index` of A or B,
+  // or the edges of halfedges (index, other) with the given orientation.
+  enum class NormalKind : std::uint8_t { facet_a, facet_b, edges_positive, edges_negative };
+  struct NormalSource {
+    NormalKind kind;
+    std::uint32_t index;
+    std::uint32_t other;
+  };
+  void close_facet(NormalSource normal) {
+    offsets_.push_back(static_cast<std::uint32_t>(pairs_.size()));
+    normals_.push_back(normal);
+  }
+  static NormalSource facet_normal(Operand which, FaceId f) {
+    return {which == Operand::a ? NormalKind::facet_a : NormalKind::facet_b, f.index(), 0};
+  }
   void push(Operand which, VertexId own, VertexId other) {
     pairs_.push_back(which == Operand::a ? VertexPair{own.index(), other.index()}
                                          : VertexPair{other.index(), own.index()});
@@ -72,10 +94,12 @@ class SumFacetBuilder {
   const ConvexPolyhedron& b_;
   std::vector<std::uint32_t> offsets_{0};
   std::vector<VertexPair> pairs_;
+  std::vector<NormalSource> normals_;
   // Scratch buffers, reused between facets.
   std::vector<VertexId> own_vertices_;
   std::vector<Vec2> own_points_;
   std::vector<Vec2> other_points_;
+  std::vector<VertexId> other_vertices_;
 };
 
 }  // namespace cvms::detail

@@ -8,7 +8,9 @@
 #include <random>
 #include <vector>
 
+#include "cvms/quickhull.hpp"
 #include "cvms/shapes.hpp"
+#include "support/random_clouds.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -92,6 +94,72 @@ TEST(ContributingVertices, StoredPerFacet) {
   ASSERT_EQ(cv.num_facets(), 3u);
   EXPECT_EQ(cv.of(FaceId(1)).size(), 2u);
   EXPECT_EQ(cv.of(FaceId(2))[0], VertexId(3));
+}
+
+
+// The walk (BFS over facets + hill-climbing) against the brute-force maxima,
+// on tie-heavy pairs: every facet of p with the maximisers of its normal.
+void expect_walk_matches_brute_force(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
+  ContributingVertices cv(p.num_facets());
+  contributing_vertices_walk(p, q, {}, cv);
+  ASSERT_EQ(cv.num_facets(), p.num_facets());
+  for (FaceId f : p.mesh().faces()) {
+    const std::vector<VertexId> expected = brute_force_maximisers(q, p.normal(f));
+    const std::span<const VertexId> got = cv.of(f);
+    ASSERT_EQ(std::vector<VertexId>(got.begin(), got.end()), expected) << "facet " << f.index();
+  }
+}
+
+Mat3 quarter_turn_x() {  // (x, y, z) -> (x, -z, y)
+  Mat3 m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m.m[i][j] = 0;
+  m.m[0][0] = 1;
+  m.m[1][2] = -1;
+  m.m[2][1] = 1;
+  return m;
+}
+
+TEST(ContributingVerticesWalk, TieHeavyPairsMatchBruteForce) {
+  const auto cube = shapes::cube();
+  const auto s2 = shapes::geodesic_sphere(2);
+  const auto p6 = shapes::prism(6, 1);
+  const auto p8 = shapes::prism(8, 3);
+  const auto side = shapes::prism(5, 2).transformed(quarter_turn_x(), {});
+  const auto tc = shapes::truncated_cube();
+  const std::vector<std::pair<const ConvexPolyhedron*, const ConvexPolyhedron*>> pairs = {
+      {&cube, &cube}, {&s2, &s2},   {&p6, &p6},   {&p6, &p8},  {&p8, &side},
+      {&side, &p6},   {&cube, &tc}, {&tc, &cube}, {&cube, &s2}, {&s2, &cube}};
+  for (const auto& [p, q] : pairs) expect_walk_matches_brute_force(*p, *q);
+  const auto r3 = shapes::rotated_geodesic_sphere(3);
+  const auto s3 = shapes::geodesic_sphere(3);
+  expect_walk_matches_brute_force(s3, r3);
+  expect_walk_matches_brute_force(r3, s3);
+}
+
+TEST(ContributingVerticesWalk, RandomPairsMatchBruteForce) {
+  for (std::uint64_t seed = 1; seed <= 150; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const test::RandomPair p = test::random_pair(seed);
+    expect_walk_matches_brute_force(p.a, p.b);
+    expect_walk_matches_brute_force(p.b, p.a);
+  }
+}
+
+TEST(ContributingVerticesWalk, PartnersAreTakenWithoutClimbing) {
+  // Each facet of the cube partnered with the same facet of the cube: the
+  // list is that facet's vertices.
+  const auto cube = shapes::cube();
+  std::vector<FaceId> partner;
+  for (FaceId f : cube.mesh().faces()) partner.push_back(f);
+  ContributingVertices cv(cube.num_facets());
+  contributing_vertices_walk(cube, cube, partner, cv);
+  std::vector<VertexId> expected;
+  for (FaceId f : cube.mesh().faces()) {
+    sorted_facet_vertices(cube, f, expected);
+    const std::span<const VertexId> got = cv.of(f);
+    EXPECT_EQ(std::vector<VertexId>(got.begin(), got.end()), expected);
+  }
 }
 
 }  // namespace

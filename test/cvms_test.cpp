@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The differential suite of minkowski_sum, written for CVMS (paper Section 4)
-// and run for every algorithm (CVMS, ESSDMS, CHMS: TEST_P over Algorithm):
+// and run for every algorithm (CVMS in its output-sensitive default mode and
+// in the paper-faithful reference mode, ESSDMS, CHMS: TEST_P over Variant):
 // exact equality with independent oracles (CHMS, brute-force hulls,
 // hand-checked sums such as A + A = 2A and box + box), the invariants of every
 // result, the paper's degenerate cases, arc geometry that stresses the slope
 // diagrams of Section 5.2, and seeded random pairs. Every algorithm is
-// compared with the same oracle, so all three agree exactly on every case.
+// compared with the same oracle, so all agree exactly on every case; on top
+// of that, every CVMS case also checks that the two CVMS modes build the
+// identical polyhedron (same vertices, same facets, same numbering, same
+// facet counts).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -44,6 +48,47 @@ void PrintTo(Algorithm a, std::ostream* os) { *os << algorithm_name(a); }
 
 namespace {
 
+// An algorithm and, for CVMS, its mode: `reference` is the paper-faithful
+// search (linear scans, horizon edges), otherwise the default walks.
+struct Variant {
+  Algorithm algorithm;
+  bool reference = false;
+};
+
+std::string variant_name(Variant v) { return algorithm_name(v.algorithm) + (v.reference ? "_paper" : ""); }
+
+Options variant_options(Variant v) {
+  Options o;
+  o.algorithm = v.algorithm;
+  if (v.reference) {
+    o.contributing_vertex_search = ContributingVertexSearch::scan;
+    o.edge_facet_search = EdgeFacetSearch::paper;
+  }
+  return o;
+}
+
+// "" iff CVMS in the reference mode and in the default mode build the
+// identical polyhedron (soup equality: positions, facet cycles, numbering)
+// with the same facet counts, for a + b.
+std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  const MinkowskiResult ref = minkowski_sum(a, b, variant_options({Algorithm::cvms, true}));
+  const MinkowskiResult fast = minkowski_sum(a, b, variant_options({Algorithm::cvms, false}));
+  const PolygonSoup x = ref.polyhedron.to_soup();
+  const PolygonSoup y = fast.polyhedron.to_soup();
+  if (x.points != y.points) return "the two CVMS modes give different vertices";
+  if (x.face_offsets != y.face_offsets || x.face_indices != y.face_indices)
+    return "the two CVMS modes give different facets";
+  for (FaceId f : ref.polyhedron.mesh().faces())
+    if (ref.polyhedron.normal(f) != fast.polyhedron.normal(f) ||
+        ref.polyhedron.plane_offset(f) != fast.polyhedron.plane_offset(f))
+      return "the two CVMS modes give different planes at facet " + std::to_string(f.index());
+  const Stats &r = ref.stats, &s = fast.stats;
+  if (r.translated_facets != s.translated_facets || r.corner_facets != s.corner_facets ||
+      r.edge_facets != s.edge_facets || r.contributing_ties != s.contributing_ties)
+    return "the two CVMS modes count facets differently";
+  return "";
+}
+
 Mat3 scaling(const Rational& s) {
   Mat3 m;
   for (int i = 0; i < 3; ++i)
@@ -73,12 +118,16 @@ test::Shape brute_force_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
 MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) { return minkowski_sum(a, b); }
 
 // The suite keeps the name Cvms; the parameter is the algorithm under test.
-class Cvms : public ::testing::TestWithParam<Algorithm> {
+class Cvms : public ::testing::TestWithParam<Variant> {
  protected:
-  [[nodiscard]] static Options options() {
-    Options o;
-    o.algorithm = GetParam();
-    return o;
+  [[nodiscard]] static Algorithm algorithm() { return GetParam().algorithm; }
+  [[nodiscard]] static Options options() { return variant_options(GetParam()); }
+  // The differential check between the CVMS modes runs once per case, in the
+  // default-mode instance.
+  [[nodiscard]] static std::string modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+    if (algorithm() != Algorithm::cvms || GetParam().reference) return "";
+    const std::string ab = cvms_modes_agree(a, b);
+    return ab.empty() ? cvms_modes_agree(b, a) : ab;
   }
   // Shadows the free function: the algorithm under test.
   [[nodiscard]] static MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
@@ -86,18 +135,21 @@ class Cvms : public ::testing::TestWithParam<Algorithm> {
   }
   // CVMS and ESSDMS classify facets alike (translated, corner, edge) and
   // count ties alike; CHMS reports no such stats.
-  [[nodiscard]] static bool counts_facets() { return GetParam() != Algorithm::chms; }
+  [[nodiscard]] static bool counts_facets() { return algorithm() != Algorithm::chms; }
 };
 
-std::string algorithm_name(const ::testing::TestParamInfo<Algorithm>& info) {
-  return algorithm_name(info.param);
-}
+std::string param_name(const ::testing::TestParamInfo<Variant>& info) { return variant_name(info.param); }
 
 INSTANTIATE_TEST_SUITE_P(AllAlgorithms, Cvms,
-                         ::testing::Values(Algorithm::cvms, Algorithm::essdms, Algorithm::chms),
-                         algorithm_name);
+                         ::testing::Values(Variant{Algorithm::cvms, false}, Variant{Algorithm::cvms, true},
+                                           Variant{Algorithm::essdms}, Variant{Algorithm::chms}),
+                         param_name);
 
-#define EXPECT_SUM(a, b, expected) EXPECT_EQ(test::check_sum((a), (b), (expected), options()), "")
+#define EXPECT_SUM(a, b, expected)                                         \
+  do {                                                                     \
+    EXPECT_EQ(test::check_sum((a), (b), (expected), options()), "");      \
+    EXPECT_EQ(modes_agree((a), (b)), "");                                  \
+  } while (false)
 
 // The rhombic dodecahedron: 12 rhombi with normals (+-1, +-1, 0) and
 // permutations. Every Gaussian arc of the cube passes through one of its
@@ -189,6 +241,7 @@ TEST_P(Cvms, PaperShapesEveryPairAgreesWithChms) {
       EXPECT_EQ(
           test::check_sum(a, b, test::chms_shape(a, b), options(), a.num_facets() * b.num_facets() < 20000),
           "");
+      EXPECT_EQ(modes_agree(a, b), "");
     }
   }
 }
@@ -266,7 +319,7 @@ TEST_P(Cvms, PaperCriterionAloneWouldDuplicateACornerFacet) {
   const auto c = shapes::cube();
   const auto b = hull({v3(-2, 1, 3), v3(8, -4, -2), v3(-2, -4, -2), v3(-2, 6, -2)});
   EXPECT_SUM(c, b, brute_force_sum(c, b));
-  if (GetParam() == Algorithm::cvms) {
+  if (algorithm() == Algorithm::cvms && GetParam().reference) {
     EXPECT_GT(cvms_sum(c, b).stats.edge_paper_rejections, 0u);
   }
 }
@@ -529,7 +582,10 @@ TEST_P(Cvms, FlatPolyhedraWithNearlyAntipodalArcs) {
 // Random pairs.
 
 TEST_P(Cvms, RandomPairsAgreeWithChms) {
-  if (GetParam() == Algorithm::chms) GTEST_SKIP() << "CHMS is the oracle of this test (see chms_test.cpp)";
+  if (algorithm() == Algorithm::chms) GTEST_SKIP() << "CHMS is the oracle of this test (see chms_test.cpp)";
+  // The default-mode instance already checks every pair in both CVMS modes
+  // (modes_agree); only the paper-criterion counts below need this one.
+  const bool counts_only = algorithm() == Algorithm::cvms && GetParam().reference;
   // 2000 pairs per algorithm in the default run (the cost is in the checks,
   // not the sums); the sanitizer preset lowers it with CVMS_RANDOM_PAIRS, and
   // cvms_soak_test runs 100,000.
@@ -541,8 +597,11 @@ TEST_P(Cvms, RandomPairsAgreeWithChms) {
     const std::uint64_t seed = 1000 + static_cast<std::uint64_t>(i);
     const test::RandomPair p = test::random_pair(seed);
     SCOPED_TRACE("seed " + std::to_string(seed) + " (" + p.description + ")");
-    const std::string msg = test::check_sum(p.a, p.b, test::chms_shape(p.a, p.b), options());
-    ASSERT_EQ(msg, "");
+    if (!counts_only) {
+      const std::string msg = test::check_sum(p.a, p.b, test::chms_shape(p.a, p.b), options());
+      ASSERT_EQ(msg, "");
+    }
+    ASSERT_EQ(modes_agree(p.a, p.b), "");
     const Stats s = cvms_sum(p.a, p.b).stats;
     with_edge_ties += s.contributing_ties > 0;
     with_parallel_facets += s.corner_facets < p.b.num_facets();
@@ -556,7 +615,7 @@ TEST_P(Cvms, RandomPairsAgreeWithChms) {
   if (pairs >= 1000) {
     EXPECT_GT(with_edge_ties, pairs / 10);
     EXPECT_GT(with_parallel_facets, pairs / 20);
-    if (GetParam() == Algorithm::cvms) {
+    if (algorithm() == Algorithm::cvms && GetParam().reference) {
       EXPECT_GT(with_rejections, 10);
     }
     EXPECT_GT(with_edge_facets, pairs / 2);
@@ -580,13 +639,16 @@ TEST(MinkowskiSum, EmptyOperandIsRejected) {
 }
 
 TEST(MinkowskiSum, UnknownOptionsAreRejected) {
-  Options o;
-  o.edge_facet_search = static_cast<EdgeFacetSearch>(42);
-  try {
-    (void)minkowski_sum(shapes::cube(), shapes::octahedron(), o);
-    FAIL() << "no exception";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+  for (int which = 0; which < 2; ++which) {
+    Options o;
+    if (which == 0) o.edge_facet_search = static_cast<EdgeFacetSearch>(42);
+    if (which == 1) o.contributing_vertex_search = static_cast<ContributingVertexSearch>(42);
+    try {
+      (void)minkowski_sum(shapes::cube(), shapes::octahedron(), o);
+      FAIL() << "no exception";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+    }
   }
 }
 

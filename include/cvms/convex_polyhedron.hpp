@@ -29,6 +29,10 @@
 
 namespace cvms {
 
+namespace detail {
+struct ConvexPolyhedronAccess;  // lib/trusted_polyhedron.hpp: the algorithms' output path
+}  // namespace detail
+
 /// A convex polyhedron with maximal facets, extreme vertices and cached
 /// exact and approximate facet planes (see the file comment).
 ///
@@ -124,6 +128,7 @@ class ConvexPolyhedron {
   [[nodiscard]] ConvexPolyhedron reflected() const;
 
  private:
+  friend struct detail::ConvexPolyhedronAccess;
   void compute_caches();  // normals, offsets, approximations
 
   Mesh mesh_;

@@ -26,12 +26,31 @@ enum class EdgeFacetSearch {
   /// decision is made exact with the Gaussian-map crossing test.
   /// O(e_A (f_B + e_B)) predicates: the reference for faster variants.
   paper,
+  /// Output-sensitive: for each edge of A that passes Property 1, walk on B
+  /// along the edge's Gaussian arc from the region of one contributing
+  /// vertex to the other, crossing exactly the arcs of the edges of B that
+  /// give edge facets (lib/arc_trace.cpp). Same result as `paper`.
+  walk,
 };
 
-/// How minkowski_sum computes the sum.
+/// How CVMS finds the contributing vertices of every facet (paper Section 4.3,
+/// steps 1 and 2).
+enum class ContributingVertexSearch {
+  /// The paper's search: a linear scan over the vertices of the other
+  /// operand for every facet, O(f_A v_B + f_B v_A) predicates.
+  scan,
+  /// Output-sensitive: facets in breadth-first order, each maximiser found by
+  /// hill-climbing from the neighbouring facet's answer. Same result as `scan`.
+  walk,
+};
+
+/// How minkowski_sum computes the sum. The defaults are the output-sensitive
+/// CVMS; {scan, paper} is the paper-faithful reference mode.
 struct Options {
-  Algorithm algorithm = Algorithm::cvms;                       ///< which algorithm
-  EdgeFacetSearch edge_facet_search = EdgeFacetSearch::paper;  ///< CVMS only
+  Algorithm algorithm = Algorithm::cvms;  ///< which algorithm
+  /// CVMS only: how contributing vertices are found.
+  ContributingVertexSearch contributing_vertex_search = ContributingVertexSearch::walk;
+  EdgeFacetSearch edge_facet_search = EdgeFacetSearch::walk;  ///< CVMS only
 };
 
 /// What an algorithm did. For CVMS, translated + corner + edge facets equals
@@ -44,6 +63,7 @@ struct Stats {
   std::uint64_t contributing_ties = 0;
   /// (edge of A, horizon edge of B) pairs that passed Property 1 and were
   /// tested with the normal-orientation criterion (CVMS, paper search); for
+  /// CVMS with the walk, the steps of all arc walks; for
   /// ESSDMS, the (arc of A, arc of B) pairs that passed the contributing-vertex
   /// pre-check and were tested for a proper crossing.
   std::uint64_t edge_candidates = 0;

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// Edge facets by tracing Gaussian arcs (output-sensitive CVMS, step 3 of
+// paper Section 4.3; the "walk, don't scan" idea of DESIGN.md).
+//
+// The arc of an edge e_A runs from n1 = n(face(ha)) to n2 = n(face(twin(ha)))
+// counterclockwise about d_A (cross(n1, n2) is a positive multiple of d_A),
+// on the great circle G of directions perpendicular to d_A. Moving along G
+// the point x has velocity d_A x x. For every x on G the face of B maximising
+// <., x> is a vertex, except at finitely many events:
+//  - G properly crosses the arc of an edge of B: the maximiser changes from
+//    one end of the edge to the other. This is an edge facet when it happens
+//    strictly inside the arc of e_A; these are what we report.
+//  - G passes through the facet point n_F of a facet F of B parallel to d_A
+//    (sign <n_F, d_A> = 0): the maximiser jumps across F. Strictly inside
+//    the arc of e_A this is the corner facet F + e_A (step 2 built it), not
+//    an edge facet.
+//  - G runs along the arc of an edge of B parallel to d_A, between two such
+//    facet points: that edge is the maximiser; parallel edges give no facet.
+// Classify each facet F of B by s(F) = sign <n_F, d_A> (+ invisible,
+// - visible, 0 parallel). Around a vertex u the facet normals form the
+// convex spherical polygon P_u (u's normal cone), counterclockwise in the
+// order of the facets around u seen from outside: for an outgoing halfedge h
+// of u, face(twin(h)) comes just before face(h). G has the side s > 0 on its
+// left, so it leaves a polygon it passes through where the boundary goes from
+// the right side (-) to the left side (+): through the polygon edge of an
+// outgoing halfedge h with s(face(twin(h))) = - and s(face(h)) = + (then the
+// maximiser moves to to(h), and the edge facet is e_A + e_B with the outward
+// normal cross(d_A, d_g), g = twin(h), oriented as in the paper's search), or
+// through a polygon vertex n_F with s(F) = 0, F = face(h), after a - (a facet
+// point event). Since G passes through the interior of P_u, the signs around
+// u are one run of +, one run of -, and at most one 0 between them, so the
+// exit is unique.
+//
+// At a facet point n_F the walk continues with the face of F maximising the
+// tangent t = d_A x n_F: a vertex of F (whose polygon G then enters), or an
+// edge of F parallel to d_A (G runs along its arc to the facet point of the
+// facet on its other side, again parallel to d_A).
+//
+// Start: the maximiser at n1 is given by c1: one vertex (n1 inside its
+// polygon), an edge (n1 inside its arc: start at the end that is higher in
+// the direction of the tangent d_A x n1, or run along the arc if the edge is
+// parallel to d_A), or a facet F (start at the event n_F). Stop: the face
+// maximising n2 is given by c2, and the walk stops at the first vertex (or
+// edge along G) that belongs to c2. It cannot stop early: c1 and c2 are
+// disjoint (Property 1), and the walk moves forward from n1, so the first
+// time it meets the region containing n2 is the one containing n2; every
+// event before that lies strictly between n1 and n2 (an edge crossing at n2
+// itself would need n2 in the interior of an arc, i.e. an edge in c2 whose
+// first end the walk would have stopped at).
+#include "arc_trace.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "contributing_vertices.hpp"
+#include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
+
+namespace cvms::detail {
+namespace {
+
+[[noreturn]] void inconsistent(HalfedgeId ha, const char* what) {
+  throw Error(ErrorCategory::invalid_argument,
+              "minkowski_sum: operands are not valid ConvexPolyhedra: the Gaussian arc walk of edge " +
+                  std::to_string(Mesh::edge(ha).index()) + " of A " + what);
+}
+
+// The halfedge of f's boundary from u to w, or invalid.
+HalfedgeId halfedge_between(const Mesh& m, FaceId f, VertexId u, VertexId w) {
+  for (HalfedgeId h : m.face_halfedges(f)) {
+    if (m.from(h) == u && m.to(h) == w) return h;
+    if (m.from(h) == w && m.to(h) == u) return h;
+  }
+  return {};
+}
+
+}  // namespace
+
+void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
+                       std::span<const VertexId> c1, std::span<const VertexId> c2, std::vector<HalfedgeId>& out,
+                       std::uint64_t& steps) {
+  const Mesh& ma = a.mesh();
+  const Mesh& mb = b.mesh();
+  const Vec3 da = a.edge_vector(ha);
+  const ApproxVec3 da_approx = ApproxVec3::of(da);
+  const Vec3Ref da_ref{da, da_approx};
+  auto side = [&](FaceId f) { return sign_dot(b.normal_ref(f), da_ref); };
+  auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
+  if (c1.empty() || c2.empty()) inconsistent(ha, "has no contributing vertices");
+
+  VertexId u;       // the current maximiser, when valid
+  FaceId event;     // the current facet point event, when valid
+  if (c1.size() == 1) {
+    u = c1[0];
+  } else {
+    const FaceId f1 = ma.face(ha);
+    if (c1.size() == 2) {
+      const Vec3 d = b.vertex(c1[1]) - b.vertex(c1[0]);
+      const ApproxVec3 d_approx = ApproxVec3::of(d);
+      // sign <d_A x n1, d> = det[d_A, n1, d].
+      const Sign s = sign_triple(da_ref, a.normal_ref(f1), Vec3Ref{d, d_approx});
+      if (s == Sign::positive) {
+        u = c1[1];
+      } else if (s == Sign::negative) {
+        u = c1[0];
+      } else {
+        // The edge is parallel to d_A: G runs along its arc, from its facet
+        // point on the left towards the end reached moving ccw about d_A.
+        HalfedgeId h;
+        for (HalfedgeId g : mb.outgoing_halfedges(c1[0]))
+          if (mb.to(g) == c1[1]) h = g;
+        if (!h.is_valid()) inconsistent(ha, "starts on an edge of B that does not exist");
+        // The arc of h runs from n(face(h)) to n(face(twin(h))) ccw about d_h.
+        event = sign_dot(Vec3Ref{d, d_approx}, da_ref) == Sign::positive ? mb.face(Mesh::twin(h)) : mb.face(h);
+      }
+    } else {
+      event = facet_with_normal(b, c1[0], a.normal(f1));
+      if (!event.is_valid()) inconsistent(ha, "starts at a facet point that B does not have");
+    }
+  }
+
+  const std::uint64_t limit = std::uint64_t{mb.num_halfedges()} + mb.num_faces() + 4u;
+  for (std::uint64_t step = 0;; ++step) {
+    if (step > limit) inconsistent(ha, "does not reach its end");
+    ++steps;
+    if (event.is_valid()) {
+      // At the facet point n_F of F (parallel to d_A), moving along t.
+      const Vec3 t = cross(da, b.normal(event));
+      const ApproxVec3 t_approx = ApproxVec3::of(t);
+      const Vec3Ref t_ref{t, t_approx};
+      VertexId best;
+      VertexId tie;
+      for (HalfedgeId h : mb.face_halfedges(event)) {
+        const VertexId w = mb.from(h);
+        if (!best.is_valid()) {
+          best = w;
+          continue;
+        }
+        const Sign s = compare_dot(b.vertex_ref(w), b.vertex_ref(best), t_ref);
+        if (s == Sign::positive) {
+          best = w;
+          tie = VertexId();
+        } else if (s == Sign::zero) {
+          tie = w;
+        }
+      }
+      if (!tie.is_valid()) {
+        u = best;
+        event = FaceId();
+      } else {
+        // An edge of F parallel to d_A: G runs along its arc to the facet
+        // point of the facet on its other side.
+        if (in_c2(best) || in_c2(tie)) return;
+        const HalfedgeId h = halfedge_between(mb, event, best, tie);
+        if (!h.is_valid()) inconsistent(ha, "meets a facet of B with two non-adjacent tied vertices");
+        event = mb.face(Mesh::twin(h));
+        continue;
+      }
+    }
+    if (in_c2(u)) return;
+    // Leave u's normal cone forwards (see the file comment).
+    HalfedgeId exit;
+    bool crossing = false;
+    for (HalfedgeId h : mb.outgoing_halfedges(u)) {
+      if (side(mb.face(Mesh::twin(h))) != Sign::negative) continue;
+      const Sign left = side(mb.face(h));
+      if (left == Sign::positive) {
+        exit = h;
+        crossing = true;
+        break;
+      }
+      if (left == Sign::zero) {
+        exit = h;
+        break;
+      }
+    }
+    if (!exit.is_valid()) inconsistent(ha, "finds no way out of the normal cone of a vertex of B");
+    if (crossing) {
+      out.push_back(Mesh::twin(exit));
+      u = mb.to(exit);
+    } else {
+      event = mb.face(exit);
+    }
+  }
+}
+
+}  // namespace cvms::detail

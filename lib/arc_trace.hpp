@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Edge facets of CVMS by tracing Gaussian arcs (output-sensitive step 3 of
+// paper Section 4.3): the edges of B whose arcs the arc of one edge of A
+// properly crosses, found by walking on B instead of testing every facet and
+// edge of B. Private to the library.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "cvms/convex_polyhedron.hpp"
+
+namespace cvms::detail {
+
+/// For the edge of halfedge ha of a, whose two facets have the disjoint
+/// contributing-vertex lists c1 (face(ha)) and c2 (face(twin(ha))) in b,
+/// appends to `out` every halfedge g of b such that e_A + e_B is an edge
+/// facet of A + B, oriented as the paper's search orients it: face(g)
+/// strictly visible from d_A = edge_vector(ha), face(twin(g)) strictly
+/// invisible, so that the facet's outward normal is cross(d_A, d_g).
+/// In the order met along the arc. See lib/arc_trace.cpp for the walk and
+/// its degenerate cases.
+/// \pre c1 and c2 are the exact contributing-vertex lists and are disjoint.
+/// \throw Error(invalid_argument) if the walk finds b inconsistent (an
+///   operand that breaks the ConvexPolyhedron guarantees).
+/// Cost: O(the degrees of the vertices of b the arc passes) predicates.
+void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
+                       std::span<const VertexId> c1, std::span<const VertexId> c2, std::vector<HalfedgeId>& out,
+                       std::uint64_t& steps);
+
+}  // namespace cvms::detail
