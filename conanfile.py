@@ -69,6 +69,7 @@ class CvmsConan(ConanFile):
         tc.cache_variables["CVMS_BUILD_TESTS"] = False
         tc.cache_variables["CVMS_BUILD_BENCHMARKS"] = False
         tc.cache_variables["CVMS_BUILD_TOOLS"] = False
+        tc.cache_variables["CVMS_BUILD_EXAMPLES"] = False
         tc.cache_variables["CVMS_WARNINGS_AS_ERRORS"] = False
         tc.generate()
         CMakeDeps(self).generate()

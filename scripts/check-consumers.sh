@@ -19,7 +19,7 @@ root=$PWD
 cxx=${CXX:-c++}
 # Consumers must compile cleanly with the warnings a careful user enables.
 cxxflags=(-std=c++20 -O1 -Wall -Wextra -Wpedantic -Werror)
-lib_only=(-DCVMS_BUILD_TESTS=OFF -DCVMS_BUILD_BENCHMARKS=OFF -DCVMS_BUILD_TOOLS=OFF)
+lib_only=(-DCVMS_BUILD_TESTS=OFF -DCVMS_BUILD_BENCHMARKS=OFF -DCVMS_BUILD_TOOLS=OFF -DCVMS_BUILD_EXAMPLES=OFF)
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

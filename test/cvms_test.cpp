@@ -530,9 +530,10 @@ TEST_P(Cvms, FlatPolyhedraWithNearlyAntipodalArcs) {
 
 TEST_P(Cvms, RandomPairsAgreeWithChms) {
   if (GetParam() == Algorithm::chms) GTEST_SKIP() << "CHMS is the oracle of this test (see chms_test.cpp)";
-  // 1000 pairs per algorithm keeps the executable near a minute in dev (the
-  // cost is in the checks, not the sums); cvms_soak_test runs 100,000.
-  const int pairs = std::getenv("CVMS_RANDOM_PAIRS") ? std::atoi(std::getenv("CVMS_RANDOM_PAIRS")) : 1000;
+  // 2000 pairs per algorithm in the default run (the cost is in the checks,
+  // not the sums); the sanitizer preset lowers it with CVMS_RANDOM_PAIRS, and
+  // cvms_soak_test runs 100,000.
+  const int pairs = std::getenv("CVMS_RANDOM_PAIRS") ? std::atoi(std::getenv("CVMS_RANDOM_PAIRS")) : 2000;
   // How many pairs exercised each degenerate path (the generator is meant to
   // produce them; the counts make sure it keeps doing so).
   int with_edge_ties = 0, with_parallel_facets = 0, with_rejections = 0, with_edge_facets = 0;

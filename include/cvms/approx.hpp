@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Double approximations of exact values with a proven error bound, kept next
-// to the exact values so that predicates can decide in floating point first.
+/// \file
+/// Double approximations of exact values with a proven error bound, kept next
+/// to the exact values so that predicates can decide in floating point first.
 #pragma once
 
 #include "cvms/vec.hpp"
@@ -11,21 +12,31 @@ namespace cvms {
 /// error == 0 means value is the exact number. A non-finite value or error
 /// means "unknown": predicates then go straight to exact arithmetic.
 struct Approx {
-  double value = 0.0;
-  double error = 0.0;
+  double value = 0.0;  ///< the approximation
+  double error = 0.0;  ///< a bound on |value - exact|, >= 0
 
   /// The nearest-or-truncated double of q and a bound that covers both the
   /// rounding and underflow; exact (error 0) when q is a double.
   static Approx of(const Rational& q) noexcept;
 };
 
+/// Approximations of the two coordinates of a Vec2.
 struct ApproxVec2 {
+  ///@{
+  /// The approximations of the coordinates.
   Approx x, y;
+  ///@}
+  /// Approximates each coordinate with Approx::of.
   static ApproxVec2 of(const Vec2& v) noexcept { return {Approx::of(v.x), Approx::of(v.y)}; }
 };
 
+/// Approximations of the three coordinates of a Vec3.
 struct ApproxVec3 {
+  ///@{
+  /// The approximations of the coordinates.
   Approx x, y, z;
+  ///@}
+  /// Approximates each coordinate with Approx::of.
   static ApproxVec3 of(const Vec3& v) noexcept {
     return {Approx::of(v.x), Approx::of(v.y), Approx::of(v.z)};
   }
@@ -33,13 +44,17 @@ struct ApproxVec3 {
 
 /// An exact vector together with its cached approximation. Cheap to pass by
 /// value: it only refers to storage owned elsewhere (typically a polyhedron).
+/// \pre approx approximates exact (ApproxVec2::of(exact) or a tighter bound);
+///   both outlive the reference.
 struct Vec2Ref {
-  const Vec2& exact;
-  const ApproxVec2& approx;
+  const Vec2& exact;          ///< the exact vector
+  const ApproxVec2& approx;   ///< its approximation
 };
+/// The 3D counterpart of Vec2Ref (see ConvexPolyhedron::vertex_ref()).
+/// \pre approx approximates exact; both outlive the reference.
 struct Vec3Ref {
-  const Vec3& exact;
-  const ApproxVec3& approx;
+  const Vec3& exact;          ///< the exact vector
+  const ApproxVec3& approx;   ///< its approximation
 };
 
 }  // namespace cvms

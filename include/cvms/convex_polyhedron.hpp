@@ -1,20 +1,21 @@
 // SPDX-License-Identifier: MIT
-// A validated convex polyhedron: what every Minkowski-sum algorithm takes and
-// returns. Its facets are maximal (no two adjacent facets are coplanar), every
-// vertex is extreme (no vertex inside a facet or on a straight boundary run),
-// faces are oriented counterclockwise seen from outside, and the volume is
-// positive. Each facet stores its exact outward normal, scaled to a primitive
-// integer vector (so equal directions have equal normals), and the plane offset
-// dot(normal, x) = offset; double approximations of vertices and normals with
-// proven error bounds sit next to them for the predicate filters.
-//
-// What construction from a mesh repairs silently: a consistently inward
-// orientation (flipped), coplanar adjacent faces (merged into one facet),
-// vertices inside a facet or on a straight run of its boundary (dropped).
-// What it rejects: mixed orientation, holes, non-manifold parts (topology,
-// from Mesh::from_soup), reflex edges, folds, non-planar or non-convex faces
-// and surfaces that wind around more than once (not_convex), zero-area faces
-// and flat input (degenerate).
+/// \file
+/// A validated convex polyhedron: what every Minkowski-sum algorithm takes and
+/// returns. Its facets are maximal (no two adjacent facets are coplanar), every
+/// vertex is extreme (no vertex inside a facet or on a straight boundary run),
+/// faces are oriented counterclockwise seen from outside, and the volume is
+/// positive. Each facet stores its exact outward normal, scaled to a primitive
+/// integer vector (so equal directions have equal normals), and the plane offset
+/// dot(normal, x) = offset; double approximations of vertices and normals with
+/// proven error bounds sit next to them for the predicate filters.
+///
+/// What construction from a mesh repairs silently: a consistently inward
+/// orientation (flipped), coplanar adjacent faces (merged into one facet),
+/// vertices inside a facet or on a straight run of its boundary (dropped).
+/// What it rejects: mixed orientation, holes, non-manifold parts (topology,
+/// from Mesh::from_soup), reflex edges, folds, non-planar or non-convex faces
+/// and surfaces that wind around more than once (not_convex), zero-area faces
+/// and flat input (degenerate).
 #pragma once
 
 #include <cstdint>
@@ -30,6 +31,20 @@ namespace cvms {
 
 /// A convex polyhedron with maximal facets, extreme vertices and cached
 /// exact and approximate facet planes (see the file comment).
+///
+/// \pre Accessors taking a handle require a valid handle of mesh() (index
+///   below the matching num_*()); this is not checked.
+/// A default-constructed instance is empty (no vertices) and is not a valid
+/// operand of minkowski_sum. Immutable after construction: const member
+/// functions may run concurrently.
+///
+/// \code
+/// cvms::ConvexPolyhedron p = cvms::ConvexPolyhedron::from_soup(cvms::read_file("cube.off"));
+/// for (cvms::FaceId f : p.mesh().faces()) {
+///   const cvms::Vec3& n = p.normal(f);  // exact, primitive integer
+///   // x is inside p  <=>  dot(n, x) <= p.plane_offset(f) for every facet f
+/// }
+/// \endcode
 class ConvexPolyhedron {
  public:
   ConvexPolyhedron() = default;

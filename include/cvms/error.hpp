@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The one exception type the library throws. Every failure says what went
-// wrong and where (file and line or byte offset, or face/edge/vertex index).
+/// \file
+/// The one exception type the library throws. Every failure says what went
+/// wrong and where (file and line or byte offset, or face/edge/vertex index).
 #pragma once
 
 #include <stdexcept>
@@ -26,7 +27,9 @@ const char* to_string(ErrorCategory category) noexcept;
 /// Every exception thrown by cvms. what() is one line: "<category>: <message>".
 class Error : public std::runtime_error {
  public:
+  /// An error of `category`; what() becomes "<category>: <message>".
   Error(ErrorCategory category, const std::string& message);
+  /// The kind of failure, for programs that react differently to each.
   [[nodiscard]] ErrorCategory category() const noexcept { return category_; }
 
  private:

@@ -1,59 +1,60 @@
 // SPDX-License-Identifier: MIT
-// Exact readers and writers for OFF, OBJ and STL. Readers never trust a count
-// in a header for allocation beyond what the input can hold, and report every
-// malformation as Error(parse) naming the source and line (text) or byte
-// offset (binary). Writers write exact coordinates unless asked otherwise.
-//
-// What the readers accept and reject (each case has a test in test/io_*_test.cpp):
-//  - Numbers are parsed exactly (try_parse_rational): integers, decimals with
-//    an optional exponent, and p/q. Any size is accepted ("1e400" is the exact
-//    integer 10^400) up to an exponent of +-100000; a larger exponent, or a
-//    number token longer than ReadLimits::max_number_chars, raises
-//    Error(limit). "nan", "inf" and the like raise Error(parse) naming the line.
-//  - Text formats are line based; '\n' and "\r\n" end lines. Messages name
-//    "<source>:<line>: ..." with 1-based lines, OFF vertices/faces 0-based,
-//    OBJ vertices/faces 1-based (as in the file); binary STL messages name
-//    "<source>: byte <offset>: ...".
-//  - A 0-byte input is Error(parse) "empty input"; one with only blanks and
-//    comments is Error(parse) "unexpected end of input" (OFF, points) or "no
-//    OBJ statements"; an OBJ without any `v` is Error(parse). A header
-//    declaring zero elements is fine and gives an empty soup (Mesh::from_soup
-//    rejects it later). A leading UTF-8 byte order mark is skipped.
-//  - Faces with fewer than 3 vertices and face indices out of range are
-//    Error(parse) naming the line. Repeated indices and other topological
-//    problems are left to Mesh::from_soup.
-//  - A count in a header above ReadLimits raises Error(limit) at once, even
-//    if the input is too short to hold it; a count within the limits that the
-//    input does not hold raises Error(parse) "unexpected end of input" naming
-//    the line. Nothing is reserved beyond a small fixed amount before the data
-//    is actually read.
-//  - OFF: the header keyword is [ST][C][N]OFF (4OFF, nOFF and "OFF BINARY"
-//    are rejected); the counts "V F [E]" may follow on the same line; E is
-//    ignored. One vertex per line: x y z, followed by exactly the values the
-//    prefixes announce (ST: 2, C: 3 or 4, N: 3), which are ignored; a plain OFF
-//    vertex line with a 4th value is rejected (it may be homogeneous). One face
-//    per line: n i_1 .. i_n, then up to 4 numeric color values (ignored).
-//    After the last face only blanks and comments may follow; anything else
-//    is rejected (a header that undercounts is not silently truncated).
-//  - OBJ: `v x y z`, `v x y z w` with w exactly 1 (any other w is rejected,
-//    since OBJ's w is a rational-curve weight, not a homogeneous divisor),
-//    `v x y z r g b` (colors ignored). `f` takes i, i/t, i//n, i/t/n with
-//    positive (possibly forward) or negative (relative) indices, never 0.
-//    vt, vn, vp, g, o, s, mg, usemtl, mtllib, usemap, maplib, l, p, bevel,
-//    c_interp, d_interp, lod, shadow_obj, trace_obj, call are ignored;
-//    free-form geometry (cstype, curv, surf, ...) and unknown statements are
-//    rejected. Line continuation with '\' is not supported.
-//  - STL: the input is read whole (bounded by max_bytes). It is binary iff it
-//    is at least 84 bytes long and exactly 84 + 50 n bytes for the n in its
-//    header, even if the header starts with "solid"; otherwise it is ASCII if
-//    it starts with "solid", else a binary file whose size does not match its
-//    count (Error(parse) naming the byte offset where it is truncated or where
-//    the extra bytes start). Non-finite float32 coordinates are rejected; the
-//    normals and attribute bytes are ignored. ASCII keywords are matched
-//    case-insensitively; several solids in one file are concatenated.
-//  - Memory stays within a small multiple of the input size and of
-//    max_bytes: a line is buffered whole, so a single 100 MB line costs about
-//    100-200 MB (set max_bytes lower to refuse such inputs early).
+/// \file
+/// Exact readers and writers for OFF, OBJ and STL. Readers never trust a count
+/// in a header for allocation beyond what the input can hold, and report every
+/// malformation as Error(parse) naming the source and line (text) or byte
+/// offset (binary). Writers write exact coordinates unless asked otherwise.
+///
+/// What the readers accept and reject (each case has a test in test/io_*_test.cpp):
+///  - Numbers are parsed exactly (try_parse_rational): integers, decimals with
+///    an optional exponent, and p/q. Any size is accepted ("1e400" is the exact
+///    integer 10^400) up to an exponent of +-100000; a larger exponent, or a
+///    number token longer than ReadLimits::max_number_chars, raises
+///    Error(limit). "nan", "inf" and the like raise Error(parse) naming the line.
+///  - Text formats are line based; '\n' and "\r\n" end lines. Messages name
+///    "<source>:<line>: ..." with 1-based lines, OFF vertices/faces 0-based,
+///    OBJ vertices/faces 1-based (as in the file); binary STL messages name
+///    "<source>: byte <offset>: ...".
+///  - A 0-byte input is Error(parse) "empty input"; one with only blanks and
+///    comments is Error(parse) "unexpected end of input" (OFF, points) or "no
+///    OBJ statements"; an OBJ without any `v` is Error(parse). A header
+///    declaring zero elements is fine and gives an empty soup (Mesh::from_soup
+///    rejects it later). A leading UTF-8 byte order mark is skipped.
+///  - Faces with fewer than 3 vertices and face indices out of range are
+///    Error(parse) naming the line. Repeated indices and other topological
+///    problems are left to Mesh::from_soup.
+///  - A count in a header above ReadLimits raises Error(limit) at once, even
+///    if the input is too short to hold it; a count within the limits that the
+///    input does not hold raises Error(parse) "unexpected end of input" naming
+///    the line. Nothing is reserved beyond a small fixed amount before the data
+///    is actually read.
+///  - OFF: the header keyword is [ST][C][N]OFF (4OFF, nOFF and "OFF BINARY"
+///    are rejected); the counts "V F [E]" may follow on the same line; E is
+///    ignored. One vertex per line: x y z, followed by exactly the values the
+///    prefixes announce (ST: 2, C: 3 or 4, N: 3), which are ignored; a plain OFF
+///    vertex line with a 4th value is rejected (it may be homogeneous). One face
+///    per line: n i_1 .. i_n, then up to 4 numeric color values (ignored).
+///    After the last face only blanks and comments may follow; anything else
+///    is rejected (a header that undercounts is not silently truncated).
+///  - OBJ: `v x y z`, `v x y z w` with w exactly 1 (any other w is rejected,
+///    since OBJ's w is a rational-curve weight, not a homogeneous divisor),
+///    `v x y z r g b` (colors ignored). `f` takes i, i/t, i//n, i/t/n with
+///    positive (possibly forward) or negative (relative) indices, never 0.
+///    vt, vn, vp, g, o, s, mg, usemtl, mtllib, usemap, maplib, l, p, bevel,
+///    c_interp, d_interp, lod, shadow_obj, trace_obj, call are ignored;
+///    free-form geometry (cstype, curv, surf, ...) and unknown statements are
+///    rejected. Line continuation with '\' is not supported.
+///  - STL: the input is read whole (bounded by max_bytes). It is binary iff it
+///    is at least 84 bytes long and exactly 84 + 50 n bytes for the n in its
+///    header, even if the header starts with "solid"; otherwise it is ASCII if
+///    it starts with "solid", else a binary file whose size does not match its
+///    count (Error(parse) naming the byte offset where it is truncated or where
+///    the extra bytes start). Non-finite float32 coordinates are rejected; the
+///    normals and attribute bytes are ignored. ASCII keywords are matched
+///    case-insensitively; several solids in one file are concatenated.
+///  - Memory stays within a small multiple of the input size and of
+///    max_bytes: a line is buffered whole, so a single 100 MB line costs about
+///    100-200 MB (set max_bytes lower to refuse such inputs early).
 #pragma once
 
 #include <cstdint>
@@ -79,20 +80,37 @@ struct ReadLimits {
   std::uint64_t max_number_chars = std::uint64_t{1} << 20;
 };
 
-enum class FileFormat { off, obj, stl };
+/// The mesh file formats cvms reads and writes.
+enum class FileFormat {
+  off,  ///< Object File Format (.off), the exact format of choice
+  obj,  ///< Wavefront OBJ (.obj), vertices and faces only
+  stl   ///< STL (.stl): ASCII or binary on input, binary float32 on output
+};
 
 /// The format named by a path's extension (.off .obj .stl, any case).
 /// \throw Error(invalid_argument) for anything else.
 FileFormat format_from_extension(const std::filesystem::path& path);
 
-/// Readers. `source` names the input in error messages (a file name, "<stdin>").
+/// Reads an OFF mesh (see the file comment for what is accepted).
+/// `source` names the input in error messages (a file name, "<stdin>").
+/// \throw Error(parse) naming source and line for malformed input;
+/// \throw Error(limit) when a count or number exceeds `limits`.
+/// Complexity: linear in the input size (number parsing is exact).
 PolygonSoup read_off(std::istream& in, std::string_view source, const ReadLimits& limits = {});
+/// Reads the vertices and faces of an OBJ file; as read_off otherwise.
+/// \throw Error(parse), Error(limit) as read_off; lines and indices are 1-based.
 PolygonSoup read_obj(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 /// ASCII or binary STL (detected from the content); float32 coordinates are
 /// converted exactly; vertices shared between triangles are merged by exact position.
+/// \throw Error(parse) naming the line (ASCII) or byte offset (binary);
+/// \throw Error(limit) beyond `limits` (the input is read whole, up to max_bytes).
+/// Complexity: expected linear in the input size (vertices merged by hashing).
 PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits = {});
+/// Dispatches to read_off, read_obj or read_stl; their errors.
 PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits = {});
-/// Reads a file in the format of its extension. \throw Error(io) if it cannot be opened.
+/// Reads a file in the format of its extension, naming it in error messages.
+/// \throw Error(invalid_argument) for an unknown extension (format_from_extension);
+/// \throw Error(io) if it cannot be opened; the reader's errors otherwise.
 PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limits = {});
 
 /// Points only, for hulls: OFF/OBJ vertices or one "x y z" per line
@@ -100,8 +118,10 @@ PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limit
 /// token: an OFF keyword, an OBJ statement (v, vt, vn, f, o, g, s, mtllib,
 /// usemtl), or else a point list. An OFF or OBJ input is read whole (faces
 /// are checked like read_off/read_obj do, then dropped).
+/// \throw Error(parse), Error(limit) as the readers.
 std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 
+/// How writers print coordinates.
 enum class Coordinates {
   exact,   ///< exact decimals or p/q, see to_string(const Rational&)
   double_  ///< the nearest double, printed as the shortest decimal that parses
@@ -109,17 +129,30 @@ enum class Coordinates {
            ///< is that decimal exactly ("0.1" is 1/10), not the double itself.
 };
 
-/// Writers take any soup whose faces have >= 3 indices, all in range
-/// (\throw Error(invalid_argument) otherwise, and when Coordinates::double_
-/// or the float32 of STL cannot hold a coordinate). Numbers are formatted
-/// without the stream's locale, so the bytes depend only on the soup.
+/// Writes an OFF file: the header, one "x y z" line per point, one
+/// "n i_1 .. i_n" line per face. Writers take any soup whose faces have >= 3
+/// indices, all in range. Numbers are formatted without the stream's locale,
+/// so the bytes depend only on the soup; with Coordinates::exact, reading the
+/// output back gives the same soup exactly.
+/// \throw Error(invalid_argument) for a face with fewer than 3 indices or an
+///   index out of range, and for a coordinate beyond the double range with
+///   Coordinates::double_;
 /// \throw Error(io) if the stream fails.
+/// Complexity: linear in the size of the output.
 void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
+/// Writes `v x y z` and `f i j k ...` lines (1-based indices); as write_off otherwise.
+/// \throw Error(invalid_argument), Error(io) as write_off.
 void write_obj(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
 /// Binary STL with fan-triangulated faces (float32, so always rounded).
+/// \throw Error(invalid_argument) as write_off, and for a coordinate beyond
+///   the float32 range; \throw Error(io) if the stream fails.
 void write_stl(std::ostream& out, const PolygonSoup& soup);
+/// Dispatches to write_off, write_obj or write_stl (which ignores
+/// `coordinates`); their errors.
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
+/// Writes a file in the format of its extension (format_from_extension).
+/// \throw Error(invalid_argument) for an unknown extension or as the writers;
 /// \throw Error(io) if the file cannot be written.
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup,
                 Coordinates coordinates = Coordinates::exact);

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Index-based half-edge mesh of a closed, consistently oriented 2-manifold
-// polygon surface. Connectivity lives in plain arrays owned by the mesh;
-// handles are typed 32-bit indices. Halfedges come in pairs: twin(h) = h ^ 1
-// and the undirected edge of h is h >> 1. Faces are oriented counterclockwise
-// seen from outside (for a closed surface: the orientation of the input).
+/// \file
+/// Index-based half-edge mesh of a closed, consistently oriented 2-manifold
+/// polygon surface. Connectivity lives in plain arrays owned by the mesh;
+/// handles are typed 32-bit indices. Halfedges come in pairs: twin(h) = h ^ 1
+/// and the undirected edge of h is h >> 1. Faces are oriented counterclockwise
+/// seen from outside (for a closed surface: the orientation of the input).
 #pragma once
 
 #include <cstdint>
@@ -130,6 +131,10 @@ class HalfedgeCirculator {
 
 /// A closed, consistently oriented 2-manifold polygon mesh (see the file
 /// comment). Immutable once built; copy and move are cheap array copies/moves.
+///
+/// \pre Accessors taking a handle require a valid handle of this mesh
+///   (index below the matching num_*()); this is not checked.
+/// Thread-safety: const member functions may run concurrently.
 class Mesh {
  public:
   Mesh() = default;

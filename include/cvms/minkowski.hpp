@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The Minkowski sum of two convex polyhedra: one entry point, three algorithms.
+/// \file
+/// The Minkowski sum of two convex polyhedra: one entry point, three algorithms.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,9 @@
 
 namespace cvms {
 
+/// Which algorithm minkowski_sum runs. All three compute the same exact
+/// polyhedron (same vertex and facet sets; the numbering may differ); they
+/// differ in speed.
 enum class Algorithm {
   cvms,    ///< contributing vertices (paper Section 4)
   essdms,  ///< slope diagrams with contributing vertices (paper Section 5.2)
@@ -52,9 +56,10 @@ struct Stats {
   std::uint64_t predicate_exact = 0;     ///< predicate calls that needed exact arithmetic
 };
 
+/// The sum and how it was computed.
 struct MinkowskiResult {
-  ConvexPolyhedron polyhedron;
-  Stats stats;
+  ConvexPolyhedron polyhedron;  ///< A + B, with maximal facets and extreme vertices
+  Stats stats;                  ///< counters of the algorithm that ran
 };
 
 /// A + B = {a + b : a in A, b in B}. Exact. Thread-safe (no shared state).
@@ -69,6 +74,7 @@ MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron&
 
 /// CHMS: the exact convex hull of all v_A * v_B pairwise vertex sums.
 /// Complexity: O(v_A v_B log(v_A v_B)) expected.
+/// \throw Error(limit) if v_A v_B >= 2^32 - 1 (the hull's 32-bit indices).
 ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
 
 }  // namespace cvms

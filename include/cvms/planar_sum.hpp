@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Minkowski sum of two convex polygons in the plane by convolution: merge the
-// two edge sequences by direction (ccw_in_between, never angles), exact.
+/// \file
+/// Minkowski sum of two convex polygons in the plane by convolution: merge the
+/// two edge sequences by direction (ccw_in_between, never angles), exact.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +33,15 @@ using IndexPair = std::pair<std::uint32_t, std::uint32_t>;
 /// Complexity: O(|p| + |q|) predicates, O(|p| + |q|) memory.
 std::vector<IndexPair> planar_sum_indices(std::span<const Vec2> p, std::span<const Vec2> q);
 
-/// The same sum as points.
+/// The same sum as points: p[i] + q[j] for each pair of planar_sum_indices.
+/// \throw Error(invalid_argument) as planar_sum_indices.
+/// Complexity: as planar_sum_indices.
+///
+/// \code
+/// std::vector<cvms::Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+/// std::vector<cvms::Vec2> triangle{{0, 0}, {1, 0}, {0, 1}};
+/// auto sum = cvms::planar_sum(square, triangle);  // 5 vertices, from (0, 0)
+/// \endcode
 std::vector<Vec2> planar_sum(std::span<const Vec2> p, std::span<const Vec2> q);
 
 }  // namespace cvms

@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
-// Every sign decision of the library. Each predicate first evaluates its
-// polynomial in double with a running error bound (inputs carry their own
-// bound, see approx.hpp; each operation adds its rounding and a term for
-// underflow), answers when |value| > bound, and otherwise falls back to exact
-// rational evaluation. The answer is therefore always the exact sign.
-//
-// The Vec3Ref overloads use cached approximations; the plain overloads build
-// them on the fly (slower, same answer).
+/// \file
+/// Every sign decision of the library. Each predicate first evaluates its
+/// polynomial in double with a running error bound (inputs carry their own
+/// bound, see approx.hpp; each operation adds its rounding and a term for
+/// underflow), answers when |value| > bound, and otherwise falls back to exact
+/// rational evaluation. The answer is therefore always the exact sign.
+///
+/// Cost: O(1) double operations when the filter answers; otherwise exact GMP
+/// arithmetic, whose cost grows with the bit length of the inputs.
+/// Thread-safe: no shared state (the counters are per thread).
+///
+/// The Vec3Ref overloads use cached approximations; the plain overloads build
+/// them on the fly (slower, same answer).
 #pragma once
 
 #include <cstdint>
@@ -16,9 +21,16 @@
 
 namespace cvms {
 
-enum class Sign : int { negative = -1, zero = 0, positive = 1 };
+/// The exact sign of a quantity; converts to the int -1, 0 or 1 by static_cast.
+enum class Sign : int {
+  negative = -1,  ///< < 0
+  zero = 0,       ///< == 0
+  positive = 1    ///< > 0
+};
 
+/// The sign of an int (e.g. of gmpxx's sgn() or cmp()).
 inline Sign sign_of(int s) noexcept { return s < 0 ? Sign::negative : (s > 0 ? Sign::positive : Sign::zero); }
+/// The opposite sign (zero stays zero).
 inline Sign operator-(Sign s) noexcept { return static_cast<Sign>(-static_cast<int>(s)); }
 
 /// How often the floating-point filter answered and how often exact
@@ -35,14 +47,17 @@ PredicateCounters& predicate_counters() noexcept;
 /// Sign of cross(b - a, c - a) (2D): positive iff a, b, c make a left turn
 /// (counterclockwise), zero iff collinear.
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c);
+/// Same, with the cached approximations of the arguments (faster).
 Sign orient2d(Vec2Ref a, Vec2Ref b, Vec2Ref c);
 
 /// Sign of cross(u, v) (2D, z component): positive iff v is counterclockwise of u.
 Sign sign_cross2(const Vec2& u, const Vec2& v);
+/// Same, with the cached approximations of the arguments (faster).
 Sign sign_cross2(Vec2Ref u, Vec2Ref v);
 
 /// Sign of dot(u, v) (2D): positive iff the angle between u and v is acute.
 Sign sign_dot(const Vec2& u, const Vec2& v);
+/// Same, with the cached approximations of the arguments (faster).
 Sign sign_dot(Vec2Ref u, Vec2Ref v);
 
 /// True iff direction d lies strictly inside the counterclockwise angular
@@ -50,6 +65,7 @@ Sign sign_dot(Vec2Ref u, Vec2Ref v);
 /// nonzero). When d1 and d2 have the same direction the sector is the whole
 /// turn minus that direction. Used to order edges in the planar convolution.
 bool ccw_in_between(const Vec2& d, const Vec2& d1, const Vec2& d2);
+/// Same, with the cached approximations of the arguments (faster).
 bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
 
 /// Sign of dot(b - a, cross(c - a, d - a)) = det[b - a, c - a, d - a]:
@@ -58,15 +74,18 @@ bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
 /// zero iff the four points are coplanar.
 /// (Note the order: det[b-a, c-a, d-a] = dot(cross(b-a, c-a), d-a).)
 Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+/// Same, with the cached approximations of the arguments (faster).
 Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d);
 
 /// Sign of dot(u, v).
 Sign sign_dot(const Vec3& u, const Vec3& v);
+/// Same, with the cached approximations of the arguments (faster).
 Sign sign_dot(Vec3Ref u, Vec3Ref v);
 
 /// Sign of dot(v, n) - dot(w, n): positive iff v is farther than w in the
 /// direction n (the test that picks contributing vertices, paper Eq. 3).
 Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n);
+/// Same, with the cached approximations of the arguments (faster).
 Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
 
 /// Sign of dot(p, n) - offset: positive iff p is strictly above the plane
@@ -78,12 +97,14 @@ Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_a
 
 /// Sign of the triple product det[u, v, w] = dot(u, cross(v, w)).
 Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w);
+/// Same, with the cached approximations of the arguments (faster).
 Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
 
 /// True iff cross(u, v) == 0 (u, v parallel or one of them zero). Exact; the
 /// filter can only prove "not parallel", so a true answer always costs an
 /// exact evaluation.
 bool is_parallel(const Vec3& u, const Vec3& v);
+/// Same, with the cached approximations of the arguments (faster).
 bool is_parallel(Vec3Ref u, Vec3Ref v);
 
 }  // namespace cvms

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Exact 3D convex hull (quickhull) over the predicates module.
+/// \file
+/// Exact 3D convex hull (quickhull) over the predicates module.
 #pragma once
 
 #include <span>

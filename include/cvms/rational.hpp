@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Exact rational numbers (GMP's mpq_class) and their exact text and double
-// conversions. Nothing here ever rounds unless its name says so.
+/// \file
+/// Exact rational numbers (GMP's mpq_class) and their exact text and double
+/// conversions. Nothing here ever rounds unless its name says so.
 #pragma once
 
 #include <gmpxx.h>
@@ -9,8 +10,11 @@
 #include <string>
 #include <string_view>
 
+/// Exact Minkowski sums of convex polyhedra.
 namespace cvms {
 
+/// An exact rational number: GMP's mpq_class, always kept in lowest terms.
+/// Arithmetic and comparison are gmpxx's; values grow as needed, never round.
 using Rational = mpq_class;
 
 /// Parses a number exactly. Accepts integers ("-12"), decimals with optional

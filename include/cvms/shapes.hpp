@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The paper's benchmark shapes and other generators, all exact.
+/// \file
+/// The paper's benchmark shapes and other generators, all exact.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/vec.hpp"
 
+/// The paper's benchmark shapes and other generators, all exact.
 namespace cvms::shapes {
 
 /// Regular tetrahedron with vertices (1,1,1), (1,-1,-1), (-1,1,-1), (-1,-1,1).

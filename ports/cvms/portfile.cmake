@@ -17,6 +17,7 @@ vcpkg_cmake_configure(
     -DCVMS_BUILD_TESTS=OFF
     -DCVMS_BUILD_BENCHMARKS=OFF
     -DCVMS_BUILD_TOOLS=OFF
+    -DCVMS_BUILD_EXAMPLES=OFF
     -DCVMS_WARNINGS_AS_ERRORS=OFF
 )
 vcpkg_cmake_install()

@@ -56,7 +56,6 @@ void run_check(const std::string& input, std::ostream& report);
 
 struct DemoArgs {
   Algorithm algorithm = Options{}.algorithm;
-  bool algorithm_given = false;
 };
 /// Cube + Sphere4 with counts, algorithm and wall time printed to report.
 void run_demo(const DemoArgs& args, std::ostream& report);

@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
 
   DemoArgs demo;
   CLI::App* demo_cmd = app.add_subcommand("demo", "Cube + Sphere4 with counts and time");
-  CLI::Option* demo_algorithm_opt = add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
+  add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
 
   try {
     app.parse(argc, argv);
@@ -111,10 +111,8 @@ int main(int argc, char** argv) {
       run_gen(gen);
     } else if (*check_cmd)
       run_check(check_input, std::cout);
-    else if (*demo_cmd) {
-      demo.algorithm_given = demo_algorithm_opt->count() > 0;
+    else if (*demo_cmd)
       run_demo(demo, std::cout);
-    }
   } catch (const UsageError& e) {
     std::cerr << "cvms: " << one_line(e.what()) << "\nRun with --help for more information.\n";
     return exit_usage;
