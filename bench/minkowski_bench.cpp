@@ -198,10 +198,16 @@ void small_family_args(benchmark::internal::Benchmark* b) {
 }
 
 void BM_CVMS_SphereRot(benchmark::State& state) { run_family(state, Family::sphere_rotated, {}); }
-void BM_CVMS_paper_SphereRot(benchmark::State& state) { run_family(state, Family::sphere_rotated, paper_cvms()); }
+void BM_CVMS_paper_SphereRot(benchmark::State& state) {
+  run_family(state, Family::sphere_rotated, paper_cvms());
+}
 void BM_CVMS_CubeSphere(benchmark::State& state) { run_family(state, Family::cube_sphere, {}); }
-void BM_Limit_Mesh_SphereRot(benchmark::State& state) { run_output_only(state, Family::sphere_rotated, false); }
-void BM_Limit_Build_SphereRot(benchmark::State& state) { run_output_only(state, Family::sphere_rotated, true); }
+void BM_Limit_Mesh_SphereRot(benchmark::State& state) {
+  run_output_only(state, Family::sphere_rotated, false);
+}
+void BM_Limit_Build_SphereRot(benchmark::State& state) {
+  run_output_only(state, Family::sphere_rotated, true);
+}
 void BM_Limit_Mesh_CubeSphere(benchmark::State& state) { run_output_only(state, Family::cube_sphere, false); }
 void BM_Limit_Build_CubeSphere(benchmark::State& state) { run_output_only(state, Family::cube_sphere, true); }
 BENCHMARK(BM_CVMS_SphereRot)->Apply(family_args);

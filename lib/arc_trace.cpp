@@ -77,8 +77,8 @@ HalfedgeId halfedge_between(const Mesh& m, FaceId f, VertexId u, VertexId w) {
 }  // namespace
 
 void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
-                       std::span<const VertexId> c1, std::span<const VertexId> c2, std::vector<HalfedgeId>& out,
-                       std::uint64_t& steps) {
+                       std::span<const VertexId> c1, std::span<const VertexId> c2,
+                       std::vector<HalfedgeId>& out, std::uint64_t& steps) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   const Vec3 da = a.edge_vector(ha);
@@ -88,8 +88,8 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
   auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
   if (c1.empty() || c2.empty()) inconsistent(ha, "has no contributing vertices");
 
-  VertexId u;       // the current maximiser, when valid
-  FaceId event;     // the current facet point event, when valid
+  VertexId u;    // the current maximiser, when valid
+  FaceId event;  // the current facet point event, when valid
   if (c1.size() == 1) {
     u = c1[0];
   } else {
@@ -111,7 +111,8 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
           if (mb.to(g) == c1[1]) h = g;
         if (!h.is_valid()) inconsistent(ha, "starts on an edge of B that does not exist");
         // The arc of h runs from n(face(h)) to n(face(twin(h))) ccw about d_h.
-        event = sign_dot(Vec3Ref{d, d_approx}, da_ref) == Sign::positive ? mb.face(Mesh::twin(h)) : mb.face(h);
+        event =
+            sign_dot(Vec3Ref{d, d_approx}, da_ref) == Sign::positive ? mb.face(Mesh::twin(h)) : mb.face(h);
       }
     } else {
       event = facet_with_normal(b, c1[0], a.normal(f1));

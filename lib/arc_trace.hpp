@@ -26,7 +26,7 @@ namespace cvms::detail {
 ///   operand that breaks the ConvexPolyhedron guarantees).
 /// Cost: O(the degrees of the vertices of b the arc passes) predicates.
 void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
-                       std::span<const VertexId> c1, std::span<const VertexId> c2, std::vector<HalfedgeId>& out,
-                       std::uint64_t& steps);
+                       std::span<const VertexId> c1, std::span<const VertexId> c2,
+                       std::vector<HalfedgeId>& out, std::uint64_t& steps);
 
 }  // namespace cvms::detail

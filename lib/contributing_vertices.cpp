@@ -63,9 +63,10 @@ namespace {
 
 [[noreturn]] void invalid_ties(FaceId f, VertexId v, std::size_t ties) {
   throw Error(ErrorCategory::invalid_argument,
-              "minkowski_sum: operand is not a valid ConvexPolyhedron: the maximiser " + std::to_string(v.index()) +
-                  " for the normal of facet " + std::to_string(f.index()) + " of the other operand has " +
-                  std::to_string(ties) + " tied neighbours but no facet with that normal");
+              "minkowski_sum: operand is not a valid ConvexPolyhedron: the maximiser " +
+                  std::to_string(v.index()) + " for the normal of facet " + std::to_string(f.index()) +
+                  " of the other operand has " + std::to_string(ties) +
+                  " tied neighbours but no facet with that normal");
 }
 
 // The contributing vertices of q for direction n (the normal of facet f of
@@ -137,8 +138,8 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
   }
   if (queue.size() != nf)
     throw Error(ErrorCategory::invalid_argument, "minkowski_sum: operand is not connected (" +
-                                                     std::to_string(queue.size()) + " of " + std::to_string(nf) +
-                                                     " facets reachable)");
+                                                     std::to_string(queue.size()) + " of " +
+                                                     std::to_string(nf) + " facets reachable)");
 }
 
 }  // namespace cvms::detail

@@ -38,9 +38,7 @@ class ContributingVertices {
   explicit ContributingVertices(std::uint32_t num_facets) { ranges_.reserve(num_facets); }
 
   /// Appends the (sorted) list of the next facet.
-  void append(std::span<const VertexId> sorted_vertices) {
-    ranges_.push_back(push(sorted_vertices));
-  }
+  void append(std::span<const VertexId> sorted_vertices) { ranges_.push_back(push(sorted_vertices)); }
   /// Sets the (sorted) list of facet f; facets below f not yet set get empty lists.
   void assign(FaceId f, std::span<const VertexId> sorted_vertices) {
     if (f.index() >= ranges_.size()) ranges_.resize(f.index() + 1u);
@@ -50,7 +48,9 @@ class ContributingVertices {
     const Range r = ranges_[f.index()];
     return {vertices_.data() + r.begin, r.size};
   }
-  [[nodiscard]] std::uint32_t num_facets() const noexcept { return static_cast<std::uint32_t>(ranges_.size()); }
+  [[nodiscard]] std::uint32_t num_facets() const noexcept {
+    return static_cast<std::uint32_t>(ranges_.size());
+  }
 
  private:
   struct Range {
@@ -58,7 +58,8 @@ class ContributingVertices {
     std::uint32_t size = 0;
   };
   Range push(std::span<const VertexId> sorted_vertices) {
-    const Range r{static_cast<std::uint32_t>(vertices_.size()), static_cast<std::uint32_t>(sorted_vertices.size())};
+    const Range r{static_cast<std::uint32_t>(vertices_.size()),
+                  static_cast<std::uint32_t>(sorted_vertices.size())};
     vertices_.insert(vertices_.end(), sorted_vertices.begin(), sorted_vertices.end());
     return r;
   }

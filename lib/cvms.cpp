@@ -142,7 +142,8 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
                 "minkowski_sum: unknown contributing vertex search " +
                     std::to_string(static_cast<int>(options.contributing_vertex_search)));
   }
-  if (options.edge_facet_search != EdgeFacetSearch::paper && options.edge_facet_search != EdgeFacetSearch::walk) {
+  if (options.edge_facet_search != EdgeFacetSearch::paper &&
+      options.edge_facet_search != EdgeFacetSearch::walk) {
     throw Error(ErrorCategory::invalid_argument,
                 "minkowski_sum: unknown edge facet search " +
                     std::to_string(static_cast<int>(options.edge_facet_search)));

@@ -124,8 +124,8 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
   } else {
     for (int i = 3; i >= 0; --i) pairs_.push_back(cycle[i]);
   }
-  close_facet({orientation == Sign::positive ? NormalKind::edges_positive : NormalKind::edges_negative, ha.index(),
-               hb.index()});
+  close_facet({orientation == Sign::positive ? NormalKind::edges_positive : NormalKind::edges_negative,
+               ha.index(), hb.index()});
 }
 
 PolygonSoup SumFacetBuilder::soup() const {

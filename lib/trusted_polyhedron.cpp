@@ -35,7 +35,8 @@ Rational integer_dot(const Vec3& n, const Vec3& p, mpz_class& l, mpz_class& sum,
 ConvexPolyhedron ConvexPolyhedronAccess::from_trusted_soup(PolygonSoup soup, std::vector<Vec3> normals) {
   if (normals.size() != soup.num_faces())
     throw Error(ErrorCategory::invalid_argument, "from_trusted_soup: " + std::to_string(normals.size()) +
-                                                     " normals for " + std::to_string(soup.num_faces()) + " faces");
+                                                     " normals for " + std::to_string(soup.num_faces()) +
+                                                     " faces");
   ConvexPolyhedron p;
   p.mesh_ = Mesh::from_soup(std::move(soup));
   const Mesh& m = p.mesh_;

@@ -33,7 +33,8 @@ bool strictly_inside_arc(const ConvexPolyhedron& p, HalfedgeId h, const Vec3& x)
 
 // The halfedges g of b whose arcs the arc of ha properly crosses, oriented so
 // that cross(d_A, d_g) is the crossing point; sorted.
-std::vector<HalfedgeId> brute_force_crossings(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b) {
+std::vector<HalfedgeId> brute_force_crossings(const ConvexPolyhedron& a, HalfedgeId ha,
+                                              const ConvexPolyhedron& b) {
   std::vector<HalfedgeId> out;
   const Vec3 da = a.edge_vector(ha);
   for (HalfedgeId g : b.mesh().halfedges()) {

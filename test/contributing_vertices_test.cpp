@@ -96,7 +96,6 @@ TEST(ContributingVertices, StoredPerFacet) {
   EXPECT_EQ(cv.of(FaceId(2))[0], VertexId(3));
 }
 
-
 // The walk (BFS over facets + hill-climbing) against the brute-force maxima,
 // on tie-heavy pairs: every facet of p with the maximisers of its normal.
 void expect_walk_matches_brute_force(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
@@ -128,7 +127,7 @@ TEST(ContributingVerticesWalk, TieHeavyPairsMatchBruteForce) {
   const auto side = shapes::prism(5, 2).transformed(quarter_turn_x(), {});
   const auto tc = shapes::truncated_cube();
   const std::vector<std::pair<const ConvexPolyhedron*, const ConvexPolyhedron*>> pairs = {
-      {&cube, &cube}, {&s2, &s2},   {&p6, &p6},   {&p6, &p8},  {&p8, &side},
+      {&cube, &cube}, {&s2, &s2},   {&p6, &p6},   {&p6, &p8},   {&p8, &side},
       {&side, &p6},   {&cube, &tc}, {&tc, &cube}, {&cube, &s2}, {&s2, &cube}};
   for (const auto& [p, q] : pairs) expect_walk_matches_brute_force(*p, *q);
   const auto r3 = shapes::rotated_geodesic_sphere(3);

@@ -145,10 +145,10 @@ INSTANTIATE_TEST_SUITE_P(AllAlgorithms, Cvms,
                                            Variant{Algorithm::essdms}, Variant{Algorithm::chms}),
                          param_name);
 
-#define EXPECT_SUM(a, b, expected)                                         \
-  do {                                                                     \
-    EXPECT_EQ(test::check_sum((a), (b), (expected), options()), "");      \
-    EXPECT_EQ(modes_agree((a), (b)), "");                                  \
+#define EXPECT_SUM(a, b, expected)                                   \
+  do {                                                               \
+    EXPECT_EQ(test::check_sum((a), (b), (expected), options()), ""); \
+    EXPECT_EQ(modes_agree((a), (b)), "");                            \
   } while (false)
 
 // The rhombic dodecahedron: 12 rhombi with normals (+-1, +-1, 0) and

@@ -83,8 +83,13 @@ struct MinkowskiResult {
 };
 
 /// A + B = {a + b : a in A, b in B}. Exact. Thread-safe (no shared state).
-/// CVMS with the paper's search costs O(f_A v_B + f_B v_A + e_A' (f_B + e_B'))
-/// predicates, e' counting the edges that pass Property 1, plus the output;
+/// CVMS with the paper's search ({scan, paper}) costs O(f_A v_B + f_B v_A +
+/// e_A' (f_B + e_B')) predicates, e' counting the edges that pass Property 1,
+/// plus the output; with the default walks it costs O(f_A + f_B + e_A' + k)
+/// predicates times the vertex degrees met (k = the output facets), plus the
+/// climbs between neighbouring facets' answers (short for operands of
+/// similar resolution; O(v) in the worst case); both modes build the
+/// identical polyhedron;
 /// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
 /// \throw Error(invalid_argument) for an empty (default-constructed) operand
 ///   or an unknown option value;
