@@ -14,6 +14,7 @@
 #include "contributing_vertices.hpp"
 #include "cvms/quickhull.hpp"
 #include "cvms/shapes.hpp"
+#include "support/hand_solids.hpp"
 #include "support/random_clouds.hpp"
 
 namespace cvms::detail {
@@ -75,19 +76,8 @@ std::size_t expect_walk_matches_brute_force(const ConvexPolyhedron& a, const Con
   return found;
 }
 
-Vec3 v3(const Rational& x, const Rational& y, const Rational& z) { return {x, y, z}; }
-
 ConvexPolyhedron rhombic_dodecahedron() {
-  std::vector<Vec3> pts;
-  for (int x : {-1, 1})
-    for (int y : {-1, 1})
-      for (int z : {-1, 1}) pts.push_back(v3(x, y, z));
-  for (int s : {-2, 2}) {
-    pts.push_back(v3(s, 0, 0));
-    pts.push_back(v3(0, s, 0));
-    pts.push_back(v3(0, 0, s));
-  }
-  return convex_hull(pts);
+  return convex_hull(test::rhombic_dodecahedron_points());
 }
 
 TEST(ArcTrace, CubePlusCubeAndAPlusAHaveNoCrossings) {

@@ -26,6 +26,7 @@
 #include "cvms/minkowski.hpp"
 #include "cvms/quickhull.hpp"
 #include "cvms/shapes.hpp"
+#include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"
 #include "support/oracle.hpp"
 #include "support/random_clouds.hpp"
@@ -155,16 +156,7 @@ INSTANTIATE_TEST_SUITE_P(AllAlgorithms, Cvms,
 // permutations. Every Gaussian arc of the cube passes through one of its
 // facet normals.
 ConvexPolyhedron rhombic_dodecahedron() {
-  std::vector<Vec3> pts;
-  for (int x : {-1, 1})
-    for (int y : {-1, 1})
-      for (int z : {-1, 1}) pts.push_back(v3(x, y, z));
-  for (int s : {-2, 2}) {
-    pts.push_back(v3(s, 0, 0));
-    pts.push_back(v3(0, s, 0));
-    pts.push_back(v3(0, 0, s));
-  }
-  return hull(pts);
+  return hull(test::rhombic_dodecahedron_points());
 }
 
 // ---------------------------------------------------------------------------

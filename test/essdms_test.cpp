@@ -12,13 +12,13 @@
 #include "cvms/minkowski.hpp"
 #include "cvms/quickhull.hpp"
 #include "cvms/shapes.hpp"
+#include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"
 #include "support/random_clouds.hpp"
 
 namespace cvms {
 namespace {
 
-Vec3 v3(const Rational& x, const Rational& y, const Rational& z) { return {x, y, z}; }
 
 MinkowskiResult essdms(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   Options o;
@@ -65,16 +65,7 @@ TEST(Essdms, FacetPointsOnArcs) {
   // (2, 0, 0)). The arcs of the dodecahedron end on cube arcs and never cross
   // one: no edge facet.
   const auto c = shapes::cube();
-  std::vector<Vec3> pts;
-  for (int x : {-1, 1})
-    for (int y : {-1, 1})
-      for (int z : {-1, 1}) pts.push_back(v3(x, y, z));
-  for (int s : {-2, 2}) {
-    pts.push_back(v3(s, 0, 0));
-    pts.push_back(v3(0, s, 0));
-    pts.push_back(v3(0, 0, s));
-  }
-  const auto r = convex_hull(pts);
+  const auto r = convex_hull(test::rhombic_dodecahedron_points());
   const Stats s = essdms(c, r).stats;
   EXPECT_EQ(s.translated_facets, 6u);
   EXPECT_EQ(s.corner_facets, 12u);

@@ -139,4 +139,20 @@ inline PolygonSoup mapped(PolygonSoup s, const Mat3& linear, const Vec3& offset)
   return s;
 }
 
+/// The vertices of the rhombic dodecahedron: (+-1, +-1, +-1) and the
+/// permutations of (+-2, 0, 0). Its 12 facet normals are (+-1, +-1, 0) and
+/// permutations, so every Gaussian arc of the cube passes through one of them.
+inline std::vector<Vec3> rhombic_dodecahedron_points() {
+  std::vector<Vec3> pts;
+  for (long x : {-1, 1})
+    for (long y : {-1, 1})
+      for (long z : {-1, 1}) pts.push_back(v3(x, y, z));
+  for (long s : {-2, 2}) {
+    pts.push_back(v3(s, 0, 0));
+    pts.push_back(v3(0, s, 0));
+    pts.push_back(v3(0, 0, s));
+  }
+  return pts;
+}
+
 }  // namespace cvms::test
