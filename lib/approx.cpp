@@ -50,8 +50,12 @@ Approx Approx::of(const Rational& q) noexcept {
       return {mpz_sgn(num) < 0 ? -v : v, v * 0x1p-53};
     }
   }
-  if (is_double_exact_fast(q)) return {q.get_d(), 0.0};  // truncation of a double is itself
-  double d = q.get_d();
+  // Integers (the primitive normals of edge facets reach 2^125): mpz_get_d
+  // truncates toward zero too, without mpq_get_d's division.
+  const bool integer = mpz_cmp_ui(den, 1) == 0;
+  if (is_double_exact_fast(q))
+    return {integer ? mpz_get_d(num) : q.get_d(), 0.0};  // truncation of a double is itself
+  double d = integer ? mpz_get_d(num) : q.get_d();
   if (!std::isfinite(d)) return {d, std::numeric_limits<double>::infinity()};
   return {d, std::fabs(d) * 0x1p-52 + 0x1p-1074};
 }

@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
+#include "dyadic.hpp"
+#include "small_direction.hpp"
 #include "trusted_polyhedron.hpp"
 
 namespace cvms::detail {
@@ -63,6 +65,48 @@ Vec3 primitive_cross(const Vec3& u, const Vec3& v) {
     for (mpz_class& x : c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
   return {Rational(c[0]), Rational(c[1]), Rational(c[2])};
 }
+
+// The primitive directions of the edges of one operand that edge facets use,
+// each computed once (many edge facets share an edge), indexed by edge; the
+// direction is that of the edge's even halfedge. Machine integers when the
+// endpoints are doubles, rationals otherwise.
+class EdgeDirections {
+ public:
+  explicit EdgeDirections(const ConvexPolyhedron& p) : p_(p), state_(p.num_edges(), State::unknown) {}
+
+  // The small direction of h's edge, or nullptr if it has none.
+  const SmallDirection* small(HalfedgeId h) {
+    const std::uint32_t e = Mesh::edge(h).index();
+    if (state_[e] == State::unknown) {
+      if (small_.empty()) small_.resize(state_.size());
+      const Mesh& m = p_.mesh();
+      const HalfedgeId even = Mesh::halfedge(Mesh::edge(h));
+      const auto d = small_primitive_direction(p_.vertex_approx(m.from(even)), p_.vertex_approx(m.to(even)));
+      state_[e] = d ? State::small : State::general;
+      if (d) small_[e] = *d;
+    }
+    return state_[e] == State::small ? &small_[e] : nullptr;
+  }
+
+  // The direction of h's edge as rationals.
+  const Vec3& general(HalfedgeId h) {
+    const std::uint32_t e = Mesh::edge(h).index();
+    if (general_.empty()) general_.resize(state_.size());
+    Vec3& d = general_[e];
+    if (is_zero(d)) {
+      const SmallDirection* s = small(h);
+      d = s != nullptr ? s->to_vec3() : primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+    }
+    return d;
+  }
+
+ private:
+  enum class State : std::uint8_t { unknown, small, general };
+  const ConvexPolyhedron& p_;
+  std::vector<State> state_;
+  std::vector<SmallDirection> small_;
+  std::vector<Vec3> general_;
+};
 
 // A dense pair -> output-index table is used when it is not much larger than
 // the output itself; otherwise a hash map.
@@ -137,7 +181,7 @@ PolygonSoup SumFacetBuilder::soup() const {
   soup.points.reserve(pairs_.size() / 3 + 1);  // each vertex is in at least three facets
 
   auto new_vertex = [&](const VertexPair& p) {
-    soup.points.push_back(a_.vertex(VertexId(p.a)) + b_.vertex(VertexId(p.b)));
+    soup.points.push_back(add(a_.vertex(VertexId(p.a)), b_.vertex(VertexId(p.b))));
     return static_cast<std::uint32_t>(soup.points.size() - 1);
   };
 
@@ -167,16 +211,8 @@ ConvexPolyhedron SumFacetBuilder::build() const {
   PolygonSoup soup = this->soup();
   std::vector<Vec3> normals;
   normals.reserve(normals_.size());
-  // Primitive integer directions of the edges used by edge facets, computed
-  // once per edge rather than once per facet.
-  std::vector<Vec3> dir_a;
-  std::vector<Vec3> dir_b;
-  auto direction = [](std::vector<Vec3>& cache, const ConvexPolyhedron& p, HalfedgeId h) -> const Vec3& {
-    if (cache.empty()) cache.resize(p.num_edges());
-    Vec3& d = cache[Mesh::edge(h).index()];
-    if (is_zero(d)) d = primitive_direction(p.edge_vector(Mesh::halfedge(Mesh::edge(h))));
-    return d;
-  };
+  EdgeDirections directions_a(a_);
+  EdgeDirections directions_b(b_);
   for (const NormalSource& n : normals_) {
     switch (n.kind) {
       case NormalKind::facet_a:
@@ -187,9 +223,13 @@ ConvexPolyhedron SumFacetBuilder::build() const {
         break;
       case NormalKind::edges_positive:
       case NormalKind::edges_negative: {
-        // The cached directions belong to the even halfedge of each edge.
+        // The directions belong to the even halfedge of each edge.
         const HalfedgeId ha(n.index), hb(n.other);
-        Vec3 c = primitive_cross(direction(dir_a, a_, ha), direction(dir_b, b_, hb));
+        const SmallDirection* da = directions_a.small(ha);
+        const SmallDirection* db = directions_b.small(hb);
+        Vec3 c = da != nullptr && db != nullptr
+                     ? primitive_cross(*da, *db)
+                     : primitive_cross(directions_a.general(ha), directions_b.general(hb));
         const bool flip = (n.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
         if (flip) c = -c;
         normals.push_back(std::move(c));

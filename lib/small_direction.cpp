@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// Primitive directions and their cross products in 64/128-bit integers.
+#include "small_direction.hpp"
+
+#include <bit>
+#include <cmath>
+#include <utility>
+
+namespace cvms::detail {
+namespace {
+
+__extension__ using Int128 = __int128;
+__extension__ using Uint128 = unsigned __int128;
+
+int countr_zero(Uint128 x) noexcept {
+  const auto low = static_cast<std::uint64_t>(x);
+  return low != 0 ? std::countr_zero(low) : 64 + std::countr_zero(static_cast<std::uint64_t>(x >> 64));
+}
+
+Uint128 magnitude(Int128 x) noexcept { return x < 0 ? -static_cast<Uint128>(x) : static_cast<Uint128>(x); }
+
+// Binary gcd; gcd(0, x) = x.
+Uint128 gcd(Uint128 a, Uint128 b) noexcept {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  const int shift = countr_zero(a | b);
+  a >>= countr_zero(a);
+  do {
+    b >>= countr_zero(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+
+// Divides the nonzero integer vector v by the gcd of its coordinates.
+void make_primitive(Int128 (&v)[3]) noexcept {
+  const Uint128 g = gcd(gcd(magnitude(v[0]), magnitude(v[1])), magnitude(v[2]));
+  if (g == 1) return;
+  for (Int128& x : v) x /= static_cast<Int128>(g);
+}
+
+Rational rational_of(Int128 x) {
+  if (x >= INT64_MIN && x <= INT64_MAX) return Rational(static_cast<long>(x));
+  const Uint128 m = magnitude(x);
+  const std::uint64_t words[2] = {static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
+  mpz_class z;
+  mpz_import(z.get_mpz_t(), 2, -1, sizeof(std::uint64_t), 0, 0, words);
+  if (x < 0) z = -z;
+  return Rational(z);
+}
+
+// A finite double as mantissa * 2^exponent with |mantissa| < 2^53.
+struct Decomposed {
+  std::int64_t mantissa;
+  int exponent;
+};
+
+Decomposed decompose(double d) noexcept {
+  int e = 0;
+  const double f = std::frexp(d, &e);  // d = f 2^e, 0.5 <= |f| < 1
+  return {static_cast<std::int64_t>(std::ldexp(f, 53)), e - 53};
+}
+
+}  // namespace
+
+Vec3 SmallDirection::to_vec3() const {
+  return {Rational(static_cast<long>(c[0])), Rational(static_cast<long>(c[1])),
+          Rational(static_cast<long>(c[2]))};
+}
+
+std::optional<SmallDirection> small_primitive_direction(const ApproxVec3& from,
+                                                        const ApproxVec3& to) noexcept {
+  const Approx* coordinates[2][3] = {{&from.x, &from.y, &from.z}, {&to.x, &to.y, &to.z}};
+  Decomposed parts[2][3];
+  int lowest = 0;
+  bool any = false;
+  for (int p = 0; p < 2; ++p)
+    for (int i = 0; i < 3; ++i) {
+      const Approx& a = *coordinates[p][i];
+      if (a.error != 0.0 || !std::isfinite(a.value)) return std::nullopt;
+      parts[p][i] = a.value == 0.0 ? Decomposed{0, 0} : decompose(a.value);
+      if (a.value != 0.0) {
+        lowest = any ? std::min(lowest, parts[p][i].exponent) : parts[p][i].exponent;
+        any = true;
+      }
+    }
+  if (!any) return std::nullopt;
+  // Every value is mantissa 2^(exponent - lowest) in units of 2^lowest; with
+  // shifts up to 72 each is below 2^125 and a difference below 2^126.
+  constexpr int max_shift = 72;
+  Int128 d[3];
+  for (int i = 0; i < 3; ++i) {
+    Int128 v[2];
+    for (int p = 0; p < 2; ++p) {
+      const Decomposed& part = parts[p][i];
+      if (part.mantissa == 0) {
+        v[p] = 0;
+        continue;
+      }
+      const int shift = part.exponent - lowest;
+      if (shift > max_shift) return std::nullopt;
+      v[p] = static_cast<Int128>(part.mantissa) * (Int128{1} << shift);
+    }
+    d[i] = v[1] - v[0];
+  }
+  if (d[0] == 0 && d[1] == 0 && d[2] == 0) return std::nullopt;
+  make_primitive(d);
+  constexpr Int128 limit = Int128{1} << 62;
+  SmallDirection result{};
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] >= limit || d[i] <= -limit) return std::nullopt;
+    result.c[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(d[i]);
+  }
+  return result;
+}
+
+Vec3 primitive_cross(const SmallDirection& u, const SmallDirection& v) {
+  // Each product is below 2^124 in magnitude, each difference below 2^125.
+  Int128 c[3];
+  for (int i = 0; i < 3; ++i) {
+    const auto j = static_cast<std::size_t>((i + 1) % 3), k = static_cast<std::size_t>((i + 2) % 3);
+    c[i] = static_cast<Int128>(u.c[j]) * v.c[k] - static_cast<Int128>(u.c[k]) * v.c[j];
+  }
+  make_primitive(c);
+  return {rational_of(c[0]), rational_of(c[1]), rational_of(c[2])};
+}
+
+}  // namespace cvms::detail

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// Machine-integer primitive directions and cross products against the
+// rational primitive_direction (the oracle), including the cases that must
+// fall back: non-doubles, exponents too far apart, coincident points.
+#include "small_direction.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cvms/convex_polyhedron.hpp"
+#include "cvms/rational.hpp"
+
+namespace cvms::detail {
+namespace {
+
+Vec3 exact(double x, double y, double z) {
+  return {rational_from_double(x), rational_from_double(y), rational_from_double(z)};
+}
+
+TEST(SmallDirection, MatchesRationalPrimitiveDirectionOnRandomDoubles) {
+  const std::uint64_t seed = 4242;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> e(-20, 20);
+  int small = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const int scale = e(rng);
+    const Vec3 p = exact(std::ldexp(u(rng), scale), u(rng), i % 7 == 0 ? 0.0 : u(rng));
+    const Vec3 q = exact(std::ldexp(u(rng), scale), i % 5 == 0 ? to_double_nearest(p.y) : u(rng), u(rng));
+    const auto d = small_primitive_direction(ApproxVec3::of(p), ApproxVec3::of(q));
+    if (!d) continue;  // a fallback is always allowed; a wrong answer never
+    ++small;
+    ASSERT_EQ(d->to_vec3(), primitive_direction(q - p)) << "seed " << seed << " i " << i;
+  }
+  EXPECT_GT(small, 1000) << "the fast path should cover most moderate doubles";
+}
+
+TEST(SmallDirection, FallsBackWhereMachineIntegersCannotHoldIt) {
+  const ApproxVec3 origin = ApproxVec3::of(exact(0, 0, 0));
+  EXPECT_FALSE(small_primitive_direction(origin, origin)) << "coincident points have no direction";
+  // 1/3 is not a double: its approximation is not exact.
+  const Vec3 third{Rational(1, 3), Rational(0), Rational(0)};
+  EXPECT_FALSE(small_primitive_direction(origin, ApproxVec3::of(third)));
+  // Exponents 2^100 apart do not fit in 128 bits.
+  EXPECT_FALSE(
+      small_primitive_direction(ApproxVec3::of(exact(1e-30, 0, 0)), ApproxVec3::of(exact(0, 1.0, 0))));
+  // Along an axis the primitive direction is a unit vector whatever the scale.
+  const auto axis = small_primitive_direction(origin, ApproxVec3::of(exact(0, 0, -1e300)));
+  ASSERT_TRUE(axis);
+  EXPECT_EQ(axis->to_vec3(), (Vec3{Rational(0), Rational(0), Rational(-1)}));
+}
+
+TEST(SmallDirection, CrossMatchesRationalPrimitiveCross) {
+  const std::uint64_t seed = 99;
+  std::mt19937_64 rng(seed);
+  // Near the 2^62 limit so that the products need all of 128 bits.
+  std::uniform_int_distribution<std::int64_t> c(-(std::int64_t{1} << 62) + 1, (std::int64_t{1} << 62) - 1);
+  for (int i = 0; i < 500; ++i) {
+    SmallDirection u{{c(rng), c(rng), i % 4 == 0 ? 0 : c(rng)}};
+    SmallDirection v{{c(rng), c(rng), c(rng)}};
+    if (i % 9 == 0) v.c = {u.c[0] / 3 * 3, u.c[1], 7};  // a common factor in the cross product
+    const Vec3 uv = u.to_vec3(), vv = v.to_vec3();
+    const Vec3 expected_cross = cross(uv, vv);
+    if (is_zero(expected_cross)) continue;
+    ASSERT_EQ(primitive_cross(u, v), primitive_direction(expected_cross)) << "seed " << seed << " i " << i;
+  }
+}
+
+}  // namespace
+}  // namespace cvms::detail
