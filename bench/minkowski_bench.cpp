@@ -8,10 +8,9 @@
 // README table.
 #include <benchmark/benchmark.h>
 
-#include <array>
-#include <map>
 #include <string>
 
+#include "bench_operands.hpp"
 #include "cvms.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
@@ -23,32 +22,12 @@ namespace {
 using cvms::Algorithm;
 using cvms::ConvexPolyhedron;
 
-// Operand B of each Table 1 row, in the paper's order.
-constexpr std::array<const char*, 9> kRows = {"Tetra",   "Hedra",   "TruncatedCube", "Sphere1", "Sphere2",
-                                              "Sphere3", "Sphere4", "Sphere5",       "Sphere6"};
-
-const ConvexPolyhedron& operand(int row) {
-  // Built once per process (not per benchmark iteration); benchmarks are single-threaded.
-  static std::map<int, ConvexPolyhedron> cache;
-  auto it = cache.find(row);
-  if (it != cache.end()) return it->second;
-  ConvexPolyhedron p;
-  switch (row) {
-    case 0:
-      p = cvms::shapes::tetrahedron();
-      break;
-    case 1:
-      p = cvms::shapes::octahedron();
-      break;
-    case 2:
-      p = cvms::shapes::truncated_cube();
-      break;
-    default:
-      p = cvms::shapes::geodesic_sphere(row - 2);
-      break;
-  }
-  return cache.emplace(row, std::move(p)).first->second;
-}
+using cvms_bench::Family;
+using cvms_bench::family_label;
+using cvms_bench::family_pair;
+using cvms_bench::Pair;
+constexpr const auto& kRows = cvms_bench::kTableRows;
+const ConvexPolyhedron& operand(int row) { return cvms_bench::table_operand(row); }
 
 // The paper-faithful CVMS: linear scans and the horizon-edge search.
 cvms::Options paper_cvms() {
@@ -105,36 +84,7 @@ BENCHMARK(BM_ESSDMS)->Apply(table_args);
 BENCHMARK(BM_CVMS_paper)->Apply(table_args);
 BENCHMARK(BM_CVMS)->Apply(table_args);
 
-// --- Scaling families: Sphere_k + rotated Sphere_k (Gaussian maps in general
-// position, almost every output facet an edge facet) and Cube + Sphere_k.
-
-enum class Family { sphere_rotated = 0, cube_sphere = 1 };
-
-struct Pair {
-  ConvexPolyhedron a;
-  ConvexPolyhedron b;
-};
-
-const Pair& family_pair(Family family, int k) {
-  static std::map<std::pair<int, int>, Pair> cache;
-  const std::pair<int, int> key{static_cast<int>(family), k};
-  auto it = cache.find(key);
-  if (it != cache.end()) return it->second;
-  Pair p;
-  if (family == Family::sphere_rotated) {
-    p.a = cvms::shapes::geodesic_sphere(k);
-    p.b = cvms::shapes::rotated_geodesic_sphere(k);
-  } else {
-    p.a = cvms::shapes::cube();
-    p.b = cvms::shapes::geodesic_sphere(k);
-  }
-  return cache.emplace(key, std::move(p)).first->second;
-}
-
-std::string family_label(Family family, int k) {
-  return (family == Family::sphere_rotated ? "Sphere" + std::to_string(k) + "+rotSphere" : "Cube+Sphere") +
-         std::to_string(k);
-}
+// --- Scaling families (bench_operands.hpp): Sphere_k + rotated Sphere_k and Cube + Sphere_k.
 
 void per_facet_counters(benchmark::State& state, const Pair& p, double facets) {
   state.counters["input_facets"] = static_cast<double>(p.a.num_facets() + p.b.num_facets());
