@@ -5,7 +5,9 @@
 // families Sphere_k + rotated Sphere_k and Cube + Sphere_k with the time per
 // output facet; and the limit: building the output alone from the final
 // facet vertex-pair lists. bench/table.py turns the JSON output into the
-// README table.
+// README table. Every row reports peak_heap_bytes: the peak of live heap
+// bytes (C++ and GMP) during the timed loop above what existed before it
+// (inputs excluded), see heap_counter.hpp.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -15,6 +17,7 @@
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "heap_counter.hpp"
 #include "stitch.hpp"
 
 namespace {
@@ -49,6 +52,7 @@ void run_sum(benchmark::State& state, const cvms::Options& options) {
   const ConvexPolyhedron& b = operand(row);
   std::uint32_t facets = 0;
   cvms::Stats stats;
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     try {
       cvms::MinkowskiResult r = cvms::minkowski_sum(cube, b, options);
@@ -60,6 +64,7 @@ void run_sum(benchmark::State& state, const cvms::Options& options) {
       return;
     }
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(std::string("Cube+") + kRows[static_cast<std::size_t>(row)]);
   state.counters["input_facets"] = static_cast<double>(cube.num_facets() + b.num_facets());
   state.counters["output_facets"] = facets;
@@ -99,12 +104,14 @@ void run_family(benchmark::State& state, Family family, const cvms::Options& opt
   const Pair& p = family_pair(family, k);
   std::uint32_t facets = 0;
   cvms::Stats stats;
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     cvms::MinkowskiResult r = cvms::minkowski_sum(p.a, p.b, options);
     facets = r.polyhedron.num_facets();
     stats = r.stats;
     benchmark::DoNotOptimize(facets);
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(family_label(family, k));
   per_facet_counters(state, p, facets);
   state.counters["edge_facets"] = static_cast<double>(stats.edge_facets);
@@ -123,6 +130,7 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
   const Pair& p = family_pair(family, k);
   cvms::Stats stats;
   const cvms::detail::SumFacetBuilder facets = cvms::detail::cvms_facets(p.a, p.b, cvms::Options{}, stats);
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     if (full) {
       ConvexPolyhedron s = facets.build();
@@ -132,6 +140,7 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
       benchmark::DoNotOptimize(m);
     }
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(family_label(family, k));
   per_facet_counters(state, p, static_cast<double>(facets.num_facets()));
 }

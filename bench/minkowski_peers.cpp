@@ -15,6 +15,7 @@
 
 #include "bench_operands.hpp"
 #include "cvms/shapes.hpp"
+#include "heap_counter.hpp"
 #ifdef CVMS_BENCH_HAVE_QHULL
 #include "peer_qhull.hpp"
 #endif
@@ -56,10 +57,15 @@ void run_qhull(benchmark::State& state, const cvms::ConvexPolyhedron& a, const c
                const std::string& label) {
   const std::vector<double> sums = cvms_bench::pairwise_sums_double(a, b);
   cvms_bench::QhullHull hull;
+  std::size_t qhull_peak = 0;
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     hull = cvms_bench::qhull_hull(sums);
+    qhull_peak = std::max(qhull_peak, hull.peak_bytes);
     benchmark::DoNotOptimize(hull);
   }
+  // qhull allocates with malloc, unseen by the counter: add its own peak.
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes() + qhull_peak);
   if (hull.facets == 0) {
     state.SkipWithError("qhull failed");
     return;
@@ -93,10 +99,12 @@ void run_cgal(benchmark::State& state, const cvms::ConvexPolyhedron& a, const cv
   const std::vector<cvms::Vec3> va = cvms_bench::vertex_points(a), vb = cvms_bench::vertex_points(b);
   const cvms_bench::CgalExactPoints sums(va, vb);
   cvms_bench::CgalHull hull;
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     hull = sums.convex_hull();
     benchmark::DoNotOptimize(hull);
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(label);
   operand_counters(state, a, b);
   state.counters["peer_triangles"] = static_cast<double>(hull.triangles);
