@@ -36,7 +36,11 @@ std::uint32_t Mesh::degree(FaceId f) const noexcept {
   return n;
 }
 
-Mesh Mesh::from_soup(PolygonSoup soup) {
+Mesh Mesh::from_soup(PolygonSoup soup) { return build(std::move(soup), true); }
+
+Mesh Mesh::from_soup_with_distinct_points(PolygonSoup soup) { return build(std::move(soup), false); }
+
+Mesh Mesh::build(PolygonSoup soup, bool check_points) {
   const auto& offsets = soup.face_offsets;
   const auto& indices = soup.face_indices;
   if (offsets.empty() || offsets.front() != 0 || offsets.back() != indices.size())
@@ -53,8 +57,9 @@ Mesh Mesh::from_soup(PolygonSoup soup) {
   // Halfedge ids go up to the number of corners; keep every id below the
   // invalid marker, and edge ids (h >> 1) well defined.
   if (soup.points.size() >= invalid || indices.size() >= (std::size_t{1} << 31) || num_faces >= invalid)
-    throw Error(ErrorCategory::limit, "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) +
-                                          " points, " + std::to_string(indices.size()) + " face corners");
+    throw Error(ErrorCategory::limit,
+                "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) + " points, " +
+                    std::to_string(indices.size()) + " face corners");
   const auto n = static_cast<std::uint32_t>(soup.points.size());
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
 
@@ -65,7 +70,8 @@ Mesh Mesh::from_soup(PolygonSoup soup) {
     if (deg < 3) fail("face " + str(f) + " has " + str(deg) + " vertices (at least 3 are needed)");
     for (std::uint32_t c = offsets[f]; c < offsets[f + 1]; ++c) {
       const std::uint32_t v = indices[c];
-      if (v >= n) fail("face " + str(f) + ": vertex index " + str(v) + " out of range (" + str(n) + " points)");
+      if (v >= n)
+        fail("face " + str(f) + ": vertex index " + str(v) + " out of range (" + str(n) + " points)");
       if (stamp[v] == f) fail("face " + str(f) + " uses vertex " + str(v) + " more than once");
       stamp[v] = f;
     }
@@ -73,20 +79,21 @@ Mesh Mesh::from_soup(PolygonSoup soup) {
   for (std::uint32_t v = 0; v < n; ++v)
     if (stamp[v] == invalid) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
 
-  // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
-  // caller that built 0/3 by hand would otherwise get wrong answers.
-  for (Vec3& p : soup.points)
-    for (int i = 0; i < 3; ++i) p[i].canonicalize();
+  if (check_points) {
+    // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
+    // caller that built 0/3 by hand would otherwise get wrong answers.
+    for (Vec3& p : soup.points)
+      for (int i = 0; i < 3; ++i) p[i].canonicalize();
 
-  // Duplicate points: a hash set of indices keyed by exact position.
-  {
+    // Duplicate points: a hash set of indices keyed by exact position.
     const std::vector<Vec3>& pts = soup.points;
     auto hash = [&pts](std::uint32_t i) { return hash_value(pts[i]); };
     auto equal = [&pts](std::uint32_t a, std::uint32_t b) { return pts[a] == pts[b]; };
     std::unordered_set<std::uint32_t, decltype(hash), decltype(equal)> seen(n, hash, equal);
     for (std::uint32_t v = 0; v < n; ++v) {
       auto [it, inserted] = seen.insert(v);
-      if (!inserted) fail("vertices " + str(*it) + " and " + str(v) + " are at the same point (duplicate point)");
+      if (!inserted)
+        fail("vertices " + str(*it) + " and " + str(v) + " are at the same point (duplicate point)");
     }
   }
 
@@ -102,13 +109,24 @@ Mesh Mesh::from_soup(PolygonSoup soup) {
     }
   }
 
-  // Group the directed edges by their undirected vertex pair.
+  // Group the directed edges by their undirected vertex pair, sorted by
+  // (smaller, larger) vertex and then by corner: a counting sort by the
+  // smaller vertex (stable, so corners stay in order), then each bucket,
+  // about a vertex degree long, sorted by the larger vertex.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(num_corners);
-  for (std::uint32_t c = 0; c < num_corners; ++c) {
-    const std::uint64_t a = indices[c], b = indices[corner_next[c]];
-    keyed[c] = {(std::min(a, b) << 32) | std::max(a, b), c};
+  {
+    std::vector<std::uint32_t> bucket_start(std::size_t{n} + 1, 0);
+    for (std::uint32_t c = 0; c < num_corners; ++c)
+      ++bucket_start[std::min(indices[c], indices[corner_next[c]]) + 1];
+    for (std::uint32_t v = 0; v < n; ++v) bucket_start[v + 1] += bucket_start[v];
+    std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
+    for (std::uint32_t c = 0; c < num_corners; ++c) {
+      const std::uint64_t a = indices[c], b = indices[corner_next[c]];
+      keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c};
+    }
+    for (std::uint32_t v = 0; v < n; ++v)
+      std::sort(keyed.begin() + bucket_start[v], keyed.begin() + bucket_start[v + 1]);
   }
-  std::sort(keyed.begin(), keyed.end());
 
   // Scan all groups first, then report by severity: a non-manifold edge
   // explains the orientation and boundary symptoms it causes.
@@ -211,8 +229,10 @@ void Mesh::validate() const {
   }
   for (std::uint32_t i = 0; i < H; ++i) {
     const HalfedgeId h(i);
-    if (prev(next(h)) != h || next(prev(h)) != h) fail("validate: halfedge " + str(i) + ": next and prev disagree");
-    if (face(next(h)) != face(h)) fail("validate: halfedge " + str(i) + " and its next lie in different faces");
+    if (prev(next(h)) != h || next(prev(h)) != h)
+      fail("validate: halfedge " + str(i) + ": next and prev disagree");
+    if (face(next(h)) != face(h))
+      fail("validate: halfedge " + str(i) + " and its next lie in different faces");
     if (from(next(h)) != to(h)) fail("validate: halfedge " + str(i) + ": next does not start where it ends");
     if (from(h) == to(h)) fail("validate: halfedge " + str(i) + " is a loop at vertex " + str(to(h).index()));
   }

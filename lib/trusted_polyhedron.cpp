@@ -38,7 +38,7 @@ ConvexPolyhedron ConvexPolyhedronAccess::from_trusted_soup(PolygonSoup soup, std
                                                      " normals for " + std::to_string(soup.num_faces()) +
                                                      " faces");
   ConvexPolyhedron p;
-  p.mesh_ = Mesh::from_soup(std::move(soup));
+  p.mesh_ = Mesh::from_soup_with_distinct_points(std::move(soup));
   const Mesh& m = p.mesh_;
   p.vertex_approx_.reserve(m.num_vertices());
   for (VertexId v : m.vertices()) p.vertex_approx_.push_back(ApproxVec3::of(m.position(v)));

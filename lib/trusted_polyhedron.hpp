@@ -13,7 +13,8 @@ namespace cvms::detail {
 struct ConvexPolyhedronAccess {
   /// As ConvexPolyhedron::from_trusted_soup, with normals[f] the outward
   /// normal of face f of the soup, already a primitive integer vector.
-  /// Topology is checked by Mesh::from_soup; geometry is not.
+  /// Topology is checked as in Mesh::from_soup; geometry is not, and the
+  /// points must be canonical and pairwise distinct.
   /// \pre normals.size() == soup.num_faces() and the from_trusted_soup
   ///   guarantee holds.
   static ConvexPolyhedron from_trusted_soup(PolygonSoup soup, std::vector<Vec3> normals);

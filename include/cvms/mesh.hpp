@@ -17,6 +17,10 @@
 
 namespace cvms {
 
+namespace detail {
+struct ConvexPolyhedronAccess;  // lib/trusted_polyhedron.hpp
+}  // namespace detail
+
 /// A typed 32-bit index, invalid by default.
 template <class Tag>
 class Handle {
@@ -59,11 +63,19 @@ class IdRange {
     /// The current handle.
     Id operator*() const { return Id(i_); }
     /// The next handle.
-    iterator& operator++() { ++i_; return *this; }
+    iterator& operator++() {
+      ++i_;
+      return *this;
+    }
     /// The next handle (postfix).
-    iterator operator++(int) { iterator t = *this; ++i_; return t; }
+    iterator operator++(int) {
+      iterator t = *this;
+      ++i_;
+      return t;
+    }
     /// At the same handle.
     friend bool operator==(iterator a, iterator b) { return a.i_ == b.i_; }
+
    private:
     std::uint32_t i_ = 0;
   };
@@ -75,6 +87,7 @@ class IdRange {
   [[nodiscard]] iterator end() const { return iterator(n_); }
   /// The number of handles.
   [[nodiscard]] std::uint32_t size() const { return n_; }
+
  private:
   std::uint32_t n_;
 };
@@ -104,11 +117,16 @@ class HalfedgeCirculator {
     /// The next halfedge of the cycle.
     iterator& operator++();
     /// The next halfedge of the cycle (postfix).
-    iterator operator++(int) { iterator t = *this; ++*this; return t; }
+    iterator operator++(int) {
+      iterator t = *this;
+      ++*this;
+      return t;
+    }
     /// Same position (both past the end, or both at the same halfedge).
     friend bool operator==(const iterator& a, const iterator& b) {
       return a.h_ == b.h_ && a.at_end_ == b.at_end_;
     }
+
    private:
     const Mesh* mesh_ = nullptr;
     HalfedgeId h_;
@@ -123,6 +141,7 @@ class HalfedgeCirculator {
   [[nodiscard]] iterator begin() const { return {mesh_, start_, kind_, !start_.is_valid()}; }
   /// Past the end.
   [[nodiscard]] iterator end() const { return {mesh_, start_, kind_, true}; }
+
  private:
   const Mesh* mesh_;
   HalfedgeId start_;
@@ -155,17 +174,23 @@ class Mesh {
   /// their (smaller, larger) vertex pair and halfedge 2e runs from the smaller
   /// to the larger index; face f's stored halfedge leaves its first listed
   /// vertex; vertex v's stored halfedge is its lowest-numbered outgoing one.
-  /// Complexity: O(n log n) in the number of face corners.
+  /// Complexity: O(n + V) in the number n of face corners and V of points.
   static Mesh from_soup(PolygonSoup soup);
 
   /// Number of vertices.
-  [[nodiscard]] std::uint32_t num_vertices() const noexcept { return static_cast<std::uint32_t>(positions_.size()); }
+  [[nodiscard]] std::uint32_t num_vertices() const noexcept {
+    return static_cast<std::uint32_t>(positions_.size());
+  }
   /// Number of halfedges (twice the number of edges).
-  [[nodiscard]] std::uint32_t num_halfedges() const noexcept { return static_cast<std::uint32_t>(he_to_.size()); }
+  [[nodiscard]] std::uint32_t num_halfedges() const noexcept {
+    return static_cast<std::uint32_t>(he_to_.size());
+  }
   /// Number of undirected edges.
   [[nodiscard]] std::uint32_t num_edges() const noexcept { return num_halfedges() / 2; }
   /// Number of faces.
-  [[nodiscard]] std::uint32_t num_faces() const noexcept { return static_cast<std::uint32_t>(face_he_.size()); }
+  [[nodiscard]] std::uint32_t num_faces() const noexcept {
+    return static_cast<std::uint32_t>(face_he_.size());
+  }
 
   /// All vertex handles, for range-for.
   [[nodiscard]] IdRange<VertexId> vertices() const { return IdRange<VertexId>(num_vertices()); }
@@ -228,6 +253,13 @@ class Mesh {
   [[nodiscard]] Mesh with_positions(std::vector<Vec3> positions) const;
 
  private:
+  friend struct detail::ConvexPolyhedronAccess;
+  // from_soup without the point checks (canonical coordinates, no two
+  // points equal), for the algorithms' output, whose points are distinct
+  // sums a_i + b_j by construction. Topology is checked in full.
+  static Mesh from_soup_with_distinct_points(PolygonSoup soup);
+  static Mesh build(PolygonSoup soup, bool check_points);
+
   std::vector<Vec3> positions_;
   std::vector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
   std::vector<VertexId> he_to_;
@@ -238,7 +270,8 @@ class Mesh {
 };
 
 inline HalfedgeCirculator::iterator& HalfedgeCirculator::iterator::operator++() {
-  HalfedgeId start = (kind_ == Kind::face) ? mesh_->halfedge(mesh_->face(h_)) : mesh_->halfedge(mesh_->from(h_));
+  HalfedgeId start =
+      (kind_ == Kind::face) ? mesh_->halfedge(mesh_->face(h_)) : mesh_->halfedge(mesh_->from(h_));
   h_ = (kind_ == Kind::face) ? mesh_->next(h_) : Mesh::twin(mesh_->prev(h_));
   if (h_ == start) at_end_ = true;
   return *this;
