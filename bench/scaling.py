@@ -10,11 +10,16 @@ slope, the issue's measure) and the least-squares slope over all k.
 Output facets are those of the exact sum (from our rows); the peers' rows
 are matched to them by family and k.
 
-usage: bench/scaling.py results.json > scaling.md
+usage: bench/scaling.py [--cpu] results.json > scaling.md
 """
 import json
 import math
 import sys
+
+# Which Google Benchmark time the tables use: real (wall) time by default;
+# --cpu selects the CPU time, steadier when other jobs share the machine
+# (every benchmark here is single-threaded).
+TIME_FIELD = "real_time"
 
 FAMILIES = {"SphereRot": "Sphere_k + rotated Sphere_k", "CubeSphere": "Cube + Sphere_k"}
 # Benchmark name prefix (before "_<family>/k") -> column.
@@ -42,7 +47,7 @@ def load(path):
         family, column = names[parts[0]]
         k = int(parts[1])
         scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-        times[family].setdefault(column, {})[k] = b["real_time"] * scale
+        times[family].setdefault(column, {})[k] = b[TIME_FIELD] * scale
         if "peak_heap_bytes" in b:
             peaks[family].setdefault(column, {})[k] = b["peak_heap_bytes"]
         if "output_facets" in b:
@@ -104,6 +109,10 @@ def print_family(family, times, peaks, facets):
 
 
 def main(args):
+    global TIME_FIELD
+    if "--cpu" in args:
+        TIME_FIELD = "cpu_time"
+        args = [a for a in args if a != "--cpu"]
     if len(args) != 1:
         sys.exit(__doc__)
     times, peaks, facets = load(args[0])
