@@ -5,17 +5,19 @@
 // families Sphere_k + rotated Sphere_k and Cube + Sphere_k with the time per
 // output facet; and the limit: building the output alone from the final
 // facet vertex-pair lists. bench/table.py turns the JSON output into the
-// README table.
+// README table. Every row reports peak_heap_bytes: the peak of live heap
+// bytes (C++ and GMP) during the timed loop above what existed before it
+// (inputs excluded), see heap_counter.hpp.
 #include <benchmark/benchmark.h>
 
-#include <array>
-#include <map>
 #include <string>
 
+#include "bench_operands.hpp"
 #include "cvms.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "heap_counter.hpp"
 #include "stitch.hpp"
 
 namespace {
@@ -23,32 +25,12 @@ namespace {
 using cvms::Algorithm;
 using cvms::ConvexPolyhedron;
 
-// Operand B of each Table 1 row, in the paper's order.
-constexpr std::array<const char*, 9> kRows = {"Tetra",   "Hedra",   "TruncatedCube", "Sphere1", "Sphere2",
-                                              "Sphere3", "Sphere4", "Sphere5",       "Sphere6"};
-
-const ConvexPolyhedron& operand(int row) {
-  // Built once per process (not per benchmark iteration); benchmarks are single-threaded.
-  static std::map<int, ConvexPolyhedron> cache;
-  auto it = cache.find(row);
-  if (it != cache.end()) return it->second;
-  ConvexPolyhedron p;
-  switch (row) {
-    case 0:
-      p = cvms::shapes::tetrahedron();
-      break;
-    case 1:
-      p = cvms::shapes::octahedron();
-      break;
-    case 2:
-      p = cvms::shapes::truncated_cube();
-      break;
-    default:
-      p = cvms::shapes::geodesic_sphere(row - 2);
-      break;
-  }
-  return cache.emplace(row, std::move(p)).first->second;
-}
+using cvms_bench::Family;
+using cvms_bench::family_label;
+using cvms_bench::family_pair;
+using cvms_bench::Pair;
+constexpr const auto& kRows = cvms_bench::kTableRows;
+const ConvexPolyhedron& operand(int row) { return cvms_bench::table_operand(row); }
 
 // The paper-faithful CVMS: linear scans and the horizon-edge search.
 cvms::Options paper_cvms() {
@@ -70,6 +52,7 @@ void run_sum(benchmark::State& state, const cvms::Options& options) {
   const ConvexPolyhedron& b = operand(row);
   std::uint32_t facets = 0;
   cvms::Stats stats;
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     try {
       cvms::MinkowskiResult r = cvms::minkowski_sum(cube, b, options);
@@ -81,6 +64,7 @@ void run_sum(benchmark::State& state, const cvms::Options& options) {
       return;
     }
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(std::string("Cube+") + kRows[static_cast<std::size_t>(row)]);
   state.counters["input_facets"] = static_cast<double>(cube.num_facets() + b.num_facets());
   state.counters["output_facets"] = facets;
@@ -105,36 +89,7 @@ BENCHMARK(BM_ESSDMS)->Apply(table_args);
 BENCHMARK(BM_CVMS_paper)->Apply(table_args);
 BENCHMARK(BM_CVMS)->Apply(table_args);
 
-// --- Scaling families: Sphere_k + rotated Sphere_k (Gaussian maps in general
-// position, almost every output facet an edge facet) and Cube + Sphere_k.
-
-enum class Family { sphere_rotated = 0, cube_sphere = 1 };
-
-struct Pair {
-  ConvexPolyhedron a;
-  ConvexPolyhedron b;
-};
-
-const Pair& family_pair(Family family, int k) {
-  static std::map<std::pair<int, int>, Pair> cache;
-  const std::pair<int, int> key{static_cast<int>(family), k};
-  auto it = cache.find(key);
-  if (it != cache.end()) return it->second;
-  Pair p;
-  if (family == Family::sphere_rotated) {
-    p.a = cvms::shapes::geodesic_sphere(k);
-    p.b = cvms::shapes::rotated_geodesic_sphere(k);
-  } else {
-    p.a = cvms::shapes::cube();
-    p.b = cvms::shapes::geodesic_sphere(k);
-  }
-  return cache.emplace(key, std::move(p)).first->second;
-}
-
-std::string family_label(Family family, int k) {
-  return (family == Family::sphere_rotated ? "Sphere" + std::to_string(k) + "+rotSphere" : "Cube+Sphere") +
-         std::to_string(k);
-}
+// --- Scaling families (bench_operands.hpp): Sphere_k + rotated Sphere_k and Cube + Sphere_k.
 
 void per_facet_counters(benchmark::State& state, const Pair& p, double facets) {
   state.counters["input_facets"] = static_cast<double>(p.a.num_facets() + p.b.num_facets());
@@ -149,12 +104,14 @@ void run_family(benchmark::State& state, Family family, const cvms::Options& opt
   const Pair& p = family_pair(family, k);
   std::uint32_t facets = 0;
   cvms::Stats stats;
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     cvms::MinkowskiResult r = cvms::minkowski_sum(p.a, p.b, options);
     facets = r.polyhedron.num_facets();
     stats = r.stats;
     benchmark::DoNotOptimize(facets);
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(family_label(family, k));
   per_facet_counters(state, p, facets);
   state.counters["edge_facets"] = static_cast<double>(stats.edge_facets);
@@ -173,6 +130,7 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
   const Pair& p = family_pair(family, k);
   cvms::Stats stats;
   const cvms::detail::SumFacetBuilder facets = cvms::detail::cvms_facets(p.a, p.b, cvms::Options{}, stats);
+  cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     if (full) {
       ConvexPolyhedron s = facets.build();
@@ -182,14 +140,16 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
       benchmark::DoNotOptimize(m);
     }
   }
+  state.counters["peak_heap_bytes"] = static_cast<double>(cvms_bench::peak_heap_bytes());
   state.SetLabel(family_label(family, k));
   per_facet_counters(state, p, static_cast<double>(facets.num_facets()));
 }
 
-// k = 3..7 (Sphere7 + rotated Sphere7: 81,920 + 81,920 facets). k = 8 is
-// left out: with exact rational coordinates it needs GBs on a shared machine.
+// k = 3..7 (Sphere7 + rotated Sphere7: 81,920 + 81,920 facets); k = 8
+// (327,680 + 327,680 facets) only with CVMS_BENCH_LARGE=1, which keeps the
+// default run short (bench_operands.hpp: largest_family_k).
 void family_args(benchmark::internal::Benchmark* b) {
-  for (int k = 3; k <= 7; ++k) b->Arg(k);
+  for (int k = 3; k <= cvms_bench::largest_family_k(); ++k) b->Arg(k);
   b->Unit(benchmark::kMillisecond);
 }
 void small_family_args(benchmark::internal::Benchmark* b) {

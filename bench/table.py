@@ -1,12 +1,20 @@
 #!/usr/bin/env python3
 """Turns Google Benchmark JSON from cvms_minkowski_bench into the README's
 Table 1 reproduction: per row, our times per algorithm, our CHMS/x ratios
-next to the paper's (Barki et al., Table 1, seconds on a 2.2 GHz Core 2 Duo).
+next to the paper's (Barki et al., Table 1, seconds on a 2.2 GHz Core 2 Duo),
+the peers (qhull, CGAL: hull of the pairwise vertex sums, built with
+-DCVMS_BENCH_PEERS=ON) with peer/CVMS ratios, and CVMS's peak heap.
+With --memory, a second table gives every algorithm's peak heap.
 
-usage: bench/table.py results.json > table.md
+usage: bench/table.py [--memory] [--cpu] results.json > table.md
 """
 import json
 import sys
+
+# Which Google Benchmark time the tables use: real (wall) time by default;
+# --cpu selects the CPU time, steadier when other jobs share the machine
+# (every benchmark here is single-threaded).
+TIME_FIELD = "real_time"
 
 ROWS = ["Tetra", "Hedra", "TruncatedCube", "Sphere1", "Sphere2", "Sphere3", "Sphere4", "Sphere5", "Sphere6"]
 # Paper's Table 1: (CHMS, ESSDMS, CVMS) seconds.
@@ -15,30 +23,61 @@ PAPER = {
     "Sphere1": (0.046, 0.046, 0.015), "Sphere2": (0.125, 0.093, 0.031), "Sphere3": (0.546, 0.250, 0.078),
     "Sphere4": (2.438, 0.735, 0.266), "Sphere5": (11.407, 2.719, 1.375), "Sphere6": (77.422, 16.828, 12.234),
 }
-ALGORITHMS = ["CHMS", "ESSDMS", "CVMS_paper", "CVMS"]
-# Which paper column each of ours compares with (our CVMS_paper is the
-# paper-faithful search; CVMS is the output-sensitive default).
+# Benchmark name (before the "/row") -> column. Our CVMS_paper is the
+# paper-faithful search; CVMS is the output-sensitive default.
+BENCHMARKS = {
+    "BM_CHMS": "CHMS", "BM_ESSDMS": "ESSDMS", "BM_CVMS_paper": "CVMS_paper", "BM_CVMS": "CVMS",
+    "BM_Qhull_PairwiseSums": "qhull", "BM_CGAL_PairwiseSums": "CGAL",
+}
+OURS = ["CHMS", "ESSDMS", "CVMS_paper", "CVMS"]
+PEERS = ["qhull", "CGAL"]
+# Which paper column each of ours compares with.
 PAPER_COLUMN = {"CHMS": 0, "ESSDMS": 1, "CVMS_paper": 2, "CVMS": 2}
 
 
-def main(path):
+def load(path):
+    """(times, peaks, facets): times[(algorithm, row)] in ms, peaks in bytes,
+    facets[row] = (input, output) from our rows (the peers do not report the
+    output facet count: qhull merges in floating point, CGAL triangulates)."""
     data = json.load(open(path))
-    times = {}  # (algorithm, row) -> ms
-    facets = {}
+    times, peaks, facets = {}, {}, {}
     for b in data["benchmarks"]:
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
             continue
-        if b.get("error_occurred") or "_" in b["name"].split("/")[0].replace("BM_", "").replace("CVMS_paper", ""):
+        parts = b["name"].split("/")
+        if b.get("error_occurred") or len(parts) != 2 or parts[0] not in BENCHMARKS:
             continue
-        name = b["name"].split("/")
-        algorithm = name[0].replace("BM_", "")
-        row = ROWS[int(name[1])]
+        algorithm = BENCHMARKS[parts[0]]
+        row = ROWS[int(parts[1])]
         scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-        times[(algorithm, row)] = b["real_time"] * scale
-        facets[row] = (int(b.get("input_facets", 0)), int(b.get("output_facets", 0)))
-    present = [a for a in ALGORITHMS if any((a, r) in times for r in ROWS)]
+        times[(algorithm, row)] = b[TIME_FIELD] * scale
+        if "peak_heap_bytes" in b:
+            peaks[(algorithm, row)] = b["peak_heap_bytes"]
+        if "output_facets" in b:
+            facets[row] = (int(b.get("input_facets", 0)), int(b["output_facets"]))
+    return times, peaks, facets
+
+
+def kib(n):
+    return "%.0f" % (n / 1024.0)
+
+
+def ratio(times, num, den, row):
+    if (num, row) in times and (den, row) in times:
+        return "%.1f" % (times[(num, row)] / times[(den, row)])
+    return "-"
+
+
+def table1(times, peaks, facets):
+    ours = [a for a in OURS if any((a, r) in times for r in ROWS)]
+    peers = [a for a in PEERS if any((a, r) in times for r in ROWS)]
+    present = ours + peers
     header = ["Cube +", "facets in/out"] + [f"{a} (ms)" for a in present]
-    header += [f"CHMS/{a}" for a in present if a != "CHMS"] + [f"paper CHMS/{a}" for a in present if a != "CHMS"]
+    header += [f"CHMS/{a}" for a in ours if a != "CHMS"]
+    header += [f"{p}/CVMS" for p in peers if "CVMS" in ours]
+    header += [f"paper CHMS/{a}" for a in ours if a != "CHMS"]
+    if "CVMS" in ours:
+        header += ["CVMS peak heap (KiB)"]
     print("| " + " | ".join(header) + " |")
     print("|" + "---|" * len(header))
     for row in ROWS:
@@ -46,20 +85,45 @@ def main(path):
             continue
         cells = [row, "%d / %d" % facets.get(row, (0, 0))]
         cells += ["%.3f" % times[(a, row)] if (a, row) in times else "-" for a in present]
-        for a in present:
-            if a == "CHMS":
-                continue
-            if ("CHMS", row) in times and (a, row) in times:
-                cells.append("%.1f" % (times[("CHMS", row)] / times[(a, row)]))
-            else:
-                cells.append("-")
-        for a in present:
-            if a == "CHMS":
-                continue
-            p = PAPER[row]
-            cells.append("%.1f" % (p[0] / p[PAPER_COLUMN[a]]))
+        cells += [ratio(times, "CHMS", a, row) for a in ours if a != "CHMS"]
+        if "CVMS" in ours:
+            cells += [ratio(times, p, "CVMS", row) for p in peers]
+        for a in ours:
+            if a != "CHMS":
+                p = PAPER[row]
+                cells.append("%.1f" % (p[0] / p[PAPER_COLUMN[a]]))
+        if "CVMS" in ours:
+            cells.append(kib(peaks[("CVMS", row)]) if ("CVMS", row) in peaks else "-")
         print("| " + " | ".join(cells) + " |")
 
 
+def memory_table(times, peaks):
+    present = [a for a in OURS + PEERS if any((a, r) in peaks for r in ROWS)]
+    header = ["Cube +"] + [f"{a} peak heap (KiB)" for a in present]
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for row in ROWS:
+        if not any((a, row) in peaks for a in present):
+            continue
+        cells = [row] + [kib(peaks[(a, row)]) if (a, row) in peaks else "-" for a in present]
+        print("| " + " | ".join(cells) + " |")
+
+
+def main(args):
+    global TIME_FIELD
+    if "--cpu" in args:
+        TIME_FIELD = "cpu_time"
+        args = [a for a in args if a != "--cpu"]
+    memory = "--memory" in args
+    paths = [a for a in args if a != "--memory"]
+    if len(paths) != 1:
+        sys.exit(__doc__)
+    times, peaks, facets = load(paths[0])
+    table1(times, peaks, facets)
+    if memory:
+        print()
+        memory_table(times, peaks)
+
+
 if __name__ == "__main__":
-    main(sys.argv[1])
+    main(sys.argv[1:])

@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""Prints the scaling tables of cvms_minkowski_bench's JSON output: for the
+families Sphere_k + rotated Sphere_k (SphereRot) and Cube + Sphere_k
+(CubeSphere), per k the output facet count, each algorithm's time and time
+per output facet, the ratios CVMS / limit (the output-mesh build alone) and
+peer / CVMS, and per algorithm the log-log slope of time against output
+facets, from k = 3 to the largest k present for that algorithm (endpoint
+slope, the issue's measure) and the least-squares slope over all k.
+
+Output facets are those of the exact sum (from our rows); the peers' rows
+are matched to them by family and k.
+
+usage: bench/scaling.py [--cpu] results.json > scaling.md
+"""
+import json
+import math
+import sys
+
+# Which Google Benchmark time the tables use: real (wall) time by default;
+# --cpu selects the CPU time, steadier when other jobs share the machine
+# (every benchmark here is single-threaded).
+TIME_FIELD = "real_time"
+
+FAMILIES = {"SphereRot": "Sphere_k + rotated Sphere_k", "CubeSphere": "Cube + Sphere_k"}
+# Benchmark name prefix (before "_<family>/k") -> column.
+ALGORITHMS = [
+    ("BM_CVMS", "CVMS"), ("BM_CVMS_paper", "CVMS_paper"), ("BM_Limit_Mesh", "limit mesh"),
+    ("BM_Limit_Build", "limit build"), ("BM_Qhull", "qhull"), ("BM_CGAL", "CGAL"),
+]
+LIMITS = ["limit mesh", "limit build"]
+PEERS = ["qhull", "CGAL"]
+
+
+def load(path):
+    """times[family][algorithm][k] = ms; out[family][k] = (input, output facets); peaks likewise."""
+    data = json.load(open(path))
+    names = {f"{prefix}_{family}": (family, column) for family in FAMILIES for prefix, column in ALGORITHMS}
+    times = {f: {} for f in FAMILIES}
+    peaks = {f: {} for f in FAMILIES}
+    facets = {f: {} for f in FAMILIES}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        parts = b["name"].split("/")
+        if b.get("error_occurred") or len(parts) != 2 or parts[0] not in names:
+            continue
+        family, column = names[parts[0]]
+        k = int(parts[1])
+        scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+        times[family].setdefault(column, {})[k] = b[TIME_FIELD] * scale
+        if "peak_heap_bytes" in b:
+            peaks[family].setdefault(column, {})[k] = b["peak_heap_bytes"]
+        if "output_facets" in b:
+            facets[family][k] = (int(b.get("input_facets", 0)), int(b["output_facets"]))
+    return times, peaks, facets
+
+
+def slopes(series, facets):
+    """(endpoint slope from k = 3 to the largest k, least-squares slope, largest k) of log time vs log facets."""
+    ks = sorted(k for k in series if k in facets and k >= 3)
+    if len(ks) < 2 or ks[0] != 3:
+        return None
+    xs = [math.log(facets[k][1]) for k in ks]
+    ys = [math.log(series[k]) for k in ks]
+    endpoint = (ys[-1] - ys[0]) / (xs[-1] - xs[0])
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    fit = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+    return endpoint, fit, ks[-1]
+
+
+def print_family(family, times, peaks, facets):
+    columns = [c for _, c in ALGORITHMS if c in times]
+    if not columns:
+        return
+    ks = sorted(set(k for c in columns for k in times[c]))
+    print(f"### {FAMILIES[family]} ({family})\n")
+    header = ["k", "facets in", "facets out"]
+    header += [f"{c} (ms)" for c in columns] + [f"{c} (us/out facet)" for c in columns]
+    header += [f"CVMS/{c}" for c in LIMITS if c in columns and "CVMS" in columns]
+    header += [f"{c}/CVMS" for c in PEERS if c in columns and "CVMS" in columns]
+    if "CVMS" in peaks:
+        header += ["CVMS peak heap (MiB)"]
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for k in ks:
+        fin, fout = facets.get(k, (0, 0))
+        cells = [str(k), str(fin), str(fout)]
+        cells += ["%.3f" % times[c][k] if k in times[c] else "-" for c in columns]
+        cells += ["%.3f" % (1e3 * times[c][k] / fout) if k in times[c] and fout else "-" for c in columns]
+        for c in LIMITS:
+            if c in columns and "CVMS" in columns:
+                ok = k in times[c] and k in times["CVMS"]
+                cells.append("%.2f" % (times["CVMS"][k] / times[c][k]) if ok else "-")
+        for c in PEERS:
+            if c in columns and "CVMS" in columns:
+                ok = k in times[c] and k in times["CVMS"]
+                cells.append("%.1f" % (times[c][k] / times["CVMS"][k]) if ok else "-")
+        if "CVMS" in peaks:
+            cells.append("%.1f" % (peaks["CVMS"][k] / 2**20) if k in peaks["CVMS"] else "-")
+        print("| " + " | ".join(cells) + " |")
+    print()
+    print("| algorithm | log-log slope k=3..K (endpoints) | least-squares slope | K |")
+    print("|---|---|---|---|")
+    for c in columns:
+        s = slopes(times[c], facets)
+        if s:
+            print("| %s | %.3f | %.3f | %d |" % (c, s[0], s[1], s[2]))
+    print()
+
+
+def main(args):
+    global TIME_FIELD
+    if "--cpu" in args:
+        TIME_FIELD = "cpu_time"
+        args = [a for a in args if a != "--cpu"]
+    if len(args) != 1:
+        sys.exit(__doc__)
+    times, peaks, facets = load(args[0])
+    for family in FAMILIES:
+        print_family(family, times[family], peaks[family], facets[family])
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
