@@ -615,8 +615,24 @@ PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* 
   return qh.run(source_index);
 }
 
+PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
+                      std::vector<std::uint32_t>* source_index) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(points[i][k]))
+        throw Error(ErrorCategory::invalid_argument, "convex hull: point " + std::to_string(i) + " has a " +
+                                                         (std::isnan(points[i][k]) ? "NaN" : "infinite") +
+                                                         " coordinate " + std::string(1, "xyz"[k]));
+  Quickhull qh(points);
+  return qh.run(source_index);
+}
+
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {
   // The soup already has maximal convex facets and only extreme vertices.
+  return ConvexPolyhedron::from_trusted_soup(hull_soup(points));
+}
+
+ConvexPolyhedron convex_hull(std::span<const std::array<double, 3>> points) {
   return ConvexPolyhedron::from_trusted_soup(hull_soup(points));
 }
 
