@@ -277,8 +277,7 @@ class Quickhull {
       t = static_cast<std::uint32_t>(tris_.size());
       tris_.emplace_back();
       planes_.emplace_back();
-      normals_.emplace_back();
-      normal_approx_.emplace_back();
+      normal_slot_.push_back(none);
     }
     tris_[t] = Triangle{{a, b, c}, {none, none, none}, 0, 0, 0, 0, false, true, false};
     planes_[t] = PlaneFilter::of(coords_[a], coords_[b], coords_[c], scale_);
@@ -297,11 +296,16 @@ class Quickhull {
     if (!tr.has_normal) {
       // Only triangles with two or more outside points need their normal.
       const Vec3& a = exact(tr.v[0]);
-      normals_[t] = cross(exact(tr.v[1]) - a, exact(tr.v[2]) - a);
-      normal_approx_[t] = ApproxVec3::of(normals_[t]);
+      if (normal_slot_[t] == none) {
+        normal_slot_[t] = static_cast<std::uint32_t>(normals_.size());
+        normals_.emplace_back();
+        normal_approx_.emplace_back();
+      }
+      normals_[normal_slot_[t]] = cross(exact(tr.v[1]) - a, exact(tr.v[2]) - a);
+      normal_approx_[normal_slot_[t]] = ApproxVec3::of(normals_[normal_slot_[t]]);
       tr.has_normal = true;
     }
-    return {normals_[t], normal_approx_[t]};
+    return {normals_[normal_slot_[t]], normal_approx_[normal_slot_[t]]};
   }
 
   // compare_dot(p, q, normal of t) == positive, where s_p and s_q are the
@@ -509,8 +513,7 @@ class Quickhull {
     std::vector<std::uint32_t> out_index(n_, none);
     std::vector<std::uint32_t> cycle_next(n_, none);
     PolygonSoup soup;
-    if (source_index) source_index->clear();
-    std::vector<std::uint32_t> boundary, cycle, corners;
+    std::vector<std::uint32_t> boundary, cycle, corners, extreme_points;
 
     // The vertex of the triangle across edge i of t that is opposite that edge.
     auto opposite = [&](std::uint32_t t, std::uint32_t i) {
@@ -569,14 +572,18 @@ class Quickhull {
         std::uint32_t p = cycle[(k + m - 1) % m], q = cycle[k], r = cycle[(k + 1) % m];
         if (orient(p, q, r, witness) == Sign::zero) continue;
         if (out_index[q] == none) {
-          out_index[q] = static_cast<std::uint32_t>(soup.points.size());
-          soup.points.push_back(exact(q));
-          if (source_index) source_index->push_back(q);
+          out_index[q] = static_cast<std::uint32_t>(extreme_points.size());
+          extreme_points.push_back(q);
         }
         corners.push_back(out_index[q]);
       }
       soup.add_face(corners);
     }
+    // Copied once, in order of first use (growing a vector of rationals
+    // would copy them on every reallocation).
+    soup.points.reserve(extreme_points.size());
+    for (std::uint32_t q : extreme_points) soup.points.push_back(exact(q));
+    if (source_index) *source_index = std::move(extreme_points);
     return soup;
   }
 
@@ -600,8 +607,12 @@ class Quickhull {
   std::vector<std::uint32_t> count_, far_src_;
   std::vector<std::uint32_t> start_of_;
   std::vector<Triangle> tris_;
-  std::vector<Vec3> normals_;  // per triangle slot, valid when has_normal
-  std::vector<ApproxVec3> normal_approx_;
+  // Exact normals, only for the few triangle slots whose farthest point
+  // needed an exact comparison: normal_slot_[t] indexes them (a deque, as
+  // moving rationals around would cost an allocation each).
+  std::vector<std::uint32_t> normal_slot_;
+  std::deque<Vec3> normals_;
+  std::deque<ApproxVec3> normal_approx_;
   std::vector<std::uint32_t> free_;
   std::vector<std::uint32_t> pending_;
   std::vector<std::uint32_t> visible_, stack_, cone_;
