@@ -30,6 +30,8 @@
 #include "quickhull.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <deque>
 #include <limits>
 #include <string>
 #include <utility>
@@ -39,6 +41,8 @@
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
 #include "cvms/quickhull.hpp"
+#include "filtered_arithmetic.hpp"
+#include "plane_filter.hpp"
 
 namespace cvms {
 namespace {
@@ -60,12 +64,12 @@ struct Triangle {
   bool has_normal;  // normals_[t] is the exact normal of this triangle
 };
 
-// An outside point in a conflict list, with a copy of its approximation:
-// conflict lists are scanned over and over, and reading them sequentially
-// instead of gathering from the per-point array is much kinder to the cache
-// (20-35% faster on 10^6 random points).
+// An outside point in a conflict list, with a copy of its double
+// approximation: conflict lists are scanned over and over, and reading them
+// sequentially instead of gathering from the per-point array is much kinder
+// to the cache (20-35% faster on 10^6 random points).
 struct Conflict {
-  ApproxVec3 approx;
+  Coords c;
   std::uint32_t point;
 };
 
@@ -76,13 +80,38 @@ struct HorizonEdge {
 
 class Quickhull {
  public:
+  // Exact input: the filters run on the cached approximations, whose largest
+  // error bound covers every point.
   explicit Quickhull(std::span<const Vec3> points) : points_(points) {
-    if (points.size() >= none)
-      throw Error(ErrorCategory::limit,
-                  "convex hull: " + std::to_string(points.size()) + " points exceed the limit of 2^32 - 2");
-    n_ = static_cast<std::uint32_t>(points.size());
+    n_ = checked_size(points.size());
     approx_.reserve(n_);
-    for (const Vec3& p : points) approx_.push_back(ApproxVec3::of(p));
+    own_coords_.reserve(n_);
+    double max_abs = 0, max_error = 0;
+    for (const Vec3& p : points) {
+      const ApproxVec3& a = approx_.emplace_back(ApproxVec3::of(p));
+      own_coords_.push_back({a.x.value, a.y.value, a.z.value});
+      // NaN (never produced, but cheap to exclude) would compare false: fold
+      // it into an infinite maximum, which disables the filter.
+      for (const Approx& c : {a.x, a.y, a.z}) {
+        max_abs = std::fabs(c.value) <= max_abs ? max_abs : (std::isnan(c.value) ? inf : std::fabs(c.value));
+        max_error = c.error <= max_error ? max_error : (std::isnan(c.error) ? inf : c.error);
+      }
+    }
+    coords_ = own_coords_;
+    error_ = max_error;
+    scale_ = PlaneFilterScale::of(max_abs, max_error);
+  }
+
+  // Double input (finite, checked by the caller): exact as they are; only
+  // the points that an exact fallback or the output needs become rationals.
+  explicit Quickhull(std::span<const Coords> coords) : coords_(coords) {
+    n_ = checked_size(coords.size());
+    double max_abs = 0;
+    for (const Coords& c : coords)
+      for (double x : c) max_abs = std::max(max_abs, std::fabs(x));
+    error_ = 0;
+    scale_ = PlaneFilterScale::of(max_abs, 0.0);
+    lazy_.assign(n_, none);
   }
 
   PolygonSoup run(std::vector<std::uint32_t>* source_index) {
@@ -90,15 +119,68 @@ class Quickhull {
     initial_simplex(simplex);
     build_simplex(simplex);
     expand();
-    return extract(source_index);
+    PolygonSoup soup = extract(source_index);
+    predicate_counters().filtered += plane_decisions_;
+    return soup;
   }
 
  private:
-  [[nodiscard]] Vec3Ref ref(std::uint32_t p) const { return {points_[p], approx_[p]}; }
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+
+  static std::uint32_t checked_size(std::size_t n) {
+    if (n >= none)
+      throw Error(ErrorCategory::limit,
+                  "convex hull: " + std::to_string(n) + " points exceed the limit of 2^32 - 2");
+    return static_cast<std::uint32_t>(n);
+  }
+
+  // The exact point p with its approximation; for double input made on first
+  // use (deque: references stay valid).
+  [[nodiscard]] Vec3Ref ref(std::uint32_t p) {
+    if (lazy_.empty()) return {points_[p], approx_[p]};
+    if (lazy_[p] == none) {
+      lazy_[p] = static_cast<std::uint32_t>(lazy_points_.size());
+      const Coords& c = coords_[p];
+      lazy_points_.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
+      lazy_approx_.push_back({{c[0], 0.0}, {c[1], 0.0}, {c[2], 0.0}});
+    }
+    return {lazy_points_[lazy_[p]], lazy_approx_[lazy_[p]]};
+  }
+  [[nodiscard]] const Vec3& exact(std::uint32_t p) { return ref(p).exact; }
+
+  // The approximation of p as a filtered value (error_ bounds every point's).
+  [[nodiscard]] Approx approx_coord(std::uint32_t p, int k) const { return {coords_[p][k], error_}; }
+
+  // orient3d(a, b, c, d) and compare_dot(v, w, n) of points, first with a
+  // running-error filter on the double coordinates (so that double input
+  // needs no rationals when it answers), else by the exact predicate.
+  [[nodiscard]] Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    Approx e[3][3];
+    for (int k = 0; k < 3; ++k) {
+      e[0][k] = filtered::sub(approx_coord(b, k), approx_coord(a, k));
+      e[1][k] = filtered::sub(approx_coord(c, k), approx_coord(a, k));
+      e[2][k] = filtered::sub(approx_coord(d, k), approx_coord(a, k));
+    }
+    using filtered::add, filtered::mul, filtered::sub;
+    const Approx r = add(add(mul(e[2][0], sub(mul(e[0][1], e[1][2]), mul(e[0][2], e[1][1]))),
+                             mul(e[2][1], sub(mul(e[0][2], e[1][0]), mul(e[0][0], e[1][2])))),
+                         mul(e[2][2], sub(mul(e[0][0], e[1][1]), mul(e[0][1], e[1][0]))));
+    if (filtered::certain(r)) {
+      ++plane_decisions_;
+      return filtered::sign(r);
+    }
+    return orient3d(ref(a), ref(b), ref(c), ref(d));
+  }
 
   // Sign of point p with respect to triangle t: positive iff p is strictly
   // above (outside).
-  [[nodiscard]] Sign side(std::uint32_t t, std::uint32_t p) const {
+  [[nodiscard]] Sign side(std::uint32_t t, std::uint32_t p) {
+    const PlaneFilter& plane = planes_[t];
+    const double s = plane.value(coords_[p]);
+    if (plane.above(s) || plane.below(s)) {
+      ++plane_decisions_;
+      return s > 0 ? Sign::positive : Sign::negative;
+    }
     const Triangle& tr = tris_[t];
     return orient3d(ref(tr.v[0]), ref(tr.v[1]), ref(tr.v[2]), ref(p));
   }
@@ -113,16 +195,30 @@ class Quickhull {
 
   // Index of a point with the largest (sign > 0) or smallest (sign < 0) dot
   // product with direction d; the first such point on ties.
-  [[nodiscard]] std::uint32_t extreme(Vec3Ref d, Sign sign) const {
+  [[nodiscard]] std::uint32_t extreme(Vec3Ref d, Sign sign) {
     std::uint32_t best = 0;
     for (std::uint32_t i = 1; i < n_; ++i)
-      if (compare_dot(ref(i), ref(best), d) == sign) best = i;
+      if (compare(i, best, d) == sign) best = i;
     return best;
+  }
+
+  // compare_dot(p, q, d), first filtered on the double coordinates.
+  [[nodiscard]] Sign compare(std::uint32_t p, std::uint32_t q, Vec3Ref d) {
+    using filtered::add, filtered::mul, filtered::sub;
+    const ApproxVec3& n = d.approx;
+    const Approx r = add(add(mul(sub(approx_coord(p, 0), approx_coord(q, 0)), n.x),
+                             mul(sub(approx_coord(p, 1), approx_coord(q, 1)), n.y)),
+                         mul(sub(approx_coord(p, 2), approx_coord(q, 2)), n.z));
+    if (filtered::certain(r)) {
+      ++plane_decisions_;
+      return filtered::sign(r);
+    }
+    return compare_dot(ref(p), ref(q), d);
   }
 
   // Picks four affinely independent points far apart, or reports the
   // dimension of the input. Only comparisons of dot products are used.
-  void initial_simplex(std::uint32_t s[4]) const {
+  void initial_simplex(std::uint32_t s[4]) {
     if (n_ == 0) degenerate("there are no points");
     // Extremes along the first axis on which the points differ.
     const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -132,7 +228,7 @@ class Quickhull {
       const Vec3Ref axis{axes[k], axis_approx};
       lo = extreme(axis, Sign::negative);
       hi = extreme(axis, Sign::positive);
-      if (compare_dot(ref(lo), ref(hi), axis) == Sign::zero) lo = hi;
+      if (compare(lo, hi, axis) == Sign::zero) lo = hi;
     }
     if (lo == hi) degenerate("all " + std::to_string(n_) + " points are equal");
     s[0] = lo;
@@ -141,14 +237,14 @@ class Quickhull {
     // Third point: extreme along one of two directions orthogonal to the
     // line; a point is off the line iff its dot product with one of them
     // differs from the line's.
-    const Vec3 d = points_[hi] - points_[lo];
+    const Vec3 d = exact(hi) - exact(lo);
     const Vec3 n1 = (sgn(d.y) != 0 || sgn(d.z) != 0) ? Vec3{0, d.z, -d.y} : Vec3{-d.z, 0, d.x};
     s[2] = off_extreme(n1, lo);
     if (s[2] == none) s[2] = off_extreme(cross(d, n1), lo);
     if (s[2] == none) degenerate("all " + std::to_string(n_) + " points are collinear");
 
     // Fourth point: extreme along the plane normal.
-    s[3] = off_extreme(cross(points_[s[1]] - points_[s[0]], points_[s[2]] - points_[s[0]]), lo);
+    s[3] = off_extreme(cross(exact(s[1]) - exact(s[0]), exact(s[2]) - exact(s[0])), lo);
     if (s[3] == none) degenerate("all " + std::to_string(n_) + " points are coplanar");
   }
 
@@ -156,16 +252,16 @@ class Quickhull {
   // one farther from the plane through `base` orthogonal to n (a thin
   // initial simplex costs up to half again as many predicate calls on random
   // balls); none if all points lie in that plane.
-  [[nodiscard]] std::uint32_t off_extreme(const Vec3& n, std::uint32_t base) const {
+  [[nodiscard]] std::uint32_t off_extreme(const Vec3& n, std::uint32_t base) {
     const ApproxVec3 na = ApproxVec3::of(n);
     const Vec3Ref nr{n, na};
     const std::uint32_t top = extreme(nr, Sign::positive), bottom = extreme(nr, Sign::negative);
-    const bool top_off = compare_dot(ref(top), ref(base), nr) != Sign::zero;
-    const bool bottom_off = compare_dot(ref(bottom), ref(base), nr) != Sign::zero;
+    const bool top_off = compare(top, base, nr) != Sign::zero;
+    const bool bottom_off = compare(bottom, base, nr) != Sign::zero;
     if (!top_off) return bottom_off ? bottom : none;
     if (!bottom_off) return top;
     // <top - base, n> >= <base - bottom, n>  iff  <top + bottom, n> >= <2 base, n>.
-    const Vec3 sum = points_[top] + points_[bottom], twice = points_[base] + points_[base];
+    const Vec3 sum = exact(top) + exact(bottom), twice = exact(base) + exact(base);
     const ApproxVec3 sa = ApproxVec3::of(sum), ta = ApproxVec3::of(twice);
     return compare_dot({sum, sa}, {twice, ta}, nr) != Sign::negative ? top : bottom;
   }
@@ -180,10 +276,11 @@ class Quickhull {
     } else {
       t = static_cast<std::uint32_t>(tris_.size());
       tris_.emplace_back();
-      normals_.emplace_back();
-      normal_approx_.emplace_back();
+      planes_.emplace_back();
+      normal_slot_.push_back(none);
     }
     tris_[t] = Triangle{{a, b, c}, {none, none, none}, 0, 0, 0, 0, false, true, false};
+    planes_[t] = PlaneFilter::of(coords_[a], coords_[b], coords_[c], scale_);
     return t;
   }
 
@@ -194,20 +291,34 @@ class Quickhull {
     free_.push_back(t);
   }
 
-  [[nodiscard]] Vec3Ref conflict_ref(std::uint32_t i) const {
-    return {points_[pool_[i].point], pool_[i].approx};
-  }
-
   [[nodiscard]] Vec3Ref normal_ref(std::uint32_t t) {
     Triangle& tr = tris_[t];
     if (!tr.has_normal) {
       // Only triangles with two or more outside points need their normal.
-      const Vec3& a = points_[tr.v[0]];
-      normals_[t] = cross(points_[tr.v[1]] - a, points_[tr.v[2]] - a);
-      normal_approx_[t] = ApproxVec3::of(normals_[t]);
+      const Vec3& a = exact(tr.v[0]);
+      if (normal_slot_[t] == none) {
+        normal_slot_[t] = static_cast<std::uint32_t>(normals_.size());
+        normals_.emplace_back();
+        normal_approx_.emplace_back();
+      }
+      normals_[normal_slot_[t]] = cross(exact(tr.v[1]) - a, exact(tr.v[2]) - a);
+      normal_approx_[normal_slot_[t]] = ApproxVec3::of(normals_[normal_slot_[t]]);
       tr.has_normal = true;
     }
-    return {normals_[t], normal_approx_[t]};
+    return {normals_[normal_slot_[t]], normal_approx_[normal_slot_[t]]};
+  }
+
+  // compare_dot(p, q, normal of t) == positive, where s_p and s_q are the
+  // plane filter's values of p and q: each is within bound of the exact
+  // orient3d, whose difference is that dot product, so a difference of the
+  // values beyond 3 bounds (2 plus rounding) decides.
+  [[nodiscard]] bool farther(std::uint32_t t, double s_p, std::uint32_t p, double s_q, std::uint32_t q) {
+    const double diff = s_p - s_q, margin = 3.0 * planes_[t].bound;
+    if (diff > margin || -diff > margin) {
+      ++plane_decisions_;
+      return diff > 0;
+    }
+    return compare_dot(ref(p), ref(q), normal_ref(t)) == Sign::positive;
   }
 
   // Moves the conflicts in the pool ranges sources_ (except the point skip)
@@ -221,23 +332,39 @@ class Quickhull {
     count_.assign(k, 0);
     far_src_.assign(k, none);
     moves_.clear();
+    far_value_.resize(k);
+    std::uint64_t decided = 0;
     for (auto [b, e] : sources_) {
       live_ -= e - b;
       for (std::uint32_t i = b; i < e; ++i) {
-        if (pool_[i].point == skip) continue;
-        const Vec3Ref p = conflict_ref(i);
+        const std::uint32_t p = pool_[i].point;
+        if (p == skip) continue;
+        const Coords c = pool_[i].c;
         for (std::uint32_t j = 0; j < k; ++j) {
-          const Triangle& tr = tris_[targets[j]];
-          if (orient3d(ref(tr.v[0]), ref(tr.v[1]), ref(tr.v[2]), p) != Sign::positive) continue;
+          const std::uint32_t t = targets[j];
+          const PlaneFilter& plane = planes_[t];
+          const double s = plane.value(c);
+          if (plane.below(s)) {
+            ++decided;
+            continue;
+          }
+          if (plane.above(s)) {
+            ++decided;
+          } else {
+            const Triangle& tr = tris_[t];
+            if (orient3d(ref(tr.v[0]), ref(tr.v[1]), ref(tr.v[2]), ref(p)) != Sign::positive) continue;
+          }
           moves_.push_back({j, i});
           ++count_[j];
-          if (far_src_[j] == none ||
-              compare_dot(p, conflict_ref(far_src_[j]), normal_ref(targets[j])) == Sign::positive)
+          if (far_src_[j] == none || farther(t, s, p, far_value_[j], pool_[far_src_[j]].point)) {
             far_src_[j] = i;
+            far_value_[j] = s;
+          }
           break;
         }
       }
     }
+    plane_decisions_ += decided;
     // Scatter into fresh ranges at the end of the pool.
     std::uint32_t cursor = static_cast<std::uint32_t>(pool_.size());
     if (pool_.size() + moves_.size() >= none)
@@ -284,7 +411,7 @@ class Quickhull {
   void build_simplex(const std::uint32_t s[4]) {
     // Orient so that the fourth point is below the face (s0, s1, s2).
     std::uint32_t a = s[0], b = s[1], c = s[2], d = s[3];
-    if (orient3d(ref(a), ref(b), ref(c), ref(d)) == Sign::positive) std::swap(b, c);
+    if (orient(a, b, c, d) == Sign::positive) std::swap(b, c);
     // Faces of the tetrahedron a, b, c, d with orient3d(a, b, c, d) < 0,
     // each counterclockwise from outside.
     std::uint32_t t[4] = {new_triangle(a, b, c), new_triangle(a, d, b), new_triangle(b, d, c),
@@ -297,7 +424,7 @@ class Quickhull {
       }
     pool_.reserve(n_);
     for (std::uint32_t p = 0; p < n_; ++p)
-      if (p != a && p != b && p != c && p != d) pool_.push_back({approx_[p], p});
+      if (p != a && p != b && p != c && p != d) pool_.push_back({coords_[p], p});
     live_ = static_cast<std::uint32_t>(pool_.size());
     sources_.assign(1, {0, live_});
     distribute(none, t);
@@ -386,8 +513,7 @@ class Quickhull {
     std::vector<std::uint32_t> out_index(n_, none);
     std::vector<std::uint32_t> cycle_next(n_, none);
     PolygonSoup soup;
-    if (source_index) source_index->clear();
-    std::vector<std::uint32_t> boundary, cycle, corners;
+    std::vector<std::uint32_t> boundary, cycle, corners, extreme_points;
 
     // The vertex of the triangle across edge i of t that is opposite that edge.
     auto opposite = [&](std::uint32_t t, std::uint32_t i) {
@@ -444,30 +570,49 @@ class Quickhull {
       const std::size_t m = cycle.size();
       for (std::size_t k = 0; k < m; ++k) {
         std::uint32_t p = cycle[(k + m - 1) % m], q = cycle[k], r = cycle[(k + 1) % m];
-        if (orient3d(ref(p), ref(q), ref(r), ref(witness)) == Sign::zero) continue;
+        if (orient(p, q, r, witness) == Sign::zero) continue;
         if (out_index[q] == none) {
-          out_index[q] = static_cast<std::uint32_t>(soup.points.size());
-          soup.points.push_back(points_[q]);
-          if (source_index) source_index->push_back(q);
+          out_index[q] = static_cast<std::uint32_t>(extreme_points.size());
+          extreme_points.push_back(q);
         }
         corners.push_back(out_index[q]);
       }
       soup.add_face(corners);
     }
+    // Copied once, in order of first use (growing a vector of rationals
+    // would copy them on every reallocation).
+    soup.points.reserve(extreme_points.size());
+    for (std::uint32_t q : extreme_points) soup.points.push_back(exact(q));
+    if (source_index) *source_index = std::move(extreme_points);
     return soup;
   }
 
-  std::span<const Vec3> points_;
+  std::span<const Vec3> points_;  // exact input (empty for double input)
   std::uint32_t n_ = 0;
   std::vector<ApproxVec3> approx_;
+  std::span<const Coords> coords_;  // the double approximations
+  std::vector<Coords> own_coords_;
+  double error_ = 0;  // bounds |coords_ - exact| for every coordinate
+  PlaneFilterScale scale_;
+  // Double input: lazy_[p] indexes the exact copies made so far.
+  std::vector<std::uint32_t> lazy_;
+  std::deque<Vec3> lazy_points_;
+  std::deque<ApproxVec3> lazy_approx_;
+  std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
+  std::vector<PlaneFilter> planes_;    // per triangle slot
+  std::vector<double> far_value_;
   std::vector<Conflict> pool_, spare_pool_;  // the conflict lists
   std::uint32_t live_ = 0;                   // entries of pool_ in live lists
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sources_, moves_;
   std::vector<std::uint32_t> count_, far_src_;
   std::vector<std::uint32_t> start_of_;
   std::vector<Triangle> tris_;
-  std::vector<Vec3> normals_;  // per triangle slot, valid when has_normal
-  std::vector<ApproxVec3> normal_approx_;
+  // Exact normals, only for the few triangle slots whose farthest point
+  // needed an exact comparison: normal_slot_[t] indexes them (a deque, as
+  // moving rationals around would cost an allocation each).
+  std::vector<std::uint32_t> normal_slot_;
+  std::deque<Vec3> normals_;
+  std::deque<ApproxVec3> normal_approx_;
   std::vector<std::uint32_t> free_;
   std::vector<std::uint32_t> pending_;
   std::vector<std::uint32_t> visible_, stack_, cone_;
@@ -481,8 +626,24 @@ PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* 
   return qh.run(source_index);
 }
 
+PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
+                      std::vector<std::uint32_t>* source_index) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(points[i][k]))
+        throw Error(ErrorCategory::invalid_argument, "convex hull: point " + std::to_string(i) + " has a " +
+                                                         (std::isnan(points[i][k]) ? "NaN" : "infinite") +
+                                                         " coordinate " + std::string(1, "xyz"[k]));
+  Quickhull qh(points);
+  return qh.run(source_index);
+}
+
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {
   // The soup already has maximal convex facets and only extreme vertices.
+  return ConvexPolyhedron::from_trusted_soup(hull_soup(points));
+}
+
+ConvexPolyhedron convex_hull(std::span<const std::array<double, 3>> points) {
   return ConvexPolyhedron::from_trusted_soup(hull_soup(points));
 }
 

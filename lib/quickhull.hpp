@@ -3,6 +3,7 @@
 // soup, so that it can be tested (and used by CHMS) without the mesh layer.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -24,5 +25,12 @@ namespace cvms {
 /// \throw Error(limit) for 2^32 - 1 or more points.
 /// Complexity: O(n log n) expected for random input, O(n) extra memory.
 PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* source_index = nullptr);
+
+/// The same for points given as doubles, each taken exactly: only the points
+/// that an undecided predicate or the output needs become rationals.
+/// \throw Error(invalid_argument) for a NaN or infinite coordinate, naming
+///   the point's index; otherwise as above.
+PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
+                      std::vector<std::uint32_t>* source_index = nullptr);
 
 }  // namespace cvms
