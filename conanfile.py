@@ -94,3 +94,5 @@ class CvmsConan(ConanFile):
         self.cpp_info.set_property("pkg_config_name", "cvms")
         self.cpp_info.libs = ["cvms"]
         self.cpp_info.requires = ["gmp::gmpxx"]
+        if self.settings.os in ("Linux", "FreeBSD"):
+            self.cpp_info.system_libs = ["pthread"]  # Options::threads starts a std::jthread

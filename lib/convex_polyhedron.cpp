@@ -54,6 +54,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "dyadic.hpp"
 
 namespace cvms {
 namespace {
@@ -173,6 +174,10 @@ Vec3 primitive_direction(const Vec3& v) {
     mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c[i].get_mpz_t());
   }
   return {Rational(c[0] / g), Rational(c[1] / g), Rational(c[2] / g)};
+}
+
+Vec3 ConvexPolyhedron::edge_vector(HalfedgeId h) const {
+  return detail::subtract(vertex(mesh_.to(h)), vertex(mesh_.from(h)));
 }
 
 ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) { return from_mesh(Mesh::from_soup(std::move(soup))); }

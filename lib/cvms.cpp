@@ -129,7 +129,7 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
 
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           Stats& stats) {
-  return cvms_facets(a, b, options, stats).build();
+  return cvms_facets(a, b, options, stats).build(options.threads);
 }
 
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,

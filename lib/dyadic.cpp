@@ -25,25 +25,37 @@ void set_reduced_dyadic(mpq_ptr out, mpz_ptr num, mp_bitcnt_t k) {
 
 }  // namespace
 
-void add_into(Rational& out, const Rational& x, const Rational& y) {
+namespace {
+
+// out = x + y or x - y (canonical): the operand with the smaller power-of-two
+// denominator is brought to the larger one. With different denominators the
+// finer numerator is odd and the other term even, so the result is already
+// canonical and set_reduced_dyadic only writes the denominator.
+void add_or_subtract(Rational& out, const Rational& x, const Rational& y, bool subtract) {
   if (!is_dyadic(x) || !is_dyadic(y)) {
-    mpq_add(out.get_mpq_t(), x.get_mpq_t(), y.get_mpq_t());
+    (subtract ? mpq_sub : mpq_add)(out.get_mpq_t(), x.get_mpq_t(), y.get_mpq_t());
     return;
   }
   const mp_bitcnt_t kx = log2_of_power_of_two(x.get_den_mpz_t());
   const mp_bitcnt_t ky = log2_of_power_of_two(y.get_den_mpz_t());
-  // Bring the operand with the smaller denominator to the larger one.
-  const Rational& fine = kx >= ky ? x : y;
-  const Rational& coarse = kx >= ky ? y : x;
   const mp_bitcnt_t k = std::max(kx, ky);
   mpz_ptr num = mpq_numref(out.get_mpq_t());
-  mpz_mul_2exp(num, coarse.get_num_mpz_t(), k - std::min(kx, ky));
-  mpz_add(num, num, fine.get_num_mpz_t());
-  // With different denominators the finer numerator is odd and the other
-  // term even, so the sum is already canonical; set_reduced_dyadic finds no
-  // common factor then and only writes the denominator.
+  auto combine = subtract ? mpz_sub : mpz_add;
+  if (kx >= ky) {
+    mpz_mul_2exp(num, y.get_num_mpz_t(), k - ky);
+    combine(num, x.get_num_mpz_t(), num);
+  } else {
+    mpz_mul_2exp(num, x.get_num_mpz_t(), k - kx);
+    combine(num, num, y.get_num_mpz_t());
+  }
   set_reduced_dyadic(out.get_mpq_t(), num, k);
 }
+
+}  // namespace
+
+void add_into(Rational& out, const Rational& x, const Rational& y) { add_or_subtract(out, x, y, false); }
+
+void subtract_into(Rational& out, const Rational& x, const Rational& y) { add_or_subtract(out, x, y, true); }
 
 Vec3 add(const Vec3& x, const Vec3& y) {
   Vec3 sum;
@@ -51,11 +63,16 @@ Vec3 add(const Vec3& x, const Vec3& y) {
   return sum;
 }
 
-Rational integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch) {
+Vec3 subtract(const Vec3& x, const Vec3& y) {
+  Vec3 difference;
+  for (int i = 0; i < 3; ++i) subtract_into(difference[i], x[i], y[i]);
+  return difference;
+}
+
+void integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& out) {
   mpz_class& sum = scratch.sum;
   mpz_class& term = scratch.term;
   sum = 0;
-  Rational r;
   if (is_dyadic(p.x) && is_dyadic(p.y) && is_dyadic(p.z)) {
     mp_bitcnt_t k = 0;
     for (int i = 0; i < 3; ++i) k = std::max(k, log2_of_power_of_two(p[i].get_den_mpz_t()));
@@ -64,8 +81,8 @@ Rational integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch) {
       mpz_mul_2exp(term.get_mpz_t(), p[i].get_num_mpz_t(), k - log2_of_power_of_two(p[i].get_den_mpz_t()));
       mpz_addmul(sum.get_mpz_t(), term.get_mpz_t(), n[i].get_num_mpz_t());
     }
-    set_reduced_dyadic(r.get_mpq_t(), sum.get_mpz_t(), k);
-    return r;
+    set_reduced_dyadic(out.get_mpq_t(), sum.get_mpz_t(), k);
+    return;
   }
   mpz_class& l = scratch.denominator;
   l = p.x.get_den();
@@ -77,10 +94,9 @@ Rational integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch) {
     term *= p[i].get_num();
     mpz_addmul(sum.get_mpz_t(), term.get_mpz_t(), n[i].get_num_mpz_t());
   }
-  mpz_set(mpq_numref(r.get_mpq_t()), sum.get_mpz_t());
-  mpz_set(mpq_denref(r.get_mpq_t()), l.get_mpz_t());
-  r.canonicalize();
-  return r;
+  mpz_set(mpq_numref(out.get_mpq_t()), sum.get_mpz_t());
+  mpz_set(mpq_denref(out.get_mpq_t()), l.get_mpz_t());
+  out.canonicalize();
 }
 
 }  // namespace cvms::detail

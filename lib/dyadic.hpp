@@ -22,8 +22,14 @@ namespace cvms::detail {
 /// out = x + y, canonical. out may alias neither x nor y.
 void add_into(Rational& out, const Rational& x, const Rational& y);
 
+/// out = x - y, canonical. out may alias neither x nor y.
+void subtract_into(Rational& out, const Rational& x, const Rational& y);
+
 /// x + y coordinatewise (add_into per coordinate).
 [[nodiscard]] Vec3 add(const Vec3& x, const Vec3& y);
+
+/// x - y coordinatewise (subtract_into per coordinate).
+[[nodiscard]] Vec3 subtract(const Vec3& x, const Vec3& y);
 
 /// Reusable integer scratch for integer_dot, so that a loop of dot products
 /// allocates only for its results.
@@ -33,11 +39,13 @@ struct DotScratch {
   mpz_class term;         ///< one scaled coordinate
 };
 
-/// dot(n, p), canonical, for an integer vector n and a rational point p: with
+/// out = dot(n, p), canonical, for an integer vector n and a rational point p: with
 /// L the lcm of p's denominators, dot = (sum n_i num_i (L / den_i)) / L,
 /// reduced once at the end (by shifts alone when p is dyadic) instead of
 /// after each of five rational operations.
 /// \pre n has integer coordinates.
-[[nodiscard]] Rational integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch);
+/// Writing into an existing out reuses its storage (no Rational is moved:
+/// a moved-from mpq_class is re-initialised, which allocates).
+void integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& out);
 
 }  // namespace cvms::detail

@@ -2,6 +2,7 @@
 // Primitive directions and their cross products in 64/128-bit integers.
 #include "small_direction.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <utility>
@@ -40,26 +41,37 @@ void make_primitive(Int128 (&v)[3]) noexcept {
   for (Int128& x : v) x /= static_cast<Int128>(g);
 }
 
-Rational rational_of(Int128 x) {
-  if (x >= INT64_MIN && x <= INT64_MAX) return Rational(static_cast<long>(x));
-  const Uint128 m = magnitude(x);
-  const std::uint64_t words[2] = {static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
-  mpz_class z;
-  mpz_import(z.get_mpz_t(), 2, -1, sizeof(std::uint64_t), 0, 0, words);
-  if (x < 0) z = -z;
-  return Rational(z);
+void set_integer(Rational& out, Int128 x) {
+  mpz_ptr num = mpq_numref(out.get_mpq_t());
+  if (x >= INT64_MIN && x <= INT64_MAX) {
+    mpz_set_si(num, static_cast<long>(x));
+  } else {
+    const Uint128 m = magnitude(x);
+    const std::uint64_t words[2] = {static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
+    mpz_import(num, 2, -1, sizeof(std::uint64_t), 0, 0, words);
+    if (x < 0) mpz_neg(num, num);
+  }
+  mpz_set_ui(mpq_denref(out.get_mpq_t()), 1);
 }
 
-// A finite double as mantissa * 2^exponent with |mantissa| < 2^53.
+// A finite nonzero double as odd mantissa * 2^exponent, read off its bits.
 struct Decomposed {
   std::int64_t mantissa;
   int exponent;
 };
 
 Decomposed decompose(double d) noexcept {
-  int e = 0;
-  const double f = std::frexp(d, &e);  // d = f 2^e, 0.5 <= |f| < 1
-  return {static_cast<std::int64_t>(std::ldexp(f, 53)), e - 53};
+  const auto bits = std::bit_cast<std::uint64_t>(d);
+  const auto biased = static_cast<int>((bits >> 52) & 0x7ff);
+  std::uint64_t m = bits & ((std::uint64_t{1} << 52) - 1);
+  int e = -1074;  // subnormal
+  if (biased != 0) {
+    m |= std::uint64_t{1} << 52;
+    e = biased - 1075;
+  }
+  const int zeros = std::countr_zero(m);
+  const auto mantissa = static_cast<std::int64_t>(m >> zeros);
+  return {(bits >> 63) != 0 ? -mantissa : mantissa, e + zeros};
 }
 
 }  // namespace
@@ -69,8 +81,7 @@ Vec3 SmallDirection::to_vec3() const {
           Rational(static_cast<long>(c[2]))};
 }
 
-std::optional<SmallDirection> small_primitive_direction(const ApproxVec3& from,
-                                                        const ApproxVec3& to) noexcept {
+std::optional<SmallDirection> small_integer_direction(const ApproxVec3& from, const ApproxVec3& to) noexcept {
   const Approx* coordinates[2][3] = {{&from.x, &from.y, &from.z}, {&to.x, &to.y, &to.z}};
   Decomposed parts[2][3];
   int lowest = 0;
@@ -79,14 +90,16 @@ std::optional<SmallDirection> small_primitive_direction(const ApproxVec3& from,
     for (int i = 0; i < 3; ++i) {
       const Approx& a = *coordinates[p][i];
       if (a.error != 0.0 || !std::isfinite(a.value)) return std::nullopt;
-      parts[p][i] = a.value == 0.0 ? Decomposed{0, 0} : decompose(a.value);
-      if (a.value != 0.0) {
-        lowest = any ? std::min(lowest, parts[p][i].exponent) : parts[p][i].exponent;
-        any = true;
+      if (a.value == 0.0) {
+        parts[p][i] = {0, 0};
+        continue;
       }
+      parts[p][i] = decompose(a.value);
+      lowest = any ? std::min(lowest, parts[p][i].exponent) : parts[p][i].exponent;
+      any = true;
     }
   if (!any) return std::nullopt;
-  // Every value is mantissa 2^(exponent - lowest) in units of 2^lowest; with
+  // In units of 2^lowest every value is mantissa 2^(exponent - lowest); with
   // shifts up to 72 each is below 2^125 and a difference below 2^126.
   constexpr int max_shift = 72;
   Int128 d[3];
@@ -94,28 +107,28 @@ std::optional<SmallDirection> small_primitive_direction(const ApproxVec3& from,
     Int128 v[2];
     for (int p = 0; p < 2; ++p) {
       const Decomposed& part = parts[p][i];
-      if (part.mantissa == 0) {
-        v[p] = 0;
-        continue;
-      }
       const int shift = part.exponent - lowest;
       if (shift > max_shift) return std::nullopt;
-      v[p] = static_cast<Int128>(part.mantissa) * (Int128{1} << shift);
+      v[p] = part.mantissa == 0 ? 0 : static_cast<Int128>(part.mantissa) * (Int128{1} << shift);
     }
     d[i] = v[1] - v[0];
   }
-  if (d[0] == 0 && d[1] == 0 && d[2] == 0) return std::nullopt;
-  make_primitive(d);
+  const Uint128 any_bits = magnitude(d[0]) | magnitude(d[1]) | magnitude(d[2]);
+  if (any_bits == 0) return std::nullopt;
+  // Dropping the common power of two is cheap and is most of the gcd of
+  // double differences; primitive_cross removes whatever remains.
+  const int common = countr_zero(any_bits);
   constexpr Int128 limit = Int128{1} << 62;
   SmallDirection result{};
   for (int i = 0; i < 3; ++i) {
-    if (d[i] >= limit || d[i] <= -limit) return std::nullopt;
-    result.c[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(d[i]);
+    const Int128 c = d[i] >> common;  // exact: 2^common divides d[i]
+    if (c >= limit || c <= -limit) return std::nullopt;
+    result.c[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(c);
   }
   return result;
 }
 
-Vec3 primitive_cross(const SmallDirection& u, const SmallDirection& v) {
+void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out) {
   // Each product is below 2^124 in magnitude, each difference below 2^125.
   Int128 c[3];
   for (int i = 0; i < 3; ++i) {
@@ -123,7 +136,7 @@ Vec3 primitive_cross(const SmallDirection& u, const SmallDirection& v) {
     c[i] = static_cast<Int128>(u.c[j]) * v.c[k] - static_cast<Int128>(u.c[k]) * v.c[j];
   }
   make_primitive(c);
-  return {rational_of(c[0]), rational_of(c[1]), rational_of(c[2])};
+  for (int i = 0; i < 3; ++i) set_integer(out[i], c[i]);
 }
 
 }  // namespace cvms::detail

@@ -3,6 +3,9 @@
 // Section 4.3; shared with the slope-diagram algorithm of Section 5.2).
 #include "stitch.hpp"
 
+#include <cmath>
+#include <exception>
+#include <thread>
 #include <unordered_map>
 #include <utility>
 
@@ -47,9 +50,9 @@ Projection projection_along(const Vec3& n) {
 
 Vec2 project(const Vec3& p, Projection pr) { return {p[pr.u], p[pr.v]}; }
 
-// primitive_direction(cross(u, v)) for primitive integer vectors u, v: the
+// out = primitive_direction(cross(u, v)) for integer vectors u, v: the
 // cross product and one gcd in integers (no rational canonicalisation).
-Vec3 primitive_cross(const Vec3& u, const Vec3& v) {
+void primitive_cross(const Vec3& u, const Vec3& v, Vec3& out) {
   const mpz_class* a[3] = {&u.x.get_num(), &u.y.get_num(), &u.z.get_num()};
   const mpz_class* b[3] = {&v.x.get_num(), &v.y.get_num(), &v.z.get_num()};
   mpz_class c[3];
@@ -61,12 +64,13 @@ Vec3 primitive_cross(const Vec3& u, const Vec3& v) {
   mpz_class g;
   mpz_gcd(g.get_mpz_t(), c[0].get_mpz_t(), c[1].get_mpz_t());
   mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c[2].get_mpz_t());
-  if (g != 1)
-    for (mpz_class& x : c) mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), g.get_mpz_t());
-  return {Rational(c[0]), Rational(c[1]), Rational(c[2])};
+  for (int i = 0; i < 3; ++i) {
+    mpz_divexact(mpq_numref(out[i].get_mpq_t()), c[i].get_mpz_t(), g.get_mpz_t());
+    mpz_set_ui(mpq_denref(out[i].get_mpq_t()), 1);
+  }
 }
 
-// The primitive directions of the edges of one operand that edge facets use,
+// Integer directions of the edges of one operand that edge facets use,
 // each computed once (many edge facets share an edge), indexed by edge; the
 // direction is that of the edge's even halfedge. Machine integers when the
 // endpoints are doubles, rationals otherwise.
@@ -81,23 +85,24 @@ class EdgeDirections {
       if (small_.empty()) small_.resize(state_.size());
       const Mesh& m = p_.mesh();
       const HalfedgeId even = Mesh::halfedge(Mesh::edge(h));
-      const auto d = small_primitive_direction(p_.vertex_approx(m.from(even)), p_.vertex_approx(m.to(even)));
+      const auto d = small_integer_direction(p_.vertex_approx(m.from(even)), p_.vertex_approx(m.to(even)));
       state_[e] = d ? State::small : State::general;
       if (d) small_[e] = *d;
     }
     return state_[e] == State::small ? &small_[e] : nullptr;
   }
 
-  // The direction of h's edge as rationals.
+  // The direction of h's edge as rationals (rarely needed: only when the
+  // other edge of an edge facet has no small direction).
   const Vec3& general(HalfedgeId h) {
     const std::uint32_t e = Mesh::edge(h).index();
-    if (general_.empty()) general_.resize(state_.size());
-    Vec3& d = general_[e];
-    if (is_zero(d)) {
+    auto [it, inserted] = general_.try_emplace(e);
+    if (inserted) {
       const SmallDirection* s = small(h);
-      d = s != nullptr ? s->to_vec3() : primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+      it->second =
+          s != nullptr ? s->to_vec3() : primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
     }
-    return d;
+    return it->second;
   }
 
  private:
@@ -105,8 +110,28 @@ class EdgeDirections {
   const ConvexPolyhedron& p_;
   std::vector<State> state_;
   std::vector<SmallDirection> small_;
-  std::vector<Vec3> general_;
+  std::unordered_map<std::uint32_t, Vec3> general_;
 };
+
+// Approx::of(x + y) from the approximations of x and y when both are exact
+// doubles, without converting the exact sum back from GMP: TwoSum (Knuth)
+// gives the nearest double s and the exact rounding error r = x + y - s;
+// Approx::of truncates toward zero, which is s itself when r is zero or
+// points away from zero, and the next double toward zero otherwise. The
+// error bound is Approx::of's, so the cached value is the same either way.
+Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) noexcept {
+  if (x.error == 0.0 && y.error == 0.0) {
+    const double s = x.value + y.value;
+    if (std::isfinite(s)) {
+      const double y_part = s - x.value;
+      const double r = (x.value - (s - y_part)) + (y.value - y_part);
+      if (r == 0.0) return {s, 0.0};
+      const double truncated = (r > 0.0) == (s > 0.0) ? s : std::nextafter(s, 0.0);
+      return {truncated, std::fabs(truncated) * 0x1p-52 + 0x1p-1074};
+    }
+  }
+  return Approx::of(exact_sum);
+}
 
 // A dense pair -> output-index table is used when it is not much larger than
 // the output itself; otherwise a hash map.
@@ -172,7 +197,9 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
                ha.index(), hb.index()});
 }
 
-PolygonSoup SumFacetBuilder::soup() const {
+PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr); }
+
+PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
   PolygonSoup soup;
@@ -180,8 +207,17 @@ PolygonSoup SumFacetBuilder::soup() const {
   soup.face_indices.resize(pairs_.size());
   soup.points.reserve(pairs_.size() / 3 + 1);  // each vertex is in at least three facets
 
+  if (approx != nullptr) approx->reserve(soup.points.capacity());
   auto new_vertex = [&](const VertexPair& p) {
-    soup.points.push_back(add(a_.vertex(VertexId(p.a)), b_.vertex(VertexId(p.b))));
+    const VertexId va(p.a), vb(p.b);
+    // Built in place: moving an mpq_class re-initialises the source, which allocates.
+    Vec3& sum = soup.points.emplace_back();
+    for (int i = 0; i < 3; ++i) add_into(sum[i], a_.vertex(va)[i], b_.vertex(vb)[i]);
+    if (approx != nullptr) {
+      const ApproxVec3 &xa = a_.vertex_approx(va), &xb = b_.vertex_approx(vb);
+      approx->push_back(
+          {approx_sum(xa.x, xb.x, sum.x), approx_sum(xa.y, xb.y, sum.y), approx_sum(xa.z, xb.z, sum.z)});
+    }
     return static_cast<std::uint32_t>(soup.points.size() - 1);
   };
 
@@ -207,37 +243,77 @@ PolygonSoup SumFacetBuilder::soup() const {
   return soup;
 }
 
-ConvexPolyhedron SumFacetBuilder::build() const {
-  PolygonSoup soup = this->soup();
-  std::vector<Vec3> normals;
-  normals.reserve(normals_.size());
+FacetPlanes SumFacetBuilder::normals() const {
+  const std::size_t n = num_facets();
+  FacetPlanes planes;
+  planes.normals.reserve(n);
+  planes.normal_approx.reserve(n);
   EdgeDirections directions_a(a_);
   EdgeDirections directions_b(b_);
-  for (const NormalSource& n : normals_) {
-    switch (n.kind) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const NormalSource& source = normals_[i];
+    // Every element is built in place (see soup()).
+    Vec3& normal = planes.normals.emplace_back();
+    switch (source.kind) {
       case NormalKind::facet_a:
-        normals.push_back(a_.normal(FaceId(n.index)));
+        normal = a_.normal(FaceId(source.index));
         break;
       case NormalKind::facet_b:
-        normals.push_back(b_.normal(FaceId(n.index)));
+        normal = b_.normal(FaceId(source.index));
         break;
       case NormalKind::edges_positive:
       case NormalKind::edges_negative: {
         // The directions belong to the even halfedge of each edge.
-        const HalfedgeId ha(n.index), hb(n.other);
+        const HalfedgeId ha(source.index), hb(source.other);
         const SmallDirection* da = directions_a.small(ha);
         const SmallDirection* db = directions_b.small(hb);
-        Vec3 c = da != nullptr && db != nullptr
-                     ? primitive_cross(*da, *db)
-                     : primitive_cross(directions_a.general(ha), directions_b.general(hb));
-        const bool flip = (n.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
-        if (flip) c = -c;
-        normals.push_back(std::move(c));
+        if (da != nullptr && db != nullptr)
+          primitive_cross(*da, *db, normal);
+        else
+          primitive_cross(directions_a.general(ha), directions_b.general(hb), normal);
+        const bool flip =
+            (source.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
+        if (flip)
+          for (int k = 0; k < 3; ++k) mpq_neg(normal[k].get_mpq_t(), normal[k].get_mpq_t());
         break;
       }
     }
+    planes.normal_approx.push_back(ApproxVec3::of(normal));
   }
-  return ConvexPolyhedronAccess::from_trusted_soup(std::move(soup), std::move(normals));
+  return planes;
+}
+
+ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
+  // Two independent parts of about equal cost: the facet normals, and the
+  // exact vertices with the mesh. A second thread runs the first. The plane
+  // offsets need both.
+  FacetPlanes planes;
+  std::vector<ApproxVec3> vertex_approx;
+  Mesh mesh;
+  auto build_mesh = [&] { mesh = ConvexPolyhedronAccess::output_mesh(soup(&vertex_approx)); };
+  if (threads <= 1) {
+    build_mesh();
+    planes = normals();
+  } else {
+    std::exception_ptr failure;
+    {
+      std::jthread worker([&] {
+        try {
+          planes = normals();
+        } catch (...) {
+          failure = std::current_exception();
+        }
+      });
+      build_mesh();  // if this throws, the jthread joins before the exception leaves
+    }
+    if (failure) std::rethrow_exception(failure);
+  }
+  planes.offsets.reserve(mesh.num_faces());
+  DotScratch scratch;
+  for (FaceId f : mesh.faces())
+    integer_dot(planes.normals[f.index()], mesh.position(mesh.from(mesh.halfedge(f))), scratch,
+                planes.offsets.emplace_back());  // in place (see soup())
+  return ConvexPolyhedronAccess::assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
 }
 
 }  // namespace cvms::detail

@@ -16,6 +16,7 @@
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/predicates.hpp"
+#include "trusted_polyhedron.hpp"
 
 namespace cvms::detail {
 
@@ -58,7 +59,9 @@ class SumFacetBuilder {
   /// The normals are not recomputed from the output: each is the known
   /// normal of the facet of A or B it is parallel to, or, for e_A + e_B, the
   /// primitive direction of +-cross(d_A, d_B).
-  [[nodiscard]] ConvexPolyhedron build() const;
+  /// threads > 1 computes the facet normals on a second thread while this
+  /// one builds the vertices and the mesh (same result).
+  [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
 
   /// The glued facets as a soup: one point per distinct vertex pair (its
   /// exact coordinates computed once), facets in the order added. build()
@@ -66,6 +69,10 @@ class SumFacetBuilder {
   [[nodiscard]] PolygonSoup soup() const;
 
  private:
+  // The normals of the facets and their approximations (no offsets yet).
+  [[nodiscard]] FacetPlanes normals() const;
+  // soup(), and if approx is not null the approximations of its points.
+  [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx) const;
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
   // Where the normal of an output facet comes from: facet `index` of A or B,
   // or the edges of halfedges (index, other) with the given orientation.

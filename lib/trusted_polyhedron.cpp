@@ -1,34 +1,33 @@
 // SPDX-License-Identifier: MIT
-// ConvexPolyhedron from trusted facets with known normals (see the header).
+// ConvexPolyhedron from trusted parts (see the header).
 #include "trusted_polyhedron.hpp"
 
 #include <string>
 #include <utility>
 
 #include "cvms/error.hpp"
-#include "dyadic.hpp"
 
 namespace cvms::detail {
 
-ConvexPolyhedron ConvexPolyhedronAccess::from_trusted_soup(PolygonSoup soup, std::vector<Vec3> normals) {
-  if (normals.size() != soup.num_faces())
-    throw Error(ErrorCategory::invalid_argument, "from_trusted_soup: " + std::to_string(normals.size()) +
-                                                     " normals for " + std::to_string(soup.num_faces()) +
-                                                     " faces");
+Mesh ConvexPolyhedronAccess::output_mesh(PolygonSoup soup) {
+  return Mesh::from_soup_with_distinct_points(std::move(soup));
+}
+
+ConvexPolyhedron ConvexPolyhedronAccess::assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx,
+                                                  FacetPlanes planes) {
+  const std::size_t faces = planes.normals.size();
+  if (planes.normal_approx.size() != faces || planes.offsets.size() != faces || faces != mesh.num_faces() ||
+      vertex_approx.size() != mesh.num_vertices())
+    throw Error(ErrorCategory::invalid_argument,
+                "assemble: " + std::to_string(faces) + " planes and " + std::to_string(vertex_approx.size()) +
+                    " approximations for " + std::to_string(mesh.num_faces()) + " faces and " +
+                    std::to_string(mesh.num_vertices()) + " vertices");
   ConvexPolyhedron p;
-  p.mesh_ = Mesh::from_soup_with_distinct_points(std::move(soup));
-  const Mesh& m = p.mesh_;
-  p.vertex_approx_.reserve(m.num_vertices());
-  for (VertexId v : m.vertices()) p.vertex_approx_.push_back(ApproxVec3::of(m.position(v)));
-  p.normal_approx_.reserve(m.num_faces());
-  p.offsets_.reserve(m.num_faces());
-  DotScratch scratch;
-  for (FaceId f : m.faces()) {
-    const Vec3& n = normals[f.index()];
-    p.offsets_.push_back(integer_dot(n, m.position(m.from(m.halfedge(f))), scratch));
-    p.normal_approx_.push_back(ApproxVec3::of(n));
-  }
-  p.normals_ = std::move(normals);
+  p.mesh_ = std::move(mesh);
+  p.vertex_approx_ = std::move(vertex_approx);
+  p.normals_ = std::move(planes.normals);
+  p.normal_approx_ = std::move(planes.normal_approx);
+  p.offsets_ = std::move(planes.offsets);
   return p;
 }
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The algorithms' output path: a ConvexPolyhedron from facets whose exact
-// primitive normals the caller already knows, so that nothing is recomputed
-// (no cross products, no gcds). Private to the library.
+// primitive normals and plane offsets the caller already knows, so that
+// nothing is recomputed (no cross products, no gcds), built in parts that
+// may be computed concurrently. Private to the library.
 #pragma once
 
 #include <vector>
@@ -10,14 +11,23 @@
 
 namespace cvms::detail {
 
+/// The planes of the output facets, index by index.
+struct FacetPlanes {
+  std::vector<Vec3> normals;              ///< outward primitive integer normals
+  std::vector<ApproxVec3> normal_approx;  ///< their approximations
+  std::vector<Rational> offsets;          ///< dot(normal, x) for x on the facet
+};
+
 struct ConvexPolyhedronAccess {
-  /// As ConvexPolyhedron::from_trusted_soup, with normals[f] the outward
-  /// normal of face f of the soup, already a primitive integer vector.
-  /// Topology is checked as in Mesh::from_soup; geometry is not, and the
-  /// points must be canonical and pairwise distinct.
-  /// \pre normals.size() == soup.num_faces() and the from_trusted_soup
-  ///   guarantee holds.
-  static ConvexPolyhedron from_trusted_soup(PolygonSoup soup, std::vector<Vec3> normals);
+  /// The half-edge mesh of an output soup, topology checked as in
+  /// Mesh::from_soup. \pre the points are canonical and pairwise distinct.
+  static Mesh output_mesh(PolygonSoup soup);
+
+  /// The polyhedron from its mesh, the approximations of its vertices and
+  /// the planes of its faces (index by index). Geometry is not checked.
+  /// \pre the from_trusted_soup guarantee holds and the planes are exact.
+  /// \throw Error(invalid_argument) if the counts do not match.
+  static ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes);
 };
 
 }  // namespace cvms::detail

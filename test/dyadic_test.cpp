@@ -45,6 +45,22 @@ TEST(Dyadic, AddIntoEqualsRationalSum) {
     }
 }
 
+TEST(Dyadic, SubtractIntoEqualsRationalDifference) {
+  const std::uint64_t seed = 20261124;
+  const auto v = samples(seed);
+  for (const Rational& x : v)
+    for (const Rational& y : v) {
+      Rational difference;
+      subtract_into(difference, x, y);
+      const Rational expected = x - y;
+      ASSERT_EQ(difference, expected) << "seed " << seed << ": " << x << " - " << y;
+      ASSERT_EQ(difference.get_den(), expected.get_den()) << x << " - " << y;
+    }
+  const Vec3 p{Rational(1, 2), Rational(1, 3), Rational(-5, 4)};
+  const Vec3 q{Rational(1, 2), Rational(1, 6), Rational(1, 64)};
+  EXPECT_EQ(subtract(p, q), p - q);
+}
+
 TEST(Dyadic, AddIntoCancellationIsCanonical) {
   Rational sum;
   add_into(sum, Rational(3, 8), Rational(-3, 8));
@@ -71,7 +87,8 @@ TEST(Dyadic, IntegerDotEqualsRationalDot) {
     const Vec3 p{v[i], v[i + 1], v[i + 2]};
     Vec3 n{Rational(coefficient(rng)), Rational(coefficient(rng)), Rational(0)};
     if (i % 3 == 0) n.z = Rational(mpz_class("123456789012345678901234567890"));
-    const Rational d = integer_dot(n, p, scratch);
+    Rational d(1, 3);  // overwritten, whatever it held
+    integer_dot(n, p, scratch, d);
     const Rational expected = dot(n, p);
     ASSERT_EQ(d, expected) << "seed " << seed << " i " << i;
     ASSERT_EQ(d.get_den(), expected.get_den()) << "seed " << seed << " i " << i;

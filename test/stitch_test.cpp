@@ -7,6 +7,7 @@
 
 #include <set>
 
+#include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
 
@@ -30,6 +31,62 @@ Vec3 polygon_normal(const std::vector<Vec3>& pts) {
   Vec3 n{0, 0, 0};
   for (std::size_t i = 0; i < pts.size(); ++i) n += cross(pts[i], pts[(i + 1) % pts.size()]);
   return n;
+}
+
+// The output's cached approximations (derived from the inputs' by TwoSum,
+// not from the exact output) must bound the exact coordinates, and the plane
+// data must be exact: checked in rationals on sums whose coordinates are
+// doubles (TwoSum path), near-double and non-double (fallback paths).
+TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
+  const ConvexPolyhedron third = shapes::cube().transformed(scaling(Rational(1, 3)), Vec3{0, 0, 0});
+  const ConvexPolyhedron tiny = shapes::cube().transformed(
+      scaling(Rational(mpz_class(1), mpz_class(1) << 1000)), Vec3{Rational(1), 0, 0});
+  const std::pair<ConvexPolyhedron, ConvexPolyhedron> cases[] = {
+      {shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3)},
+      {shapes::geodesic_sphere(2), third},
+      {shapes::geodesic_sphere(2), tiny}};
+  for (const auto& [a, b] : cases) {
+    const ConvexPolyhedron s = minkowski_sum(a, b).polyhedron;
+    for (VertexId v : s.mesh().vertices()) {
+      const Vec3& x = s.vertex(v);
+      const ApproxVec3& ax = s.vertex_approx(v);
+      const Approx* parts[3] = {&ax.x, &ax.y, &ax.z};
+      for (int i = 0; i < 3; ++i)
+        ASSERT_LE(abs(Rational(parts[i]->value) - x[i]), Rational(parts[i]->error)) << "vertex " << v.index();
+    }
+    for (FaceId f : s.mesh().faces()) {
+      const Vec3& n = s.normal(f);
+      for (HalfedgeId h : s.mesh().face_halfedges(f))
+        ASSERT_EQ(dot(n, s.vertex(s.mesh().from(h))), s.plane_offset(f)) << "facet " << f.index();
+    }
+    EXPECT_TRUE(s.is_convex()) << "case " << (&a - &cases[0].first);
+  }
+}
+
+// Options::threads = 2 builds the same polyhedron (numbering included) on a
+// worker thread plus the caller, and it equals CHMS, the independent oracle.
+TEST(Stitch, TwoThreadsBuildTheSamePolyhedron) {
+  const std::pair<ConvexPolyhedron, ConvexPolyhedron> cases[] = {
+      {shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3)},
+      {shapes::cube(), shapes::geodesic_sphere(3)},
+      {shapes::truncated_cube(), shapes::tetrahedron()}};
+  for (const auto& [a, b] : cases) {
+    Options two;
+    two.threads = 2;
+    const ConvexPolyhedron one_thread = minkowski_sum(a, b).polyhedron;
+    const ConvexPolyhedron two_threads = minkowski_sum(a, b, two).polyhedron;
+    ASSERT_EQ(two_threads.num_vertices(), one_thread.num_vertices());
+    ASSERT_EQ(two_threads.num_facets(), one_thread.num_facets());
+    for (VertexId v : one_thread.mesh().vertices()) ASSERT_EQ(two_threads.vertex(v), one_thread.vertex(v));
+    for (FaceId f : one_thread.mesh().faces()) {
+      ASSERT_EQ(two_threads.normal(f), one_thread.normal(f));
+      ASSERT_EQ(two_threads.plane_offset(f), one_thread.plane_offset(f));
+    }
+    Options chms;
+    chms.algorithm = Algorithm::chms;
+    EXPECT_EQ(test::describe(two_threads), test::describe(minkowski_sum(a, b, chms).polyhedron));
+    EXPECT_TRUE(two_threads.is_convex());
+  }
 }
 
 TEST(Stitch, FacetPlusFacetGivesTheDoubledShapeDenseAndHashed) {

@@ -107,7 +107,7 @@ class ConvexPolyhedron {
   [[nodiscard]] const Rational& plane_offset(FaceId f) const noexcept { return offsets_[f.index()]; }
 
   /// The direction of the edge of h: vertex(to(h)) - vertex(from(h)).
-  [[nodiscard]] Vec3 edge_vector(HalfedgeId h) const { return vertex(mesh_.to(h)) - vertex(mesh_.from(h)); }
+  [[nodiscard]] Vec3 edge_vector(HalfedgeId h) const;
 
   /// Re-verifies exactly that the stored data describe a convex polyhedron
   /// with maximal facets and extreme vertices (for tests; O(V F) in the worst case is fine).

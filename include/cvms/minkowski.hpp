@@ -51,6 +51,11 @@ struct Options {
   /// CVMS only: how contributing vertices are found.
   ContributingVertexSearch contributing_vertex_search = ContributingVertexSearch::walk;
   EdgeFacetSearch edge_facet_search = EdgeFacetSearch::walk;  ///< CVMS only
+  /// CVMS only: 1 (the default) computes everything on the calling thread;
+  /// 2 or more also start one worker thread inside the call, which computes
+  /// the output's facet planes while the calling thread builds its vertices
+  /// and mesh (more threads are not used yet). The result is identical.
+  unsigned threads = 1;
 };
 
 /// What an algorithm did. For CVMS, translated + corner + edge facets equals
