@@ -25,14 +25,15 @@ STYLES = {
     "ESSDMS": ("ESSDMS", "#9467bd", ""),
     "CVMS_paper": ("CVMS (paper-faithful)", "#ff7f0e", ""),
     "CVMS": ("CVMS (output-sensitive)", "#d62728", ""),
+    "CVMS_2threads": ("CVMS (output-sensitive, 2 threads)", "#d62728", "8,3"),
     "Limit_Mesh": ("limit: output mesh only", "#8c564b", "5,4"),
     "Limit_Build": ("limit: output polyhedron build", "#e377c2", "5,4"),
     "Qhull": ("qhull (double, pairwise sums)", "#1f77b4", "2,3"),
     "CGAL": ("CGAL convex_hull_3 Epeck (pairwise sums)", "#2ca02c", "2,3"),
 }
 TABLE = {"BM_CHMS": "CHMS", "BM_ESSDMS": "ESSDMS", "BM_CVMS_paper": "CVMS_paper", "BM_CVMS": "CVMS",
-         "BM_Qhull_PairwiseSums": "Qhull", "BM_CGAL_PairwiseSums": "CGAL"}
-SCALING = {"BM_CVMS_SphereRot": "CVMS", "BM_CVMS_paper_SphereRot": "CVMS_paper",
+         "BM_CVMS_2threads": "CVMS_2threads", "BM_Qhull_PairwiseSums": "Qhull", "BM_CGAL_PairwiseSums": "CGAL"}
+SCALING = {"BM_CVMS_SphereRot": "CVMS", "BM_CVMS_2threads_SphereRot": "CVMS_2threads", "BM_CVMS_paper_SphereRot": "CVMS_paper",
            "BM_Limit_Mesh_SphereRot": "Limit_Mesh", "BM_Limit_Build_SphereRot": "Limit_Build",
            "BM_Qhull_SphereRot": "Qhull", "BM_CGAL_SphereRot": "CGAL"}
 

@@ -24,7 +24,7 @@ TIME_FIELD = "real_time"
 FAMILIES = {"SphereRot": "Sphere_k + rotated Sphere_k", "CubeSphere": "Cube + Sphere_k"}
 # Benchmark name prefix (before "_<family>/k") -> column.
 ALGORITHMS = [
-    ("BM_CVMS", "CVMS"), ("BM_CVMS_paper", "CVMS_paper"), ("BM_Limit_Mesh", "limit mesh"),
+    ("BM_CVMS", "CVMS"), ("BM_CVMS_2threads", "CVMS_2threads"), ("BM_CVMS_paper", "CVMS_paper"), ("BM_Limit_Mesh", "limit mesh"),
     ("BM_Limit_Build", "limit build"), ("BM_Qhull", "qhull"), ("BM_CGAL", "CGAL"),
 ]
 LIMITS = ["limit mesh", "limit build"]
