@@ -196,10 +196,52 @@ class Quickhull {
   // Index of a point with the largest (sign > 0) or smallest (sign < 0) dot
   // product with direction d; the first such point on ties.
   [[nodiscard]] std::uint32_t extreme(Vec3Ref d, Sign sign) {
-    std::uint32_t best = 0;
-    for (std::uint32_t i = 1; i < n_; ++i)
-      if (compare(i, best, d) == sign) best = i;
+    const double bound = dot_bound(d.approx);
+    if (!(bound < inf)) {
+      std::uint32_t best = 0;
+      for (std::uint32_t i = 1; i < n_; ++i)
+        if (compare(i, best, d) == sign) best = i;
+      return best;
+    }
+    // v = fl(p . n) is within bound of the exact dot product, so a point
+    // whose v is more than 3 bounds (2 plus rounding) below the largest v
+    // is not extreme; the exact scan over the others, in index order, picks
+    // the same (first extreme) point as a scan over all.
+    const double f = sign == Sign::positive ? 1.0 : -1.0;
+    const Coords n{f * d.approx.x.value, f * d.approx.y.value, f * d.approx.z.value};
+    auto value = [&](std::uint32_t i) {
+      const Coords& c = coords_[i];
+      return c[0] * n[0] + c[1] * n[1] + c[2] * n[2];
+    };
+    double top = -inf;
+    for (std::uint32_t i = 0; i < n_; ++i) top = std::max(top, value(i));
+    const double margin = 3.0 * bound;
+    std::uint32_t best = none;
+    for (std::uint32_t i = 0; i < n_; ++i) {
+      if (top - value(i) > margin) {
+        ++plane_decisions_;
+        continue;
+      }
+      if (best == none || compare(i, best, d) == sign) best = i;
+    }
     return best;
+  }
+
+  // A bound on |P . N - fl(p . n)| for every input point P with
+  // approximation p (|p_k| <= M, |p_k - P_k| <= e) and the direction N with
+  // approximation n (|n_k - N_k| <= f_k), or infinity:
+  //   |P . N - p . N| <= e |N|_1 <= e (|n|_1 + |f|_1),
+  //   |p . N - p . n| <= M |f|_1,
+  //   |p . n - fl(p . n)| <= gamma_3 M |n|_1 + 3 2^-1075 (underflow),
+  // doubled for the rounding of the bound itself, plus 2^-1000 for the
+  // underflow. With M, e <= 2^300 (the plane filter's range) and
+  // |n|_1 + |f|_1 <= 2^600 nothing overflows.
+  [[nodiscard]] double dot_bound(const ApproxVec3& n) const {
+    const double a = std::fabs(n.x.value) + std::fabs(n.y.value) + std::fabs(n.z.value);
+    const double f = n.x.error + n.y.error + n.z.error;
+    if (!(scale_.span < inf) || !(a + f <= 0x1p600)) return inf;
+    const double m = 0.5 * scale_.span;
+    return 2.0 * (error_ * (a + f) + m * f + 4.0 * 0x1p-53 * m * a) + 0x1p-1000;
   }
 
   // compare_dot(p, q, d), first filtered on the double coordinates.
