@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -102,15 +103,15 @@ class Quickhull {
     scale_ = PlaneFilterScale::of(max_abs, max_error);
   }
 
-  // Double input (finite, checked by the caller): exact as they are; only
-  // the points that an exact fallback or the output needs become rationals.
-  explicit Quickhull(std::span<const Coords> coords) : coords_(coords) {
-    n_ = checked_size(coords.size());
+  // Approximations only (double input is exact, with error 0): only the
+  // points that an exact fallback or the output needs become rationals.
+  explicit Quickhull(const ApproximatePoints& points) : coords_(points.approx), make_exact_(points.exact) {
+    n_ = checked_size(coords_.size());
     double max_abs = 0;
-    for (const Coords& c : coords)
-      for (double x : c) max_abs = std::max(max_abs, std::fabs(x));
-    error_ = 0;
-    scale_ = PlaneFilterScale::of(max_abs, 0.0);
+    for (const Coords& c : coords_)
+      for (double x : c) max_abs = std::fabs(x) <= max_abs ? max_abs : (std::isnan(x) ? inf : std::fabs(x));
+    error_ = std::isnan(points.max_error) ? inf : points.max_error;
+    scale_ = PlaneFilterScale::of(max_abs, error_);
     lazy_.assign(n_, none);
   }
 
@@ -140,9 +141,7 @@ class Quickhull {
     if (lazy_.empty()) return {points_[p], approx_[p]};
     if (lazy_[p] == none) {
       lazy_[p] = static_cast<std::uint32_t>(lazy_points_.size());
-      const Coords& c = coords_[p];
-      lazy_points_.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
-      lazy_approx_.push_back({{c[0], 0.0}, {c[1], 0.0}, {c[2], 0.0}});
+      lazy_approx_.push_back(ApproxVec3::of(lazy_points_.emplace_back(make_exact_(p))));
     }
     return {lazy_points_[lazy_[p]], lazy_approx_[lazy_[p]]};
   }
@@ -636,7 +635,8 @@ class Quickhull {
   std::vector<Coords> own_coords_;
   double error_ = 0;  // bounds |coords_ - exact| for every coordinate
   PlaneFilterScale scale_;
-  // Double input: lazy_[p] indexes the exact copies made so far.
+  // Approximate input: lazy_[p] indexes the exact points made so far.
+  std::function<Vec3(std::uint32_t)> make_exact_;
   std::vector<std::uint32_t> lazy_;
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
@@ -676,6 +676,15 @@ PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
         throw Error(ErrorCategory::invalid_argument, "convex hull: point " + std::to_string(i) + " has a " +
                                                          (std::isnan(points[i][k]) ? "NaN" : "infinite") +
                                                          " coordinate " + std::string(1, "xyz"[k]));
+  const ApproximatePoints approximate{
+      points, 0.0, [&](std::uint32_t i) {
+        return Vec3{Rational(points[i][0]), Rational(points[i][1]), Rational(points[i][2])};
+      }};
+  Quickhull qh(approximate);
+  return qh.run(source_index);
+}
+
+PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index) {
   Quickhull qh(points);
   return qh.run(source_index);
 }
