@@ -1,8 +1,18 @@
 // SPDX-License-Identifier: MIT
 // Exact 3D quickhull (Barber, Dobkin and Huhdanpaa 1996, the paper's [10]),
-// the hull behind CHMS (paper Section 6.2). Every decision is a predicate on
-// the exact input points with their cached double approximations, so the
-// result is the exact hull whatever the input.
+// the hull behind CHMS (paper Section 6.2). Every decision is the exact sign
+// of a predicate on the exact input points, so the result is the exact hull
+// whatever the input.
+//
+// Speed comes from deciding in double whenever a proven bound allows it:
+// each triangle gets a semi-static plane filter (plane_filter.hpp) against
+// which conflict and visibility tests cost a dot product; the initial
+// simplex scans the points' doubles with a bound of its own; the remaining
+// tests use a running-error filter. Only undecided tests reach the exact
+// predicates. The points may come as rationals, as doubles, or as
+// approximations with exact values made on demand (ApproximatePoints), so
+// that double input and CHMS's pairwise sums need no rational for most
+// points. The decisions, hence the output, do not depend on which.
 //
 // Construction keeps a triangulated hull whose triangles are oriented
 // counterclockwise from outside. A point is "outside" a triangle only when it
