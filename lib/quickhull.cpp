@@ -1,8 +1,18 @@
 // SPDX-License-Identifier: MIT
 // Exact 3D quickhull (Barber, Dobkin and Huhdanpaa 1996, the paper's [10]),
-// the hull behind CHMS (paper Section 6.2). Every decision is a predicate on
-// the exact input points with their cached double approximations, so the
-// result is the exact hull whatever the input.
+// the hull behind CHMS (paper Section 6.2). Every decision is the exact sign
+// of a predicate on the exact input points, so the result is the exact hull
+// whatever the input.
+//
+// Speed comes from deciding in double whenever a proven bound allows it:
+// each triangle gets a semi-static plane filter (plane_filter.hpp) against
+// which conflict and visibility tests cost a dot product; the initial
+// simplex scans the points' doubles with a bound of its own; the remaining
+// tests use a running-error filter. Only undecided tests reach the exact
+// predicates. The points may come as rationals, as doubles, or as
+// approximations with exact values made on demand (ApproximatePoints), so
+// that double input and CHMS's pairwise sums need no rational for most
+// points. The decisions, hence the output, do not depend on which.
 //
 // Construction keeps a triangulated hull whose triangles are oriented
 // counterclockwise from outside. A point is "outside" a triangle only when it
@@ -32,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -102,15 +113,15 @@ class Quickhull {
     scale_ = PlaneFilterScale::of(max_abs, max_error);
   }
 
-  // Double input (finite, checked by the caller): exact as they are; only
-  // the points that an exact fallback or the output needs become rationals.
-  explicit Quickhull(std::span<const Coords> coords) : coords_(coords) {
-    n_ = checked_size(coords.size());
+  // Approximations only (double input is exact, with error 0): only the
+  // points that an exact fallback or the output needs become rationals.
+  explicit Quickhull(const ApproximatePoints& points) : coords_(points.approx), make_exact_(points.exact) {
+    n_ = checked_size(coords_.size());
     double max_abs = 0;
-    for (const Coords& c : coords)
-      for (double x : c) max_abs = std::max(max_abs, std::fabs(x));
-    error_ = 0;
-    scale_ = PlaneFilterScale::of(max_abs, 0.0);
+    for (const Coords& c : coords_)
+      for (double x : c) max_abs = std::fabs(x) <= max_abs ? max_abs : (std::isnan(x) ? inf : std::fabs(x));
+    error_ = std::isnan(points.max_error) ? inf : points.max_error;
+    scale_ = PlaneFilterScale::of(max_abs, error_);
     lazy_.assign(n_, none);
   }
 
@@ -140,9 +151,7 @@ class Quickhull {
     if (lazy_.empty()) return {points_[p], approx_[p]};
     if (lazy_[p] == none) {
       lazy_[p] = static_cast<std::uint32_t>(lazy_points_.size());
-      const Coords& c = coords_[p];
-      lazy_points_.push_back({Rational(c[0]), Rational(c[1]), Rational(c[2])});
-      lazy_approx_.push_back({{c[0], 0.0}, {c[1], 0.0}, {c[2], 0.0}});
+      lazy_approx_.push_back(ApproxVec3::of(lazy_points_.emplace_back(make_exact_(p))));
     }
     return {lazy_points_[lazy_[p]], lazy_approx_[lazy_[p]]};
   }
@@ -196,10 +205,52 @@ class Quickhull {
   // Index of a point with the largest (sign > 0) or smallest (sign < 0) dot
   // product with direction d; the first such point on ties.
   [[nodiscard]] std::uint32_t extreme(Vec3Ref d, Sign sign) {
-    std::uint32_t best = 0;
-    for (std::uint32_t i = 1; i < n_; ++i)
-      if (compare(i, best, d) == sign) best = i;
+    const double bound = dot_bound(d.approx);
+    if (!(bound < inf)) {
+      std::uint32_t best = 0;
+      for (std::uint32_t i = 1; i < n_; ++i)
+        if (compare(i, best, d) == sign) best = i;
+      return best;
+    }
+    // v = fl(p . n) is within bound of the exact dot product, so a point
+    // whose v is more than 3 bounds (2 plus rounding) below the largest v
+    // is not extreme; the exact scan over the others, in index order, picks
+    // the same (first extreme) point as a scan over all.
+    const double f = sign == Sign::positive ? 1.0 : -1.0;
+    const Coords n{f * d.approx.x.value, f * d.approx.y.value, f * d.approx.z.value};
+    auto value = [&](std::uint32_t i) {
+      const Coords& c = coords_[i];
+      return c[0] * n[0] + c[1] * n[1] + c[2] * n[2];
+    };
+    double top = -inf;
+    for (std::uint32_t i = 0; i < n_; ++i) top = std::max(top, value(i));
+    const double margin = 3.0 * bound;
+    std::uint32_t best = none;
+    for (std::uint32_t i = 0; i < n_; ++i) {
+      if (top - value(i) > margin) {
+        ++plane_decisions_;
+        continue;
+      }
+      if (best == none || compare(i, best, d) == sign) best = i;
+    }
     return best;
+  }
+
+  // A bound on |P . N - fl(p . n)| for every input point P with
+  // approximation p (|p_k| <= M, |p_k - P_k| <= e) and the direction N with
+  // approximation n (|n_k - N_k| <= f_k), or infinity:
+  //   |P . N - p . N| <= e |N|_1 <= e (|n|_1 + |f|_1),
+  //   |p . N - p . n| <= M |f|_1,
+  //   |p . n - fl(p . n)| <= gamma_3 M |n|_1 + 3 2^-1075 (underflow),
+  // doubled for the rounding of the bound itself, plus 2^-1000 for the
+  // underflow. With M, e <= 2^300 (the plane filter's range) and
+  // |n|_1 + |f|_1 <= 2^600 nothing overflows.
+  [[nodiscard]] double dot_bound(const ApproxVec3& n) const {
+    const double a = std::fabs(n.x.value) + std::fabs(n.y.value) + std::fabs(n.z.value);
+    const double f = n.x.error + n.y.error + n.z.error;
+    if (!(scale_.span < inf) || !(a + f <= 0x1p600)) return inf;
+    const double m = 0.5 * scale_.span;
+    return 2.0 * (error_ * (a + f) + m * f + 4.0 * 0x1p-53 * m * a) + 0x1p-1000;
   }
 
   // compare_dot(p, q, d), first filtered on the double coordinates.
@@ -594,7 +645,8 @@ class Quickhull {
   std::vector<Coords> own_coords_;
   double error_ = 0;  // bounds |coords_ - exact| for every coordinate
   PlaneFilterScale scale_;
-  // Double input: lazy_[p] indexes the exact copies made so far.
+  // Approximate input: lazy_[p] indexes the exact points made so far.
+  std::function<Vec3(std::uint32_t)> make_exact_;
   std::vector<std::uint32_t> lazy_;
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
@@ -634,6 +686,15 @@ PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
         throw Error(ErrorCategory::invalid_argument, "convex hull: point " + std::to_string(i) + " has a " +
                                                          (std::isnan(points[i][k]) ? "NaN" : "infinite") +
                                                          " coordinate " + std::string(1, "xyz"[k]));
+  const ApproximatePoints approximate{
+      points, 0.0, [&](std::uint32_t i) {
+        return Vec3{Rational(points[i][0]), Rational(points[i][1]), Rational(points[i][2])};
+      }};
+  Quickhull qh(approximate);
+  return qh.run(source_index);
+}
+
+PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index) {
   Quickhull qh(points);
   return qh.run(source_index);
 }

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -32,5 +33,18 @@ PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* 
 ///   the point's index; otherwise as above.
 PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
                       std::vector<std::uint32_t>* source_index = nullptr);
+
+/// Points known by double approximations, every coordinate within max_error
+/// of the exact value, whose exact values exact(i) makes on demand (at most
+/// once per point: for the output and for the predicates the filters cannot
+/// decide). Non-finite approximations or error are allowed (then everything
+/// is decided exactly).
+struct ApproximatePoints {
+  std::span<const std::array<double, 3>> approx;  ///< one per point
+  double max_error;                               ///< bounds every |approx - exact|
+  std::function<Vec3(std::uint32_t)> exact;       ///< the exact point i
+};
+/// The same for points known by approximations.
+PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index = nullptr);
 
 }  // namespace cvms

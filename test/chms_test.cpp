@@ -13,6 +13,7 @@
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/quickhull.hpp"
+#include "cvms/rational.hpp"
 #include "support/oracle.hpp"
 
 namespace cvms {
@@ -192,6 +193,37 @@ TEST(Chms, CubePlusRoundedSphereCloud) {
   std::set<Vec3> normals;
   for (const auto& pl : s.planes) normals.insert(pl.normal);
   for (const Vec3& n : signed_permutations(0, 0, 1)) EXPECT_TRUE(normals.count(n));
+}
+
+// CHMS hands the hull approximations of the sums and makes exact sums only on
+// demand: the result must be the very polyhedron (same vertex order) that
+// the hull of the exact pairwise sums gives, also where the approximations
+// are inexact (thirds), huge, tiny or infinite (the filters give up) or
+// doubles.
+TEST(Chms, SameAsHullOfThePairwiseSums) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937_64 rng(seed);
+    // 1e400 is beyond the double range: infinite approximations.
+    const Rational scales[] = {Rational(1), Rational(1, 3), parse_rational("1e300"), parse_rational("1e-300"),
+                               parse_rational("1e400")};
+    const Rational& scale = scales[seed % 5];
+    auto cloud = [&](int n) {
+      std::vector<Vec3> pts;
+      for (int i = 0; i < n; ++i) {
+        Vec3 p;
+        for (int k = 0; k < 3; ++k)
+          p[k] = seed % 8 < 4 ? Rational(static_cast<long>(rng() % 7) - 3) * scale
+                              : Rational(std::uniform_real_distribution<double>(-1.0, 1.0)(rng)) * scale;
+        pts.push_back(p);
+      }
+      return pts;
+    };
+    ConvexPolyhedron a = convex_hull(cloud(40)), b = convex_hull(cloud(30));
+    ConvexPolyhedron sum = chms(a, b), hull = convex_hull(pairwise_sums(vertices(a), vertices(b)));
+    EXPECT_EQ(vertices(sum), vertices(hull));
+    EXPECT_TRUE(describe(sum) == describe(hull)) << difference(describe(hull), describe(sum));
+  }
 }
 
 }  // namespace
