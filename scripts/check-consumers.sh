@@ -56,10 +56,10 @@ cmake_consumer() {  # cmake_consumer SRC BUILD [cmake args...]: configure, build
 }
 
 is_fully_static() {  # no program interpreter, no shared library needed
-  ! readelf -lW "$1" | grep -q 'INTERP' && ! readelf -dW "$1" | grep -q 'NEEDED'
+  ! readelf -lW "$1" | grep 'INTERP' >/dev/null && ! readelf -dW "$1" | grep 'NEEDED' >/dev/null
 }
 
-needs_libcvms_so() { readelf -dW "$1" | grep -q "NEEDED.*\[libcvms\.so"; }
+needs_libcvms_so() { readelf -dW "$1" | grep "NEEDED.*\[libcvms\.so" >/dev/null; }
 
 pc() { PKG_CONFIG_PATH="$1/lib/pkgconfig${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}" pkg-config "${@:2}"; }
 
@@ -97,7 +97,7 @@ static_cmake() {
   cmake_consumer test/consumer "$work/c-static" -DCMAKE_PREFIX_PATH="$static_prefix" &&
     "$work/c-static/cvms_consumer"
 }
-static_cmake_no_so() { ! readelf -dW "$work/c-static/cvms_consumer" | grep -q libcvms; }
+static_cmake_no_so() { ! readelf -dW "$work/c-static/cvms_consumer" | grep libcvms >/dev/null; }
 shared_cmake() {
   cmake_consumer test/consumer "$work/c-shared" -DCMAKE_PREFIX_PATH="$shared_prefix" &&
     needs_libcvms_so "$work/c-shared/cvms_consumer" &&
@@ -105,7 +105,7 @@ shared_cmake() {
 }
 shared_soname() {
   local lib="$shared_prefix/lib"
-  readelf -dW "$lib/libcvms.so.$version" | grep -q "SONAME.*\[libcvms\.so\.$major_minor\]" &&
+  readelf -dW "$lib/libcvms.so.$version" | grep "SONAME.*\[libcvms\.so\.$major_minor\]" >/dev/null &&
     [[ "$(readlink "$lib/libcvms.so")" == "libcvms.so.$major_minor" ]] &&
     [[ "$(readlink "$lib/libcvms.so.$major_minor")" == "libcvms.so.$version" ]]
 }
@@ -147,8 +147,8 @@ pc_relocated() {  # cvms.pc was configured for another prefix: must still point 
     [[ "$(realpath "$libdir")" == "$(realpath "$static_prefix/lib")" ]]
 }
 pc_libs() {
-  pc "$static_prefix" --libs cvms | grep -q -- "-lcvms.*-lgmpxx.*-lgmp" &&
-    pc "$static_prefix" --static --libs cvms | grep -q -- "-lcvms.*-lgmpxx.*-lgmp"
+  pc "$static_prefix" --libs cvms | grep -- "-lcvms.*-lgmpxx.*-lgmp" >/dev/null &&
+    pc "$static_prefix" --static --libs cvms | grep -- "-lcvms.*-lgmpxx.*-lgmp" >/dev/null
 }
 pc_static() { pc_build "$static_prefix" "$work/pc-static" && "$work/pc-static"; }
 pc_shared() {

@@ -29,7 +29,7 @@ else
 fi
 cmake --build "$shared_dir" --target cvms_cli -j2 >/dev/null
 shared_cli=$shared_dir/tools/cvms
-if ! ldd "$shared_cli" | grep -q 'libcvms\.so'; then
+if ! ldd "$shared_cli" | grep 'libcvms\.so' >/dev/null; then
   echo "determinism: $shared_cli is not linked against libcvms.so" >&2
   exit 1
 fi
