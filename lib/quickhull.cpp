@@ -44,6 +44,7 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -52,6 +53,7 @@
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
 #include "cvms/quickhull.hpp"
+#include "dyadic_orient.hpp"
 #include "filtered_arithmetic.hpp"
 #include "plane_filter.hpp"
 
@@ -178,7 +180,18 @@ class Quickhull {
       ++plane_decisions_;
       return filtered::sign(r);
     }
-    return orient3d(ref(a), ref(b), ref(c), ref(d));
+    return exact_orient(a, b, c, d);
+  }
+
+  // orient3d decided exactly: in integers when the coordinates are dyadic
+  // (doubles, sums of doubles), else by the predicates module.
+  [[nodiscard]] Sign exact_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    const Vec3Ref ra = ref(a), rb = ref(b), rc = ref(c), rd = ref(d);
+    if (const std::optional<Sign> s = dyadic_orient3d(ra.exact, rb.exact, rc.exact, rd.exact)) {
+      ++predicate_counters().exact;
+      return *s;
+    }
+    return orient3d(ra, rb, rc, rd);
   }
 
   // Sign of point p with respect to triangle t: positive iff p is strictly
@@ -191,7 +204,7 @@ class Quickhull {
       return s > 0 ? Sign::positive : Sign::negative;
     }
     const Triangle& tr = tris_[t];
-    return orient3d(ref(tr.v[0]), ref(tr.v[1]), ref(tr.v[2]), ref(p));
+    return orient(tr.v[0], tr.v[1], tr.v[2], p);
   }
 
   // ---- initial simplex ------------------------------------------------------
@@ -403,7 +416,7 @@ class Quickhull {
             ++decided;
           } else {
             const Triangle& tr = tris_[t];
-            if (orient3d(ref(tr.v[0]), ref(tr.v[1]), ref(tr.v[2]), ref(p)) != Sign::positive) continue;
+            if (orient(tr.v[0], tr.v[1], tr.v[2], p) != Sign::positive) continue;
           }
           moves_.push_back({j, i});
           ++count_[j];
