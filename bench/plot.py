@@ -45,11 +45,18 @@ def load(path):
     for b in data["benchmarks"]:
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
             continue
-        parts = b["name"].split("/")
+        # Multithreaded rows (UseRealTime) are read in real time only: their
+        # CPU time would be the calling thread's alone; with --cpu they are left out.
+        name = b["name"]
+        wall = name.endswith("/real_time")
+        parts = (name[: -len("/real_time")] if wall else name).split("/")
+        if wall and TIME_FIELD == "cpu_time":
+            continue  # not comparable with the others' CPU time
+        time_field = "real_time" if wall else TIME_FIELD
         if b.get("error_occurred") or len(parts) != 2:
             continue
         arg = int(parts[1])
-        ms = b[TIME_FIELD] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
+        ms = b[time_field] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
         if parts[0] in TABLE:
             table.setdefault(TABLE[parts[0]], {})[arg] = ms
             if "input_facets" in b:

@@ -41,13 +41,20 @@ def load(path):
     for b in data["benchmarks"]:
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
             continue
-        parts = b["name"].split("/")
+        # Multithreaded rows (UseRealTime) are read in real time only: their
+        # CPU time would be the calling thread's alone; with --cpu they are left out.
+        name = b["name"]
+        wall = name.endswith("/real_time")
+        parts = (name[: -len("/real_time")] if wall else name).split("/")
+        if wall and TIME_FIELD == "cpu_time":
+            continue  # not comparable with the others' CPU time
+        time_field = "real_time" if wall else TIME_FIELD
         if b.get("error_occurred") or len(parts) != 2 or parts[0] not in names:
             continue
         family, column = names[parts[0]]
         k = int(parts[1])
         scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-        times[family].setdefault(column, {})[k] = b[TIME_FIELD] * scale
+        times[family].setdefault(column, {})[k] = b[time_field] * scale
         if "peak_heap_bytes" in b:
             peaks[family].setdefault(column, {})[k] = b["peak_heap_bytes"]
         if "output_facets" in b:
