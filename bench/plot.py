@@ -10,7 +10,7 @@ JSON output, after the paper's Fig. 12:
 
 Both axes logarithmic. usage: bench/plot.py [--cpu] results.json [-o docs/fig12.svg]
 """
-import json
+import bench_json
 import math
 import sys
 
@@ -39,30 +39,15 @@ SCALING = {"BM_CVMS_SphereRot": "CVMS", "BM_CVMS_2threads_SphereRot": "CVMS_2thr
 
 
 def load(path):
-    data = json.load(open(path))
     table, scaling = {}, {}  # algorithm -> {arg: ms}
     table_x, scaling_x = {}, {}  # arg -> x value
-    for b in data["benchmarks"]:
-        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
-            continue
-        # Multithreaded rows (UseRealTime) are read in real time only: their
-        # CPU time would be the calling thread's alone; with --cpu they are left out.
-        name = b["name"]
-        wall = name.endswith("/real_time")
-        parts = (name[: -len("/real_time")] if wall else name).split("/")
-        if wall and TIME_FIELD == "cpu_time":
-            continue  # not comparable with the others' CPU time
-        time_field = "real_time" if wall else TIME_FIELD
-        if b.get("error_occurred") or len(parts) != 2:
-            continue
-        arg = int(parts[1])
-        ms = b[time_field] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-        if parts[0] in TABLE:
-            table.setdefault(TABLE[parts[0]], {})[arg] = ms
+    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD):
+        if prefix in TABLE:
+            table.setdefault(TABLE[prefix], {})[arg] = ms
             if "input_facets" in b:
                 table_x[arg] = b["input_facets"]
-        elif parts[0] in SCALING:
-            scaling.setdefault(SCALING[parts[0]], {})[arg] = ms
+        elif prefix in SCALING:
+            scaling.setdefault(SCALING[prefix], {})[arg] = ms
             if "output_facets" in b:
                 scaling_x[arg] = b["output_facets"]
     return (table, table_x), (scaling, scaling_x)

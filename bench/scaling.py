@@ -12,7 +12,7 @@ are matched to them by family and k.
 
 usage: bench/scaling.py [--cpu] results.json > scaling.md
 """
-import json
+import bench_json
 import math
 import sys
 
@@ -33,28 +33,15 @@ PEERS = ["qhull", "CGAL"]
 
 def load(path):
     """times[family][algorithm][k] = ms; out[family][k] = (input, output facets); peaks likewise."""
-    data = json.load(open(path))
     names = {f"{prefix}_{family}": (family, column) for family in FAMILIES for prefix, column in ALGORITHMS}
     times = {f: {} for f in FAMILIES}
     peaks = {f: {} for f in FAMILIES}
     facets = {f: {} for f in FAMILIES}
-    for b in data["benchmarks"]:
-        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+    for prefix, k, ms, b in bench_json.runs(path, TIME_FIELD):
+        if prefix not in names:
             continue
-        # Multithreaded rows (UseRealTime) are read in real time only: their
-        # CPU time would be the calling thread's alone; with --cpu they are left out.
-        name = b["name"]
-        wall = name.endswith("/real_time")
-        parts = (name[: -len("/real_time")] if wall else name).split("/")
-        if wall and TIME_FIELD == "cpu_time":
-            continue  # not comparable with the others' CPU time
-        time_field = "real_time" if wall else TIME_FIELD
-        if b.get("error_occurred") or len(parts) != 2 or parts[0] not in names:
-            continue
-        family, column = names[parts[0]]
-        k = int(parts[1])
-        scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-        times[family].setdefault(column, {})[k] = b[time_field] * scale
+        family, column = names[prefix]
+        times[family].setdefault(column, {})[k] = ms
         if "peak_heap_bytes" in b:
             peaks[family].setdefault(column, {})[k] = b["peak_heap_bytes"]
         if "output_facets" in b:

@@ -8,7 +8,7 @@ With --memory, a second table gives every algorithm's peak heap.
 
 usage: bench/table.py [--memory] [--cpu] results.json > table.md
 """
-import json
+import bench_json
 import sys
 
 # Which Google Benchmark time the tables use: real (wall) time by default;
@@ -39,25 +39,13 @@ def load(path):
     """(times, peaks, facets): times[(algorithm, row)] in ms, peaks in bytes,
     facets[row] = (input, output) from our rows (the peers do not report the
     output facet count: qhull merges in floating point, CGAL triangulates)."""
-    data = json.load(open(path))
     times, peaks, facets = {}, {}, {}
-    for b in data["benchmarks"]:
-        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD):
+        if prefix not in BENCHMARKS:
             continue
-        # Multithreaded rows (UseRealTime) are read in real time only: their
-        # CPU time would be the calling thread's alone; with --cpu they are left out.
-        name = b["name"]
-        wall = name.endswith("/real_time")
-        parts = (name[: -len("/real_time")] if wall else name).split("/")
-        if wall and TIME_FIELD == "cpu_time":
-            continue  # not comparable with the others' CPU time
-        time_field = "real_time" if wall else TIME_FIELD
-        if b.get("error_occurred") or len(parts) != 2 or parts[0] not in BENCHMARKS:
-            continue
-        algorithm = BENCHMARKS[parts[0]]
-        row = ROWS[int(parts[1])]
-        scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-        times[(algorithm, row)] = b[time_field] * scale
+        algorithm = BENCHMARKS[prefix]
+        row = ROWS[arg]
+        times[(algorithm, row)] = ms
         if "peak_heap_bytes" in b:
             peaks[(algorithm, row)] = b["peak_heap_bytes"]
         if "output_facets" in b:

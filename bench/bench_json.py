@@ -1,0 +1,28 @@
+"""Reading Google Benchmark JSON from the cvms benchmarks, shared by
+table.py, scaling.py and plot.py: one place decides which entries count and
+which time is read."""
+import json
+
+_UNIT_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+
+
+def runs(path, time_field):
+    """Yields (prefix, arg, ms, entry) for every successful "<prefix>/<arg>"
+    run (medians only, when repetitions were aggregated). time_field is
+    "real_time" or "cpu_time". Multithreaded rows (UseRealTime, names ending
+    in "/real_time") are read in real time only: their CPU time would be the
+    calling thread's alone, so with "cpu_time" they are left out."""
+    for b in json.load(open(path))["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        name = b["name"]
+        wall = name.endswith("/real_time")
+        if wall:
+            if time_field == "cpu_time":
+                continue
+            name = name[: -len("/real_time")]
+        parts = name.split("/")
+        if b.get("error_occurred") or len(parts) != 2:
+            continue
+        field = "real_time" if wall else time_field
+        yield parts[0], int(parts[1]), b[field] * _UNIT_MS[b["time_unit"]], b
