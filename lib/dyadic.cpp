@@ -7,8 +7,6 @@
 namespace cvms::detail {
 namespace {
 
-mp_bitcnt_t log2_of_power_of_two(mpz_srcptr power) { return mpz_scan1(power, 0); }
-
 // Stores num / 2^k into out, reducing by the common power of two first.
 void set_reduced_dyadic(mpq_ptr out, mpz_ptr num, mp_bitcnt_t k) {
   if (mpz_sgn(num) == 0) {

@@ -11,13 +11,12 @@
 
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
+#include "power_of_two.hpp"
 
 namespace cvms::detail {
 
 /// Whether the (canonical) q has a power-of-two denominator.
-[[nodiscard]] inline bool is_dyadic(const Rational& q) noexcept {
-  return mpz_popcount(q.get_den_mpz_t()) == 1;
-}
+[[nodiscard]] inline bool is_dyadic(const Rational& q) noexcept { return is_power_of_two(q.get_den_mpz_t()); }
 
 /// out = x + y, canonical. out may alias neither x nor y.
 void add_into(Rational& out, const Rational& x, const Rational& y);

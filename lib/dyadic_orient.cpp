@@ -6,6 +6,8 @@
 
 #include <gmp.h>
 
+#include "power_of_two.hpp"
+
 namespace cvms {
 namespace {
 
@@ -35,8 +37,8 @@ std::optional<Sign> dyadic_orient3d(const Vec3& a, const Vec3& b, const Vec3& c,
   mp_bitcnt_t top = 0;
   for (int i = 0; i < 12; ++i) {
     mpz_srcptr den = q[i]->get_den_mpz_t();
-    if (mpz_popcount(den) != 1) return std::nullopt;
-    shift[i] = mpz_scan1(den, 0);
+    if (!detail::is_power_of_two(den)) return std::nullopt;
+    shift[i] = detail::log2_of_power_of_two(den);
     if (shift[i] > top) top = shift[i];
   }
   thread_local Scratch s;

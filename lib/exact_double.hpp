@@ -4,6 +4,7 @@
 #pragma once
 
 #include "cvms/rational.hpp"
+#include "power_of_two.hpp"
 
 namespace cvms {
 
@@ -15,8 +16,8 @@ inline bool is_double_exact_fast(const Rational& q) noexcept {
   mpz_srcptr num = q.get_num_mpz_t();
   mpz_srcptr den = q.get_den_mpz_t();
   if (mpz_sgn(num) == 0) return true;
-  if (mpz_popcount(den) != 1) return false;  // denominator not a power of two
-  long k = static_cast<long>(mpz_scan1(den, 0));
+  if (!detail::is_power_of_two(den)) return false;
+  long k = static_cast<long>(detail::log2_of_power_of_two(den));
   long bits = static_cast<long>(mpz_sizeinbase(num, 2));  // of |num|
   long low = static_cast<long>(mpz_scan1(num, 0));        // same for -num
   return bits - low <= 53 && low - k >= -1074 && bits - 1 - k <= 1023;

@@ -11,9 +11,32 @@
 #include <vector>
 
 #include "cvms/rational.hpp"
+#include "power_of_two.hpp"
 
 namespace cvms::detail {
 namespace {
+
+// The limb test against GMP's own bit counting (the oracle): one and several
+// limbs, a set bit below the top limb, zero and negatives.
+TEST(PowerOfTwo, AgreesWithPopcountAndScan) {
+  std::vector<mpz_class> values = {0, 1, 2, 3, 6, -1, -4};
+  for (unsigned k : {1u, 31u, 63u, 64u, 65u, 127u, 128u, 200u, 1074u}) {
+    mpz_class p;
+    mpz_setbit(p.get_mpz_t(), k);
+    values.push_back(p);
+    values.push_back(p + 1);         // a bit in the lowest limb
+    values.push_back(p + (p >> 1));  // two bits, possibly in one limb
+    values.push_back(p - 1);
+    values.push_back(-p);
+  }
+  for (const mpz_class& x : values) {
+    const bool expected = sgn(x) > 0 && mpz_popcount(x.get_mpz_t()) == 1;
+    EXPECT_EQ(is_power_of_two(x.get_mpz_t()), expected) << x;
+    if (expected) {
+      EXPECT_EQ(log2_of_power_of_two(x.get_mpz_t()), mpz_scan1(x.get_mpz_t(), 0)) << x;
+    }
+  }
+}
 
 // Values covering every branch: zero, integers, equal and different
 // power-of-two denominators, huge and tiny doubles, and non-dyadic rationals.
