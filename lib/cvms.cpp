@@ -28,8 +28,10 @@
 #include "cvms.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "arc_trace.hpp"
@@ -127,6 +129,29 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
 
 }  // namespace
 
+namespace {
+
+// Step 3 with the arc walk, for the edges of A that pass Property 1.
+void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
+                      SumFacetBuilder& out, Stats& stats) {
+  const Mesh& ma = a.mesh();
+  // The walk meets the edges of B in arc order; sorting them by edge index
+  // emits the facets in the paper search's order, so both modes build the
+  // identical polyhedron.
+  std::vector<HalfedgeId> crossed;
+  for (HalfedgeId ha : edges_passing_property1(a, cv_a)) {
+    crossed.clear();
+    trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed,
+                      stats.edge_candidates);
+    std::sort(crossed.begin(), crossed.end(),
+              [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
+    for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
+    stats.edge_facets += crossed.size();
+  }
+}
+
+}  // namespace
+
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           Stats& stats) {
   return cvms_facets(a, b, options, stats).build(options.threads);
@@ -185,6 +210,28 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
     ++stats.translated_facets;
   }
 
+  // Step 3 with the arc walk needs only the contributing vertices of A's
+  // facets: with threads > 1, a worker traces the edge facets into a builder
+  // of its own during step 2, and they are appended after step 2's facets,
+  // in the order one thread gives.
+  SumFacetBuilder tracer_out(a, b);
+  Stats tracer_stats;
+  PredicateCounters tracer_predicates;
+  std::exception_ptr tracer_failure;
+  std::jthread tracer;  // after what it writes: destroyed (joined) first
+  if (options.threads > 1 && options.edge_facet_search == EdgeFacetSearch::walk) {
+    tracer = std::jthread([&] {
+      try {
+        const PredicateCounters before = predicate_counters();
+        edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats);
+        const PredicateCounters& after = predicate_counters();
+        tracer_predicates = {after.filtered - before.filtered, after.exact - before.exact};
+      } catch (...) {
+        tracer_failure = std::current_exception();
+      }
+    });
+  }
+
   // Step 2: corner facets. The contributing vertices of a facet of B that
   // has a partner are the vertices of the partner (the face of A supporting
   // A in that direction); we record them for Property 1 without a search.
@@ -226,24 +273,21 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   }
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
-  const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
-  if (options.edge_facet_search == EdgeFacetSearch::paper) {
+  if (tracer.joinable()) {
+    tracer.join();
+    if (tracer_failure) std::rethrow_exception(tracer_failure);
+    out.append(tracer_out);
+    stats.edge_candidates += tracer_stats.edge_candidates;
+    stats.edge_facets += tracer_stats.edge_facets;
+    // Evaluated on this call's behalf: counted as if on this thread.
+    predicate_counters().filtered += tracer_predicates.filtered;
+    predicate_counters().exact += tracer_predicates.exact;
+  } else if (options.edge_facet_search == EdgeFacetSearch::paper) {
+    const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
     edge_facets_paper(a, b, edges_a, edges_b, out, stats);
   } else {
-    // The walk meets the edges of B in arc order; sorting them by edge index
-    // emits the facets in the paper search's order, so both modes build the
-    // identical polyhedron.
-    std::vector<HalfedgeId> crossed;
-    for (HalfedgeId ha : edges_a) {
-      crossed.clear();
-      trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed,
-                        stats.edge_candidates);
-      std::sort(crossed.begin(), crossed.end(),
-                [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
-      for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
-      stats.edge_facets += crossed.size();
-    }
+    edge_facets_walk(a, b, cv_a, out, stats);
   }
 
   return out;

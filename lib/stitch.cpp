@@ -3,8 +3,11 @@
 // Section 4.3; shared with the slope-diagram algorithm of Section 5.2).
 #include "stitch.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
+#include <latch>
 #include <thread>
 #include <unordered_map>
 #include <utility>
@@ -197,6 +200,13 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
                ha.index(), hb.index()});
 }
 
+void SumFacetBuilder::append(const SumFacetBuilder& other) {
+  const auto base = static_cast<std::uint32_t>(pairs_.size());
+  pairs_.insert(pairs_.end(), other.pairs_.begin(), other.pairs_.end());
+  for (std::size_t i = 1; i < other.offsets_.size(); ++i) offsets_.push_back(base + other.offsets_[i]);
+  normals_.insert(normals_.end(), other.normals_.begin(), other.normals_.end());
+}
+
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr); }
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
@@ -243,17 +253,37 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
   return soup;
 }
 
-FacetPlanes SumFacetBuilder::normals() const {
+// What one thread needs to write planes: reused scratch and its own lazy
+// caches of edge directions.
+struct SumFacetBuilder::PlaneScratch {
+  explicit PlaneScratch(const SumFacetBuilder& builder)
+      : directions_a(builder.a_), directions_b(builder.b_) {}
+  EdgeDirections directions_a;
+  EdgeDirections directions_b;
+  Vec3 first_vertex_sum;
+  DotScratch dot;
+};
+
+FacetPlanes SumFacetBuilder::sized_planes() const {
+  // Default-constructed rationals (each allocates its denominator) that
+  // write_planes overwrites in place: moving a rational into place would
+  // re-initialise the source, which allocates again.
   const std::size_t n = num_facets();
   FacetPlanes planes;
-  planes.normals.reserve(n);
-  planes.normal_approx.reserve(n);
-  EdgeDirections directions_a(a_);
-  EdgeDirections directions_b(b_);
-  for (std::size_t i = 0; i < n; ++i) {
+  planes.normals.resize(n);
+  planes.normal_approx.resize(n);
+  planes.offsets.resize(n);
+  return planes;
+}
+
+void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
+                                   PlaneScratch& scratch) const {
+  for (std::size_t i = begin; i < end; ++i) {
     const NormalSource& source = normals_[i];
-    // Every element is built in place (see soup()).
-    Vec3& normal = planes.normals.emplace_back();
+    // Appending when the planes end at i (one thread, in order) allocates
+    // each rational's parts together, which the later reads prefer.
+    const bool append = i == planes.normals.size();
+    Vec3& normal = append ? planes.normals.emplace_back() : planes.normals[i];
     switch (source.kind) {
       case NormalKind::facet_a:
         normal = a_.normal(FaceId(source.index));
@@ -265,12 +295,12 @@ FacetPlanes SumFacetBuilder::normals() const {
       case NormalKind::edges_negative: {
         // The directions belong to the even halfedge of each edge.
         const HalfedgeId ha(source.index), hb(source.other);
-        const SmallDirection* da = directions_a.small(ha);
-        const SmallDirection* db = directions_b.small(hb);
+        const SmallDirection* da = scratch.directions_a.small(ha);
+        const SmallDirection* db = scratch.directions_b.small(hb);
         if (da != nullptr && db != nullptr)
           primitive_cross(*da, *db, normal);
         else
-          primitive_cross(directions_a.general(ha), directions_b.general(hb), normal);
+          primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), normal);
         const bool flip =
             (source.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
         if (flip)
@@ -278,41 +308,79 @@ FacetPlanes SumFacetBuilder::normals() const {
         break;
       }
     }
-    planes.normal_approx.push_back(ApproxVec3::of(normal));
+    if (append) {
+      planes.normal_approx.push_back(ApproxVec3::of(normal));
+      planes.offsets.emplace_back();
+    } else {
+      planes.normal_approx[i] = ApproxVec3::of(normal);
+    }
+    // The offset is taken at the facet's first vertex a_i + b_j: read from
+    // the output mesh once it exists, else summed here (6 % more
+    // instructions, but it lets this run while another thread builds the mesh).
+    const Vec3* first_vertex = &scratch.first_vertex_sum;
+    if (mesh != nullptr) {
+      const FaceId f(static_cast<std::uint32_t>(i));
+      first_vertex = &mesh->position(mesh->from(mesh->halfedge(f)));
+    } else {
+      const VertexPair& first = pairs_[offsets_[i]];
+      const Vec3 &va = a_.vertex(VertexId(first.a)), &vb = b_.vertex(VertexId(first.b));
+      for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
+    }
+    integer_dot(normal, *first_vertex, scratch.dot, planes.offsets[i]);
   }
-  return planes;
 }
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
-  // Two independent parts of about equal cost: the facet normals, and the
-  // exact vertices with the mesh. A second thread runs the first. The plane
-  // offsets need both.
-  FacetPlanes planes;
   std::vector<ApproxVec3> vertex_approx;
   Mesh mesh;
   auto build_mesh = [&] { mesh = ConvexPolyhedronAccess::output_mesh(soup(&vertex_approx)); };
   if (threads <= 1) {
     build_mesh();
-    planes = normals();
-  } else {
-    std::exception_ptr failure;
-    {
-      std::jthread worker([&] {
-        try {
-          planes = normals();
-        } catch (...) {
-          failure = std::current_exception();
-        }
-      });
-      build_mesh();  // if this throws, the jthread joins before the exception leaves
-    }
-    if (failure) std::rethrow_exception(failure);
+    FacetPlanes planes;
+    planes.normals.reserve(num_facets());
+    planes.normal_approx.reserve(num_facets());
+    planes.offsets.reserve(num_facets());
+    PlaneScratch scratch(*this);
+    write_planes(planes, 0, num_facets(), &mesh, scratch);
+    return ConvexPolyhedronAccess::assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
   }
-  planes.offsets.reserve(mesh.num_faces());
-  DotScratch scratch;
-  for (FaceId f : mesh.faces())
-    integer_dot(planes.normals[f.index()], mesh.position(mesh.from(mesh.halfedge(f))), scratch,
-                planes.offsets.emplace_back());  // in place (see soup())
+  // Two parts: the vertices with the mesh (one thread), and the facet planes
+  // (the larger part, shared). A worker starts on the planes at once; this
+  // thread joins it when the mesh is done. Facets are handed out in chunks by
+  // an atomic counter, so the split adapts to the input, and any split gives
+  // the same exact planes.
+  constexpr std::size_t chunk = 256;
+  const std::size_t n = num_facets();
+  FacetPlanes planes;
+  std::atomic<std::size_t> next{0};
+  std::latch sized(1);
+  std::exception_ptr failure;
+  auto take_chunks = [&](const Mesh* with_mesh) {
+    PlaneScratch scratch(*this);
+    for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
+      write_planes(planes, begin, std::min(begin + chunk, n), with_mesh, scratch);
+  };
+  {
+    std::jthread worker([&] {
+      try {
+        planes = sized_planes();
+      } catch (...) {
+        failure = std::current_exception();
+        next = n;  // nothing for anyone to write
+      }
+      sized.count_down();  // also on failure: the other thread waits for this
+      if (failure) return;
+      try {
+        take_chunks(nullptr);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    build_mesh();  // if this throws, the jthread joins before the exception leaves
+    sized.wait();
+    take_chunks(&mesh);
+  }
+  if (failure) std::rethrow_exception(failure);
   return ConvexPolyhedronAccess::assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
 }
 

@@ -47,6 +47,10 @@ class SumFacetBuilder {
   /// `orientation` (positive or negative), d = to(h) - from(h).
   void add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation);
 
+  /// Adds the facets of other after these, in other's order.
+  /// \pre other was built for the same operands.
+  void append(const SumFacetBuilder& other);
+
   [[nodiscard]] std::size_t num_facets() const noexcept { return offsets_.size() - 1; }
   /// The pairs of facet i, counterclockwise seen from outside.
   [[nodiscard]] std::span<const VertexPair> facet(std::size_t i) const noexcept {
@@ -59,8 +63,9 @@ class SumFacetBuilder {
   /// The normals are not recomputed from the output: each is the known
   /// normal of the facet of A or B it is parallel to, or, for e_A + e_B, the
   /// primitive direction of +-cross(d_A, d_B).
-  /// threads > 1 computes the facet normals on a second thread while this
-  /// one builds the vertices and the mesh (same result).
+  /// threads > 1 computes the facet planes on a second thread while this
+  /// one builds the vertices and the mesh, then shares the rest of the
+  /// planes (same result).
   [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
 
   /// The glued facets as a soup: one point per distinct vertex pair (its
@@ -69,8 +74,14 @@ class SumFacetBuilder {
   [[nodiscard]] PolygonSoup soup() const;
 
  private:
-  // The normals of the facets and their approximations (no offsets yet).
-  [[nodiscard]] FacetPlanes normals() const;
+  // The planes of the facets: sized_planes() allocates them all, and
+  // write_planes fills facets [begin, end) (taking the offsets' points from
+  // the output mesh if it is given). Threads may write disjoint ranges of
+  // sized planes; one thread may instead append to planes that end at begin.
+  struct PlaneScratch;
+  [[nodiscard]] FacetPlanes sized_planes() const;
+  void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
+                    PlaneScratch& scratch) const;
   // soup(), and if approx is not null the approximations of its points.
   [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx) const;
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);

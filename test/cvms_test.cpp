@@ -68,26 +68,42 @@ Options variant_options(Variant v) {
   return o;
 }
 
-// "" iff CVMS in the reference mode and in the default mode build the
-// identical polyhedron (soup equality: positions, facet cycles, numbering)
-// with the same facet counts, for a + b.
+// "" iff x and y are the identical polyhedron (soup equality: positions,
+// facet cycles, numbering; and planes) with the same facet counts.
+std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, const std::string& what) {
+  const PolygonSoup sx = x.polyhedron.to_soup();
+  const PolygonSoup sy = y.polyhedron.to_soup();
+  if (sx.points != sy.points) return what + " give different vertices";
+  if (sx.face_offsets != sy.face_offsets || sx.face_indices != sy.face_indices)
+    return what + " give different facets";
+  for (FaceId f : x.polyhedron.mesh().faces())
+    if (x.polyhedron.normal(f) != y.polyhedron.normal(f) ||
+        x.polyhedron.plane_offset(f) != y.polyhedron.plane_offset(f))
+      return what + " give different planes at facet " + std::to_string(f.index());
+  const Stats &r = x.stats, &s = y.stats;
+  if (r.translated_facets != s.translated_facets || r.corner_facets != s.corner_facets ||
+      r.edge_facets != s.edge_facets || r.contributing_ties != s.contributing_ties)
+    return what + " count facets differently";
+  return "";
+}
+
+// "" iff CVMS in the reference mode, in the default mode, and in the default
+// mode with a worker thread (Options::threads = 2) build the identical
+// polyhedron with the same facet counts, for a + b. The threaded run must
+// also report the same search work (steps and predicate evaluations).
 std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   const MinkowskiResult ref = minkowski_sum(a, b, variant_options({Algorithm::cvms, true}));
   const MinkowskiResult fast = minkowski_sum(a, b, variant_options({Algorithm::cvms, false}));
-  const PolygonSoup x = ref.polyhedron.to_soup();
-  const PolygonSoup y = fast.polyhedron.to_soup();
-  if (x.points != y.points) return "the two CVMS modes give different vertices";
-  if (x.face_offsets != y.face_offsets || x.face_indices != y.face_indices)
-    return "the two CVMS modes give different facets";
-  for (FaceId f : ref.polyhedron.mesh().faces())
-    if (ref.polyhedron.normal(f) != fast.polyhedron.normal(f) ||
-        ref.polyhedron.plane_offset(f) != fast.polyhedron.plane_offset(f))
-      return "the two CVMS modes give different planes at facet " + std::to_string(f.index());
-  const Stats &r = ref.stats, &s = fast.stats;
-  if (r.translated_facets != s.translated_facets || r.corner_facets != s.corner_facets ||
-      r.edge_facets != s.edge_facets || r.contributing_ties != s.contributing_ties)
-    return "the two CVMS modes count facets differently";
-  return "";
+  Options two_threads = variant_options({Algorithm::cvms, false});
+  two_threads.threads = 2;
+  const MinkowskiResult threaded = minkowski_sum(a, b, two_threads);
+  std::string why = same_result(ref, fast, "the two CVMS modes");
+  if (why.empty()) why = same_result(fast, threaded, "one and two threads");
+  if (why.empty() && (fast.stats.edge_candidates != threaded.stats.edge_candidates ||
+                      fast.stats.predicate_filtered != threaded.stats.predicate_filtered ||
+                      fast.stats.predicate_exact != threaded.stats.predicate_exact))
+    why = "one and two threads report different search work";
+  return why;
 }
 
 Mat3 scaling(const Rational& s) {
@@ -155,9 +171,7 @@ INSTANTIATE_TEST_SUITE_P(AllAlgorithms, Cvms,
 // The rhombic dodecahedron: 12 rhombi with normals (+-1, +-1, 0) and
 // permutations. Every Gaussian arc of the cube passes through one of its
 // facet normals.
-ConvexPolyhedron rhombic_dodecahedron() {
-  return hull(test::rhombic_dodecahedron_points());
-}
+ConvexPolyhedron rhombic_dodecahedron() { return hull(test::rhombic_dodecahedron_points()); }
 
 // ---------------------------------------------------------------------------
 // Hand-checked sums.

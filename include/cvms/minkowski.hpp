@@ -52,9 +52,12 @@ struct Options {
   ContributingVertexSearch contributing_vertex_search = ContributingVertexSearch::walk;
   EdgeFacetSearch edge_facet_search = EdgeFacetSearch::walk;  ///< CVMS only
   /// CVMS only: 1 (the default) computes everything on the calling thread;
-  /// 2 or more also start one worker thread inside the call, which computes
-  /// the output's facet planes while the calling thread builds its vertices
-  /// and mesh (more threads are not used yet). The result is identical.
+  /// 2 or more also use one worker thread at a time inside the call: it
+  /// traces the edge facets (arc walk) while the calling thread finds the
+  /// corner facets, then computes the output's facet planes while the
+  /// calling thread builds the vertices and mesh, which then helps with the
+  /// planes (more threads are not used yet). The result, Stats included, is
+  /// identical.
   unsigned threads = 1;
 };
 
