@@ -153,12 +153,13 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
 }  // namespace
 
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          Stats& stats) {
-  return cvms_facets(a, b, options, stats).build(options.threads);
+                          Stats& stats, WorkerMinimums minimums) {
+  const SumFacetBuilder facets = cvms_facets(a, b, options, stats, minimums);
+  return facets.build(facets.num_facets() >= minimums.output_facets ? options.threads : 1);
 }
 
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            Stats& stats) {
+                            Stats& stats, WorkerMinimums minimums) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   const bool walk_vertices = options.contributing_vertex_search == ContributingVertexSearch::walk;
@@ -219,7 +220,8 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   PredicateCounters tracer_predicates;
   std::exception_ptr tracer_failure;
   std::jthread tracer;  // after what it writes: destroyed (joined) first
-  if (options.threads > 1 && options.edge_facet_search == EdgeFacetSearch::walk) {
+  if (options.threads > 1 && options.edge_facet_search == EdgeFacetSearch::walk &&
+      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= minimums.trace) {
     tracer = std::jthread([&] {
       try {
         const PredicateCounters before = predicate_counters();

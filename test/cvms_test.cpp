@@ -10,6 +10,8 @@
 // of that, every CVMS case also checks that the two CVMS modes build the
 // identical polyhedron (same vertices, same facets, same numbering, same
 // facet counts).
+#include "cvms.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -24,6 +26,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
+#include "cvms/predicates.hpp"
 #include "cvms/quickhull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
@@ -87,6 +90,21 @@ std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, cons
   return "";
 }
 
+// CVMS (default mode) with Options::threads = 2 and the worker started
+// however small the sum (minkowski_sum keeps small sums on one thread), with
+// the predicate counts minkowski_sum would report.
+MinkowskiResult with_worker_always(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  Options options;
+  options.threads = 2;
+  MinkowskiResult r;
+  const PredicateCounters before = predicate_counters();
+  r.polyhedron = detail::cvms_sum(a, b, options, r.stats, detail::WorkerMinimums{0, 0});
+  const PredicateCounters& after = predicate_counters();
+  r.stats.predicate_filtered = after.filtered - before.filtered;
+  r.stats.predicate_exact = after.exact - before.exact;
+  return r;
+}
+
 // "" iff CVMS in the reference mode, in the default mode, and in the default
 // mode with a worker thread (Options::threads = 2) build the identical
 // polyhedron with the same facet counts, for a + b. The threaded run must
@@ -94,9 +112,7 @@ std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, cons
 std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   const MinkowskiResult ref = minkowski_sum(a, b, variant_options({Algorithm::cvms, true}));
   const MinkowskiResult fast = minkowski_sum(a, b, variant_options({Algorithm::cvms, false}));
-  Options two_threads = variant_options({Algorithm::cvms, false});
-  two_threads.threads = 2;
-  const MinkowskiResult threaded = minkowski_sum(a, b, two_threads);
+  const MinkowskiResult threaded = with_worker_always(a, b);
   std::string why = same_result(ref, fast, "the two CVMS modes");
   if (why.empty()) why = same_result(fast, threaded, "one and two threads");
   if (why.empty() && (fast.stats.edge_candidates != threaded.stats.edge_candidates ||

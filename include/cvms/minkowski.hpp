@@ -56,8 +56,9 @@ struct Options {
   /// traces the edge facets (arc walk) while the calling thread finds the
   /// corner facets, then computes the output's facet planes while the
   /// calling thread builds the vertices and mesh, which then helps with the
-  /// planes (more threads are not used yet). The result, Stats included, is
-  /// identical.
+  /// planes (more threads are not used yet). Small sums stay on the calling
+  /// thread, where starting a thread would cost more than it saves. The
+  /// result, Stats included, is identical.
   unsigned threads = 1;
 };
 
