@@ -280,10 +280,7 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
                                    PlaneScratch& scratch) const {
   for (std::size_t i = begin; i < end; ++i) {
     const NormalSource& source = normals_[i];
-    // Appending when the planes end at i (one thread, in order) allocates
-    // each rational's parts together, which the later reads prefer.
-    const bool append = i == planes.normals.size();
-    Vec3& normal = append ? planes.normals.emplace_back() : planes.normals[i];
+    Vec3& normal = planes.normals[i];
     switch (source.kind) {
       case NormalKind::facet_a:
         normal = a_.normal(FaceId(source.index));
@@ -308,12 +305,7 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
         break;
       }
     }
-    if (append) {
-      planes.normal_approx.push_back(ApproxVec3::of(normal));
-      planes.offsets.emplace_back();
-    } else {
-      planes.normal_approx[i] = ApproxVec3::of(normal);
-    }
+    planes.normal_approx[i] = ApproxVec3::of(normal);
     // The offset is taken at the facet's first vertex a_i + b_j: read from
     // the output mesh once it exists, else summed here (6 % more
     // instructions, but it lets this run while another thread builds the mesh).
@@ -336,10 +328,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   auto build_mesh = [&] { mesh = ConvexPolyhedronAccess::output_mesh(soup(&vertex_approx)); };
   if (threads <= 1) {
     build_mesh();
-    FacetPlanes planes;
-    planes.normals.reserve(num_facets());
-    planes.normal_approx.reserve(num_facets());
-    planes.offsets.reserve(num_facets());
+    FacetPlanes planes = sized_planes();
     PlaneScratch scratch(*this);
     write_planes(planes, 0, num_facets(), &mesh, scratch);
     return ConvexPolyhedronAccess::assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));

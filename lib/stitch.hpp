@@ -76,8 +76,7 @@ class SumFacetBuilder {
  private:
   // The planes of the facets: sized_planes() allocates them all, and
   // write_planes fills facets [begin, end) (taking the offsets' points from
-  // the output mesh if it is given). Threads may write disjoint ranges of
-  // sized planes; one thread may instead append to planes that end at begin.
+  // the output mesh if it is given). Threads may write disjoint ranges.
   struct PlaneScratch;
   [[nodiscard]] FacetPlanes sized_planes() const;
   void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
