@@ -13,7 +13,7 @@
 #include <string>
 
 #include "bench_operands.hpp"
-#include "cvms.hpp"
+#include "cvms_algorithm.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"

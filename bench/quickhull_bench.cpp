@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "cvms/predicates.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 
 namespace {
 

@@ -17,7 +17,7 @@
 
 #include "cvms/shapes.hpp"
 #include "peer_qhull.hpp"
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 
 namespace {
 

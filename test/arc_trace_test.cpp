@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Tests of the Gaussian-arc walk (lib/arc_trace.cpp) against a brute-force
+// Tests of the Gaussian-arc walk (lib/minkowski/arc_trace.cpp) against a brute-force
 // crossing test over all edges of B in plain rational arithmetic, on
 // tie-heavy pairs (parallel facets, parallel edges, arcs through facet
 // normals) and random pairs.
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "contributing_vertices.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
 #include "support/random_clouds.hpp"

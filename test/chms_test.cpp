@@ -12,7 +12,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/rational.hpp"
 #include "support/oracle.hpp"
 

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/random_clouds.hpp"
 

@@ -10,7 +10,7 @@
 // of that, every CVMS case also checks that the two CVMS modes build the
 // identical polyhedron (same vertices, same facets, same numbering, same
 // facet counts).
-#include "cvms.hpp"
+#include "cvms_algorithm.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/predicates.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"
@@ -474,7 +474,7 @@ TEST_P(Cvms, InputTriangulatedWithManyCoplanarTriangles) {
 
 TEST(Conventions, GaussianArcRunsCounterclockwiseAboutTheEdge) {
   // cross(n(face(h)), n(face(twin(h)))) is a positive multiple of
-  // to(h) - from(h): lib/cvms.cpp uses the edge vector as the arc's pole.
+  // to(h) - from(h): lib/minkowski/cvms_algorithm.cpp uses the edge vector as the arc's pole.
   for (const auto& p : {shapes::cube(), shapes::truncated_cube(), shapes::geodesic_sphere(2),
                         rhombic_dodecahedron(), shapes::random_hull(7, 30)}) {
     const Mesh& m = p.mesh();

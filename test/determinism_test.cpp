@@ -17,7 +17,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/io.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "support/hand_solids.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Tests of the integer orient3d for dyadic coordinates (lib/dyadic_orient.hpp)
+// Tests of the integer orient3d for dyadic coordinates (lib/predicates/dyadic_orient.hpp)
 // against the rational evaluation: random and exactly coplanar points, at
 // every scale from subnormal to huge, and the refusal of other rationals.
 #include "dyadic_orient.hpp"

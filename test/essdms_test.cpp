@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Tests specific to ESSDMS (paper Section 5.2, lib/essdms.cpp): which of the
+// Tests specific to ESSDMS (paper Section 5.2, lib/minkowski/essdms.cpp): which of the
 // four slope-diagram cases each facet falls in, counted by hand, and the
 // contributing-vertex pre-check of the arc crossings. The exact sums
 // themselves are checked for every algorithm by the differential suite in
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cvms/minkowski.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The running error bounds of lib/filtered_arithmetic.hpp, checked exactly:
+// The running error bounds of lib/numeric/filtered_arithmetic.hpp, checked exactly:
 // after every operation |value - exact| <= error, including underflow into
 // and below the subnormal range and values near overflow.
 #include "filtered_arithmetic.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Tests of the quickhull's semi-static plane filter (lib/plane_filter.hpp):
+// Tests of the quickhull's semi-static plane filter (lib/numeric/plane_filter.hpp):
 // every sign it claims must be the exact orient3d of the exact points, on
 // nearly coplanar points, at extreme scales, and with inexact approximations.
 #include "plane_filter.hpp"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The filtered predicates against direct exact rational evaluation written
-// here (cofactor/Sarrus forms, independent of lib/predicates_exact.cpp), on
+// here (cofactor/Sarrus forms, independent of lib/predicates/predicates_exact.cpp), on
 // random inputs of every kind and on inputs built to defeat the filter whose
 // exact answer is known by construction. The counters show that the filter
 // answers the easy cases and that the exact fallback really runs on the

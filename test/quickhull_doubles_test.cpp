@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "cvms/error.hpp"
-#include "cvms/quickhull.hpp"
-#include "quickhull.hpp"
+#include "cvms/convex_hull.hpp"
+#include "hull_soup.hpp"
 #include "support/oracle.hpp"
 
 namespace cvms {

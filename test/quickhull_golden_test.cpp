@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/shapes.hpp"
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 
 namespace cvms {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cvms/error.hpp"
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 #include "support/oracle.hpp"
 
 namespace cvms {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Tests of the exact quickhull: the soup core (lib/quickhull.hpp) against the
+// Tests of the exact quickhull: the soup core (lib/hull/hull_soup.hpp) against the
 // brute-force oracle, known solids, degenerate clouds; and convex_hull.
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "support/oracle.hpp"
 
 namespace cvms {

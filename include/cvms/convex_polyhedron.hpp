@@ -30,7 +30,7 @@
 namespace cvms {
 
 namespace detail {
-struct ConvexPolyhedronAccess;  // lib/trusted_polyhedron.hpp: the algorithms' output path
+struct ConvexPolyhedronAccess;  // lib/mesh/trusted_polyhedron.hpp: the algorithms' output path
 }  // namespace detail
 
 /// A convex polyhedron with maximal facets, extreme vertices and cached
@@ -57,7 +57,7 @@ class ConvexPolyhedron {
   /// maximal facets, drops vertices that are not extreme, flips a globally
   /// inward orientation. Convexity is verified exactly (local convexity at
   /// every edge plus a global winding check; the argument is in
-  /// lib/convex_polyhedron.cpp). Input faces may be any planar convex
+  /// lib/mesh/convex_polyhedron.cpp). Input faces may be any planar convex
   /// polygons, with collinear vertices allowed.
   /// Result numbering: vertices are the extreme input vertices in input
   /// order; facets are ordered by the smallest input face they contain; each

@@ -18,7 +18,7 @@
 namespace cvms {
 
 namespace detail {
-struct ConvexPolyhedronAccess;  // lib/trusted_polyhedron.hpp
+struct ConvexPolyhedronAccess;  // lib/mesh/trusted_polyhedron.hpp
 }  // namespace detail
 
 /// A typed 32-bit index, invalid by default.

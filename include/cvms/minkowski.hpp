@@ -29,7 +29,7 @@ enum class EdgeFacetSearch {
   /// Output-sensitive: for each edge of A that passes Property 1, walk on B
   /// along the edge's Gaussian arc from the region of one contributing
   /// vertex to the other, crossing exactly the arcs of the edges of B that
-  /// give edge facets (lib/arc_trace.cpp). Same result as `paper`.
+  /// give edge facets (lib/minkowski/arc_trace.cpp). Same result as `paper`.
   walk,
 };
 
@@ -79,7 +79,7 @@ struct Stats {
   /// Candidates the paper's criterion alone (Eq. 4 with "not invisible"
   /// including parallel facets, plus Eq. 5) would accept but the exact
   /// Gaussian-map test rejects: the facet of B is parallel to the edge of A,
-  /// and the true facet is the corner facet f_B + e_A (see lib/cvms.cpp).
+  /// and the true facet is the corner facet f_B + e_A (see lib/minkowski/cvms_algorithm.cpp).
   std::uint64_t edge_paper_rejections = 0;
   std::uint64_t predicate_filtered = 0;  ///< predicate calls the double filter answered
   std::uint64_t predicate_exact = 0;     ///< predicate calls that needed exact arithmetic

@@ -14,7 +14,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 
 namespace cvms::fuzz {
 namespace {

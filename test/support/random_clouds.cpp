@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "cvms/error.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 
 namespace cvms::test {
 namespace {

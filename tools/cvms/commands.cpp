@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "cvms/error.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "files.hpp"
 

@@ -25,7 +25,7 @@
 // (the arcs of one polyhedron meet only at their end points, the facet
 // points), so it is the crossing of exactly one pair of arcs and differs from
 // every facet normal of A and B.
-#include "cvms.hpp"
+#include "cvms_algorithm.hpp"
 
 #include <algorithm>
 #include <exception>

@@ -37,7 +37,7 @@
 //   normal at a horizon edge is a non-negative combination of the normals of
 //   the two old triangles there), so testing q against the new triangles only
 //   is enough.
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +52,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 #include "dyadic_orient.hpp"
 #include "filtered_arithmetic.hpp"
 #include "plane_filter.hpp"

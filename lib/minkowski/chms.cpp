@@ -16,7 +16,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
-#include "quickhull.hpp"
+#include "hull_soup.hpp"
 
 namespace cvms {
 

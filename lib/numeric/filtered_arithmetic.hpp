@@ -64,7 +64,7 @@
 #include <limits>
 
 #include "cvms/approx.hpp"
-#include "cvms/predicates.hpp"
+#include "cvms/sign.hpp"
 
 namespace cvms::filtered {
 

@@ -3,7 +3,7 @@
 // measures the predicate counters around it.
 #include "cvms/minkowski.hpp"
 
-#include "cvms.hpp"
+#include "cvms_algorithm.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
 #include "essdms.hpp"

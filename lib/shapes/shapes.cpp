@@ -28,7 +28,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
-#include "cvms/quickhull.hpp"
+#include "cvms/convex_hull.hpp"
 
 namespace cvms::shapes {
 namespace {

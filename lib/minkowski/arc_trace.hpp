@@ -19,7 +19,7 @@ namespace cvms::detail {
 /// facet of A + B, oriented as the paper's search orients it: face(g)
 /// strictly visible from d_A = edge_vector(ha), face(twin(g)) strictly
 /// invisible, so that the facet's outward normal is cross(d_A, d_g).
-/// In the order met along the arc. See lib/arc_trace.cpp for the walk and
+/// In the order met along the arc. See lib/minkowski/arc_trace.cpp for the walk and
 /// its degenerate cases.
 /// \pre c1 and c2 are the exact contributing-vertex lists and are disjoint.
 /// \throw Error(invalid_argument) if the walk finds b inconsistent (an
