@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "predicates_exact.hpp"
 
 namespace {

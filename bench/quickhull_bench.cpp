@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "hull_soup.hpp"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Approx::of: the bound |value - q| <= error holds, checked exactly, and
 // error == 0 exactly when q is a double.
-#include "cvms/approx.hpp"
+#include "approx.hpp"
 
 #include <gtest/gtest.h>
 

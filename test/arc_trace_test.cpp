@@ -16,6 +16,7 @@
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
 #include "support/random_clouds.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -53,7 +54,7 @@ std::size_t expect_walk_matches_brute_force(const ConvexPolyhedron& a, const Con
   std::vector<VertexId> list;
   ContributingVertices cv(a.num_facets());
   for (FaceId f : a.mesh().faces()) {
-    maximising_vertices(b, a.normal_ref(f), list);
+    maximising_vertices(b, detail::normal_ref(a, f), list);
     cv.append(list);
   }
   std::size_t found = 0;

@@ -11,6 +11,7 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/random_clouds.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -41,7 +42,7 @@ TEST(ContributingVertices, MaximisersMatchBruteForceForFacetNormalsAndRandomDire
   for (const auto& p : polys) {
     for (const auto& q : polys) {
       for (FaceId f : p.mesh().faces()) {
-        maximising_vertices(q, p.normal_ref(f), got);
+        maximising_vertices(q, detail::normal_ref(p, f), got);
         ASSERT_EQ(got, brute_force_maximisers(q, p.normal(f)));
         ties += got.size() > 1;
       }
@@ -63,7 +64,7 @@ TEST(ContributingVertices, ThreeOrMoreMaximisersAreAParallelFacet) {
   std::vector<VertexId> cv;
   std::vector<VertexId> facet;
   for (FaceId f : c.mesh().faces()) {
-    maximising_vertices(t, c.normal_ref(f), cv);
+    maximising_vertices(t, detail::normal_ref(c, f), cv);
     ASSERT_GE(cv.size(), 3u);
     const FaceId g = facet_with_normal(t, cv[0], c.normal(f));
     ASSERT_TRUE(g.is_valid());

@@ -14,6 +14,7 @@
 #include "cvms/error.hpp"
 #include "support/hand_solids.hpp"
 #include "support/oracle.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms {
 namespace {
@@ -208,26 +209,26 @@ TEST(ConvexPolyhedron, ExtremeMagnitudes) {
 }
 
 TEST(ConvexPolyhedron, TrustedSoupComputesCaches) {
-  ConvexPolyhedron p = ConvexPolyhedron::from_trusted_soup(test::cube_quads(3));
+  ConvexPolyhedron p = detail::trusted_polyhedron(test::cube_quads(3));
   EXPECT_EQ(test::check_invariants(p), "");
   EXPECT_TRUE(p.is_convex());
-  for (VertexId v : p.mesh().vertices()) EXPECT_EQ(p.vertex_approx(v).x.error, 0.0);
+  for (VertexId v : p.mesh().vertices()) EXPECT_EQ(detail::vertex_approx(p, v).x.error, 0.0);
   for (FaceId f : p.mesh().faces()) {
     const Vec3& n = p.normal(f);
-    EXPECT_EQ(p.normal_approx(f).x.value, n.x.get_d());
+    EXPECT_EQ(detail::normal_approx(p, f).x.value, n.x.get_d());
   }
 }
 
 TEST(ConvexPolyhedron, IsConvexRejectsBrokenTrustedInput) {
   // A cube with two triangles on one side: not maximal.
-  EXPECT_FALSE(ConvexPolyhedron::from_trusted_soup(test::cube_triangles()).is_convex());
+  EXPECT_FALSE(detail::trusted_polyhedron(test::cube_triangles()).is_convex());
   // A non-convex "trusted" input: the bipyramid with one reflex edge.
   PolygonSoup bip = make_soup({v3(0, 0, 0), v3(4, 0, 0), v3(0, 4, 0), v3(3, 3, 1), v3(3, 3, -1)},
                               {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {1, 0, 4}, {2, 1, 4}, {0, 2, 4}});
-  EXPECT_FALSE(ConvexPolyhedron::from_trusted_soup(bip).is_convex());
+  EXPECT_FALSE(detail::trusted_polyhedron(bip).is_convex());
   // Midpoints kept as vertices: not extreme.
   PolygonSoup sub = test::subdivided(test::tetrahedron(), 1);
-  EXPECT_FALSE(ConvexPolyhedron::from_trusted_soup(sub).is_convex());
+  EXPECT_FALSE(detail::trusted_polyhedron(sub).is_convex());
 }
 
 TEST(ConvexPolyhedron, TransformedTranslatedReflected) {

@@ -26,7 +26,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"

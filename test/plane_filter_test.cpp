@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "cvms/approx.hpp"
+#include "approx.hpp"
 #include "cvms/predicates.hpp"
 #include "cvms/rational.hpp"
 

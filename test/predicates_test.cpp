@@ -5,7 +5,7 @@
 // exact answer is known by construction. The counters show that the filter
 // answers the easy cases and that the exact fallback really runs on the
 // degenerate ones.
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 
 #include <gtest/gtest.h>
 

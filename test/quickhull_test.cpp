@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "support/oracle.hpp"
 

@@ -10,6 +10,7 @@
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -49,7 +50,7 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
     const ConvexPolyhedron s = minkowski_sum(a, b).polyhedron;
     for (VertexId v : s.mesh().vertices()) {
       const Vec3& x = s.vertex(v);
-      const ApproxVec3& ax = s.vertex_approx(v);
+      const ApproxVec3& ax = detail::vertex_approx(s, v);
       const Approx* parts[3] = {&ax.x, &ax.y, &ax.z};
       for (int i = 0; i < 3; ++i)
         ASSERT_LE(abs(Rational(parts[i]->value) - x[i]), Rational(parts[i]->error)) << "vertex " << v.index();

@@ -6,8 +6,9 @@
 /// faces are oriented counterclockwise seen from outside, and the volume is
 /// positive. Each facet stores its exact outward normal, scaled to a primitive
 /// integer vector (so equal directions have equal normals), and the plane offset
-/// dot(normal, x) = offset; double approximations of vertices and normals with
-/// proven error bounds sit next to them for the predicate filters.
+/// dot(normal, x) = offset. The library also keeps double approximations of
+/// vertices and normals with proven error bounds for its predicate filters;
+/// they are private to it (shared by copies, never visible here).
 ///
 /// What construction from a mesh repairs silently: a consistently inward
 /// orientation (flipped), coplanar adjacent faces (merged into one facet),
@@ -19,10 +20,9 @@
 #pragma once
 
 #include <cstdint>
-#include <span>
+#include <memory>
 #include <vector>
 
-#include "cvms/approx.hpp"
 #include "cvms/mesh.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/vec.hpp"
@@ -30,11 +30,15 @@
 namespace cvms {
 
 namespace detail {
-struct ConvexPolyhedronAccess;  // lib/mesh/trusted_polyhedron.hpp: the algorithms' output path
+// Defined only inside the library (lib/mesh/polyhedron_builder.hpp): a user
+// can neither make nor read one, so the class invariant holds for every
+// instance (see the constructor that takes them).
+struct PolyhedronParts;
+struct PolyhedronApproximations;
 }  // namespace detail
 
 /// A convex polyhedron with maximal facets, extreme vertices and cached
-/// exact and approximate facet planes (see the file comment).
+/// exact facet planes (see the file comment).
 ///
 /// \pre Accessors taking a handle require a valid handle of mesh() (index
 ///   below the matching num_*()); this is not checked.
@@ -51,7 +55,13 @@ struct ConvexPolyhedronAccess;  // lib/mesh/trusted_polyhedron.hpp: the algorith
 /// \endcode
 class ConvexPolyhedron {
  public:
-  ConvexPolyhedron() = default;
+  ConvexPolyhedron();
+  ~ConvexPolyhedron();
+  /// Copies share the (immutable) internal approximations.
+  ConvexPolyhedron(const ConvexPolyhedron&);
+  ConvexPolyhedron(ConvexPolyhedron&&) noexcept;
+  ConvexPolyhedron& operator=(const ConvexPolyhedron&);
+  ConvexPolyhedron& operator=(ConvexPolyhedron&&) noexcept;
 
   /// Checks and normalises a closed mesh: merges coplanar adjacent faces into
   /// maximal facets, drops vertices that are not extreme, flips a globally
@@ -74,13 +84,6 @@ class ConvexPolyhedron {
   /// Mesh::from_soup followed by from_mesh; errors of both.
   static ConvexPolyhedron from_soup(PolygonSoup soup);
 
-  /// Trusted construction from facets that the caller guarantees are maximal,
-  /// convex, counterclockwise from outside, with only extreme vertices (used
-  /// by the algorithms for their output). Topology is still checked by
-  /// Mesh::from_soup; geometry is not rechecked. \pre the guarantee holds.
-  /// Normals come from each facet's first corner. Numbering is the soup's.
-  static ConvexPolyhedron from_trusted_soup(PolygonSoup soup);
-
   /// The half-edge structure: faces are the facets.
   [[nodiscard]] const Mesh& mesh() const noexcept { return mesh_; }
   /// Number of vertices (all extreme).
@@ -92,17 +95,9 @@ class ConvexPolyhedron {
 
   /// The exact position of v.
   [[nodiscard]] const Vec3& vertex(VertexId v) const noexcept { return mesh_.position(v); }
-  /// The cached double approximation of vertex(v).
-  [[nodiscard]] const ApproxVec3& vertex_approx(VertexId v) const noexcept { return vertex_approx_[v.index()]; }
-  /// vertex(v) with its approximation, for the predicates.
-  [[nodiscard]] Vec3Ref vertex_ref(VertexId v) const noexcept { return {vertex(v), vertex_approx(v)}; }
 
   /// Exact outward normal of facet f: a primitive integer vector.
   [[nodiscard]] const Vec3& normal(FaceId f) const noexcept { return normals_[f.index()]; }
-  /// The cached double approximation of normal(f).
-  [[nodiscard]] const ApproxVec3& normal_approx(FaceId f) const noexcept { return normal_approx_[f.index()]; }
-  /// normal(f) with its approximation, for the predicates.
-  [[nodiscard]] Vec3Ref normal_ref(FaceId f) const noexcept { return {normal(f), normal_approx(f)}; }
   /// dot(normal(f), x) == plane_offset(f) for every point x of facet f.
   [[nodiscard]] const Rational& plane_offset(FaceId f) const noexcept { return offsets_[f.index()]; }
 
@@ -127,15 +122,20 @@ class ConvexPolyhedron {
   /// -P = {-x : x in P}, for configuration-space obstacles A + (-B).
   [[nodiscard]] ConvexPolyhedron reflected() const;
 
- private:
-  friend struct detail::ConvexPolyhedronAccess;
-  void compute_caches();  // normals, offsets, approximations
+  /// \internal The library's own construction, from parts that only its
+  /// builder (lib/mesh/polyhedron_builder.hpp) can make and whose geometry it
+  /// has checked or derived. Not callable from outside the library: the
+  /// parameter type is incomplete there.
+  explicit ConvexPolyhedron(detail::PolyhedronParts&& parts);
+  /// \internal The approximations the library's predicates use; the type is
+  /// incomplete outside the library. \pre the instance is not empty.
+  [[nodiscard]] const detail::PolyhedronApproximations& approximations() const noexcept { return *approx_; }
 
+ private:
   Mesh mesh_;
-  std::vector<ApproxVec3> vertex_approx_;
   std::vector<Vec3> normals_;
-  std::vector<ApproxVec3> normal_approx_;
   std::vector<Rational> offsets_;
+  std::shared_ptr<const detail::PolyhedronApproximations> approx_;  // null for a default-constructed instance
 };
 
 /// Scales a nonzero rational vector by a positive factor to the primitive

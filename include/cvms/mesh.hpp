@@ -18,7 +18,7 @@
 namespace cvms {
 
 namespace detail {
-struct ConvexPolyhedronAccess;  // lib/mesh/trusted_polyhedron.hpp
+struct DistinctPoints;  // lib/mesh/polyhedron_builder.hpp: defined only inside the library
 }  // namespace detail
 
 /// A typed 32-bit index, invalid by default.
@@ -252,12 +252,13 @@ class Mesh {
   /// \throw Error(invalid_argument) if the count differs from num_vertices().
   [[nodiscard]] Mesh with_positions(std::vector<Vec3> positions) const;
 
+  /// \internal from_soup without the point checks (canonical coordinates,
+  /// no two points equal), for the algorithms' output, whose points are
+  /// distinct sums a_i + b_j by construction; topology is checked in full.
+  /// Only the library can call it: the promise's type is incomplete outside.
+  static Mesh from_soup(PolygonSoup soup, const detail::DistinctPoints& promise);
+
  private:
-  friend struct detail::ConvexPolyhedronAccess;
-  // from_soup without the point checks (canonical coordinates, no two
-  // points equal), for the algorithms' output, whose points are distinct
-  // sums a_i + b_j by construction. Topology is checked in full.
-  static Mesh from_soup_with_distinct_points(PolygonSoup soup);
   static Mesh build(PolygonSoup soup, bool check_points);
 
   std::vector<Vec3> positions_;

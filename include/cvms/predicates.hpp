@@ -10,52 +10,31 @@
 /// arithmetic, whose cost grows with the bit length of the inputs.
 /// Thread-safe: no shared state (the counters are per thread).
 ///
-/// The Vec3Ref overloads use cached approximations; the plain overloads build
-/// them on the fly (slower, same answer).
+/// The library's own algorithms call overloads of these that take cached
+/// approximations (lib/predicates/filtered_predicates.hpp, private); these
+/// build the approximations on the fly (slower, same answer).
 #pragma once
 
-#include <cstdint>
-
-#include "cvms/approx.hpp"
 #include "cvms/sign.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms {
 
-/// How often the floating-point filter answered and how often exact
-/// arithmetic was needed: one count per sign evaluation (ccw_in_between
-/// makes two to four; a true is_parallel is always an exact evaluation). Per thread: predicates running in different threads
-/// never share counters, so the library stays free of shared mutable state.
-struct PredicateCounters {
-  std::uint64_t filtered = 0;  ///< answered by the double filter
-  std::uint64_t exact = 0;     ///< fell back to exact rational evaluation
-};
-/// This thread's counters (read or reset them from tests and benchmarks).
-PredicateCounters& predicate_counters() noexcept;
-
 /// Sign of cross(b - a, c - a) (2D): positive iff a, b, c make a left turn
 /// (counterclockwise), zero iff collinear.
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c);
-/// Same, with the cached approximations of the arguments (faster).
-Sign orient2d(Vec2Ref a, Vec2Ref b, Vec2Ref c);
 
 /// Sign of cross(u, v) (2D, z component): positive iff v is counterclockwise of u.
 Sign sign_cross2(const Vec2& u, const Vec2& v);
-/// Same, with the cached approximations of the arguments (faster).
-Sign sign_cross2(Vec2Ref u, Vec2Ref v);
 
 /// Sign of dot(u, v) (2D): positive iff the angle between u and v is acute.
 Sign sign_dot(const Vec2& u, const Vec2& v);
-/// Same, with the cached approximations of the arguments (faster).
-Sign sign_dot(Vec2Ref u, Vec2Ref v);
 
 /// True iff direction d lies strictly inside the counterclockwise angular
 /// sector that starts at direction d1 and ends at direction d2 (d1, d2, d
 /// nonzero). When d1 and d2 have the same direction the sector is the whole
 /// turn minus that direction. Used to order edges in the planar convolution.
 bool ccw_in_between(const Vec2& d, const Vec2& d1, const Vec2& d2);
-/// Same, with the cached approximations of the arguments (faster).
-bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
 
 /// Sign of dot(b - a, cross(c - a, d - a)) = det[b - a, c - a, d - a]:
 /// positive iff d lies on the side of the plane through a, b, c into which
@@ -63,37 +42,24 @@ bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
 /// zero iff the four points are coplanar.
 /// (Note the order: det[b-a, c-a, d-a] = dot(cross(b-a, c-a), d-a).)
 Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
-/// Same, with the cached approximations of the arguments (faster).
-Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d);
 
 /// Sign of dot(u, v).
 Sign sign_dot(const Vec3& u, const Vec3& v);
-/// Same, with the cached approximations of the arguments (faster).
-Sign sign_dot(Vec3Ref u, Vec3Ref v);
 
 /// Sign of dot(v, n) - dot(w, n): positive iff v is farther than w in the
 /// direction n (the test that picks contributing vertices, paper Eq. 3).
 Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n);
-/// Same, with the cached approximations of the arguments (faster).
-Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
 
 /// Sign of dot(p, n) - offset: positive iff p is strictly above the plane
 /// {x : dot(x, n) = offset} (in the direction n).
 Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset);
-/// As above with cached approximations (offset_approx of offset, e.g. a
-/// facet plane's stored offset).
-Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_approx);
 
 /// Sign of the triple product det[u, v, w] = dot(u, cross(v, w)).
 Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w);
-/// Same, with the cached approximations of the arguments (faster).
-Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
 
 /// True iff cross(u, v) == 0 (u, v parallel or one of them zero). Exact; the
 /// filter can only prove "not parallel", so a true answer always costs an
 /// exact evaluation.
 bool is_parallel(const Vec3& u, const Vec3& v);
-/// Same, with the cached approximations of the arguments (faster).
-bool is_parallel(Vec3Ref u, Vec3Ref v);
 
 }  // namespace cvms

@@ -48,14 +48,15 @@
 #include <string>
 #include <utility>
 
-#include "cvms/approx.hpp"
+#include "approx.hpp"
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "dyadic_orient.hpp"
 #include "filtered_arithmetic.hpp"
 #include "plane_filter.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms {
 namespace {
@@ -714,11 +715,11 @@ PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t
 
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {
   // The soup already has maximal convex facets and only extreme vertices.
-  return ConvexPolyhedron::from_trusted_soup(hull_soup(points));
+  return detail::trusted_polyhedron(hull_soup(points));
 }
 
 ConvexPolyhedron convex_hull(std::span<const std::array<double, 3>> points) {
-  return ConvexPolyhedron::from_trusted_soup(hull_soup(points));
+  return detail::trusted_polyhedron(hull_soup(points));
 }
 
 }  // namespace cvms

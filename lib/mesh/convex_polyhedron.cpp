@@ -53,8 +53,9 @@
 #include <utility>
 
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "dyadic.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms {
 namespace {
@@ -182,41 +183,18 @@ Vec3 ConvexPolyhedron::edge_vector(HalfedgeId h) const {
 
 ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) { return from_mesh(Mesh::from_soup(std::move(soup))); }
 
-ConvexPolyhedron ConvexPolyhedron::from_trusted_soup(PolygonSoup soup) {
-  ConvexPolyhedron p;
-  p.mesh_ = Mesh::from_soup(std::move(soup));
-  p.compute_caches();
-  return p;
-}
+ConvexPolyhedron::ConvexPolyhedron() = default;
+ConvexPolyhedron::~ConvexPolyhedron() = default;
+ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron&) = default;
+ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&&) noexcept = default;
+ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron&) = default;
+ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&&) noexcept = default;
 
-void ConvexPolyhedron::compute_caches() {
-  const Mesh& m = mesh_;
-  vertex_approx_.clear();
-  vertex_approx_.reserve(m.num_vertices());
-  for (VertexId v : m.vertices()) vertex_approx_.push_back(ApproxVec3::of(m.position(v)));
-  normals_.clear();
-  normal_approx_.clear();
-  offsets_.clear();
-  normals_.reserve(m.num_faces());
-  normal_approx_.reserve(m.num_faces());
-  offsets_.reserve(m.num_faces());
-  for (FaceId f : m.faces()) {
-    // Facets are strictly convex and counterclockwise from outside, so any
-    // corner gives the outward normal.
-    const HalfedgeId h = m.halfedge(f);
-    const Vec3& a = m.position(m.from(h));
-    const Vec3& b = m.position(m.to(h));
-    const Vec3& c = m.position(m.to(m.next(h)));
-    Vec3 n = cross(b - a, c - b);
-    if (is_zero(n))
-      throw Error(ErrorCategory::invalid_argument,
-                  "facet " + str(f.index()) + " starts with three collinear vertices (trusted input is not convex)");
-    n = primitive_direction(n);
-    offsets_.push_back(dot(n, a));
-    normal_approx_.push_back(ApproxVec3::of(n));
-    normals_.push_back(std::move(n));
-  }
-}
+ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
+    : mesh_(std::move(parts.mesh)),
+      normals_(std::move(parts.normals)),
+      offsets_(std::move(parts.offsets)),
+      approx_(std::make_shared<const detail::PolyhedronApproximations>(std::move(parts.approx))) {}
 
 ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   const std::uint32_t nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = mesh.num_halfedges();
@@ -419,13 +397,13 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
     std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
     out.add_face(facet);
   }
-  ConvexPolyhedron p;
+  Mesh merged;
   try {
-    p.mesh_ = Mesh::from_soup(std::move(out));
+    merged = Mesh::from_soup(std::move(out));
   } catch (const Error& e) {
     not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
   }
-  p.compute_caches();
+  ConvexPolyhedron p(detail::parts_with_planes(std::move(merged)));
 
   // 8. Global: an interior point o below every facet, and a ray from o that
   // crosses facet 0 only.
@@ -436,7 +414,7 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   const Vec3& c = m.position(m.to(m.next(h0)));
   const Vec3* w = nullptr;
   for (VertexId v : m.vertices())
-    if (side_of_plane(m.position(v), p.normals_[0], p.offsets_[0]) == Sign::negative) {
+    if (side_of_plane(m.position(v), p.normal(FaceId(0)), p.plane_offset(FaceId(0))) == Sign::negative) {
       w = &m.position(v);
       break;
     }
@@ -444,12 +422,12 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   const Vec3 o = Rational(1, 4) * (a + b + c + *w);
   const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
   for (FaceId f : m.faces()) {
-    if (side_of_plane(o, p.normals_[f.index()], p.offsets_[f.index()]) != Sign::negative)
+    if (side_of_plane(o, p.normal(f), p.plane_offset(f)) != Sign::negative)
       not_convex("the surface is locally convex but not convex: an interior point lies above " +
                  facet_name(f.index()));
   }
   for (FaceId f : m.faces()) {
-    if (f.index() == 0 || sign_dot(p.normals_[f.index()], dir) != Sign::positive) continue;
+    if (f.index() == 0 || sign_dot(p.normal(f), dir) != Sign::positive) continue;
     bool hit = true;
     for (HalfedgeId h : m.face_halfedges(f))
       if (sign_triple(m.position(m.from(h)) - o, m.position(m.to(h)) - o, dir) == Sign::negative) {
@@ -471,8 +449,8 @@ bool ConvexPolyhedron::is_convex() const {
     return false;
   }
   if (euler_characteristic() != 2) return false;
-  if (vertex_approx_.size() != m.num_vertices() || normals_.size() != m.num_faces() ||
-      normal_approx_.size() != m.num_faces() || offsets_.size() != m.num_faces())
+  if (!approx_ || approx_->vertices.size() != m.num_vertices() || normals_.size() != m.num_faces() ||
+      approx_->normals.size() != m.num_faces() || offsets_.size() != m.num_faces())
     return false;
   std::vector<const Vec3*> pts;
   for (FaceId f : m.faces()) {
@@ -502,7 +480,7 @@ bool ConvexPolyhedron::is_convex() const {
   if (distinct.size() != normals_.size()) return false;
   for (VertexId v : m.vertices()) {
     const ApproxVec3 a = ApproxVec3::of(m.position(v));
-    const ApproxVec3& b = vertex_approx_[v.index()];
+    const ApproxVec3& b = approx_->vertices[v.index()];
     if (a.x.value != b.x.value || a.y.value != b.y.value || a.z.value != b.z.value) return false;
   }
   return true;
@@ -524,19 +502,14 @@ ConvexPolyhedron ConvexPolyhedron::transformed(const Mat3& linear, const Vec3& o
     pts.push_back(linear * vertex(v) + offset);
     for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();  // in case the caller's matrix was not
   }
-  if (det == Sign::positive) {
-    ConvexPolyhedron p;
-    p.mesh_ = mesh_.with_positions(std::move(pts));
-    p.compute_caches();
-    return p;
-  }
+  if (det == Sign::positive) return ConvexPolyhedron(detail::parts_with_planes(mesh_.with_positions(std::move(pts))));
   // Orientation reversing: reverse every facet so it stays counterclockwise
   // seen from outside.
   PolygonSoup soup = mesh_.to_soup();
   soup.points = std::move(pts);
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     std::reverse(soup.face_indices.begin() + soup.face_offsets[f], soup.face_indices.begin() + soup.face_offsets[f + 1]);
-  return from_trusted_soup(std::move(soup));
+  return detail::trusted_polyhedron(std::move(soup));
 }
 
 ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
@@ -546,18 +519,19 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
     pts.push_back(vertex(v) + offset);
     for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();
   }
-  ConvexPolyhedron p;
-  p.mesh_ = mesh_.with_positions(std::move(pts));
-  p.vertex_approx_.reserve(p.num_vertices());
-  for (VertexId v : p.mesh_.vertices()) p.vertex_approx_.push_back(ApproxVec3::of(p.vertex(v)));
-  p.normals_ = normals_;
-  p.normal_approx_ = normal_approx_;
-  p.offsets_.reserve(offsets_.size());
+  if (!approx_) return {};
+  detail::PolyhedronParts p;
+  p.mesh = mesh_.with_positions(std::move(pts));
+  p.approx.vertices.reserve(num_vertices());
+  for (VertexId v : p.mesh.vertices()) p.approx.vertices.push_back(ApproxVec3::of(p.mesh.position(v)));
+  p.normals = normals_;
+  p.approx.normals = approx_->normals;
+  p.offsets.reserve(offsets_.size());
   for (FaceId f : mesh_.faces()) {
-    p.offsets_.push_back(offsets_[f.index()] + dot(normals_[f.index()], offset));
-    p.offsets_.back().canonicalize();
+    p.offsets.push_back(offsets_[f.index()] + dot(normals_[f.index()], offset));
+    p.offsets.back().canonicalize();
   }
-  return p;
+  return ConvexPolyhedron(std::move(p));
 }
 
 ConvexPolyhedron ConvexPolyhedron::reflected() const {

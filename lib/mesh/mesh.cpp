@@ -38,7 +38,7 @@ std::uint32_t Mesh::degree(FaceId f) const noexcept {
 
 Mesh Mesh::from_soup(PolygonSoup soup) { return build(std::move(soup), true); }
 
-Mesh Mesh::from_soup_with_distinct_points(PolygonSoup soup) { return build(std::move(soup), false); }
+Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) { return build(std::move(soup), false); }
 
 Mesh Mesh::build(PolygonSoup soup, bool check_points) {
   const auto& offsets = soup.face_offsets;

@@ -54,7 +54,8 @@
 
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -84,7 +85,7 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
   const Vec3 da = a.edge_vector(ha);
   const ApproxVec3 da_approx = ApproxVec3::of(da);
   const Vec3Ref da_ref{da, da_approx};
-  auto side = [&](FaceId f) { return sign_dot(b.normal_ref(f), da_ref); };
+  auto side = [&](FaceId f) { return sign_dot(detail::normal_ref(b, f), da_ref); };
   auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
   if (c1.empty() || c2.empty()) inconsistent(ha, "has no contributing vertices");
 
@@ -98,7 +99,7 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
       const Vec3 d = b.vertex(c1[1]) - b.vertex(c1[0]);
       const ApproxVec3 d_approx = ApproxVec3::of(d);
       // sign <d_A x n1, d> = det[d_A, n1, d].
-      const Sign s = sign_triple(da_ref, a.normal_ref(f1), Vec3Ref{d, d_approx});
+      const Sign s = sign_triple(da_ref, detail::normal_ref(a, f1), Vec3Ref{d, d_approx});
       if (s == Sign::positive) {
         u = c1[1];
       } else if (s == Sign::negative) {
@@ -137,7 +138,7 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
           best = w;
           continue;
         }
-        const Sign s = compare_dot(b.vertex_ref(w), b.vertex_ref(best), t_ref);
+        const Sign s = compare_dot(detail::vertex_ref(b, w), detail::vertex_ref(b, best), t_ref);
         if (s == Sign::positive) {
           best = w;
           tie = VertexId();

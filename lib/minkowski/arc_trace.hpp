@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "cvms/convex_polyhedron.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 

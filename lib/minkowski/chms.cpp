@@ -17,6 +17,7 @@
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "hull_soup.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms {
 
@@ -35,9 +36,9 @@ ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   // rounding of this bound. NaN errors become infinite (no filtering).
   double max_error = 0;
   for (std::uint32_t i = 0; i < a.num_vertices(); ++i) {
-    const ApproxVec3& p = a.vertex_approx(VertexId(i));
+    const ApproxVec3& p = detail::vertex_approx(a, VertexId(i));
     for (std::uint32_t j = 0; j < nb; ++j) {
-      const ApproxVec3& q = b.vertex_approx(VertexId(j));
+      const ApproxVec3& q = detail::vertex_approx(b, VertexId(j));
       const std::array<double, 3> s{p.x.value + q.x.value, p.y.value + q.y.value, p.z.value + q.z.value};
       const double e[3] = {p.x.error + q.x.error, p.y.error + q.y.error, p.z.error + q.z.error};
       for (int k = 0; k < 3; ++k) {
@@ -51,7 +52,7 @@ ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
                                  return a.vertex(VertexId(k / nb)) + b.vertex(VertexId(k % nb));
                                }};
   // The soup already has maximal convex facets and only extreme vertices.
-  return ConvexPolyhedron::from_trusted_soup(hull_soup(sums));
+  return detail::trusted_polyhedron(hull_soup(sums));
 }
 
 }  // namespace cvms

@@ -7,7 +7,8 @@
 #include <string>
 
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 
@@ -19,7 +20,7 @@ void maximising_vertices(const ConvexPolyhedron& q, Vec3Ref n, std::vector<Verte
       continue;
     }
     // Compare with the current maximiser only: all kept vertices tie with it.
-    const Sign s = compare_dot(q.vertex_ref(v), q.vertex_ref(out.front()), n);
+    const Sign s = compare_dot(detail::vertex_ref(q, v), detail::vertex_ref(q, out.front()), n);
     if (s == Sign::positive) {
       out.clear();
       out.push_back(v);
@@ -81,7 +82,7 @@ void climb(const ConvexPolyhedron& q, FaceId f, Vec3Ref n, VertexId start, std::
     num_tied = 0;
     for (HalfedgeId h : m.outgoing_halfedges(v)) {
       const VertexId w = m.to(h);
-      const Sign s = compare_dot(q.vertex_ref(w), q.vertex_ref(v), n);
+      const Sign s = compare_dot(detail::vertex_ref(q, w), detail::vertex_ref(q, v), n);
       if (s == Sign::positive) {
         v = w;  // strictly higher: <., n> increases at every move, so the climb ends
         improved = true;
@@ -126,7 +127,7 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
     if (g.is_valid()) {
       sorted_facet_vertices(q, g, list);
     } else {
-      climb(q, f, p.normal_ref(f), seed[f.index()], list);
+      climb(q, f, detail::normal_ref(p, f), seed[f.index()], list);
     }
     out.assign(f, list);
     for (HalfedgeId h : mp.face_halfedges(f)) {

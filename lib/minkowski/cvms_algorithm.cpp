@@ -37,8 +37,9 @@
 #include "arc_trace.hpp"
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "stitch.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -100,9 +101,9 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
     const Vec3 da = a.edge_vector(ha);
     const ApproxVec3 da_approx = ApproxVec3::of(da);
     const Vec3Ref da_ref{da, da_approx};
-    for (FaceId fb : mb.faces()) visibility[fb.index()] = sign_dot(da_ref, b.normal_ref(fb));
-    const Vec3Ref n1 = a.normal_ref(ma.face(ha));
-    const Vec3Ref n2 = a.normal_ref(ma.face(Mesh::twin(ha)));
+    for (FaceId fb : mb.faces()) visibility[fb.index()] = sign_dot(da_ref, detail::normal_ref(b, fb));
+    const Vec3Ref n1 = detail::normal_ref(a, ma.face(ha));
+    const Vec3Ref n2 = detail::normal_ref(a, ma.face(Mesh::twin(ha)));
     for (HalfedgeId hb : edges_b) {
       const Sign left = visibility[mb.face(hb).index()];
       const Sign right = visibility[mb.face(Mesh::twin(hb)).index()];
@@ -184,7 +185,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
     contributing_vertices_walk(a, b, {}, cv_a);
   } else {
     for (FaceId fa : ma.faces()) {
-      maximising_vertices(b, a.normal_ref(fa), cv);
+      maximising_vertices(b, detail::normal_ref(a, fa), cv);
       cv_a.append(cv);
     }
   }
@@ -246,7 +247,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
       if (fa.is_valid()) {
         sorted_facet_vertices(a, fa, cv);
       } else {
-        maximising_vertices(a, b.normal_ref(fb), cv);
+        maximising_vertices(a, detail::normal_ref(b, fb), cv);
       }
       cv_b.append(cv);
     }

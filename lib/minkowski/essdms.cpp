@@ -66,8 +66,9 @@
 
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "stitch.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -111,12 +112,12 @@ void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& 
                              std::vector<FacetPointLocation>& loc_a, std::vector<FacetPointLocation>& loc_b,
                              SumFacetBuilder& out, Stats& stats) {
   for (FaceId fa : a.mesh().faces()) {
-    const Vec3Ref na = a.normal_ref(fa);
+    const Vec3Ref na = detail::normal_ref(a, fa);
     for (FaceId fb : b.mesh().faces()) {
       // The facet normals of one polyhedron are pairwise distinct, so a
       // matched facet of B cannot match again.
       if (loc_b[fb.index()].where != Location::unknown) continue;
-      const Vec3Ref nb = b.normal_ref(fb);
+      const Vec3Ref nb = detail::normal_ref(b, fb);
       if (!is_parallel(na, nb) || sign_dot(na, nb) != Sign::positive) continue;
       loc_a[fa.index()] = {Location::on_facet_point, fb.index()};
       loc_b[fb.index()] = {Location::on_facet_point, fa.index()};
@@ -135,13 +136,13 @@ void facet_points_on_arcs(Operand which, const ConvexPolyhedron& p, std::vector<
   const Mesh& mq = q.mesh();
   for (FaceId f : p.mesh().faces()) {
     if (loc[f.index()].where != Location::unknown) continue;
-    const Vec3Ref n = p.normal_ref(f);
+    const Vec3Ref n = detail::normal_ref(p, f);
     for (std::size_t i = 0; i < arcs_q.size(); ++i) {
       const Vec3Ref pole = arcs_q.pole(i);
       if (sign_dot(n, pole) != Sign::zero) continue;  // Eq. 8: not on the great circle
       const HalfedgeId h = arcs_q.halfedges[i];
-      const Vec3Ref s = q.normal_ref(mq.face(h));
-      const Vec3Ref t = q.normal_ref(mq.face(Mesh::twin(h)));
+      const Vec3Ref s = detail::normal_ref(q, mq.face(h));
+      const Vec3Ref t = detail::normal_ref(q, mq.face(Mesh::twin(h)));
       if (sign_triple(s, n, pole) != Sign::positive || sign_triple(n, t, pole) != Sign::positive)
         continue;  // Eq. 9
       loc[f.index()] = {Location::on_arc, h.index()};
@@ -160,7 +161,7 @@ void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
   std::vector<VertexId> cv;
   for (FaceId f : p.mesh().faces()) {
     if (loc[f.index()].where != Location::unknown) continue;
-    maximising_vertices(q, p.normal_ref(f), cv);
+    maximising_vertices(q, detail::normal_ref(p, f), cv);
     if (cv.size() != 1) {
       // Two or more maximisers put the facet point on an arc or a facet
       // point of q, which cases 1 and 2 would have found for a valid operand.
@@ -226,8 +227,8 @@ void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, co
   const Mesh& mb = b.mesh();
   for (std::uint32_t i : ia) {
     const HalfedgeId ha = arcs_a.halfedges[i];
-    const Vec3Ref sa = a.normal_ref(ma.face(ha));
-    const Vec3Ref ta = a.normal_ref(ma.face(Mesh::twin(ha)));
+    const Vec3Ref sa = detail::normal_ref(a, ma.face(ha));
+    const Vec3Ref ta = detail::normal_ref(a, ma.face(Mesh::twin(ha)));
     const Vec3Ref da = arcs_a.pole(i);
     for (std::uint32_t j : ib) {
       const HalfedgeId hb = arcs_b.halfedges[j];
@@ -236,8 +237,8 @@ void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, co
       const Sign sigma = sign_dot(sa, db);
       if (sigma == Sign::zero) continue;  // parallel arcs, or s_A on the great circle of the arc of B
       if (sign_dot(ta, db) != -sigma) continue;
-      if (sign_dot(b.normal_ref(mb.face(hb)), da) != -sigma) continue;
-      if (sign_dot(b.normal_ref(mb.face(Mesh::twin(hb))), da) != sigma) continue;
+      if (sign_dot(detail::normal_ref(b, mb.face(hb)), da) != -sigma) continue;
+      if (sign_dot(detail::normal_ref(b, mb.face(Mesh::twin(hb))), da) != sigma) continue;
       out.add_edge_plus_edge(ha, hb, sigma);
       ++stats.edge_facets;
     }

@@ -5,7 +5,7 @@
 
 #include "cvms_algorithm.hpp"
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "essdms.hpp"
 
 namespace cvms {

@@ -15,7 +15,7 @@
 #include "cvms/planar_sum.hpp"
 #include "dyadic.hpp"
 #include "small_direction.hpp"
-#include "trusted_polyhedron.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -88,7 +88,7 @@ class EdgeDirections {
       if (small_.empty()) small_.resize(state_.size());
       const Mesh& m = p_.mesh();
       const HalfedgeId even = Mesh::halfedge(Mesh::edge(h));
-      const auto d = small_integer_direction(p_.vertex_approx(m.from(even)), p_.vertex_approx(m.to(even)));
+      const auto d = small_integer_direction(detail::vertex_approx(p_, m.from(even)), detail::vertex_approx(p_, m.to(even)));
       state_[e] = d ? State::small : State::general;
       if (d) small_[e] = *d;
     }
@@ -224,7 +224,7 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
     Vec3& sum = soup.points.emplace_back();
     for (int i = 0; i < 3; ++i) add_into(sum[i], a_.vertex(va)[i], b_.vertex(vb)[i]);
     if (approx != nullptr) {
-      const ApproxVec3 &xa = a_.vertex_approx(va), &xb = b_.vertex_approx(vb);
+      const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
       approx->push_back(
           {approx_sum(xa.x, xb.x, sum.x), approx_sum(xa.y, xb.y, sum.y), approx_sum(xa.z, xb.z, sum.z)});
     }
@@ -325,13 +325,13 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   std::vector<ApproxVec3> vertex_approx;
   Mesh mesh;
-  auto build_mesh = [&] { mesh = ConvexPolyhedronAccess::output_mesh(soup(&vertex_approx)); };
+  auto build_mesh = [&] { mesh = output_mesh(soup(&vertex_approx)); };
   if (threads <= 1) {
     build_mesh();
     FacetPlanes planes = sized_planes();
     PlaneScratch scratch(*this);
     write_planes(planes, 0, num_facets(), &mesh, scratch);
-    return ConvexPolyhedronAccess::assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
+    return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
   }
   // Two parts: the vertices with the mesh (one thread), and the facet planes
   // (the larger part, shared). A worker starts on the planes at once; this
@@ -370,7 +370,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
     take_chunks(&mesh);
   }
   if (failure) std::rethrow_exception(failure);
-  return ConvexPolyhedronAccess::assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
+  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
 }
 
 }  // namespace cvms::detail

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
-#include "cvms/predicates.hpp"
-#include "trusted_polyhedron.hpp"
+#include "filtered_predicates.hpp"
+#include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 

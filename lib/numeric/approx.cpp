@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Approx::of: the double of a rational with a proven error bound, without
 // allocating (the plain-vector predicates call it on every evaluation).
-#include "cvms/approx.hpp"
+#include "approx.hpp"
 
 #include <bit>
 #include <cmath>

@@ -63,7 +63,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cvms/approx.hpp"
+#include "approx.hpp"
 #include "cvms/sign.hpp"
 
 namespace cvms::filtered {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "cvms/approx.hpp"
+#include "approx.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms::detail {

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 
 namespace cvms {
 namespace {

@@ -11,7 +11,7 @@
 
 #include <optional>
 
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms {

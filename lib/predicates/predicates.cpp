@@ -9,7 +9,7 @@
 // Approx (cached or on-the-fly approximations with an error) or double (all
 // input errors are zero, the common case for inputs that were doubles, where
 // the first operations need no error propagation at all).
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 
 #include <utility>
 

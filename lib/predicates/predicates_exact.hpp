@@ -4,7 +4,7 @@
 // predicates (predicates.cpp), and the baseline of the benchmark.
 #pragma once
 
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 
 namespace cvms::exact {
 

@@ -27,7 +27,7 @@
 #include <utility>
 
 #include "cvms/error.hpp"
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 
 namespace cvms::shapes {

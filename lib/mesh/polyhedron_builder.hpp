@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// The library's only ways to make a ConvexPolyhedron besides the checked
+// ConvexPolyhedron::from_mesh, and its read access to what the public class
+// keeps private: the double approximations (with proven error bounds) of
+// vertices and normals that the predicate filters use.
+//
+// Two ways in, both for facets the caller already knows to be maximal,
+// strictly convex, counterclockwise from outside, with only extreme vertices:
+//  - trusted_polyhedron(soup): planes computed from each facet's first corner
+//    (the exact hull's output, transforms that reverse orientation);
+//  - assemble(mesh, approximations, planes): the algorithms' output path,
+//    whose exact primitive normals and offsets are known already, so that
+//    nothing is recomputed (no cross products, no gcds), built in parts that
+//    may be computed concurrently.
+// Topology is always checked (Mesh::from_soup); the geometry guarantee is the
+// caller's. Private to the library: the public header declares these types
+// without defining them, so no user can build an unchecked instance.
+#pragma once
+
+#include <vector>
+
+#include "approx.hpp"
+#include "cvms/convex_polyhedron.hpp"
+
+namespace cvms::detail {
+
+/// The promise of Mesh::from_soup's unchecked-points overload.
+struct DistinctPoints {};
+
+struct PolyhedronApproximations {
+  std::vector<ApproxVec3> vertices;  ///< one per vertex
+  std::vector<ApproxVec3> normals;   ///< one per facet
+};
+
+/// What ConvexPolyhedron's library constructor takes, index by index.
+struct PolyhedronParts {
+  Mesh mesh;
+  std::vector<Vec3> normals;      ///< outward primitive integer normals
+  std::vector<Rational> offsets;  ///< dot(normal, x) for x on the facet
+  PolyhedronApproximations approx;
+};
+
+/// The planes of the output facets, index by index.
+struct FacetPlanes {
+  std::vector<Vec3> normals;              ///< outward primitive integer normals
+  std::vector<ApproxVec3> normal_approx;  ///< their approximations
+  std::vector<Rational> offsets;          ///< dot(normal, x) for x on the facet
+};
+
+/// The parts of a mesh whose faces meet the guarantee above: normals from
+/// each face's first corner, approximations of everything.
+/// \throw Error(invalid_argument) if a face starts with three collinear vertices.
+PolyhedronParts parts_with_planes(Mesh mesh);
+
+/// The polyhedron of a soup that meets the guarantee (topology checked).
+ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
+
+/// The half-edge mesh of an output soup, topology checked as in
+/// Mesh::from_soup. \pre the points are canonical and pairwise distinct.
+Mesh output_mesh(PolygonSoup soup);
+
+/// The polyhedron from its mesh, the approximations of its vertices and the
+/// planes of its faces (index by index). Geometry is not checked.
+/// \pre the guarantee holds and the planes are exact.
+/// \throw Error(invalid_argument) if the counts do not match.
+ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes);
+
+inline const ApproxVec3& vertex_approx(const ConvexPolyhedron& p, VertexId v) noexcept {
+  return p.approximations().vertices[v.index()];
+}
+/// vertex(v) with its approximation, for the filtered predicates.
+inline Vec3Ref vertex_ref(const ConvexPolyhedron& p, VertexId v) noexcept { return {p.vertex(v), vertex_approx(p, v)}; }
+inline const ApproxVec3& normal_approx(const ConvexPolyhedron& p, FaceId f) noexcept {
+  return p.approximations().normals[f.index()];
+}
+/// normal(f) with its approximation, for the filtered predicates.
+inline Vec3Ref normal_ref(const ConvexPolyhedron& p, FaceId f) noexcept { return {p.normal(f), normal_approx(p, f)}; }
+
+}  // namespace cvms::detail

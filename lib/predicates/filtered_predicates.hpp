@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// The predicates as the library's algorithms call them: with the cached
+// double approximations of their arguments (Vec3Ref: exact value + proven
+// error bound, lib/numeric/approx.hpp), so the filter costs a few flops and no
+// conversion. Same exact answers as the public overloads in cvms/predicates.hpp
+// (lib/predicates/predicates.cpp holds both). Private: the filter machinery is
+// not part of the public API, and Stats reports the counters to users.
+#pragma once
+
+#include <cstdint>
+
+#include "approx.hpp"
+#include "cvms/predicates.hpp"
+
+namespace cvms {
+
+// How often the floating-point filter answered and how often exact
+// arithmetic was needed: one count per sign evaluation (ccw_in_between
+// makes two to four; a true is_parallel is always an exact evaluation). Per
+// thread: predicates running in different threads never share counters, so
+// the library stays free of shared mutable state. minkowski_sum reports the
+// difference over its call in Stats.
+struct PredicateCounters {
+  std::uint64_t filtered = 0;  ///< answered by the double filter
+  std::uint64_t exact = 0;     ///< fell back to exact rational evaluation
+};
+// This thread's counters (read or reset them from tests and benchmarks).
+PredicateCounters& predicate_counters() noexcept;
+
+// The overloads of cvms/predicates.hpp with cached approximations
+// (side_of_plane also takes the offset's approximation).
+Sign orient2d(Vec2Ref a, Vec2Ref b, Vec2Ref c);
+Sign sign_cross2(Vec2Ref u, Vec2Ref v);
+Sign sign_dot(Vec2Ref u, Vec2Ref v);
+bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
+Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d);
+Sign sign_dot(Vec3Ref u, Vec3Ref v);
+Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
+Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_approx);
+Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
+bool is_parallel(Vec3Ref u, Vec3Ref v);
+
+}  // namespace cvms
