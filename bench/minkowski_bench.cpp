@@ -32,14 +32,6 @@ using cvms_bench::Pair;
 constexpr const auto& kRows = cvms_bench::kTableRows;
 const ConvexPolyhedron& operand(int row) { return cvms_bench::table_operand(row); }
 
-// The paper-faithful CVMS: linear scans and the horizon-edge search.
-cvms::Options paper_cvms() {
-  cvms::Options o;
-  o.contributing_vertex_search = cvms::ContributingVertexSearch::scan;
-  o.edge_facet_search = cvms::EdgeFacetSearch::paper;
-  return o;
-}
-
 // The default CVMS with Options::threads = 2 (a worker thread inside the
 // call). Timed in real time: the CPU time of the calling thread alone would
 // flatter it. It reports no peak_heap_bytes: the counters are per thread and
@@ -56,7 +48,8 @@ cvms::Options with_algorithm(Algorithm algorithm) {
   return o;
 }
 
-void run_sum(benchmark::State& state, const cvms::Options& options) {
+// research: the paper-faithful rows pass cvms::detail::paper_search().
+void run_sum(benchmark::State& state, const cvms::Options& options, const cvms::detail::ResearchOptions& research = {}) {
   const int row = static_cast<int>(state.range(0));
   const ConvexPolyhedron cube = cvms::shapes::cube();
   const ConvexPolyhedron& b = operand(row);
@@ -65,7 +58,7 @@ void run_sum(benchmark::State& state, const cvms::Options& options) {
   cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     try {
-      cvms::MinkowskiResult r = cvms::minkowski_sum(cube, b, options);
+      cvms::MinkowskiResult r = cvms::detail::minkowski_sum(cube, b, options, research);
       facets = r.polyhedron.num_facets();
       stats = r.stats;
       benchmark::DoNotOptimize(facets);
@@ -93,7 +86,7 @@ void table_args(benchmark::internal::Benchmark* b) {
 
 void BM_CHMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::chms)); }
 void BM_ESSDMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::essdms)); }
-void BM_CVMS_paper(benchmark::State& state) { run_sum(state, paper_cvms()); }
+void BM_CVMS_paper(benchmark::State& state) { run_sum(state, {}, cvms::detail::paper_search()); }
 void BM_CVMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::cvms)); }
 BENCHMARK(BM_CHMS)->Apply(table_args);
 BENCHMARK(BM_ESSDMS)->Apply(table_args);
@@ -112,14 +105,15 @@ void per_facet_counters(benchmark::State& state, const Pair& p, double facets) {
       benchmark::Counter(facets, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void run_family(benchmark::State& state, Family family, const cvms::Options& options) {
+void run_family(benchmark::State& state, Family family, const cvms::Options& options,
+                const cvms::detail::ResearchOptions& research = {}) {
   const int k = static_cast<int>(state.range(0));
   const Pair& p = family_pair(family, k);
   std::uint32_t facets = 0;
   cvms::Stats stats;
   cvms_bench::reset_heap_peak();
   for (auto _ : state) {
-    cvms::MinkowskiResult r = cvms::minkowski_sum(p.a, p.b, options);
+    cvms::MinkowskiResult r = cvms::detail::minkowski_sum(p.a, p.b, options, research);
     facets = r.polyhedron.num_facets();
     stats = r.stats;
     benchmark::DoNotOptimize(facets);
@@ -143,7 +137,7 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
   const int k = static_cast<int>(state.range(0));
   const Pair& p = family_pair(family, k);
   cvms::Stats stats;
-  const cvms::detail::SumFacetBuilder facets = cvms::detail::cvms_facets(p.a, p.b, cvms::Options{}, stats);
+  const cvms::detail::SumFacetBuilder facets = cvms::detail::cvms_facets(p.a, p.b, cvms::Options{}, {}, stats);
   cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     if (full) {
@@ -173,7 +167,7 @@ void small_family_args(benchmark::internal::Benchmark* b) {
 
 void BM_CVMS_SphereRot(benchmark::State& state) { run_family(state, Family::sphere_rotated, {}); }
 void BM_CVMS_paper_SphereRot(benchmark::State& state) {
-  run_family(state, Family::sphere_rotated, paper_cvms());
+  run_family(state, Family::sphere_rotated, {}, cvms::detail::paper_search());
 }
 void BM_CVMS_CubeSphere(benchmark::State& state) { run_family(state, Family::cube_sphere, {}); }
 void BM_CVMS_2threads_SphereRot(benchmark::State& state) {

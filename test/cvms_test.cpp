@@ -10,7 +10,7 @@
 // of that, every CVMS case also checks that the two CVMS modes build the
 // identical polyhedron (same vertices, same facets, same numbering, same
 // facet counts).
-#include "cvms_algorithm.hpp"
+#include "research_options.hpp"
 
 #include <gtest/gtest.h>
 
@@ -61,14 +61,15 @@ struct Variant {
 
 std::string variant_name(Variant v) { return algorithm_name(v.algorithm) + (v.reference ? "_paper" : ""); }
 
-Options variant_options(Variant v) {
-  Options o;
-  o.algorithm = v.algorithm;
-  if (v.reference) {
-    o.contributing_vertex_search = ContributingVertexSearch::scan;
-    o.edge_facet_search = EdgeFacetSearch::paper;
-  }
+test::SumOptions variant_options(Variant v) {
+  test::SumOptions o;
+  o.options.algorithm = v.algorithm;
+  if (v.reference) o.research = detail::paper_search();
   return o;
+}
+
+MinkowskiResult sum_with(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const test::SumOptions& o) {
+  return detail::minkowski_sum(a, b, o.options, o.research);
 }
 
 // "" iff x and y are the identical polyhedron (soup equality: positions,
@@ -91,18 +92,13 @@ std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, cons
 }
 
 // CVMS (default mode) with Options::threads = 2 and the worker started
-// however small the sum (minkowski_sum keeps small sums on one thread), with
-// the predicate counts minkowski_sum would report.
+// however small the sum (minkowski_sum keeps small sums on one thread).
 MinkowskiResult with_worker_always(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   Options options;
   options.threads = 2;
-  MinkowskiResult r;
-  const PredicateCounters before = predicate_counters();
-  r.polyhedron = detail::cvms_sum(a, b, options, r.stats, detail::WorkerMinimums{0, 0});
-  const PredicateCounters& after = predicate_counters();
-  r.stats.predicate_filtered = after.filtered - before.filtered;
-  r.stats.predicate_exact = after.exact - before.exact;
-  return r;
+  detail::ResearchOptions research;
+  research.worker_minimums = {0, 0};
+  return detail::minkowski_sum(a, b, options, research);
 }
 
 // "" iff CVMS in the reference mode, in the default mode, and in the default
@@ -110,8 +106,8 @@ MinkowskiResult with_worker_always(const ConvexPolyhedron& a, const ConvexPolyhe
 // polyhedron with the same facet counts, for a + b. The threaded run must
 // also report the same search work (steps and predicate evaluations).
 std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
-  const MinkowskiResult ref = minkowski_sum(a, b, variant_options({Algorithm::cvms, true}));
-  const MinkowskiResult fast = minkowski_sum(a, b, variant_options({Algorithm::cvms, false}));
+  const MinkowskiResult ref = sum_with(a, b, variant_options({Algorithm::cvms, true}));
+  const MinkowskiResult fast = sum_with(a, b, variant_options({Algorithm::cvms, false}));
   const MinkowskiResult threaded = with_worker_always(a, b);
   std::string why = same_result(ref, fast, "the two CVMS modes");
   if (why.empty()) why = same_result(fast, threaded, "one and two threads");
@@ -154,7 +150,7 @@ MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
 class Cvms : public ::testing::TestWithParam<Variant> {
  protected:
   [[nodiscard]] static Algorithm algorithm() { return GetParam().algorithm; }
-  [[nodiscard]] static Options options() { return variant_options(GetParam()); }
+  [[nodiscard]] static test::SumOptions options() { return variant_options(GetParam()); }
   // The differential check between the CVMS modes runs once per case, in the
   // default-mode instance.
   [[nodiscard]] static std::string modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
@@ -164,7 +160,7 @@ class Cvms : public ::testing::TestWithParam<Variant> {
   }
   // Shadows the free function: the algorithm under test.
   [[nodiscard]] static MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
-    return minkowski_sum(a, b, options());
+    return sum_with(a, b, options());
   }
   // CVMS and ESSDMS classify facets alike (translated, corner, edge) and
   // count ties alike; CHMS reports no such stats.
@@ -662,11 +658,11 @@ TEST(MinkowskiSum, EmptyOperandIsRejected) {
 
 TEST(MinkowskiSum, UnknownOptionsAreRejected) {
   for (int which = 0; which < 2; ++which) {
-    Options o;
-    if (which == 0) o.edge_facet_search = static_cast<EdgeFacetSearch>(42);
-    if (which == 1) o.contributing_vertex_search = static_cast<ContributingVertexSearch>(42);
+    detail::ResearchOptions o;
+    if (which == 0) o.edge_facet_search = static_cast<detail::EdgeFacetSearch>(42);
+    if (which == 1) o.contributing_vertex_search = static_cast<detail::ContributingVertexSearch>(42);
     try {
-      (void)minkowski_sum(shapes::cube(), shapes::octahedron(), o);
+      (void)detail::minkowski_sum(shapes::cube(), shapes::octahedron(), {}, o);
       FAIL() << "no exception";
     } catch (const Error& e) {
       EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);

@@ -18,39 +18,11 @@ enum class Algorithm {
   chms,    ///< exact hull of all pairwise vertex sums (the reference oracle)
 };
 
-/// How CVMS finds its edge facets (paper Section 4.3, step 3).
-enum class EdgeFacetSearch {
-  /// The paper's search: for every edge of A that passes Property 1, the
-  /// visibility of every facet of B (Eq. 4) gives the horizon edges, and the
-  /// normal-orientation criterion (Eq. 5) selects among them; the final
-  /// decision is made exact with the Gaussian-map crossing test.
-  /// O(e_A (f_B + e_B)) predicates: the reference for faster variants.
-  paper,
-  /// Output-sensitive: for each edge of A that passes Property 1, walk on B
-  /// along the edge's Gaussian arc from the region of one contributing
-  /// vertex to the other, crossing exactly the arcs of the edges of B that
-  /// give edge facets (lib/minkowski/arc_trace.cpp). Same result as `paper`.
-  walk,
-};
-
-/// How CVMS finds the contributing vertices of every facet (paper Section 4.3,
-/// steps 1 and 2).
-enum class ContributingVertexSearch {
-  /// The paper's search: a linear scan over the vertices of the other
-  /// operand for every facet, O(f_A v_B + f_B v_A) predicates.
-  scan,
-  /// Output-sensitive: facets in breadth-first order, each maximiser found by
-  /// hill-climbing from the neighbouring facet's answer. Same result as `scan`.
-  walk,
-};
-
-/// How minkowski_sum computes the sum. The defaults are the output-sensitive
-/// CVMS; {scan, paper} is the paper-faithful reference mode.
+/// How minkowski_sum computes the sum. The default is CVMS with the
+/// output-sensitive searches (contributing vertices by hill-climbing, edge
+/// facets by tracing Gaussian arcs) on the calling thread.
 struct Options {
   Algorithm algorithm = Algorithm::cvms;  ///< which algorithm
-  /// CVMS only: how contributing vertices are found.
-  ContributingVertexSearch contributing_vertex_search = ContributingVertexSearch::walk;
-  EdgeFacetSearch edge_facet_search = EdgeFacetSearch::walk;  ///< CVMS only
   /// CVMS only: 1 (the default) computes everything on the calling thread;
   /// 2 or more also use one worker thread at a time inside the call: it
   /// traces the edge facets (arc walk) while the calling thread finds the
@@ -92,13 +64,10 @@ struct MinkowskiResult {
 };
 
 /// A + B = {a + b : a in A, b in B}. Exact. Thread-safe (no shared state).
-/// CVMS with the paper's search ({scan, paper}) costs O(f_A v_B + f_B v_A +
-/// e_A' (f_B + e_B')) predicates, e' counting the edges that pass Property 1,
-/// plus the output; with the default walks it costs O(f_A + f_B + e_A' + k)
-/// predicates times the vertex degrees met (k = the output facets), plus the
+/// CVMS costs O(f_A + f_B + e_A' + k) predicates times the vertex degrees met
+/// (k = the output facets, e_A' the edges of A that pass Property 1), plus the
 /// climbs between neighbouring facets' answers (short for operands of
-/// similar resolution; O(v) in the worst case); both modes build the
-/// identical polyhedron;
+/// similar resolution; O(v) in the worst case), plus the output;
 /// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
 /// \throw Error(invalid_argument) for an empty (default-constructed) operand
 ///   or an unknown option value;

@@ -154,26 +154,26 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
 }  // namespace
 
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          Stats& stats, WorkerMinimums minimums) {
-  const SumFacetBuilder facets = cvms_facets(a, b, options, stats, minimums);
-  return facets.build(facets.num_facets() >= minimums.output_facets ? options.threads : 1);
+                          const ResearchOptions& research, Stats& stats) {
+  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
+  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
 }
 
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            Stats& stats, WorkerMinimums minimums) {
+                            const ResearchOptions& research, Stats& stats) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
-  const bool walk_vertices = options.contributing_vertex_search == ContributingVertexSearch::walk;
-  if (!walk_vertices && options.contributing_vertex_search != ContributingVertexSearch::scan) {
+  const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
+  if (!walk_vertices && research.contributing_vertex_search != ContributingVertexSearch::scan) {
     throw Error(ErrorCategory::invalid_argument,
                 "minkowski_sum: unknown contributing vertex search " +
-                    std::to_string(static_cast<int>(options.contributing_vertex_search)));
+                    std::to_string(static_cast<int>(research.contributing_vertex_search)));
   }
-  if (options.edge_facet_search != EdgeFacetSearch::paper &&
-      options.edge_facet_search != EdgeFacetSearch::walk) {
+  if (research.edge_facet_search != EdgeFacetSearch::paper &&
+      research.edge_facet_search != EdgeFacetSearch::walk) {
     throw Error(ErrorCategory::invalid_argument,
                 "minkowski_sum: unknown edge facet search " +
-                    std::to_string(static_cast<int>(options.edge_facet_search)));
+                    std::to_string(static_cast<int>(research.edge_facet_search)));
   }
   SumFacetBuilder out(a, b);
   std::vector<VertexId> cv;
@@ -221,8 +221,8 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   PredicateCounters tracer_predicates;
   std::exception_ptr tracer_failure;
   std::jthread tracer;  // after what it writes: destroyed (joined) first
-  if (options.threads > 1 && options.edge_facet_search == EdgeFacetSearch::walk &&
-      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= minimums.trace) {
+  if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
+      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
     tracer = std::jthread([&] {
       try {
         const PredicateCounters before = predicate_counters();
@@ -285,7 +285,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
     // Evaluated on this call's behalf: counted as if on this thread.
     predicate_counters().filtered += tracer_predicates.filtered;
     predicate_counters().exact += tracer_predicates.exact;
-  } else if (options.edge_facet_search == EdgeFacetSearch::paper) {
+  } else if (research.edge_facet_search == EdgeFacetSearch::paper) {
     const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
     edge_facets_paper(a, b, edges_a, edges_b, out, stats);

@@ -11,6 +11,11 @@
 namespace cvms {
 
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
+  return detail::minkowski_sum(a, b, options, {});
+}
+
+MinkowskiResult detail::minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                                      const ResearchOptions& research) {
   if (a.num_facets() == 0 || b.num_facets() == 0) {
     throw Error(ErrorCategory::invalid_argument, std::string("minkowski_sum: operand ") +
                                                      (a.num_facets() == 0 ? "A" : "B") +
@@ -21,13 +26,13 @@ MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron&
   MinkowskiResult result;
   switch (options.algorithm) {
     case Algorithm::cvms:
-      result.polyhedron = detail::cvms_sum(a, b, options, result.stats);
+      result.polyhedron = cvms_sum(a, b, options, research, result.stats);
       break;
     case Algorithm::chms:
-      result.polyhedron = chms(a, b);
+      result.polyhedron = cvms::chms(a, b);
       break;
     case Algorithm::essdms:
-      result.polyhedron = detail::essdms_sum(a, b, result.stats);
+      result.polyhedron = essdms_sum(a, b, result.stats);
       break;
     default:
       throw Error(ErrorCategory::invalid_argument,

@@ -73,10 +73,11 @@ Shape chms_shape(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
 }
 
 std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Shape& expected,
-                      const Options& options, bool check_origins) {
+                      const SumOptions& sum_options, bool check_origins) {
+  const Options& options = sum_options.options;
   std::ostringstream out;
-  const MinkowskiResult ab = minkowski_sum(a, b, options);
-  const MinkowskiResult ba = minkowski_sum(b, a, options);
+  const MinkowskiResult ab = detail::minkowski_sum(a, b, options, sum_options.research);
+  const MinkowskiResult ba = detail::minkowski_sum(b, a, options, sum_options.research);
   for (const MinkowskiResult* r : {&ab, &ba}) {
     const char* name = r == &ab ? "A+B" : "B+A";
     const std::string inv = check_invariants(r->polyhedron);
