@@ -55,13 +55,17 @@ struct PolyhedronApproximations;
 /// \endcode
 class ConvexPolyhedron {
  public:
+  /// The empty polyhedron (no vertices; not a valid operand).
   ConvexPolyhedron();
   ~ConvexPolyhedron();
   /// Copies share the (immutable) internal approximations.
   ConvexPolyhedron(const ConvexPolyhedron&);
-  ConvexPolyhedron(ConvexPolyhedron&&) noexcept;
+  /// Moves leave `other` empty.
+  ConvexPolyhedron(ConvexPolyhedron&& other) noexcept;
+  /// Copy assignment (shares the internal approximations).
   ConvexPolyhedron& operator=(const ConvexPolyhedron&);
-  ConvexPolyhedron& operator=(ConvexPolyhedron&&) noexcept;
+  /// Move assignment.
+  ConvexPolyhedron& operator=(ConvexPolyhedron&& other) noexcept;
 
   /// Checks and normalises a closed mesh: merges coplanar adjacent faces into
   /// maximal facets, drops vertices that are not extreme, flips a globally
@@ -122,14 +126,16 @@ class ConvexPolyhedron {
   /// -P = {-x : x in P}, for configuration-space obstacles A + (-B).
   [[nodiscard]] ConvexPolyhedron reflected() const;
 
-  /// \internal The library's own construction, from parts that only its
-  /// builder (lib/mesh/polyhedron_builder.hpp) can make and whose geometry it
-  /// has checked or derived. Not callable from outside the library: the
-  /// parameter type is incomplete there.
+  /// \cond INTERNAL
+  // The library's own construction, from parts that only its builder
+  // (lib/mesh/polyhedron_builder.hpp) can make and whose geometry it has
+  // checked or derived. Not callable from outside the library: the
+  // parameter type is incomplete there.
   explicit ConvexPolyhedron(detail::PolyhedronParts&& parts);
-  /// \internal The approximations the library's predicates use; the type is
-  /// incomplete outside the library. \pre the instance is not empty.
+  // The approximations the library's predicates use; the type is incomplete
+  // outside the library. Precondition: the instance is not empty.
   [[nodiscard]] const detail::PolyhedronApproximations& approximations() const noexcept { return *approx_; }
+  /// \endcond
 
  private:
   Mesh mesh_;

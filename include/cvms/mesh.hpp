@@ -252,11 +252,13 @@ class Mesh {
   /// \throw Error(invalid_argument) if the count differs from num_vertices().
   [[nodiscard]] Mesh with_positions(std::vector<Vec3> positions) const;
 
-  /// \internal from_soup without the point checks (canonical coordinates,
-  /// no two points equal), for the algorithms' output, whose points are
-  /// distinct sums a_i + b_j by construction; topology is checked in full.
-  /// Only the library can call it: the promise's type is incomplete outside.
+  /// \cond INTERNAL
+  // from_soup without the point checks (canonical coordinates, no two points
+  // equal), for the algorithms' output, whose points are distinct sums
+  // a_i + b_j by construction; topology is checked in full. Only the library
+  // can call it: the promise's type is incomplete outside.
   static Mesh from_soup(PolygonSoup soup, const detail::DistinctPoints& promise);
+  /// \endcond
 
  private:
   static Mesh build(PolygonSoup soup, bool check_points);
