@@ -101,8 +101,7 @@ struct MinkowskiResult {
 /// identical polyhedron;
 /// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
 /// \throw Error(invalid_argument) for an empty (default-constructed) operand
-///   or an unknown option value;
-/// \throw Error(not_implemented) if the algorithm is not available.
+///   or an unknown option value.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});
 

@@ -89,10 +89,7 @@ void run_hull(const HullArgs& args) {
     hull = convex_hull(points);
   } catch (const Error& e) {
     // A degenerate cloud is bad input: say which file it came from.
-    std::string message = e.what();
-    std::string category = std::string(to_string(e.category())) + ": ";
-    if (message.rfind(category, 0) == 0) message.erase(0, category.size());
-    throw Error(e.category(), input_name(args.input) + ": " + message);
+    throw Error(e.category(), input_name(args.input) + ": " + e.message());
   }
   write_polyhedron(args.output, hull, coordinates_of(args.float_output));
 }
