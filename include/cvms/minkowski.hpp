@@ -18,6 +18,10 @@ enum class Algorithm {
   chms,    ///< exact hull of all pairwise vertex sums (the reference oracle)
 };
 
+/// The algorithm's name as the cvms tool's --algorithm spells it: "cvms",
+/// "essdms" or "chms" ("unknown" for a value outside the enum).
+const char* to_string(Algorithm algorithm) noexcept;
+
 /// How CVMS finds its edge facets (paper Section 4.3, step 3).
 enum class EdgeFacetSearch {
   /// The paper's search: for every edge of A that passes Property 1, the

@@ -9,8 +9,8 @@
 #include <ostream>
 #include <string_view>
 
-#include "cvms/error.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "files.hpp"
 
@@ -54,18 +54,6 @@ void print_stats(std::ostream& report, const Stats& s) {
 
 }  // namespace
 
-const char* algorithm_name(Algorithm algorithm) noexcept {
-  switch (algorithm) {
-    case Algorithm::cvms:
-      return "cvms";
-    case Algorithm::essdms:
-      return "essdms";
-    case Algorithm::chms:
-      return "chms";
-  }
-  return "?";
-}
-
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
   check_output_directory(args.output);
@@ -75,8 +63,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output));
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
-           << "\nalgorithm: " << algorithm_name(args.algorithm) << "\ntime: " << milliseconds(sum.time)
-           << "\n";
+           << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
     print_stats(report, sum.result.stats);
   }
 }
@@ -156,7 +143,7 @@ void run_demo(const DemoArgs& args, std::ostream& report) {
          << "  Cube      " << counts(a) << "\n"
          << "  Sphere4   " << counts(b) << "\n"
          << "  sum       " << counts(sum.result.polyhedron) << "\n"
-         << "algorithm: " << algorithm_name(args.algorithm) << "\n"
+         << "algorithm: " << to_string(args.algorithm) << "\n"
          << "time: " << milliseconds(sum.time) << " (wall, the sum only)\n";
   print_stats(report, sum.result.stats);
 }
