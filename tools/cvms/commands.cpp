@@ -124,7 +124,7 @@ void run_check(const std::string& input, std::ostream& report) {
   PolygonSoup soup = read_soup(input);
   const std::size_t input_points = soup.points.size();
   const std::size_t input_faces = soup.num_faces();
-  ConvexPolyhedron p = to_polyhedron(std::move(soup), input);
+  ConvexPolyhedron p = to_polyhedron(std::move(soup), input_name(input));
   std::map<std::uint32_t, std::uint32_t> histogram;
   for (FaceId f : p.mesh().faces()) ++histogram[p.mesh().degree(f)];
   report << input_name(input) << ": convex polyhedron\n" << counts(p) << "\n";
