@@ -27,15 +27,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    // read_file picks the format from the extension (.off, .obj or .stl);
-    // from_soup checks that the mesh is a closed convex polyhedron.
-    const auto a = cvms::ConvexPolyhedron::from_soup(cvms::read_file(argv[1]));
-    const auto b = cvms::ConvexPolyhedron::from_soup(cvms::read_file(argv[2]));
+    // read_polyhedron picks the format from the extension (.off, .obj or
+    // .stl) and checks that the mesh is a closed convex polyhedron.
+    const cvms::ConvexPolyhedron a = cvms::read_polyhedron(argv[1]);
+    const cvms::ConvexPolyhedron b = cvms::read_polyhedron(argv[2]);
 
     cvms::Options options;  // the defaults: the CVMS algorithm
     const cvms::MinkowskiResult sum = cvms::minkowski_sum(a, b, options);
 
-    cvms::write_file(argv[3], sum.polyhedron.to_soup());  // exact coordinates
+    cvms::write_file(argv[3], sum.polyhedron);  // exact coordinates
 
     print_counts("A", a);
     print_counts("B", b);
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
               << " needed exact arithmetic\n";
     return 0;
   } catch (const cvms::Error& e) {
-    std::cerr << "sum_off_files: " << e.what() << '\n';  // "<category>: <what and where>"
+    std::cerr << "sum_off_files: " << e.what() << '\n';  // "<category>: <file>: <what and where>"
     return 1;
   }
 }

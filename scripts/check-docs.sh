@@ -2,12 +2,25 @@
 # Runs doxygen over the public headers (Doxyfile: include/cvms) and reports
 # every undocumented public declaration or documentation error.
 #
+# First, without doxygen, it checks that the umbrella header cvms/cvms.hpp
+# includes exactly the headers directly in include/cvms/ (not those of its
+# subfolders); a mismatch always fails.
+#
 # Installs doxygen with apt-get when it is missing and we are root; otherwise
 # skips with a note. Reports but does not fail, unless CVMS_DOCS_STRICT=1
 # (as .ci/run sets it): then any warning, or a missing doxygen, fails the
 # check. HTML goes to build/docs/html.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+expected=$(cd include/cvms && ls -- *.hpp | grep -vx 'cvms.hpp' | sed 's|^|cvms/|' | sort)
+included=$(sed -n 's|^#include "\(cvms/[^"]*\.hpp\)"$|\1|p' include/cvms/cvms.hpp | sort)
+if [ "$expected" != "$included" ]; then
+  echo "docs: include/cvms/cvms.hpp must include every header in include/cvms/ and no other"
+  diff <(printf '%s\n' "$expected") <(printf '%s\n' "$included") | sed -n 's/^< /  missing: /p; s/^> /  extra:   /p' || true
+  exit 1
+fi
+echo "docs: cvms/cvms.hpp includes all $(printf '%s\n' "$expected" | wc -l) public headers"
 
 if ! command -v doxygen >/dev/null; then
   if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null; then

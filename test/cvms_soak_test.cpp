@@ -23,7 +23,7 @@ class CvmsSoak : public ::testing::TestWithParam<Algorithm> {};
 
 INSTANTIATE_TEST_SUITE_P(Algorithms, CvmsSoak, ::testing::Values(Algorithm::cvms, Algorithm::essdms),
                          [](const ::testing::TestParamInfo<Algorithm>& info) {
-                           return std::string(info.param == Algorithm::cvms ? "cvms" : "essdms");
+                           return std::string(to_string(info.param));
                          });
 
 TEST_P(CvmsSoak, RandomPairsAgreeWithChms) {

@@ -36,19 +36,8 @@
 
 namespace cvms {
 
-std::string algorithm_name(Algorithm a) {
-  switch (a) {
-    case Algorithm::cvms:
-      return "cvms";
-    case Algorithm::essdms:
-      return "essdms";
-    case Algorithm::chms:
-      return "chms";
-  }
-  return "unknown";
-}
 // How gtest prints the parameter of a failing test (found by ADL).
-void PrintTo(Algorithm a, std::ostream* os) { *os << algorithm_name(a); }
+void PrintTo(Algorithm a, std::ostream* os) { *os << to_string(a); }
 
 namespace {
 
@@ -59,7 +48,9 @@ struct Variant {
   bool reference = false;
 };
 
-std::string variant_name(Variant v) { return algorithm_name(v.algorithm) + (v.reference ? "_paper" : ""); }
+std::string variant_name(Variant v) {
+  return std::string(to_string(v.algorithm)) + (v.reference ? "_paper" : "");
+}
 
 test::SumOptions variant_options(Variant v) {
   test::SumOptions o;

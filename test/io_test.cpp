@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Writers (exact bytes against hand-written text, exact round trips, float
 // rounding and normals of binary STL, determinism), format dispatch, file
-// errors and read_points.
+// errors, the polyhedron-level read_polyhedron and write_file (every error
+// names the file), Error::message and read_points.
 #include "cvms/io.hpp"
 
 #include <gtest/gtest.h>
@@ -381,6 +382,136 @@ TEST(Write, FilesRoundTripThroughEveryFormat) {
     EXPECT_EQ(back.points, soup.points);
     EXPECT_EQ(faces_of(back), faces_of(soup));
   }
+}
+
+// ---- polyhedra: read_polyhedron, write_file, to_polyhedron, Error::message ---
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// An octahedron whose top vertex is pushed below the equator: reflex edges.
+const char* const dented_octahedron =
+    "OFF\n6 8 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n0 0 -1/2\n0 0 -1\n"
+    "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n3 1 0 5\n3 2 1 5\n3 3 2 5\n3 0 3 5\n";
+// A cube without its top: an open surface.
+const char* const open_cube =
+    "OFF\n8 5 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
+    "4 0 3 2 1\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+
+void expect_same_polyhedron(const ConvexPolyhedron& got, const ConvexPolyhedron& expected) {
+  const PolygonSoup a = got.to_soup();
+  const PolygonSoup b = expected.to_soup();
+  EXPECT_EQ(a.points, b.points);
+  EXPECT_EQ(faces_of(a), faces_of(b));
+}
+
+TEST(ErrorMessage, IsWhatWithoutTheCategoryPrefix) {
+  const Error e(ErrorCategory::not_convex, "cube.off: reflex edge (0, 4)");
+  EXPECT_STREQ(e.what(), "not_convex: cube.off: reflex edge (0, 4)");
+  EXPECT_STREQ(e.message(), "cube.off: reflex edge (0, 4)");
+  EXPECT_STREQ(Error(ErrorCategory::invalid_argument, "").message(), "");
+}
+
+TEST(ReadPolyhedron, IsReadFileThenFromSoup) {
+  for (const char* name : {"cube.off", "cube.obj", "tetra_ascii.stl", "tetra_exact.off"}) {
+    SCOPED_TRACE(name);
+    expect_same_polyhedron(read_polyhedron(data_path(name)),
+                           ConvexPolyhedron::from_soup(read_file(data_path(name))));
+  }
+  const ConvexPolyhedron cube = read_polyhedron(data_path("cube.off"));
+  EXPECT_EQ(cube.num_vertices(), 8u);
+  EXPECT_EQ(cube.num_edges(), 12u);
+  EXPECT_EQ(cube.num_facets(), 6u);
+  EXPECT_TRUE(throws_error([] { read_polyhedron(data_path("cube.off"), ReadLimits{.max_vertices = 7}); },
+                           ErrorCategory::limit, {"cube.off"}));
+}
+
+TEST(ReadPolyhedron, EveryErrorNamesTheFileOnce) {
+  TempDir dir;
+  const std::filesystem::path dented = dir.path / "dented.off";
+  const std::filesystem::path open = dir.path / "open.off";
+  write_text(dented, dented_octahedron);
+  write_text(open, open_cube);
+  // from_soup's errors get the file name in front, the category first.
+  EXPECT_TRUE(throws_error([&] { read_polyhedron(dented); }, ErrorCategory::not_convex,
+                           {"not_convex: " + dented.string() + ": reflex edge"}));
+  EXPECT_TRUE(throws_error([&] { read_polyhedron(open); }, ErrorCategory::topology,
+                           {"topology: " + open.string() + ": ", "boundary edge"}));
+  // The reader's and read_file's errors already name it: not a second time.
+  const std::filesystem::path truncated = data_path("bad/truncated_faces.off");
+  const std::filesystem::path missing = dir.path / "missing.off";
+  struct Case {
+    std::filesystem::path path;
+    ErrorCategory category;
+  };
+  for (const Case& c : {Case{truncated, ErrorCategory::parse}, Case{missing, ErrorCategory::io},
+                        Case{dir.path, ErrorCategory::invalid_argument}}) {
+    SCOPED_TRACE(c.path.string());
+    EXPECT_TRUE(throws_error([&] { read_polyhedron(c.path); }, c.category, {c.path.string()}));
+    try {
+      read_polyhedron(c.path);
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find(c.path.string()), what.rfind(c.path.string())) << what;
+    }
+  }
+  EXPECT_TRUE(
+      throws_error([&] { read_polyhedron(truncated); }, ErrorCategory::parse, {truncated.string() + ":"}));
+}
+
+TEST(ToPolyhedron, NamesTheSource) {
+  std::istringstream in(dented_octahedron);
+  PolygonSoup soup = read_off(in, "<stdin>");
+  EXPECT_TRUE(throws_error([&] { to_polyhedron(std::move(soup), "<stdin>"); }, ErrorCategory::not_convex,
+                           {"not_convex: <stdin>: reflex edge"}));
+  EXPECT_EQ(to_polyhedron(read_file(data_path("cube.off")), "cube").num_facets(), 6u);
+}
+
+TEST(WriteFilePolyhedron, ExactOffAndObjReadBackAsTheSamePolyhedron) {
+  TempDir dir;
+  // 1/3 has no finite decimal, 1e400 no double: both must survive exactly.
+  const ConvexPolyhedron cube = read_polyhedron(data_path("cube.off")).translated(v3(Rational(1, 3), 0, 0));
+  const ConvexPolyhedron tetra = read_polyhedron(data_path("tetra_exact.off"));
+  for (const ConvexPolyhedron* p : {&cube, &tetra})
+    for (const char* name : {"p.off", "p.obj", "P.OFF"}) {
+      SCOPED_TRACE(name);
+      write_file(dir.path / name, *p);
+      expect_same_polyhedron(read_polyhedron(dir.path / name), *p);
+    }
+  // Rounded coordinates: the double nearest to each, and the same facets.
+  for (const char* name : {"d.off", "d.obj"}) {
+    SCOPED_TRACE(name);
+    write_file(dir.path / name, cube, Coordinates::double_);
+    const ConvexPolyhedron back = read_polyhedron(dir.path / name);
+    EXPECT_EQ(faces_of(back.to_soup()), faces_of(cube.to_soup()));
+    EXPECT_EQ(to_double_nearest(back.to_soup().points[0].x), 1.0 / 3.0);
+  }
+  // STL: float32, fan-triangulated; read back, coplanar triangles merge again.
+  write_file(dir.path / "d.stl", cube);
+  const ConvexPolyhedron back = read_polyhedron(dir.path / "d.stl");
+  EXPECT_EQ(back.num_vertices(), 8u);
+  EXPECT_EQ(back.num_facets(), 6u);
+}
+
+TEST(WriteFilePolyhedron, ErrorsNameTheFile) {
+  const ConvexPolyhedron cube = read_polyhedron(data_path("cube.off"));
+  EXPECT_TRUE(throws_error([&] { write_file("/nonexistent_dir_cvms/p.off", cube); }, ErrorCategory::io,
+                           {"/nonexistent_dir_cvms/p.off"}));
+  EXPECT_TRUE(throws_error([&] { write_file("p.ply", cube); }, ErrorCategory::invalid_argument, {"p.ply"}));
+  TempDir dir;
+  const std::filesystem::path off = dir.path / "huge.off";
+  const std::filesystem::path stl = dir.path / "huge.stl";
+  const ConvexPolyhedron beyond_double = cube.translated(v3(pow2(1100), 0, 0));
+  const ConvexPolyhedron beyond_float = cube.translated(v3(pow2(200), 0, 0));
+  EXPECT_TRUE(throws_error([&] { write_file(off, beyond_double, Coordinates::double_); },
+                           ErrorCategory::invalid_argument,
+                           {"invalid_argument: " + off.string() + ": ", "range of double"}));
+  EXPECT_TRUE(throws_error([&] { write_file(stl, beyond_float); }, ErrorCategory::invalid_argument,
+                           {"invalid_argument: " + stl.string() + ": ", "range of float"}));
+  // Exact output has no range: the same polyhedron is written and read back.
+  write_file(off, beyond_double);
+  expect_same_polyhedron(read_polyhedron(off), beyond_double);
 }
 
 // ---- read_points ------------------------------------------------------------

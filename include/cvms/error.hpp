@@ -11,14 +11,13 @@ namespace cvms {
 
 /// What kind of failure an Error reports.
 enum class ErrorCategory {
-  parse,       ///< malformed text or binary input
-  topology,    ///< not a closed, consistently oriented 2-manifold
-  not_convex,  ///< a reflex edge, or a non-convex facet
-  degenerate,  ///< flat, collinear or lower-dimensional input
-  limit,       ///< a configured size limit was exceeded
-  io,          ///< a file could not be opened, read or written
+  parse,             ///< malformed text or binary input
+  topology,          ///< not a closed, consistently oriented 2-manifold
+  not_convex,        ///< a reflex edge, or a non-convex facet
+  degenerate,        ///< flat, collinear or lower-dimensional input
+  limit,             ///< a configured size limit was exceeded
+  io,                ///< a file could not be opened, read or written
   invalid_argument,  ///< an API precondition was violated by the caller
-  not_implemented,   ///< the requested algorithm is not available yet
 };
 
 /// Name of a category as used in messages ("parse", "topology", ...).
@@ -31,6 +30,11 @@ class Error : public std::runtime_error {
   Error(ErrorCategory category, const std::string& message);
   /// The kind of failure, for programs that react differently to each.
   [[nodiscard]] ErrorCategory category() const noexcept { return category_; }
+  /// The message without the "<category>: " prefix of what(), for a caller
+  /// that adds context in front of it (a file name) and keeps the category:
+  /// `Error(e.category(), name + ": " + e.message())`. Valid as long as the
+  /// Error is.
+  [[nodiscard]] const char* message() const noexcept;
 
  private:
   ErrorCategory category_;

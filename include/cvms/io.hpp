@@ -5,6 +5,14 @@
 /// malformation as Error(parse) naming the source and line (text) or byte
 /// offset (binary). Writers write exact coordinates unless asked otherwise.
 ///
+/// For convex polyhedra, one call each way (the format is the extension's):
+/// \code
+/// cvms::ConvexPolyhedron p = cvms::read_polyhedron("part.obj");  // read + validate
+/// cvms::write_file("part.off", p);                               // exact coordinates
+/// \endcode
+/// The soup-level functions below (read_file, read_off, ..., write_off) are for
+/// meshes that are not, or not yet, convex polyhedra, and for streams.
+///
 /// What the readers accept and reject (each case has a test in test/io_*_test.cpp):
 ///  - Numbers are parsed exactly (try_parse_rational): integers, decimals with
 ///    an optional exponent, and p/q. Any size is accepted ("1e400" is the exact
@@ -64,6 +72,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cvms/convex_polyhedron.hpp"
 #include "cvms/polygon_soup.hpp"
 
 namespace cvms {
@@ -152,9 +161,44 @@ void write_stl(std::ostream& out, const PolygonSoup& soup);
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a file in the format of its extension (format_from_extension).
-/// \throw Error(invalid_argument) for an unknown extension or as the writers;
-/// \throw Error(io) if the file cannot be written.
+/// \throw Error(invalid_argument) for an unknown extension, and as the writers
+///   with the message prefixed by "<path>: ";
+/// \throw Error(io) naming the file if it cannot be written.
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup,
                 Coordinates coordinates = Coordinates::exact);
+/// Writes a polyhedron's vertices and facets (p.to_soup()) to a file in the
+/// format of its extension; with Coordinates::exact and OFF or OBJ,
+/// read_polyhedron gives back the same polyhedron.
+/// \throw Error(invalid_argument) for an unknown extension, and (naming the
+///   file) for a coordinate beyond the double range with Coordinates::double_
+///   or beyond the float32 range in STL;
+/// \throw Error(io) naming the file if it cannot be written.
+/// Complexity: linear in the size of the output.
+void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p,
+                Coordinates coordinates = Coordinates::exact);
+
+/// Reads a file in the format of its extension (read_file) and validates it
+/// as a convex polyhedron (ConvexPolyhedron::from_soup, which also merges
+/// coplanar faces and drops vertices that are not corners). Every error
+/// names the file.
+/// \throw Error(invalid_argument) for an unknown extension;
+/// \throw Error(io) if the file cannot be opened or is a directory;
+/// \throw Error(parse), Error(limit) as the reader, naming the file and the
+///   line or byte offset;
+/// \throw Error(topology), Error(not_convex), Error(degenerate) (and the
+///   other errors of from_soup) if the mesh is not a convex polyhedron, the
+///   message prefixed by "<path>: " and naming the face, edge or vertex
+///   (0-based, in file order).
+/// Complexity: linear in the input size, plus from_soup's.
+ConvexPolyhedron read_polyhedron(const std::filesystem::path& path, const ReadLimits& limits = {});
+
+/// ConvexPolyhedron::from_soup for a soup read from `source` (a file name,
+/// "<stdin>"), with "<source>: " in front of the message of every error:
+/// from_soup names faces, edges and vertices but cannot know the file. For a
+/// soup from a stream, or one whose counts the caller reads before
+/// validating; read_polyhedron does this for files.
+/// \throw Error as from_soup (topology, not_convex, degenerate, ...), same
+///   category, the message prefixed by "<source>: ".
+ConvexPolyhedron to_polyhedron(PolygonSoup soup, std::string_view source);
 
 }  // namespace cvms

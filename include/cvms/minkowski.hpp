@@ -18,6 +18,10 @@ enum class Algorithm {
   chms,    ///< exact hull of all pairwise vertex sums (the reference oracle)
 };
 
+/// The algorithm's name as the cvms tool's --algorithm spells it: "cvms",
+/// "essdms" or "chms" ("unknown" for a value outside the enum).
+const char* to_string(Algorithm algorithm) noexcept;
+
 /// How minkowski_sum computes the sum. The default is CVMS with the
 /// output-sensitive searches (contributing vertices by hill-climbing, edge
 /// facets by tracing Gaussian arcs) on the calling thread.
@@ -70,8 +74,7 @@ struct MinkowskiResult {
 /// similar resolution; O(v) in the worst case), plus the output;
 /// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
 /// \throw Error(invalid_argument) for an empty (default-constructed) operand
-///   or an unknown option value;
-/// \throw Error(not_implemented) if the algorithm is not available.
+///   or an unknown option value.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});
 

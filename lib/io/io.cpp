@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Format dispatch (by file extension), file reading and writing with io
-// errors, and the point-list reader used for hulls (OFF, OBJ or "x y z" lines).
+// errors, the point-list reader used for hulls (OFF, OBJ or "x y z" lines),
+// and the polyhedron-level calls that put the file name into every error.
 #include <cerrno>
 #include <fstream>
 #include <system_error>
@@ -110,11 +111,30 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coor
   try {
     write(out, soup, format, coordinates);
   } catch (const Error& e) {
-    if (e.category() != ErrorCategory::io) throw;
+    // The stream writers name a face, index or coordinate, never the file.
+    if (e.category() != ErrorCategory::io) throw Error(e.category(), path.string() + ": " + e.message());
     throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'");
   }
   out.close();
   if (!out) throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'");
+}
+
+void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, Coordinates coordinates) {
+  write_file(path, p.to_soup(), coordinates);
+}
+
+ConvexPolyhedron to_polyhedron(PolygonSoup soup, std::string_view source) {
+  try {
+    return ConvexPolyhedron::from_soup(std::move(soup));
+  } catch (const Error& e) {
+    // from_soup's messages name elements of the soup, never its source.
+    throw Error(e.category(), std::string(source) + ": " + e.message());
+  }
+}
+
+ConvexPolyhedron read_polyhedron(const std::filesystem::path& path, const ReadLimits& limits) {
+  // read_file's own errors already name the file (and the line).
+  return to_polyhedron(read_file(path, limits), path.string());
 }
 
 }  // namespace cvms

@@ -276,9 +276,7 @@ PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits
     return parse_ascii(reader);
   } catch (const Error& e) {
     if (binary_hint.empty() || e.category() != ErrorCategory::parse) throw;
-    std::string message = e.what();
-    message.erase(0, std::strlen(to_string(e.category())) + 2);  // the "parse: " prefix
-    throw Error(e.category(), message + binary_hint);
+    throw Error(e.category(), e.message() + binary_hint);
   }
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // minkowski_sum: checks its operands, dispatches to the chosen algorithm and
-// measures the predicate counters around it.
+// measures the predicate counters around it; the algorithms' names.
 #include "cvms/minkowski.hpp"
 
 #include "cvms_algorithm.hpp"
@@ -9,6 +9,18 @@
 #include "essdms.hpp"
 
 namespace cvms {
+
+const char* to_string(Algorithm algorithm) noexcept {
+  switch (algorithm) {
+    case Algorithm::cvms:
+      return "cvms";
+    case Algorithm::essdms:
+      return "essdms";
+    case Algorithm::chms:
+      return "chms";
+  }
+  return "unknown";
+}
 
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
   return detail::minkowski_sum(a, b, options, {});

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "cvms/error.hpp"
 
+#include <cstring>
+
 namespace cvms {
 
 const char* to_string(ErrorCategory category) noexcept {
@@ -12,12 +14,15 @@ const char* to_string(ErrorCategory category) noexcept {
     case ErrorCategory::limit: return "limit";
     case ErrorCategory::io: return "io";
     case ErrorCategory::invalid_argument: return "invalid_argument";
-    case ErrorCategory::not_implemented: return "not_implemented";
   }
   return "unknown";
 }
 
 Error::Error(ErrorCategory category, const std::string& message)
     : std::runtime_error(std::string(to_string(category)) + ": " + message), category_(category) {}
+
+// The message is not stored a second time: copying an Error stays a copy of
+// runtime_error's one shared string, which cannot throw.
+const char* Error::message() const noexcept { return what() + std::strlen(to_string(category_)) + 2; }
 
 }  // namespace cvms

@@ -9,8 +9,8 @@
 #include <ostream>
 #include <string_view>
 
-#include "cvms/error.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "files.hpp"
 
@@ -54,18 +54,6 @@ void print_stats(std::ostream& report, const Stats& s) {
 
 }  // namespace
 
-const char* algorithm_name(Algorithm algorithm) noexcept {
-  switch (algorithm) {
-    case Algorithm::cvms:
-      return "cvms";
-    case Algorithm::essdms:
-      return "essdms";
-    case Algorithm::chms:
-      return "chms";
-  }
-  return "?";
-}
-
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
   check_output_directory(args.output);
@@ -75,8 +63,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output));
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
-           << "\nalgorithm: " << algorithm_name(args.algorithm) << "\ntime: " << milliseconds(sum.time)
-           << "\n";
+           << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
     print_stats(report, sum.result.stats);
   }
 }
@@ -89,10 +76,7 @@ void run_hull(const HullArgs& args) {
     hull = convex_hull(points);
   } catch (const Error& e) {
     // A degenerate cloud is bad input: say which file it came from.
-    std::string message = e.what();
-    std::string category = std::string(to_string(e.category())) + ": ";
-    if (message.rfind(category, 0) == 0) message.erase(0, category.size());
-    throw Error(e.category(), input_name(args.input) + ": " + message);
+    throw Error(e.category(), input_name(args.input) + ": " + e.message());
   }
   write_polyhedron(args.output, hull, coordinates_of(args.float_output));
 }
@@ -140,7 +124,7 @@ void run_check(const std::string& input, std::ostream& report) {
   PolygonSoup soup = read_soup(input);
   const std::size_t input_points = soup.points.size();
   const std::size_t input_faces = soup.num_faces();
-  ConvexPolyhedron p = to_polyhedron(std::move(soup), input);
+  ConvexPolyhedron p = to_polyhedron(std::move(soup), input_name(input));
   std::map<std::uint32_t, std::uint32_t> histogram;
   for (FaceId f : p.mesh().faces()) ++histogram[p.mesh().degree(f)];
   report << input_name(input) << ": convex polyhedron\n" << counts(p) << "\n";
@@ -159,7 +143,7 @@ void run_demo(const DemoArgs& args, std::ostream& report) {
          << "  Cube      " << counts(a) << "\n"
          << "  Sphere4   " << counts(b) << "\n"
          << "  sum       " << counts(sum.result.polyhedron) << "\n"
-         << "algorithm: " << algorithm_name(args.algorithm) << "\n"
+         << "algorithm: " << to_string(args.algorithm) << "\n"
          << "time: " << milliseconds(sum.time) << " (wall, the sum only)\n";
   print_stats(report, sum.result.stats);
 }

@@ -18,9 +18,6 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// "cvms", "essdms" or "chms".
-const char* algorithm_name(Algorithm algorithm) noexcept;
-
 struct SumArgs {
   std::string a, b, output = "-";
   Algorithm algorithm = Options{}.algorithm;

@@ -16,17 +16,6 @@ namespace {
 
 bool is_std_stream(const std::string& path) { return path == "-"; }
 
-// Library errors raised after parsing name a face or edge but not the file:
-// say which file they are about, without repeating a name already there.
-[[noreturn]] void rethrow_naming(const Error& e, const std::string& name) {
-  std::string message = e.what();
-  if (message.find(name) != std::string::npos) throw e;
-  // what() is "<category>: <message>"; keep the category first.
-  std::string prefix = std::string(to_string(e.category())) + ": ";
-  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-  throw Error(e.category(), name + ": " + message);
-}
-
 std::ifstream open_input(const std::string& path) {
   errno = 0;
   std::ifstream in(path, std::ios::binary);
@@ -47,14 +36,9 @@ PolygonSoup read_soup(const std::string& path) {
   return read_file(path);
 }
 
-ConvexPolyhedron read_polyhedron(const std::string& path) { return to_polyhedron(read_soup(path), path); }
-
-ConvexPolyhedron to_polyhedron(PolygonSoup soup, const std::string& path) {
-  try {
-    return ConvexPolyhedron::from_soup(std::move(soup));
-  } catch (const Error& e) {
-    rethrow_naming(e, input_name(path));
-  }
+ConvexPolyhedron read_polyhedron(const std::string& path) {
+  if (is_std_stream(path)) return to_polyhedron(read_soup(path), input_name(path));
+  return cvms::read_polyhedron(path);
 }
 
 std::vector<Vec3> read_point_cloud(const std::string& path) {
@@ -67,18 +51,10 @@ std::vector<Vec3> read_point_cloud(const std::string& path) {
 }
 
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates) {
-  PolygonSoup soup = p.to_soup();
-  if (is_std_stream(path)) {
-    write_off(std::cout, soup, coordinates);
-    std::cout.flush();
-    if (!std::cout) throw Error(ErrorCategory::io, "<stdout>: write failed");
-    return;
-  }
-  try {
-    write_file(path, soup, coordinates);
-  } catch (const Error& e) {
-    rethrow_naming(e, path);
-  }
+  if (!is_std_stream(path)) return write_file(path, p, coordinates);
+  write_off(std::cout, p.to_soup(), coordinates);
+  std::cout.flush();
+  if (!std::cout) throw Error(ErrorCategory::io, "<stdout>: write failed");
 }
 
 void check_output_directory(const std::string& path) {

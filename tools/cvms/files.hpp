@@ -19,18 +19,14 @@ std::string input_name(const std::string& path);
 /// Reads a polygon mesh. \throw Error naming the file.
 PolygonSoup read_soup(const std::string& path);
 
-/// Validates a mesh read from path as a convex polyhedron; errors (topology,
-/// convexity) are prefixed with the file name.
-ConvexPolyhedron to_polyhedron(PolygonSoup soup, const std::string& path);
-
-/// Reads a mesh and validates it as a convex polyhedron. Errors found after
-/// parsing (topology, convexity) are prefixed with the file name.
+/// cvms::read_polyhedron, or for "-" the same on stdin: every error names the
+/// file ("<stdin>").
 ConvexPolyhedron read_polyhedron(const std::string& path);
 
 /// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle corners.
 std::vector<Vec3> read_point_cloud(const std::string& path);
 
-/// Writes a polyhedron. \throw Error(io) naming the file if it cannot be written.
+/// cvms::write_file, or OFF on stdout for "-". \throw Error naming the file.
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates);
 
 /// Fails early, before a long computation, if the output's directory does

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "cvms/error.hpp"
@@ -26,16 +27,21 @@ std::string one_line(std::string text) {
 
 const CLI::Validator mesh_path{cvms::cli::check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
 
+constexpr cvms::Algorithm algorithms[] = {cvms::Algorithm::cvms, cvms::Algorithm::essdms,
+                                          cvms::Algorithm::chms};
+
 CLI::Option* add_algorithm_option(CLI::App& command, cvms::Algorithm& algorithm, const char* default_text) {
+  std::vector<std::string> names;
+  for (cvms::Algorithm a : algorithms) names.emplace_back(cvms::to_string(a));
   return command
       .add_option_function<std::string>(
           "--algorithm",
           [&algorithm](const std::string& name) {
-            for (cvms::Algorithm a : {cvms::Algorithm::cvms, cvms::Algorithm::essdms, cvms::Algorithm::chms})
-              if (name == cvms::cli::algorithm_name(a)) algorithm = a;
+            for (cvms::Algorithm a : algorithms)
+              if (name == cvms::to_string(a)) algorithm = a;
           },
           "cvms, essdms or chms")
-      ->transform(CLI::IsMember({"cvms", "essdms", "chms"}, CLI::ignore_case))
+      ->transform(CLI::IsMember(names, CLI::ignore_case))
       ->default_str(default_text);
 }
 
@@ -45,7 +51,7 @@ int main(int argc, char** argv) {
   using namespace cvms::cli;
   CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL; '-' is OFF on stdin/stdout)"};
   app.require_subcommand(1);
-  const char* default_algorithm = algorithm_name(cvms::Options{}.algorithm);
+  const char* default_algorithm = cvms::to_string(cvms::Options{}.algorithm);
 
   SumArgs sum;
   CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B");
