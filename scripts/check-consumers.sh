@@ -162,6 +162,21 @@ pc_full_static() {
     "$work/pc-full"
 }
 
+# The installed headers are the public surface: none of the library's
+# internals (the filter machinery, its counters, unchecked construction) may
+# appear in them, and each must compile on its own.
+installed_surface() {
+  ! grep -rnE 'from_trusted_soup|ConvexPolyhedronAccess|Vec[23]Ref|ApproxVec[23]|PredicateCounters|predicate_counters|EdgeFacetSearch|ContributingVertexSearch' \
+    "$static_prefix/include"
+}
+headers_self_contained() {
+  local h
+  for h in "$static_prefix"/include/cvms/*.hpp; do
+    printf '#include <cvms/%s>\n' "$(basename "$h")" |
+      "$cxx" "${cxxflags[@]}" -fsyntax-only -I"$static_prefix/include" -x c++ - || return 1
+  done
+}
+
 other_minor="${version%%.*}.$(($(echo "$version" | cut -d. -f2) + 1))"
 
 echo "== CMake find_package"
@@ -174,6 +189,10 @@ check "fully static (-static, CvmsGMP_USE_STATIC_LIBS): build, run" full_static_
 check "conan test_package's CMake project on the static install" test_package_cmake
 check "find_package(cvms $major_minor) accepted" version_request "$major_minor"
 check "find_package(cvms $other_minor) refused" version_refused "$other_minor"
+
+echo "== installed headers"
+check "no library internals in the installed headers" installed_surface
+check "every installed header compiles on its own" headers_self_contained
 
 echo "== pkg-config"
 check "cvms.pc valid, version $version" pc_meta
