@@ -9,10 +9,11 @@
 // which conflict and visibility tests cost a dot product; the initial
 // simplex scans the points' doubles with a bound of its own; the remaining
 // tests use a running-error filter. Only undecided tests reach the exact
-// predicates. The points may come as rationals, as doubles, or as
-// approximations with exact values made on demand (ApproximatePoints), so
-// that double input and CHMS's pairwise sums need no rational for most
-// points. The decisions, hence the output, do not depend on which.
+// predicates. Every bound, with its proof, is in error_bounds.hpp. The
+// points may come as rationals, as doubles, or as approximations with exact
+// values made on demand (ApproximatePoints), so that double input and CHMS's
+// pairwise sums need no rational for most points. The decisions, hence the
+// output, do not depend on which.
 //
 // Construction keeps a triangulated hull whose triangles are oriented
 // counterclockwise from outside. A point is "outside" a triangle only when it
@@ -54,6 +55,7 @@
 #include "cvms/predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "dyadic_orient.hpp"
+#include "error_bounds.hpp"
 #include "filtered_arithmetic.hpp"
 #include "plane_filter.hpp"
 
@@ -226,9 +228,9 @@ class Quickhull {
       return best;
     }
     // v = fl(p . n) is within bound of the exact dot product, so a point
-    // whose v is more than 3 bounds (2 plus rounding) below the largest v
-    // is not extreme; the exact scan over the others, in index order, picks
-    // the same (first extreme) point as a scan over all.
+    // whose v is more than 3 bounds (2 plus rounding, see difference_margin)
+    // below the largest v is not extreme; the exact scan over the others, in
+    // index order, picks the same (first extreme) point as a scan over all.
     const double f = sign == Sign::positive ? 1.0 : -1.0;
     const Coords n{f * d.approx.x.value, f * d.approx.y.value, f * d.approx.z.value};
     auto value = [&](std::uint32_t i) {
@@ -237,7 +239,7 @@ class Quickhull {
     };
     double top = -inf;
     for (std::uint32_t i = 0; i < n_; ++i) top = std::max(top, value(i));
-    const double margin = 3.0 * bound;
+    const double margin = filtered::difference_margin * bound;
     std::uint32_t best = none;
     for (std::uint32_t i = 0; i < n_; ++i) {
       if (top - value(i) > margin) {
@@ -250,20 +252,10 @@ class Quickhull {
   }
 
   // A bound on |P . N - fl(p . n)| for every input point P with
-  // approximation p (|p_k| <= M, |p_k - P_k| <= e) and the direction N with
-  // approximation n (|n_k - N_k| <= f_k), or infinity:
-  //   |P . N - p . N| <= e |N|_1 <= e (|n|_1 + |f|_1),
-  //   |p . N - p . n| <= M |f|_1,
-  //   |p . n - fl(p . n)| <= gamma_3 M |n|_1 + 3 2^-1075 (underflow),
-  // doubled for the rounding of the bound itself, plus 2^-1000 for the
-  // underflow. With M, e <= 2^300 (the plane filter's range) and
-  // |n|_1 + |f|_1 <= 2^600 nothing overflows.
+  // approximation p and the direction N with approximation n, or infinity
+  // (error_bounds.hpp, "The dot-product scan").
   [[nodiscard]] double dot_bound(const ApproxVec3& n) const {
-    const double a = std::fabs(n.x.value) + std::fabs(n.y.value) + std::fabs(n.z.value);
-    const double f = n.x.error + n.y.error + n.z.error;
-    if (!(scale_.span < inf) || !(a + f <= 0x1p600)) return inf;
-    const double m = 0.5 * scale_.span;
-    return 2.0 * (error_ * (a + f) + m * f + 4.0 * 0x1p-53 * m * a) + 0x1p-1000;
+    return filtered::dot_filter_bound(n, 0.5 * scale_.span, error_);
   }
 
   // compare_dot(p, q, d), first filtered on the double coordinates.
@@ -375,9 +367,9 @@ class Quickhull {
   // compare_dot(p, q, normal of t) == positive, where s_p and s_q are the
   // plane filter's values of p and q: each is within bound of the exact
   // orient3d, whose difference is that dot product, so a difference of the
-  // values beyond 3 bounds (2 plus rounding) decides.
+  // values beyond 3 bounds (2 plus rounding, see difference_margin) decides.
   [[nodiscard]] bool farther(std::uint32_t t, double s_p, std::uint32_t p, double s_q, std::uint32_t q) {
-    const double diff = s_p - s_q, margin = 3.0 * planes_[t].bound;
+    const double diff = s_p - s_q, margin = filtered::difference_margin * planes_[t].bound;
     if (diff > margin || -diff > margin) {
       ++plane_decisions_;
       return diff > 0;
