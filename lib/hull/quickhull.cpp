@@ -8,12 +8,13 @@
 // each triangle gets a semi-static plane filter (plane_filter.hpp) against
 // which conflict and visibility tests cost a dot product; the initial
 // simplex scans the points' doubles with a bound of its own; the remaining
-// tests use a running-error filter. Only undecided tests reach the exact
-// predicates. Every bound, with its proof, is in error_bounds.hpp. The
-// points may come as rationals, as doubles, or as approximations with exact
-// values made on demand (ApproximatePoints), so that double input and CHMS's
-// pairwise sums need no rational for most points. The decisions, hence the
-// output, do not depend on which.
+// tests use the predicates' running-error filters (filtered_predicates.hpp)
+// on the points' doubles. Only undecided tests reach the exact predicates.
+// Every bound, with its proof, is in error_bounds.hpp. The points may come
+// as rationals, as doubles, or as approximations with exact values made on
+// demand (ApproximatePoints), so that double input and CHMS's pairwise sums
+// need no rational for most points. The decisions, hence the output, do not
+// depend on which.
 //
 // Construction keeps a triangulated hull whose triangles are oriented
 // counterclockwise from outside. A point is "outside" a triangle only when it
@@ -56,7 +57,7 @@
 #include "cvms/convex_hull.hpp"
 #include "dyadic_orient.hpp"
 #include "error_bounds.hpp"
-#include "filtered_arithmetic.hpp"
+#include "filtered_predicates.hpp"
 #include "plane_filter.hpp"
 
 namespace cvms {
@@ -161,23 +162,25 @@ class Quickhull {
   }
   [[nodiscard]] const Vec3& exact(std::uint32_t p) { return ref(p).exact; }
 
-  // The approximation of p as a filtered value (error_ bounds every point's).
-  [[nodiscard]] Approx approx_coord(std::uint32_t p, int k) const { return {coords_[p][k], error_}; }
+  // The approximation of p as the filters see it: its doubles with the error
+  // error_ that bounds every point's, or the doubles alone when that is 0.
+  [[nodiscard]] ApproxVec3 approx(std::uint32_t p) const {
+    const Coords& c = coords_[p];
+    return {{c[0], error_}, {c[1], error_}, {c[2], error_}};
+  }
+  [[nodiscard]] filtered::Doubles3 doubles(std::uint32_t p) const {
+    const Coords& c = coords_[p];
+    return {c[0], c[1], c[2]};
+  }
 
-  // orient3d(a, b, c, d) and compare_dot(v, w, n) of points, first with a
-  // running-error filter on the double coordinates (so that double input
-  // needs no rationals when it answers), else by the exact predicate.
+  // orient3d(a, b, c, d) and compare_dot(v, w, n) of points, first with the
+  // predicates' running-error filter on the double coordinates (so that
+  // double input needs no rationals when it answers), else by the exact
+  // predicate. The filter decisions are counted here and added to the
+  // thread's counters once, at the end.
   [[nodiscard]] Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
-    Approx e[3][3];
-    for (int k = 0; k < 3; ++k) {
-      e[0][k] = filtered::sub(approx_coord(b, k), approx_coord(a, k));
-      e[1][k] = filtered::sub(approx_coord(c, k), approx_coord(a, k));
-      e[2][k] = filtered::sub(approx_coord(d, k), approx_coord(a, k));
-    }
-    using filtered::add, filtered::mul, filtered::sub;
-    const Approx r = add(add(mul(e[2][0], sub(mul(e[0][1], e[1][2]), mul(e[0][2], e[1][1]))),
-                             mul(e[2][1], sub(mul(e[0][2], e[1][0]), mul(e[0][0], e[1][2])))),
-                         mul(e[2][2], sub(mul(e[0][0], e[1][1]), mul(e[0][1], e[1][0]))));
+    const Approx r = error_ == 0.0 ? filtered::orient3d_approx(doubles(a), doubles(b), doubles(c), doubles(d))
+                                   : filtered::orient3d_approx(approx(a), approx(b), approx(c), approx(d));
     if (filtered::certain(r)) {
       ++plane_decisions_;
       return filtered::sign(r);
@@ -260,11 +263,10 @@ class Quickhull {
 
   // compare_dot(p, q, d), first filtered on the double coordinates.
   [[nodiscard]] Sign compare(std::uint32_t p, std::uint32_t q, Vec3Ref d) {
-    using filtered::add, filtered::mul, filtered::sub;
     const ApproxVec3& n = d.approx;
-    const Approx r = add(add(mul(sub(approx_coord(p, 0), approx_coord(q, 0)), n.x),
-                             mul(sub(approx_coord(p, 1), approx_coord(q, 1)), n.y)),
-                         mul(sub(approx_coord(p, 2), approx_coord(q, 2)), n.z));
+    const Approx r = error_ == 0.0 && filtered::all_exact(n)
+                         ? filtered::compare_dot_approx(doubles(p), doubles(q), filtered::values(n))
+                         : filtered::compare_dot_approx(approx(p), approx(q), n);
     if (filtered::certain(r)) {
       ++plane_decisions_;
       return filtered::sign(r);
