@@ -8,11 +8,13 @@
 // each triangle gets a semi-static plane filter (plane_filter.hpp) against
 // which conflict and visibility tests cost a dot product; the initial
 // simplex scans the points' doubles with a bound of its own; the remaining
-// tests use a running-error filter. Only undecided tests reach the exact
-// predicates. The points may come as rationals, as doubles, or as
-// approximations with exact values made on demand (ApproximatePoints), so
-// that double input and CHMS's pairwise sums need no rational for most
-// points. The decisions, hence the output, do not depend on which.
+// tests use the predicates' running-error filters (filter_polynomials.hpp)
+// on the points' doubles. Only undecided tests reach the exact predicates.
+// Every bound, with its proof, is in error_bounds.hpp. The points may come
+// as rationals, as doubles, or as approximations with exact values made on
+// demand (ApproximatePoints), so that double input and CHMS's pairwise sums
+// need no rational for most points. The decisions, hence the output, do not
+// depend on which.
 //
 // Construction keeps a triangulated hull whose triangles are oriented
 // counterclockwise from outside. A point is "outside" a triangle only when it
@@ -51,10 +53,11 @@
 #include "approx.hpp"
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
-#include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "dyadic_orient.hpp"
-#include "filtered_arithmetic.hpp"
+#include "error_bounds.hpp"
+#include "filter_polynomials.hpp"
+#include "filtered_predicates.hpp"
 #include "plane_filter.hpp"
 #include "polyhedron_builder.hpp"
 
@@ -160,23 +163,25 @@ class Quickhull {
   }
   [[nodiscard]] const Vec3& exact(std::uint32_t p) { return ref(p).exact; }
 
-  // The approximation of p as a filtered value (error_ bounds every point's).
-  [[nodiscard]] Approx approx_coord(std::uint32_t p, int k) const { return {coords_[p][k], error_}; }
+  // The approximation of p as the filters see it: its doubles with the error
+  // error_ that bounds every point's, or the doubles alone when that is 0.
+  [[nodiscard]] ApproxVec3 approx(std::uint32_t p) const {
+    const Coords& c = coords_[p];
+    return {{c[0], error_}, {c[1], error_}, {c[2], error_}};
+  }
+  [[nodiscard]] filtered::Doubles3 doubles(std::uint32_t p) const {
+    const Coords& c = coords_[p];
+    return {c[0], c[1], c[2]};
+  }
 
-  // orient3d(a, b, c, d) and compare_dot(v, w, n) of points, first with a
-  // running-error filter on the double coordinates (so that double input
-  // needs no rationals when it answers), else by the exact predicate.
+  // orient3d(a, b, c, d) and compare_dot(v, w, n) of points, first with the
+  // predicates' running-error filter on the double coordinates (so that
+  // double input needs no rationals when it answers), else by the exact
+  // predicate. The filter decisions are counted here and added to the
+  // thread's counters once, at the end.
   [[nodiscard]] Sign orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
-    Approx e[3][3];
-    for (int k = 0; k < 3; ++k) {
-      e[0][k] = filtered::sub(approx_coord(b, k), approx_coord(a, k));
-      e[1][k] = filtered::sub(approx_coord(c, k), approx_coord(a, k));
-      e[2][k] = filtered::sub(approx_coord(d, k), approx_coord(a, k));
-    }
-    using filtered::add, filtered::mul, filtered::sub;
-    const Approx r = add(add(mul(e[2][0], sub(mul(e[0][1], e[1][2]), mul(e[0][2], e[1][1]))),
-                             mul(e[2][1], sub(mul(e[0][2], e[1][0]), mul(e[0][0], e[1][2])))),
-                         mul(e[2][2], sub(mul(e[0][0], e[1][1]), mul(e[0][1], e[1][0]))));
+    const Approx r = error_ == 0.0 ? filtered::orient3d_approx(doubles(a), doubles(b), doubles(c), doubles(d))
+                                   : filtered::orient3d_approx(approx(a), approx(b), approx(c), approx(d));
     if (filtered::certain(r)) {
       ++plane_decisions_;
       return filtered::sign(r);
@@ -227,9 +232,9 @@ class Quickhull {
       return best;
     }
     // v = fl(p . n) is within bound of the exact dot product, so a point
-    // whose v is more than 3 bounds (2 plus rounding) below the largest v
-    // is not extreme; the exact scan over the others, in index order, picks
-    // the same (first extreme) point as a scan over all.
+    // whose v is more than 3 bounds (2 plus rounding, see difference_margin)
+    // below the largest v is not extreme; the exact scan over the others, in
+    // index order, picks the same (first extreme) point as a scan over all.
     const double f = sign == Sign::positive ? 1.0 : -1.0;
     const Coords n{f * d.approx.x.value, f * d.approx.y.value, f * d.approx.z.value};
     auto value = [&](std::uint32_t i) {
@@ -238,7 +243,7 @@ class Quickhull {
     };
     double top = -inf;
     for (std::uint32_t i = 0; i < n_; ++i) top = std::max(top, value(i));
-    const double margin = 3.0 * bound;
+    const double margin = filtered::difference_margin * bound;
     std::uint32_t best = none;
     for (std::uint32_t i = 0; i < n_; ++i) {
       if (top - value(i) > margin) {
@@ -251,29 +256,18 @@ class Quickhull {
   }
 
   // A bound on |P . N - fl(p . n)| for every input point P with
-  // approximation p (|p_k| <= M, |p_k - P_k| <= e) and the direction N with
-  // approximation n (|n_k - N_k| <= f_k), or infinity:
-  //   |P . N - p . N| <= e |N|_1 <= e (|n|_1 + |f|_1),
-  //   |p . N - p . n| <= M |f|_1,
-  //   |p . n - fl(p . n)| <= gamma_3 M |n|_1 + 3 2^-1075 (underflow),
-  // doubled for the rounding of the bound itself, plus 2^-1000 for the
-  // underflow. With M, e <= 2^300 (the plane filter's range) and
-  // |n|_1 + |f|_1 <= 2^600 nothing overflows.
+  // approximation p and the direction N with approximation n, or infinity
+  // (error_bounds.hpp, "The dot-product scan").
   [[nodiscard]] double dot_bound(const ApproxVec3& n) const {
-    const double a = std::fabs(n.x.value) + std::fabs(n.y.value) + std::fabs(n.z.value);
-    const double f = n.x.error + n.y.error + n.z.error;
-    if (!(scale_.span < inf) || !(a + f <= 0x1p600)) return inf;
-    const double m = 0.5 * scale_.span;
-    return 2.0 * (error_ * (a + f) + m * f + 4.0 * 0x1p-53 * m * a) + 0x1p-1000;
+    return filtered::dot_filter_bound(n, 0.5 * scale_.span, error_);
   }
 
   // compare_dot(p, q, d), first filtered on the double coordinates.
   [[nodiscard]] Sign compare(std::uint32_t p, std::uint32_t q, Vec3Ref d) {
-    using filtered::add, filtered::mul, filtered::sub;
     const ApproxVec3& n = d.approx;
-    const Approx r = add(add(mul(sub(approx_coord(p, 0), approx_coord(q, 0)), n.x),
-                             mul(sub(approx_coord(p, 1), approx_coord(q, 1)), n.y)),
-                         mul(sub(approx_coord(p, 2), approx_coord(q, 2)), n.z));
+    const Approx r = error_ == 0.0 && filtered::all_exact(n)
+                         ? filtered::compare_dot_approx(doubles(p), doubles(q), filtered::values(n))
+                         : filtered::compare_dot_approx(approx(p), approx(q), n);
     if (filtered::certain(r)) {
       ++plane_decisions_;
       return filtered::sign(r);
@@ -376,9 +370,9 @@ class Quickhull {
   // compare_dot(p, q, normal of t) == positive, where s_p and s_q are the
   // plane filter's values of p and q: each is within bound of the exact
   // orient3d, whose difference is that dot product, so a difference of the
-  // values beyond 3 bounds (2 plus rounding) decides.
+  // values beyond 3 bounds (2 plus rounding, see difference_margin) decides.
   [[nodiscard]] bool farther(std::uint32_t t, double s_p, std::uint32_t p, double s_q, std::uint32_t q) {
-    const double diff = s_p - s_q, margin = 3.0 * planes_[t].bound;
+    const double diff = s_p - s_q, margin = filtered::difference_margin * planes_[t].bound;
     if (diff > margin || -diff > margin) {
       ++plane_decisions_;
       return diff > 0;

@@ -16,6 +16,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
+#include "filtered_arithmetic.hpp"
 #include "hull_soup.hpp"
 #include "polyhedron_builder.hpp"
 
@@ -31,21 +32,18 @@ ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   const std::uint32_t nb = b.num_vertices();
   std::vector<std::array<double, 3>> approx;
   approx.reserve(count);
-  // |fl(x + y) - (X + Y)| <= |x - X| + |y - Y| + u |fl(x + y)| (a sum of
-  // doubles is exact when subnormal); the factor 1 + 2^-50 covers the
-  // rounding of this bound. NaN errors become infinite (no filtering).
+  // Each sum is the filtered sum of the operands' approximations, with its
+  // bound (error_bounds.hpp, "The filtered sum"). NaN errors become infinite
+  // (no filtering).
   double max_error = 0;
   for (std::uint32_t i = 0; i < a.num_vertices(); ++i) {
     const ApproxVec3& p = detail::vertex_approx(a, VertexId(i));
     for (std::uint32_t j = 0; j < nb; ++j) {
       const ApproxVec3& q = detail::vertex_approx(b, VertexId(j));
-      const std::array<double, 3> s{p.x.value + q.x.value, p.y.value + q.y.value, p.z.value + q.z.value};
-      const double e[3] = {p.x.error + q.x.error, p.y.error + q.y.error, p.z.error + q.z.error};
-      for (int k = 0; k < 3; ++k) {
-        const double bound = (e[k] + 0x1p-53 * std::fabs(s[k])) * (1.0 + 0x1p-50);
-        max_error = bound <= max_error ? max_error : (std::isnan(bound) ? INFINITY : bound);
-      }
-      approx.push_back(s);
+      const Approx s[3] = {filtered::add(p.x, q.x), filtered::add(p.y, q.y), filtered::add(p.z, q.z)};
+      for (const Approx& c : s)
+        max_error = c.error <= max_error ? max_error : (std::isnan(c.error) ? INFINITY : c.error);
+      approx.push_back({s[0].value, s[1].value, s[2].value});
     }
   }
   const ApproximatePoints sums{approx, max_error, [&](std::uint32_t k) {

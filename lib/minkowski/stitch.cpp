@@ -14,6 +14,7 @@
 
 #include "cvms/planar_sum.hpp"
 #include "dyadic.hpp"
+#include "error_bounds.hpp"
 #include "small_direction.hpp"
 #include "polyhedron_builder.hpp"
 
@@ -121,7 +122,8 @@ class EdgeDirections {
 // gives the nearest double s and the exact rounding error r = x + y - s;
 // Approx::of truncates toward zero, which is s itself when r is zero or
 // points away from zero, and the next double toward zero otherwise. The
-// error bound is Approx::of's, so the cached value is the same either way.
+// error bound is Approx::of's, so the cached value is the same either way
+// (error_bounds.hpp says why this sum is not bounded as CHMS's sums are).
 Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) noexcept {
   if (x.error == 0.0 && y.error == 0.0) {
     const double s = x.value + y.value;
@@ -130,7 +132,7 @@ Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) n
       const double r = (x.value - (s - y_part)) + (y.value - y_part);
       if (r == 0.0) return {s, 0.0};
       const double truncated = (r > 0.0) == (s > 0.0) ? s : std::nextafter(s, 0.0);
-      return {truncated, std::fabs(truncated) * 0x1p-52 + 0x1p-1074};
+      return {truncated, filtered::truncation_error(truncated)};
     }
   }
   return Approx::of(exact_sum);

@@ -8,19 +8,14 @@
 #include <cstdint>
 #include <limits>
 
+#include "error_bounds.hpp"
 #include "exact_double.hpp"
 
 namespace cvms {
 
 Approx Approx::of(const Rational& q) noexcept {
-  // mpq_get_d truncates toward zero (GMP manual; subnormals included, and
-  // an exponent beyond the double range gives infinity). So q lies strictly
-  // between d and the next double away from zero: |q - d| < ulp(d), where
-  // ulp(d) = 2^(e-52) for 2^e <= |d| < 2^(e+1), e >= -1022, and 2^-1074 for
-  // subnormal d. fl(|d| 2^-52) >= 2^(e-52) (the exact product is at least
-  // that, and 2^(e-52) is a double, so rounding cannot go below it), and
-  // adding 2^-1074 covers the subnormal case; rounding of the sum is
-  // monotone, so error >= ulp(d) > |q - d|.
+  // The general case truncates q toward zero (mpq_get_d, mpz_get_d), whose
+  // error truncation_error bounds (error_bounds.hpp, "Approx::of").
   mpz_srcptr num = q.get_num_mpz_t();
   mpz_srcptr den = q.get_den_mpz_t();
   // Fast path, all inline: one-limb numerator and power-of-two one-limb
@@ -41,13 +36,13 @@ Approx Approx::of(const Rational& q) noexcept {
   // Second fast path: a fraction of two integers below 2^53 (small decimals
   // like 0.1 = 1/10). Both convert exactly, the quotient is rounded to
   // nearest once, and |q| > 2^-64 is normal, so |fl(n/d) - q| <= u |fl(n/d)|
-  // (Higham, 2.5): the bound |value| 2^-53 is exact and sufficient.
+  // (Higham, 2.5): the bound u |value| is exact and sufficient.
   if (mpz_size(den) == 1 && mpz_size(num) == 1) {
     mp_limb_t den_limb = mpz_getlimbn(den, 0);
     mp_limb_t num_limb = mpz_getlimbn(num, 0);
     if (std::bit_width(num_limb) <= 53 && std::bit_width(den_limb) <= 53) {
       double v = static_cast<double>(num_limb) / static_cast<double>(den_limb);
-      return {mpz_sgn(num) < 0 ? -v : v, v * 0x1p-53};
+      return {mpz_sgn(num) < 0 ? -v : v, v * filtered::unit_roundoff};
     }
   }
   // Integers (the primitive normals of edge facets reach 2^125): mpz_get_d
@@ -57,7 +52,7 @@ Approx Approx::of(const Rational& q) noexcept {
     return {integer ? mpz_get_d(num) : q.get_d(), 0.0};  // truncation of a double is itself
   double d = integer ? mpz_get_d(num) : q.get_d();
   if (!std::isfinite(d)) return {d, std::numeric_limits<double>::infinity()};
-  return {d, std::fabs(d) * 0x1p-52 + 0x1p-1074};
+  return {d, filtered::truncation_error(d)};
 }
 
 }  // namespace cvms

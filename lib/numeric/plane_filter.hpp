@@ -9,38 +9,19 @@
 // Setting. The exact points P of a set are approximated by doubles p with
 // |p_k - P_k| <= e for every coordinate (e = 0 when the points are doubles),
 // and |p_k| <= M. For a triangle a, b, c and a point p the filter computes
-//   u = fl(b - a), v = fl(c - a), d = fl(p - a),
-//   n_x = fl(fl(u_y v_z) - fl(u_z v_y))  (and cyclically),
-//   s = fl(fl(fl(d_x n_x) + fl(d_y n_y)) + fl(d_z n_z)),
-// which approximates S = orient3d(A, B, C, P) = det[B - A, C - A, P - A].
-//
-// Rounding error (u = 2^-53, gamma_k = k u / (1 - k u); Higham, "Accuracy and
-// Stability of Numerical Algorithms", 3.1). Ignoring underflow, each of the
-// six monomials D_i U_j V_k of S' = det[b - a, c - a, p - a] (the determinant
-// of the approximations) reaches s through at most 8 roundings (d, u, v, their
-// product, the difference, the product with d, two sums), so
-//   |s - S'| <= gamma_8 sum_i |D_i| (|U_j V_k| + |U_k V_j|).
-// With |D_i| <= 2M, |U_j V_k| <= |fl(u_j v_k)| / (1 - gamma_3), and
-// Q = fl(fl(Q_x + Q_y) + Q_z), Q_x = fl(|fl(u_y v_z)| + |fl(u_z v_y)|):
-//   |s - S'| <= gamma_8 2M Q / ((1 - gamma_3)(1 - u)^2) < 8u (1 + 12u) 2M Q.
-// The filter uses fl(fl(9u * 2M) * Q), which is at least 9u (1 - u)^2 2M Q
-// and so covers this.
-// Underflow adds at most 2^-1075 per product plus its propagation, less than
-// (32M + 8) 2^-1075 in all (including the estimate of Q), and is covered by
-// the absolute term (M + 1) 2^-1000.
-// Input error: S - S' = det[D - D', U, V] + det[D', U - U', V]
-//   + det[D', U', V - V'] (primes for the approximations), each entry of the
-// differences at most 2e and of the others at most 2M + 2e, so
-// |S - S'| <= 36 e (2M + 2e)^2; the filter adds 64 e (2M + 2e)^2.
-// Together: |s - S| <= bound, and |s| > bound proves the sign of S.
-// Overflow: with M, e <= 2^300 every intermediate stays below 2^1000; larger
-// sets (or non-finite approximations) get an infinite bound, which never
+// s = fl(fl(p - a) . n), n = fl(cross(fl(b - a), fl(c - a))), an
+// approximation of S = orient3d(A, B, C, P). The bound |s - S| <= bound and
+// its proof (rounding, underflow, input error, overflow) are in
+// error_bounds.hpp, "The plane filter"; sets beyond its range (M or e above
+// 2^300, or non-finite approximations) get an infinite bound, which never
 // proves anything (NaN compares false too).
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <limits>
+
+#include "error_bounds.hpp"
 
 namespace cvms {
 
@@ -55,10 +36,8 @@ struct PlaneFilterScale {
 
   /// For approximations with |p_k| <= max_abs and |p_k - P_k| <= max_error.
   static PlaneFilterScale of(double max_abs, double max_error) noexcept {
-    constexpr double limit = 0x1p300;
-    if (!(max_abs <= limit) || !(max_error <= limit)) return {};
-    const double w = 2.0 * max_abs + 2.0 * max_error;
-    return {2.0 * max_abs, 64.0 * max_error * w * w + (max_abs * 0x1p-1000 + 0x1p-1000)};
+    if (!(max_abs <= filtered::filter_range) || !(max_error <= filtered::filter_range)) return {};
+    return {2.0 * max_abs, filtered::plane_filter_slack(max_abs, max_error)};
   }
 };
 
@@ -75,7 +54,7 @@ struct PlaneFilter {
     const double yz = uy * vz, zy = uz * vy, zx = uz * vx, xz = ux * vz, xy = ux * vy, yx = uy * vx;
     const double q =
         (std::fabs(yz) + std::fabs(zy)) + (std::fabs(zx) + std::fabs(xz)) + (std::fabs(xy) + std::fabs(yx));
-    return {a, {yz - zy, zx - xz, xy - yx}, 9.0 * 0x1p-53 * scale.span * q + scale.slack};
+    return {a, {yz - zy, zx - xz, xy - yx}, filtered::plane_filter_bound(scale.span, q, scale.slack)};
   }
 
   /// s for point p: approximately orient3d(a, b, c, p).
