@@ -78,6 +78,20 @@ struct ReadLimits {
   /// of a million digits are far beyond anything an exact computation on
   /// sane inputs produces, and parsing them costs superlinear time.
   std::uint64_t max_number_chars = std::uint64_t{1} << 20;
+  /// Bits of the numerator and of the denominator of one number, in lowest
+  /// terms (p/q: as written). Read off the digit count and the exponent
+  /// before the number is built, so "1e99999" (7 bytes, a 332,000-bit
+  /// integer) costs nothing. Every double fits with room to spare: its exact
+  /// value needs at most 1075 bits (4.9406564584124654e-324 and its 751-digit
+  /// exact expansion are 1/2^1074; 1e-300 needs 998, 1e300 997), an exact sum
+  /// of doubles about 2100.
+  std::uint64_t max_number_bits = 4096;
+  /// Bits of all the numbers of an input together (numerators plus
+  /// denominators, colors and normals included), per byte of the input read
+  /// so far; never less than 2^20 bits in all. Honest text stays far below:
+  /// "1e308 " is 1025 bits in 6 bytes (171 per byte), "1 " 2 bits in 2.
+  /// Bounds the digits of the numbers to 32 bytes per byte of input.
+  std::uint64_t max_number_bits_per_byte = 256;
 };
 
 /// The mesh file formats cvms reads and writes.
