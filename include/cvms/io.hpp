@@ -91,7 +91,7 @@ struct ReadLimits {
   /// before the number is built, so "1e99999" (7 bytes, a 332,000-bit
   /// integer) costs nothing. Every double fits with room to spare: its exact
   /// value needs at most 1075 bits (4.9406564584124654e-324 and its 751-digit
-  /// exact expansion are 1/2^1074; 1e-300 needs 998, 1e300 997), an exact sum
+  /// exact expansion are 1/2^1074; 1e-300 and 1e300 need 997), an exact sum
   /// of doubles about 2100.
   std::uint64_t max_number_bits = 4096;
   /// Bits of all the numbers of an input together (numerators plus
