@@ -90,9 +90,10 @@ struct ReadLimits {
   /// terms (p/q: as written). Read off the digit count and the exponent
   /// before the number is built, so "1e99999" (7 bytes, a 332,000-bit
   /// integer) costs nothing. Every double fits with room to spare: its exact
-  /// value needs at most 1075 bits (4.9406564584124654e-324 and its 751-digit
-  /// exact expansion are 1/2^1074; 1e-300 and 1e300 need 997), an exact sum
-  /// of doubles about 2100.
+  /// value needs at most 1024 bits above and 1075 below (the 751-digit exact
+  /// expansion of 2^-1074), its shortest decimal at most about 1130 below
+  /// (4.9406564584124654e-324 is 49406564584124654 / 10^340), 1e-300 and
+  /// 1e300 need 997, an exact sum of doubles about 2100.
   std::uint64_t max_number_bits = 4096;
   /// Bits of all the numbers of an input together (numerators plus
   /// denominators, colors and normals included), per byte of the input read
