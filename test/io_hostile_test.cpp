@@ -4,18 +4,25 @@
 // stream that makes it up on the fly), megabytes of binary junk. Each must
 // end with the documented error (or a correct result) quickly, and the
 // memory the reader allocates is measured by counting operator new.
+#include <gmp.h>
 #include <gtest/gtest.h>
+#include <malloc.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cfloat>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <new>
 #include <random>
 #include <sstream>
 
+#include "cvms/convex_hull.hpp"
+#include "cvms/convex_polyhedron.hpp"
 #include "cvms/io.hpp"
 #include "support/io_expect.hpp"
 
@@ -46,6 +53,30 @@ void tracked_free(void* p) noexcept {
   current_bytes.fetch_sub(*reinterpret_cast<std::size_t*>(raw));
   std::free(raw);
 }
+
+// GMP allocates its limbs with malloc, past operator new: route it through
+// the same counters (sized by malloc_usable_size, as GMP's free does not
+// pass a trustworthy size for blocks allocated before this runs).
+void* gmp_alloc(std::size_t n) {
+  void* p = std::malloc(n);
+  if (p == nullptr) std::abort();  // as GMP's own allocator does
+  std::size_t now = current_bytes.fetch_add(malloc_usable_size(p)) + malloc_usable_size(p);
+  std::size_t peak = peak_bytes.load();
+  while (now > peak && !peak_bytes.compare_exchange_weak(peak, now)) {
+  }
+  return p;
+}
+void gmp_free(void* p, std::size_t) {
+  current_bytes.fetch_sub(malloc_usable_size(p));
+  std::free(p);
+}
+void* gmp_realloc(void* p, std::size_t, std::size_t n) {
+  void* q = gmp_alloc(n);
+  std::memcpy(q, p, std::min(n, malloc_usable_size(p)));
+  gmp_free(p, 0);
+  return q;
+}
+const bool gmp_counted = (mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free), true);
 
 }  // namespace
 
@@ -177,6 +208,14 @@ TEST(Hostile, AllocationCounterSeesAllocations) {
   });
   EXPECT_GE(c.peak, 10 * MiB);
   EXPECT_LT(c.peak, 11 * MiB);
+  ASSERT_TRUE(gmp_counted);
+  Cost limbs = measure([] {
+    mpz_class big;
+    mpz_ui_pow_ui(big.get_mpz_t(), 2, 80 * MiB);  // 10 MiB of limbs
+    EXPECT_GT(mpz_sizeinbase(big.get_mpz_t(), 2), 80 * MiB);
+  });
+  EXPECT_GE(limbs.peak, 10 * MiB);
+  EXPECT_LT(limbs.peak, 21 * MiB);
 }
 
 // ---- lying headers ----------------------------------------------------------
@@ -318,6 +357,141 @@ TEST(Hostile, MegabytesOfBinaryJunkInEveryReader) {
     std::istringstream in(junk);
     EXPECT_TRUE(throws_error([&] { read_points(in, "junk"); }, ErrorCategory::parse, {"junk:"}));
   }
+}
+
+// ---- exact numbers that are much bigger than their text (issue 18) ----------
+
+// Issue 18 item 2: a 687 KB OFF of "1e99999" tokens peaked at 4.0 GB (each
+// a 332,000-bit integer); it now stops at its first token.
+TEST(Hostile, ExponentTokensOf1e99999AreRefusedAtTheFirstOne) {
+  std::string text = "OFF\n28625 0 0\n";
+  for (int i = 0; i < 28625; ++i) text += "1e99999 1e99999 1e99999\n";
+  ASSERT_GT(text.size(), 680000u);
+  std::istringstream in(text);
+  Cost c = measure([&] {
+    EXPECT_TRUE(throws_error(
+        [&] { read_off(in, "exp.off"); }, ErrorCategory::limit,
+        {"exp.off:3: x coordinate of vertex 0 '1e99999' needs a numerator of at least 332190 bits",
+         "limit of 4096 (ReadLimits::max_number_bits)"}));
+  });
+  EXPECT_LT(c.peak, 2 * MiB);
+  EXPECT_LT(c.seconds, 0.5 * slow_factor);
+}
+
+// The integer points of a paraboloid cap: a valid convex polyhedron with 81
+// vertices, written with each coordinate k as "k<suffix>".
+std::string paraboloid_off(const std::string& suffix) {
+  std::vector<Vec3> points;
+  for (int x = -5; x <= 5; ++x)
+    for (int y = -5; y <= 5; ++y)
+      if (x * x + y * y <= 25) points.push_back(test::v3(x, y, x * x + y * y));
+  PolygonSoup soup = convex_hull(points).to_soup();
+  std::string text =
+      "OFF\n" + std::to_string(soup.points.size()) + " " + std::to_string(soup.num_faces()) + " 0\n";
+  for (const Vec3& p : soup.points)
+    text += to_string(p.x) + suffix + " " + to_string(p.y) + suffix + " " + to_string(p.z) + suffix + "\n";
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    text += std::to_string(soup.face(f).size());
+    for (std::uint32_t i : soup.face(f)) text += " " + std::to_string(i);
+    text += "\n";
+  }
+  return text;
+}
+
+// Issue 18 item 2: the 84-vertex polyhedron written "k e-99999" (3.7 KB)
+// took 16 s to check, 1,056 vertices 252 s. Refused at its first coordinate;
+// at the cap (k e-1233, 4096-bit denominators) it reads and checks quickly.
+TEST(Hostile, PolyhedronWithCoordinatesWrittenKeMinus99999IsRefusedAtOnce) {
+  ASSERT_EQ(ConvexPolyhedron::from_soup([] {
+              std::istringstream in(paraboloid_off(""));
+              return read_off(in, "plain.off");
+            }())
+                .num_vertices(),
+            81u);
+  const std::string attack = paraboloid_off("e-99999");
+  ASSERT_LT(attack.size(), 4000u);
+  Cost c = measure([&] {
+    EXPECT_TRUE(throws_error(
+        [&] {
+          std::istringstream in(attack);
+          (void)ConvexPolyhedron::from_soup(read_off(in, "tiny.off"));
+        },
+        ErrorCategory::limit,
+        {"tiny.off:3: x coordinate of vertex 0 '", "e-99999' needs a denominator of at least 33"}));
+  });
+  EXPECT_LT(c.seconds, 0.5 * slow_factor);
+  Cost at_cap = measure([&] {
+    std::istringstream in(paraboloid_off("e-1233"));
+    EXPECT_EQ(ConvexPolyhedron::from_soup(read_off(in, "cap.off")).num_vertices(), 81u);
+  });
+  EXPECT_LT(at_cap.seconds, 2.0 * slow_factor);
+  EXPECT_TRUE(throws_error(
+      [&] {
+        std::istringstream in(paraboloid_off("e-2466"));
+        (void)read_off(in, "over.off");
+      },
+      ErrorCategory::limit, {"over.off:3:", "needs a denominator of at least 8189 bits", "limit of 4096"}));
+}
+
+// Issue 18 item 3: a tetrahedron of p/q with 500,000-digit p and q (each
+// token just under max_number_chars, 12 MB) took 128 s to check.
+TEST(Hostile, HalfMillionDigitFractionsAreRefusedFromTheirDigitCount) {
+  const std::string big = std::string(500000, '9') + "/" + std::string(499999, '7') + "1";
+  ASSERT_LT(big.size(), ReadLimits{}.max_number_chars);
+  std::string text = "OFF\n4 4 0\n";
+  for (int v = 0; v < 4; ++v) text += big + " " + big + " " + big + "\n";
+  text += "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  std::istringstream in(text);
+  Cost c = measure([&] {
+    EXPECT_TRUE(throws_error(
+        [&] { read_off(in, "frac.off"); }, ErrorCategory::limit,
+        {"frac.off:3: x coordinate of vertex 0 '999", "...' needs a numerator of at least 1660961 bits"}));
+  });
+  EXPECT_LT(c.peak, 16 * MiB);  // the 3 MB line is buffered whole
+  EXPECT_LT(c.seconds, 0.5 * slow_factor);
+}
+
+// Tokens just under the per-number cap ("1e1233" is 4097 bits in 7 bytes)
+// meet the total: at most 256 bits per byte of input (2^20 at least).
+TEST(Hostile, TokensJustUnderTheBitCapStopAtTheTotal) {
+  std::string text = "OFF\n28625 0 0\n";
+  for (int i = 0; i < 28625; ++i) text += "1e1233 1e1233 1e1233\n";
+  std::istringstream in(text);
+  Cost c = measure([&] {
+    EXPECT_TRUE(throws_error(
+        [&] { read_off(in, "total.off"); }, ErrorCategory::limit,
+        {"total.off:", "'1e1233' brings the numbers read to", "ReadLimits::max_number_bits_per_byte"}));
+  });
+  EXPECT_LT(c.peak, 2 * MiB);
+  EXPECT_LT(c.seconds, 0.5 * slow_factor);
+  // With the bytes to pay for them (padding comments), the numbers are read,
+  // and their memory is bounded by the input: at most 32 bytes of digits per
+  // byte, plus each rational's fixed ~100 bytes.
+  std::string padded = "OFF\n5000 0 0\n";
+  for (int i = 0; i < 5000; ++i) padded += "1e1233 1e1233 1e1233 #" + std::string(42, '-') + "\n";
+  std::istringstream in2(padded);
+  PolygonSoup soup;
+  Cost read = measure([&] { soup = read_off(in2, "padded.off"); });
+  EXPECT_EQ(soup.points.size(), 5000u);
+  EXPECT_LT(read.peak, 48 * padded.size());
+}
+
+// The caps never meet honest input: extreme doubles, shortest or exact,
+// and a whole file of the densest one ("1e308 ", 171 bits per byte).
+TEST(Hostile, HonestExtremeDoublesPassTheNumberCaps) {
+  std::string text;
+  for (double d : {5e-324, DBL_MIN, DBL_MAX, -DBL_MAX, 1e-300, 1e300, 4.9406564584124654e-324}) {
+    char shortest[64];
+    auto end = std::to_chars(shortest, shortest + sizeof shortest, d).ptr;
+    text += std::string(shortest, end) + " " + to_string(rational_from_double(d)) + " 0\n";
+  }
+  for (int i = 0; i < 100000; ++i) text += "1e308 -1e308 1e-308\n";
+  std::istringstream in(text);
+  std::vector<Vec3> points;
+  Cost c = measure([&] { points = read_points(in, "honest.xyz"); });
+  ASSERT_EQ(points.size(), 100007u);
+  EXPECT_EQ(points[0].y, rational_from_double(5e-324));
+  EXPECT_LT(c.seconds, 5.0 * slow_factor);
 }
 
 }  // namespace

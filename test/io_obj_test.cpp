@@ -69,6 +69,29 @@ TEST(ReadObj, FaceTokenSyntax) {
         << token;
 }
 
+// Issue 18 item 9: saturated indices were shown as +-9223372036854775807.
+TEST(ReadObj, HugeIndicesAreShownAsTyped) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_TRUE(
+      throws_error([&] { obj_from(v + "f 1 2 99999999999999999999999/4\n"); }, ErrorCategory::parse,
+                   {"text.obj:4: face 1 has index 99999999999999999999999, beyond the 32-bit range"}));
+  EXPECT_TRUE(throws_error([&] { obj_from(v + "f -99999999999999999999999 1 2\n"); }, ErrorCategory::parse,
+                           {"face 1 has relative index -99999999999999999999999 but only 3"}));
+}
+
+// Issue 18 item 7: "v -1.#IND 0 1.#QNAN" was "missing y coordinate" ('#'
+// started a comment inside the token).
+TEST(ReadObj, MsvcNonFiniteSpellingsAreNamed) {
+  EXPECT_TRUE(throws_error([] { obj_from("v -1.#IND 0 1.#QNAN\n"); }, ErrorCategory::parse,
+                           {"text.obj:1:", "x coordinate of vertex 1 is not finite: '-1.#IND'"}));
+  EXPECT_TRUE(throws_error([] { obj_from("v 0 0 1.#QNAN\n"); }, ErrorCategory::parse,
+                           {"z coordinate of vertex 1 is not finite: '1.#QNAN'"}));
+  EXPECT_TRUE(throws_error([] { obj_from("v 0 0 0 1 1 1.#inf00\n"); }, ErrorCategory::parse,
+                           {"color value of vertex 1 is not finite: '1.#inf00'"}));
+  // A comment right after a number is still a comment.
+  EXPECT_EQ(obj_from("v 0 0 1.#comment\n").points, (std::vector<Vec3>{v3(0, 0, 1)}));
+}
+
 // ---- the bad corpus: one test per file --------------------------------------
 
 ::testing::AssertionResult bad(std::string_view name, ErrorCategory category,

@@ -132,12 +132,57 @@ TEST(ReadOff, LimitsOnCountsAndNumberLength) {
 }
 
 TEST(ReadOff, ExponentAtTheCapIsExactBeyondIsALimit) {
-  PolygonSoup soup = off_from("OFF\n1 0 0\n1e100000 -1e-100000 0\n");
+  // The exponent cap alone: the bit caps (which refuse 1e100000 by default) raised.
+  const ReadLimits wide{.max_number_bits = 1u << 20, .max_number_bits_per_byte = 1u << 20};
+  PolygonSoup soup = off_from("OFF\n1 0 0\n1e100000 -1e-100000 0\n", wide);
   mpz_class big;
   mpz_ui_pow_ui(big.get_mpz_t(), 10, 100000);
   EXPECT_EQ(soup.points[0], v3(Rational(big), Rational(mpz_class(-1), big), 0));
+  EXPECT_TRUE(throws_error([&] { off_from("OFF\n1 0 0\n0 1e100001 0\n", wide); }, ErrorCategory::limit,
+                           {"text.off:3:", "y coordinate of vertex 0", "exponent"}));
   EXPECT_TRUE(throws_error([] { off_from("OFF\n1 0 0\n0 1e100001 0\n"); }, ErrorCategory::limit,
                            {"text.off:3:", "y coordinate of vertex 0", "exponent"}));
+}
+
+// Issue 18 item 9: colors were checked with a private exponent cap of 10
+// ("1e11" was "not a number") and without max_number_chars; COFF/NOFF
+// vertex values were not checked at all. All follow the number rules now.
+TEST(ReadOff, ColorsAndNormalsFollowTheNumberRules) {
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  EXPECT_EQ(off_from("OFF\n4 4 0\n" + points + "3 0 2 1 1e11 0.5 0 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n").points,
+            tetra_points);
+  EXPECT_TRUE(
+      throws_error([&] { off_from("OFF\n4 4 0\n" + points + "3 0 2 1 1e99999\n"); }, ErrorCategory::limit,
+                   {"text.off:7:", "color value of face 0 '1e99999'", "ReadLimits::max_number_bits"}));
+  EXPECT_TRUE(throws_error(
+      [&] {
+        off_from("OFF\n4 4 0\n" + points + "3 0 2 1 " + std::string(2000, '7') + "\n",
+                 {.max_number_chars = 1000});
+      },
+      ErrorCategory::limit,
+      {"text.off:7:", "color value of face 0 has 2000 characters", "max_number_chars"}));
+  EXPECT_TRUE(throws_error([&] { off_from("OFF\n4 4 0\n" + points + "3 0 2 1 red\n"); }, ErrorCategory::parse,
+                           {"text.off:7:", "color value of face 0 is not a number: 'red'"}));
+  EXPECT_TRUE(throws_error(
+      [&] { off_from("COFF\n4 4 0\n0 0 0 1 1 abc\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n" + faces); },
+      ErrorCategory::parse, {"text.off:3:", "color value of vertex 0 is not a number: 'abc'"}));
+  EXPECT_TRUE(throws_error(
+      [&] { off_from("NOFF\n4 4 0\n0 0 0 1 1 1\n1 0 0 nan 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n" + faces); },
+      ErrorCategory::parse, {"text.off:4:", "normal component of vertex 1 is not finite: 'nan'"}));
+  EXPECT_TRUE(
+      throws_error([&] { off_from("CNOFF\n4 4 0\n0 0 0 1 1 1 9 9 1e-99999\n" + points.substr(6) + faces); },
+                   ErrorCategory::limit, {"text.off:3:", "of vertex 0 '1e-99999'", "denominator"}));
+}
+
+// Issue 18 item 9: saturated indices were shown as 18446744073709551615.
+TEST(ReadOff, HugeIndicesAreShownAsTyped) {
+  const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_TRUE(throws_error([&] { off_from(head + "3 0 1 123456789012345678901234567890\n"); },
+                           ErrorCategory::parse,
+                           {"text.off:6: face 0 has index 123456789012345678901234567890 but there are 3"}));
+  EXPECT_TRUE(throws_error([&] { off_from(head + "99999999999999999999999 0 1 2\n"); }, ErrorCategory::parse,
+                           {"face 0 declares 99999999999999999999999 vertices but lists 3"}));
 }
 
 // ---- the bad corpus: one test per file --------------------------------------

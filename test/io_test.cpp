@@ -551,5 +551,30 @@ TEST(ReadPoints, BadLines) {
                            {"pts:3:", "2 vertices but only 1"}));
 }
 
+// Issue 18 item 7: '#' started a comment inside "1.#INF", so an OFF with
+// z = 1.#INF passed as a tetrahedron with z = 1 and `cvms hull` took it.
+TEST(Io, MsvcInfinitiesAreRefusedInEveryReader) {
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  for (std::string token : {"1.#INF", "-1.#INF", "1.#IND", "-1.#IND", "1.#QNAN", "1.#SNAN", "1.#inf",
+                            "-1.#ind00", "1.#QNaN0", "+1.#INF00", "12.#INF"}) {
+    SCOPED_TRACE(token);
+    std::istringstream off("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 " + token + "\n" + faces);
+    EXPECT_TRUE(throws_error([&] { read_off(off, "t.off"); }, ErrorCategory::parse,
+                             {"t.off:6:", "z coordinate of vertex 3 is not finite: '" + token + "'"}));
+    std::istringstream obj("v 0 0 " + token + " # comment\n");
+    EXPECT_TRUE(throws_error([&] { read_obj(obj, "t.obj"); }, ErrorCategory::parse,
+                             {"t.obj:1:", "z coordinate of vertex 1 is not finite"}));
+    EXPECT_TRUE(throws_error([&] { points_from("0 0 0\n" + token + " 1 1\n"); }, ErrorCategory::parse,
+                             {"pts:2:", "x coordinate of point 1 is not finite"}));
+    std::istringstream stl("solid\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex " + token +
+                           " 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
+    EXPECT_TRUE(throws_error([&] { read_stl(stl, "t.stl"); }, ErrorCategory::parse,
+                             {"t.stl:5:", "x coordinate of vertex 1 of facet 0 is not finite"}));
+  }
+  // Comments right after a number, and '#' words that are no MSVC spelling, stay comments.
+  EXPECT_EQ(points_from("1 2 3#info\n1 2 3.#comment\n1 2 3.# INF\n"),
+            (std::vector<Vec3>{v3(1, 2, 3), v3(1, 2, 3), v3(1, 2, 3)}));
+}
+
 }  // namespace
 }  // namespace cvms

@@ -8,6 +8,8 @@
 
 #include <bit>
 #include <cfloat>
+#include <charconv>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +17,8 @@
 #include <string>
 
 #include "cvms/error.hpp"
+#include "cvms/io.hpp"
+#include "rational_text.hpp"
 #include "support/random_numbers.hpp"
 
 namespace cvms {
@@ -326,6 +330,159 @@ TEST(Rational, IsDoubleExact) {
     Rational q = test::random_rational(rng);
     bool expected = abs(q) <= Rational(DBL_MAX) && Rational(q.get_d()) == q;
     ASSERT_EQ(is_double_exact(q), expected) << to_string(q).substr(0, 80);
+  }
+}
+
+// ---- parsing under size caps (lib/numeric/rational_text.hpp) ----------------
+
+using detail::NumberTextResult;
+using detail::NumberTextStatus;
+using detail::parse_rational_into;
+
+NumberTextResult capped(std::string_view text, std::uint64_t max_bits, Rational& out) {
+  return parse_rational_into(text, {100000, max_bits}, out);
+}
+
+// The bit lengths of the numerator and denominator in lowest terms.
+std::uint64_t num_bits(const Rational& q) { return mpz_sizeinbase(q.get_num_mpz_t(), 2); }
+std::uint64_t den_bits(const Rational& q) { return mpz_sizeinbase(q.get_den_mpz_t(), 2); }
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Issue 18 item 2: "1e99999" is 7 bytes and was built as a 332,000-bit
+// integer (86,000 of them in a 687 KB OFF peaked at 4 GB). The cap is read
+// off the text: nothing of that size is ever built.
+TEST(RationalText, ExponentTokensAreRefusedBeforeTheNumberIsBuilt) {
+  Rational out;
+  NumberTextResult r = capped("1e99999", 4096, out);
+  EXPECT_EQ(r.status, NumberTextStatus::numerator_too_large);
+  EXPECT_EQ(r.bits, 332190u);  // floor(99999 log2 10) + 1
+  r = capped("-5e-99999", 4096, out);
+  EXPECT_EQ(r.status, NumberTextStatus::denominator_too_large);
+  EXPECT_GE(r.bits, 332185u);
+  EXPECT_LE(r.bits, 332190u);
+  EXPECT_EQ(capped("0." + std::string(99999, '0') + "1", 4096, out).status,
+            NumberTextStatus::denominator_too_large);
+  // A million of them take no time: each is refused from its digit count.
+  auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < 1000000; ++i)
+    ASSERT_NE(capped(i % 2 ? "1e99999" : "7e-99999", 4096, out).status, NumberTextStatus::ok);
+  EXPECT_LT(seconds_since(start), 2.0);
+}
+
+// Issue 18 item 3: p/q with 500,000-digit p and q (each token just under
+// max_number_chars) took 128 s to check; the digit count refuses them.
+TEST(RationalText, HalfMillionDigitFractionsAreRefusedFromTheirDigitCount) {
+  const std::string p(500000, '7');
+  const std::string q = "1" + std::string(499999, '3');
+  Rational out;
+  auto start = std::chrono::steady_clock::now();
+  NumberTextResult r = capped(p + "/" + q, 4096, out);
+  EXPECT_EQ(r.status, NumberTextStatus::numerator_too_large);
+  EXPECT_GE(r.bits, 1660961u);  // floor(499999 log2 10) + 1
+  EXPECT_EQ(capped("1/" + q, 4096, out).status, NumberTextStatus::denominator_too_large);
+  EXPECT_LT(seconds_since(start), 0.5);
+}
+
+// Honest input never meets the readers' default: every double, written
+// shortest or exactly, has at most 1024 bits above and 1075 below.
+TEST(RationalText, DoublesWrittenExactlyOrShortestPassTheReadCap) {
+  const std::uint64_t cap = ReadLimits{}.max_number_bits;
+  auto check = [&](double d) {
+    char shortest[64];
+    auto end = std::to_chars(shortest, shortest + sizeof shortest, d).ptr;
+    for (const std::string& text : {std::string(shortest, end), to_string(rational_from_double(d))}) {
+      Rational out;
+      ASSERT_EQ(capped(text, cap, out).status, NumberTextStatus::ok) << text.substr(0, 60);
+      ASSERT_EQ(out, *try_parse_rational(text)) << text.substr(0, 60);
+      ASSERT_LE(num_bits(out), 2000u) << text.substr(0, 60);
+      ASSERT_LE(den_bits(out), 1200u) << text.substr(0, 60);
+    }
+  };
+  for (double d : {5e-324, -5e-324, DBL_MIN, DBL_MAX, -DBL_MAX, 1e-300, 1e300, -1.5e300, 1e308, 1e-308,
+                   4.9406564584124654e-324, 2.2250738585072009e-308, 0.1, 1.0 / 3.0})
+    check(d);
+  Rational tiny;
+  ASSERT_EQ(capped(to_string(power_of_two(-1074)), cap, tiny).status, NumberTextStatus::ok);
+  EXPECT_EQ(tiny, power_of_two(-1074));  // 751 digits, 5^1074 / 10^1074 reduced
+  EXPECT_EQ(den_bits(tiny), 1075u);
+  test::Rng rng(18);
+  for (int i = 0; i < 5000; ++i) check(test::random_double_bits(rng));
+}
+
+// The caps are on the value in lowest terms, exactly at the bit: the
+// decimal's powers of 2 and 5 cancel before the denominator is sized.
+TEST(RationalText, CapsAreOnTheValueInLowestTerms) {
+  struct Case {
+    const char* text;
+    NumberTextStatus status;
+  };
+  const Case cases[] = {
+      {"1023", NumberTextStatus::ok},  // 10 bits
+      {"-1023", NumberTextStatus::ok},
+      {"1024", NumberTextStatus::numerator_too_large},
+      {"102.4e1", NumberTextStatus::numerator_too_large},
+      {"0.001", NumberTextStatus::ok},  // 1/1000: 10 bits
+      {"0.0001", NumberTextStatus::denominator_too_large},
+      {"625e-4", NumberTextStatus::ok},      // 1/16
+      {"0.0625", NumberTextStatus::ok},      // 1/16
+      {"512e-3", NumberTextStatus::ok},      // 64/125
+      {"0.5e-2", NumberTextStatus::ok},      // 1/200
+      {"1000000e-6", NumberTextStatus::ok},  // 1
+      {"1000000.000e-6", NumberTextStatus::ok},
+      {"0.000000e-90000", NumberTextStatus::ok},  // 0
+      {"1/1023", NumberTextStatus::ok},
+      {"02/001023", NumberTextStatus::ok},  // leading zeros do not count
+      {"1/1024", NumberTextStatus::denominator_too_large},
+      {"2048/2", NumberTextStatus::numerator_too_large},  // p/q as written
+      {"1/0", NumberTextStatus::not_a_number},
+      {"1e100001", NumberTextStatus::exponent_too_large},  // the exponent first
+      {"1.5", NumberTextStatus::ok},
+      {"x", NumberTextStatus::not_a_number},
+  };
+  for (const Case& c : cases) {
+    Rational out;
+    EXPECT_EQ(capped(c.text, 10, out).status, c.status) << c.text;
+    if (c.status == NumberTextStatus::ok) {
+      EXPECT_EQ(out, *try_parse_rational(c.text)) << c.text;
+    }
+  }
+}
+
+// Against an independent construction: the value is that of the uncapped
+// parser, in lowest terms, and it is refused exactly when a part exceeds the cap.
+TEST(RationalText, AgreesWithTheExactSizesOnRandomDecimals) {
+  test::Rng rng(1818);
+  for (int i = 0; i < 20000; ++i) {
+    mpz_class m = test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 300));
+    if (rng() % 4 == 0) m *= mpz_class(10) * static_cast<unsigned long>(rng() % 1000 + 1);
+    const long places = static_cast<long>(rng() % 60);
+    const long exponent = static_cast<long>(rng() % 1601) - 800;
+    std::string digits = mpz_class(abs(m)).get_str();
+    if (static_cast<long>(digits.size()) <= places)
+      digits.insert(0, static_cast<std::size_t>(places) + 1 - digits.size(), '0');
+    digits.insert(digits.size() - static_cast<std::size_t>(places), 1, '.');
+    const std::string text = (m < 0 ? "-" : "") + digits + "e" + std::to_string(exponent);
+    SCOPED_TRACE(text);
+    Rational expected = Rational(m) * power_of_ten(exponent - places);
+    const std::uint64_t cap = 1 + rng() % 3000;
+    Rational out;
+    NumberTextResult r = capped(text, cap, out);
+    const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
+    ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
+    if (fits) {
+      ASSERT_EQ(out, expected);
+      ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
+      ASSERT_GT(out.get_den(), 0);
+    } else {
+      const bool numerator = r.status == NumberTextStatus::numerator_too_large;
+      ASSERT_TRUE(numerator || r.status == NumberTextStatus::denominator_too_large);
+      // The reported size is a true lower bound of the part refused.
+      ASSERT_LE(r.bits, numerator ? num_bits(expected) : den_bits(expected));
+      ASSERT_GT(numerator ? num_bits(expected) : den_bits(expected), cap);
+    }
   }
 }
 

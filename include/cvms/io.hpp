@@ -15,10 +15,14 @@
 ///
 /// What the readers accept and reject (each case has a test in test/io_*_test.cpp):
 ///  - Numbers are parsed exactly (try_parse_rational): integers, decimals with
-///    an optional exponent, and p/q. Any size is accepted ("1e400" is the exact
-///    integer 10^400) up to an exponent of +-100000; a larger exponent, or a
-///    number token longer than ReadLimits::max_number_chars, raises
-///    Error(limit). "nan", "inf" and the like raise Error(parse) naming the line.
+///    an optional exponent, and p/q ("1e400" is the exact integer 10^400). A
+///    number token longer than ReadLimits::max_number_chars, an exponent
+///    beyond +-100000, a numerator or denominator beyond
+///    ReadLimits::max_number_bits and numbers beyond
+///    ReadLimits::max_number_bits_per_byte in all raise Error(limit) naming
+///    the line and the token. "nan", "inf", "1.#INF", "-1.#IND", "1.#QNAN"
+///    and the like raise Error(parse) naming the line. Ignored values
+///    (colors, normals, OBJ w) follow the same rules.
 ///  - Text formats are line based; '\n' and "\r\n" end lines. Messages name
 ///    "<source>:<line>: ..." with 1-based lines, OFF vertices/faces 0-based,
 ///    OBJ vertices/faces 1-based (as in the file); binary STL messages name
@@ -62,7 +66,11 @@
 ///    case-insensitively; several solids in one file are concatenated.
 ///  - Memory stays within a small multiple of the input size and of
 ///    max_bytes: a line is buffered whole, so a single 100 MB line costs about
-///    100-200 MB (set max_bytes lower to refuse such inputs early).
+///    100-200 MB (set max_bytes lower to refuse such inputs early). Each number
+///    costs about 100 bytes however short its text (a GMP rational and two
+///    heap blocks), so one-digit coordinates cost about 48 times their text;
+///    the digits of all numbers take at most 32 bytes per input byte
+///    (max_number_bits_per_byte). Points are never copied while reading.
 #pragma once
 
 #include <cstdint>
@@ -87,6 +95,21 @@ struct ReadLimits {
   /// of a million digits are far beyond anything an exact computation on
   /// sane inputs produces, and parsing them costs superlinear time.
   std::uint64_t max_number_chars = std::uint64_t{1} << 20;
+  /// Bits of the numerator and of the denominator of one number, in lowest
+  /// terms (p/q: as written). Read off the digit count and the exponent
+  /// before the number is built, so "1e99999" (7 bytes, a 332,000-bit
+  /// integer) costs nothing. Every double fits with room to spare: its exact
+  /// value needs at most 1024 bits above and 1075 below (the 751-digit exact
+  /// expansion of 2^-1074), its shortest decimal at most about 1130 below
+  /// (4.9406564584124654e-324 is 49406564584124654 / 10^340), 1e-300 and
+  /// 1e300 need 997, an exact sum of doubles about 2100.
+  std::uint64_t max_number_bits = 4096;
+  /// Bits of all the numbers of an input together (numerators plus
+  /// denominators, colors and normals included), per byte of the input read
+  /// so far; never less than 2^20 bits in all. Honest text stays far below:
+  /// "1e308 " is 1025 bits in 6 bytes (171 per byte), "1 " 2 bits in 2.
+  /// Bounds the digits of the numbers to 32 bytes per byte of input.
+  std::uint64_t max_number_bits_per_byte = 256;
 };
 
 /// The mesh file formats cvms reads and writes.

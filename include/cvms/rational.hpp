@@ -20,9 +20,10 @@ using Rational = mpq_class;
 /// Parses a number exactly. Accepts integers ("-12"), decimals with optional
 /// exponent ("0.1" is 1/10, "-2.5E+7", "1e-300", ".5", "5.") and fractions
 /// "p/q" (q != 0). Leading '+' is allowed; no surrounding spaces. Returns
-/// nothing for anything else, including "nan", "inf" and exponents whose
+/// nothing for anything else, including "nan", "inf", exponents whose
 /// magnitude exceeds max_exponent (which bounds the memory a lying input can
-/// make us allocate).
+/// make us allocate) and values too large for GMP to hold (2^36 bits). The
+/// readers of cvms/io.hpp also cap the bits of every number (ReadLimits).
 std::optional<Rational> try_parse_rational(std::string_view text,
                                            long max_exponent = 100000);
 

@@ -69,7 +69,7 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
       first == "mtllib" || first == "usemtl" || first == "s")
     return parse_obj(reader).points;
 
-  std::vector<Vec3> points;
+  PointBuffer points;
   while (reader.next(line)) {
     Tokenizer tokens(line);
     std::string_view x = tokens.next();
@@ -77,13 +77,13 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
     const std::uint64_t index = points.size();
     check_vertex_limit(reader, index + 1);
     bool first_token = true;
-    Vec3 p = parse_point(
-        reader, [&] { return std::exchange(first_token, false) ? x : tokens.next(); }, "point", index);
+    parse_point(
+        reader, [&] { return std::exchange(first_token, false) ? x : tokens.next(); }, points.append(),
+        "point", index);
     if (!tokens.at_end())
       reader.fail("point " + std::to_string(index) + " has more than 3 values: " + quote(tokens.next()));
-    points.push_back(std::move(p));
   }
-  return points;
+  return points.take();
 }
 
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {

@@ -33,7 +33,8 @@ bool is_free_form_statement(std::string_view keyword) {
 
 // The vertex part of a face token "i", "i/t", "i//n" or "i/t/n"; the texture
 // and normal parts must be well-formed integers but are otherwise ignored.
-std::optional<std::int64_t> parse_face_vertex(std::string_view token) {
+// `vertex_text` is set to the vertex part as typed.
+std::optional<std::int64_t> parse_face_vertex(std::string_view token, std::string_view& vertex_text) {
   std::array<std::string_view, 3> parts{};
   std::size_t count = 0;
   for (;;) {
@@ -43,6 +44,7 @@ std::optional<std::int64_t> parse_face_vertex(std::string_view token) {
     if (slash == std::string_view::npos) break;
     token.remove_prefix(slash + 1);
   }
+  vertex_text = parts[0];
   auto vertex = parse_signed(parts[0]);
   if (!vertex || *vertex == 0) return std::nullopt;
   if (count >= 2 && !(count == 3 && parts[1].empty()) && !parse_signed(parts[1])) return std::nullopt;
@@ -54,6 +56,7 @@ std::optional<std::int64_t> parse_face_vertex(std::string_view token) {
 
 PolygonSoup parse_obj(LineReader& reader) {
   PolygonSoup soup;
+  PointBuffer points;
   // Positive indices may refer to vertices defined further down; the largest
   // one is checked at the end against the final vertex count.
   std::uint64_t max_forward = 0;
@@ -68,10 +71,11 @@ PolygonSoup parse_obj(LineReader& reader) {
     if (keyword.empty()) continue;
     any_statement = true;
     if (keyword == "v") {
-      const std::uint64_t number = soup.points.size() + 1;  // as OBJ counts
+      const std::uint64_t number = points.size() + 1;  // as OBJ counts
       check_vertex_limit(reader, number);
-      Vec3 p = parse_point(
-          reader, [&] { return tokens.next(); }, "vertex", number);
+      Vec3& p = points.append();
+      parse_point(
+          reader, [&] { return tokens.next(); }, p, "vertex", number);
       auto name = [number] { return "vertex " + std::to_string(number); };
       std::array<std::string_view, 4> extra{};
       std::size_t num_extra = 0;
@@ -80,33 +84,33 @@ PolygonSoup parse_obj(LineReader& reader) {
         extra[num_extra++] = t;
       }
       if (num_extra == 1) {
-        Rational w = parse_number(reader, extra[0], {"w coordinate", "vertex", number});
+        const Rational& w = check_number(reader, extra[0], {"w coordinate", "vertex", number});
         if (w != 1) reader.fail(name() + " has w = " + quote(extra[0]) + "; only w = 1 is supported");
       } else if (num_extra == 3) {
-        for (std::size_t i = 0; i < 3; ++i) parse_number(reader, extra[i], {"color value", "vertex", number});
+        for (std::size_t i = 0; i < 3; ++i) check_number(reader, extra[i], {"color value", "vertex", number});
       } else if (num_extra != 0) {
         reader.fail(name() + " has 5 values; expected x y z, x y z w or x y z r g b");
       }
-      soup.points.push_back(std::move(p));
     } else if (keyword == "f") {
       const std::uint64_t f = soup.num_faces();
       auto name = [f] { return "face " + std::to_string(f + 1); };
       face.clear();
       for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
-        auto index = parse_face_vertex(t);
+        std::string_view index_text;
+        auto index = parse_face_vertex(t, index_text);
         if (!index)
           reader.fail(name() + ": " + quote(t) +
                       " is not a vertex reference (i, i/t, i//n or i/t/n, i != 0)");
-        std::int64_t count = static_cast<std::int64_t>(soup.points.size());
+        std::int64_t count = static_cast<std::int64_t>(points.size());
         std::int64_t resolved = 0;
         if (*index < 0) {
           if (-*index > count)
-            reader.fail(name() + " has relative index " + std::to_string(*index) + " but only " +
+            reader.fail(name() + " has relative index " + typed(index_text) + " but only " +
                         std::to_string(count) + " vertices are defined before it");
           resolved = count + *index;
         } else {
           if (static_cast<std::uint64_t>(*index) > std::numeric_limits<std::uint32_t>::max())
-            reader.fail(name() + " has index " + std::to_string(*index) + ", beyond the 32-bit range");
+            reader.fail(name() + " has index " + typed(index_text) + ", beyond the 32-bit range");
           resolved = *index - 1;
           if (static_cast<std::uint64_t>(*index) > max_forward) {
             max_forward = static_cast<std::uint64_t>(*index);
@@ -134,6 +138,7 @@ PolygonSoup parse_obj(LineReader& reader) {
       throw Error(ErrorCategory::parse, std::string(reader.source()) + ": empty input");
     reader.fail("no OBJ statements in the input");
   }
+  soup.points = points.take();
   if (max_forward > soup.points.size())
     throw Error(ErrorCategory::parse, std::string(reader.source()) + ":" + std::to_string(max_forward_line) +
                                           ": face " + std::to_string(max_forward_face) + " has index " +

@@ -68,6 +68,12 @@ std::uint64_t parse_count(const LineReader& reader, std::string_view token, cons
   return *value;
 }
 
+// What the values after x y z are called in messages.
+const char* extra_value_name(const OffHeader& h) {
+  if (int{h.texture} + int{h.color} + int{h.normal} != 1) return "normal, color or texture value";
+  return h.color ? "color value" : h.normal ? "normal component" : "texture coordinate";
+}
+
 }  // namespace
 
 bool is_off_keyword(std::string_view token) { return parse_off_keyword(token).has_value(); }
@@ -99,26 +105,31 @@ PolygonSoup parse_off(LineReader& reader) {
   const std::size_t min_extra =
       (header->texture ? 2 : 0) + (header->color ? 3 : 0) + (header->normal ? 3 : 0);
   const std::size_t max_extra = min_extra + (header->color ? 1 : 0);
+  // The values after x y z are ignored but checked like coordinates.
+  const char* extra_name = extra_value_name(*header);
 
   PolygonSoup soup;
-  soup.points.reserve(safe_reserve(num_vertices));
+  PointBuffer points;
   for (std::uint64_t v = 0; v < num_vertices; ++v) {
     if (!next_content_line(reader, tokens, token))
       fail_end(reader, "the header declares " + std::to_string(num_vertices) + " vertices but only " +
                            std::to_string(v) + " were found");
     bool first_token = true;
-    Vec3 p = parse_point(
-        reader, [&] { return std::exchange(first_token, false) ? token : tokens.next(); }, "vertex", v);
+    parse_point(
+        reader, [&] { return std::exchange(first_token, false) ? token : tokens.next(); }, points.append(),
+        "vertex", v);
     std::size_t extra = 0;
-    while (!tokens.next().empty()) ++extra;
+    for (Tokenizer rest = tokens; !rest.next().empty();) ++extra;
     if (extra < min_extra || extra > max_extra)
       reader.fail("vertex " + std::to_string(v) + " has " + std::to_string(3 + extra) + " values, expected " +
                   std::to_string(3 + min_extra) +
                   (max_extra != min_extra ? " or " + std::to_string(3 + max_extra) : std::string()) +
                   " for a '" + keyword + "' file");
-    soup.points.push_back(std::move(p));
+    for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
+      check_number(reader, t, {extra_name, "vertex", v});
   }
 
+  soup.points = points.take();
   soup.face_offsets.reserve(safe_reserve(num_faces) + 1);
   soup.face_indices.reserve(safe_reserve(num_faces) * 3);
   for (std::uint64_t f = 0; f < num_faces; ++f) {
@@ -132,22 +143,22 @@ PolygonSoup parse_off(LineReader& reader) {
     for (std::uint64_t k = 0; k < *size; ++k) {
       std::string_view t = tokens.next();
       if (t.empty())
-        reader.fail(name + " declares " + std::to_string(*size) + " vertices but lists " + std::to_string(k));
+        reader.fail(name + " declares " + typed(token) + " vertices but lists " + std::to_string(k));
       auto index = parse_unsigned(t);
       if (!index) reader.fail(name + ": index " + quote(t) + " is not a non-negative integer");
       if (*index >= num_vertices)
-        reader.fail(name + " has index " + std::to_string(*index) + " but there are " +
-                    std::to_string(num_vertices) + " vertices");
+        reader.fail(name + " has index " + typed(t) + " but there are " + std::to_string(num_vertices) +
+                    " vertices");
       soup.face_indices.push_back(static_cast<std::uint32_t>(*index));
       if (soup.face_indices.size() % 4096 == 0) check_face_limit(reader, f + 1, soup.face_indices.size());
     }
     check_face_limit(reader, f + 1, soup.face_indices.size());
-    // Up to four color components may follow the indices; they are ignored.
+    // Up to four color components may follow the indices; they are ignored,
+    // but checked like coordinates.
     std::size_t extra = 0;
     for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
-      if (++extra > 4)
-        reader.fail(name + " has more than 4 values after its " + std::to_string(*size) + " indices");
-      if (!try_parse_rational(t, 10)) reader.fail(name + ": color value " + quote(t) + " is not a number");
+      if (++extra > 4) reader.fail(name + " has more than 4 values after its " + typed(token) + " indices");
+      check_number(reader, t, {"color value", "face", f});
     }
     soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
   }

@@ -9,6 +9,8 @@
 #include <ios>
 #include <limits>
 
+#include "rational_text.hpp"
+
 namespace cvms::io_detail {
 namespace {
 
@@ -29,23 +31,29 @@ bool contains_ci(std::string_view text, std::string_view needle) {
   return false;
 }
 
-// True if the token has the shape of a decimal number with an exponent
-// (so that a failed parse can only be due to the exponent cap).
-bool is_decimal_with_exponent(std::string_view t) {
-  std::size_t i = 0;
-  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
-  std::size_t digits = 0;
-  while (i < t.size() && is_digit(t[i])) ++i, ++digits;
-  if (i < t.size() && t[i] == '.') {
-    ++i;
-    while (i < t.size() && is_digit(t[i])) ++i, ++digits;
-  }
-  if (digits == 0 || i >= t.size() || (t[i] != 'e' && t[i] != 'E')) return false;
-  ++i;
-  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
-  std::size_t exp_digits = 0;
-  while (i < t.size() && is_digit(t[i])) ++i, ++exp_digits;
-  return exp_digits > 0 && i == t.size();
+bool starts_with_ci(std::string_view text, std::string_view lower_prefix) {
+  return text.size() >= lower_prefix.size() && contains_ci(text.substr(0, lower_prefix.size()), lower_prefix);
+}
+
+// Whether the '#' at text[at] continues an MSVC non-finite spelling
+// ("1.#INF", "-1.#IND00", "1.#QNAN") instead of starting a comment: the
+// token so far is [+-]digits. and one of the MSVC words follows.
+bool is_msvc_non_finite_hash(std::string_view text, std::size_t at) {
+  std::string_view before = text.substr(0, at);
+  if (!before.empty() && (before.front() == '+' || before.front() == '-')) before.remove_prefix(1);
+  if (before.size() < 2 || before.back() != '.') return false;
+  for (char c : before.substr(0, before.size() - 1))
+    if (!is_digit(c)) return false;
+  std::string_view after = text.substr(at + 1);
+  for (std::string_view word : {"inf", "ind", "qnan", "snan", "nan"})
+    if (starts_with_ci(after, word)) return true;
+  return false;
+}
+
+std::uint64_t saturating_product(std::uint64_t a, std::uint64_t b) {
+  return b != 0 && a > std::numeric_limits<std::uint64_t>::max() / b
+             ? std::numeric_limits<std::uint64_t>::max()
+             : a * b;
 }
 
 }  // namespace
@@ -119,6 +127,7 @@ bool LineReader::next(std::string_view& line) {
       auto pos = static_cast<std::size_t>(static_cast<const char*>(nl) - base);
       line = std::string_view(base + begin_, pos - begin_);
       begin_ = scanned_ = pos + 1;
+      line_end_ = buffer_offset_ + begin_;
       break;
     }
     scanned_ = end_;
@@ -126,11 +135,13 @@ bool LineReader::next(std::string_view& line) {
       if (begin_ == end_) return false;
       line = std::string_view(base + begin_, end_ - begin_);
       begin_ = scanned_ = end_;
+      line_end_ = buffer_offset_ + end_;
       break;
     }
     // Keep the partial line, make room for a chunk, read more.
     if (begin_ > 0) {
       std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
+      buffer_offset_ += begin_;
       end_ -= begin_;
       scanned_ -= begin_;
       begin_ = 0;
@@ -153,6 +164,17 @@ void LineReader::fail(std::string_view message, ErrorCategory category) const {
               std::string(source()) + ":" + std::to_string(line_number_) + ": " + std::string(message));
 }
 
+bool LineReader::add_number_bits(std::uint64_t bits) noexcept {
+  number_bits_ = number_bits_ > std::numeric_limits<std::uint64_t>::max() - bits
+                     ? std::numeric_limits<std::uint64_t>::max()
+                     : number_bits_ + bits;
+  return number_bits_ <= number_bits_allowed();
+}
+
+std::uint64_t LineReader::number_bits_allowed() const noexcept {
+  return std::max(number_bits_allowance, saturating_product(limits_.max_number_bits_per_byte, line_end_));
+}
+
 void Tokenizer::skip_space() {
   std::size_t i = 0;
   while (i < rest_.size() && is_space(rest_[i])) ++i;
@@ -163,7 +185,9 @@ void Tokenizer::skip_space() {
 std::string_view Tokenizer::next() {
   skip_space();
   std::size_t i = 0;
-  while (i < rest_.size() && !is_space(rest_[i]) && !(comments_ && rest_[i] == '#')) ++i;
+  while (i < rest_.size() && !is_space(rest_[i]) &&
+         !(comments_ && rest_[i] == '#' && !is_msvc_non_finite_hash(rest_, i)))
+    ++i;
   std::string_view token = rest_.substr(0, i);
   rest_.remove_prefix(i);
   return token;
@@ -175,7 +199,7 @@ bool Tokenizer::at_end() {
 }
 
 bool looks_non_finite(std::string_view token) {
-  return contains_ci(token, "nan") || contains_ci(token, "inf");
+  return contains_ci(token, "nan") || contains_ci(token, "inf") || contains_ci(token, "#ind");
 }
 
 std::string ValueName::str() const {
@@ -184,22 +208,85 @@ std::string ValueName::str() const {
   return s;
 }
 
-Rational parse_number(const LineReader& reader, std::string_view token, const ValueName& name) {
-  if (!token.empty() && token.size() <= reader.limits().max_number_chars)
-    if (auto value = try_parse_rational(token, max_exponent)) return *std::move(value);
+void parse_number(LineReader& reader, std::string_view token, const ValueName& name, Rational& out) {
+  const ReadLimits& limits = reader.limits();
+  detail::NumberTextResult result{detail::NumberTextStatus::not_a_number};
+  if (!token.empty() && token.size() <= limits.max_number_chars) {
+    result = detail::parse_rational_into(token, {max_exponent, limits.max_number_bits}, out);
+    if (result.status == detail::NumberTextStatus::ok) {
+      const std::uint64_t bits =
+          mpz_sizeinbase(out.get_num_mpz_t(), 2) + mpz_sizeinbase(out.get_den_mpz_t(), 2);
+      if (reader.add_number_bits(bits)) return;
+      reader.fail(name.str() + " " + quote(token) + " brings the numbers read to " +
+                      std::to_string(reader.number_bits()) + " bits, beyond the " +
+                      std::to_string(reader.number_bits_allowed()) + " allowed for the first " +
+                      std::to_string(reader.bytes_through_line()) + " bytes of input (" +
+                      std::to_string(limits.max_number_bits_per_byte) +
+                      " bits per byte, ReadLimits::max_number_bits_per_byte)",
+                  ErrorCategory::limit);
+    }
+  }
   // Only failures pay for the message.
   const std::string what = name.str();
   if (token.empty()) reader.fail("missing " + what);
-  if (token.size() > reader.limits().max_number_chars)
-    reader.fail(std::string(what) + " has " + std::to_string(token.size()) +
-                    " characters, more than the limit of " + std::to_string(reader.limits().max_number_chars),
+  if (token.size() > limits.max_number_chars)
+    reader.fail(what + " has " + std::to_string(token.size()) + " characters, more than the limit of " +
+                    std::to_string(limits.max_number_chars) + " (ReadLimits::max_number_chars)",
                 ErrorCategory::limit);
-  if (looks_non_finite(token)) reader.fail(std::string(what) + " is not finite: " + quote(token));
-  if (is_decimal_with_exponent(token))
-    reader.fail(
-        std::string(what) + " " + quote(token) + " has an exponent beyond +-" + std::to_string(max_exponent),
-        ErrorCategory::limit);
-  reader.fail(std::string(what) + " is not a number: " + quote(token));
+  if (looks_non_finite(token)) reader.fail(what + " is not finite: " + quote(token));
+  switch (result.status) {
+    case detail::NumberTextStatus::exponent_too_large:
+      reader.fail(what + " " + quote(token) + " has an exponent beyond +-" + std::to_string(max_exponent),
+                  ErrorCategory::limit);
+    case detail::NumberTextStatus::numerator_too_large:
+    case detail::NumberTextStatus::denominator_too_large: {
+      const bool numerator = result.status == detail::NumberTextStatus::numerator_too_large;
+      reader.fail(what + " " + quote(token) + " needs " + (numerator ? "a numerator" : "a denominator") +
+                      " of at least " + std::to_string(result.bits) + " bits, beyond the limit of " +
+                      std::to_string(limits.max_number_bits) + " (ReadLimits::max_number_bits)",
+                  ErrorCategory::limit);
+    }
+    default:
+      break;
+  }
+  reader.fail(what + " is not a number: " + quote(token));
+}
+
+const Rational& check_number(LineReader& reader, std::string_view token, const ValueName& name,
+                             bool allow_non_finite) {
+  if (allow_non_finite && looks_non_finite(token) && token.size() <= reader.limits().max_number_chars) {
+    reader.scratch() = 0;
+    return reader.scratch();
+  }
+  parse_number(reader, token, name, reader.scratch());
+  return reader.scratch();
+}
+
+Vec3& PointBuffer::append() {
+  if (blocks_.empty() || blocks_.back().size() == block_size) {
+    blocks_.emplace_back();
+    blocks_.back().reserve(block_size);
+  }
+  ++size_;
+  return blocks_.back().emplace_back();
+}
+
+std::vector<Vec3> PointBuffer::take() {
+  std::vector<Vec3> points;
+  points.reserve(size_);
+  for (std::vector<Vec3>& block : blocks_) {
+    for (Vec3& p : block) points.push_back(std::move(p));
+    std::vector<Vec3>().swap(block);  // frees the block (and its moved-from numbers) at once
+  }
+  blocks_.clear();
+  size_ = 0;
+  return points;
+}
+
+std::string typed(std::string_view token) {
+  constexpr std::size_t shown = 40;
+  if (token.size() <= shown) return std::string(token);
+  return std::string(token.substr(0, shown)) + "...";
 }
 
 std::optional<std::uint64_t> parse_unsigned(std::string_view token) {

@@ -21,8 +21,11 @@
 
 namespace cvms::io_detail {
 
-/// The exponent cap passed to try_parse_rational; see io.hpp.
+/// The exponent cap of every number token; see io.hpp.
 inline constexpr long max_exponent = 100000;
+/// The numbers of an input may always hold this many bits in all, however
+/// short the input (ReadLimits::max_number_bits_per_byte scales beyond it).
+inline constexpr std::uint64_t number_bits_allowance = std::uint64_t{1} << 20;
 
 /// A token shown in a message: at most 40 characters, non-printable bytes as \xNN.
 std::string quote(std::string_view token);
@@ -73,6 +76,18 @@ class LineReader {
   /// Error(category) with "<source>:<line>: <message>".
   [[noreturn]] void fail(std::string_view message, ErrorCategory category = ErrorCategory::parse) const;
 
+  /// Bytes of input up to the end of the line last returned by next().
+  [[nodiscard]] std::uint64_t bytes_through_line() const noexcept { return line_end_; }
+  /// Adds the bits of a number read to the input's total; false once the
+  /// total is beyond what limits().max_number_bits_per_byte allows for the
+  /// bytes read so far (never less than number_bits_allowance).
+  bool add_number_bits(std::uint64_t bits) noexcept;
+  [[nodiscard]] std::uint64_t number_bits() const noexcept { return number_bits_; }
+  /// What add_number_bits allows now.
+  [[nodiscard]] std::uint64_t number_bits_allowed() const noexcept;
+  /// Where numbers that are checked but not kept (colors, normals) are parsed.
+  Rational& scratch() noexcept { return scratch_; }
+
  private:
   std::optional<ByteSource> bytes_;  // empty when reading from memory
   std::string source_;
@@ -81,6 +96,10 @@ class LineReader {
   std::size_t begin_ = 0;    // start of the unread data in buffer_
   std::size_t end_ = 0;      // end of the data in buffer_
   std::size_t scanned_ = 0;  // [begin_, scanned_) is known to hold no '\n'
+  std::uint64_t buffer_offset_ = 0;  // input offset of buffer_[0]
+  std::uint64_t line_end_ = 0;
+  std::uint64_t number_bits_ = 0;
+  Rational scratch_;
   bool eof_ = false;
   bool replay_ = false;
   std::string_view last_;
@@ -88,7 +107,9 @@ class LineReader {
 };
 
 /// Splits a line into whitespace-separated tokens; '#' starts a comment that
-/// runs to the end of the line when comments are enabled.
+/// runs to the end of the line when comments are enabled, except inside an
+/// MSVC spelling of a non-finite value ("1.#INF", "-1.#IND", "1.#QNAN"),
+/// which stays one token so that it is refused rather than read as "1.".
 class Tokenizer {
  public:
   explicit Tokenizer(std::string_view line, bool comments = true) : rest_(line), comments_(comments) {}
@@ -104,7 +125,8 @@ class Tokenizer {
 };
 
 /// True for the spellings of NaN and infinity that C and common exporters
-/// produce ("nan", "-nan(ind)", "inf", "+Infinity", "1.#INF", ...).
+/// produce ("nan", "-nan(ind)", "inf", "+Infinity", "1.#INF", "1.#IND",
+/// "1.#QNAN", ...).
 bool looks_non_finite(std::string_view token);
 
 /// Names a value in messages ("x coordinate of vertex 3", "z coordinate of
@@ -118,20 +140,50 @@ struct ValueName {
   [[nodiscard]] std::string str() const;
 };
 
-/// The exact value of a number token, or a message-bearing failure: Error(parse)
-/// naming the line for NaN/inf and junk, Error(limit) for a token longer than
-/// limits.max_number_chars or an exponent beyond max_exponent.
-Rational parse_number(const LineReader& reader, std::string_view token, const ValueName& name);
-/// Three coordinates x y z from the next three tokens of `next()`.
+/// Sets `out` to the exact value of a number token, or fails with a message
+/// naming the line and the value: Error(parse) for NaN/inf and junk,
+/// Error(limit) for a token longer than limits.max_number_chars, an exponent
+/// beyond max_exponent, a numerator or denominator beyond
+/// limits.max_number_bits (refused from the text, before it is built) and
+/// numbers beyond limits.max_number_bits_per_byte in all.
+void parse_number(LineReader& reader, std::string_view token, const ValueName& name, Rational& out);
+/// A value that is checked like a coordinate but not kept (a color, a
+/// normal); with allow_non_finite, NaN and inf spellings pass too (STL
+/// normals of degenerate facets). Returns the value, in reader.scratch().
+const Rational& check_number(LineReader& reader, std::string_view token, const ValueName& name,
+                             bool allow_non_finite = false);
+/// Sets p to the coordinates x y z of the next three tokens of `next()`.
 template <class NextToken>
-Vec3 parse_point(const LineReader& reader, NextToken&& next, const char* element, std::uint64_t index,
+void parse_point(LineReader& reader, NextToken&& next, Vec3& p, const char* element, std::uint64_t index,
                  const char* outer = nullptr, std::uint64_t outer_index = 0) {
-  Vec3 p;
-  p.x = parse_number(reader, next(), {"x coordinate", element, index, outer, outer_index});
-  p.y = parse_number(reader, next(), {"y coordinate", element, index, outer, outer_index});
-  p.z = parse_number(reader, next(), {"z coordinate", element, index, outer, outer_index});
-  return p;
+  parse_number(reader, next(), {"x coordinate", element, index, outer, outer_index}, p.x);
+  parse_number(reader, next(), {"y coordinate", element, index, outer, outer_index}, p.y);
+  parse_number(reader, next(), {"z coordinate", element, index, outer, outer_index}, p.z);
 }
+
+/// The points of a reader, kept in blocks that never move until take(). A
+/// growing std::vector<Vec3> copies every number each time it grows
+/// (gmpxx's mpq_class move constructor is not noexcept), so at that moment
+/// it holds all of them twice; here each number is moved exactly once, into
+/// a vector of the final size, block by block, so the memory in use never
+/// exceeds that of the result by more than a block.
+class PointBuffer {
+ public:
+  /// A new default point at the end.
+  Vec3& append();
+  [[nodiscard]] std::size_t size() const noexcept { return size_; }
+  /// All points in order; the buffer is empty afterwards.
+  std::vector<Vec3> take();
+
+ private:
+  static constexpr std::size_t block_size = 4096;
+  std::vector<std::vector<Vec3>> blocks_;
+  std::size_t size_ = 0;
+};
+
+/// An integer token as typed, for messages (at most 40 characters, so a
+/// saturated value is never shown as 2^63-1).
+std::string typed(std::string_view token);
 
 /// A non-negative decimal integer token (no sign, no exponent); nullopt if the
 /// token is not one; values beyond 2^64-1 saturate to UINT64_MAX.

@@ -83,6 +83,7 @@ PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::stri
   soup.face_offsets.reserve(std::size_t{count} + 1);
   soup.face_indices.reserve(std::size_t{count} * 3);
   std::unordered_map<FloatKey, std::uint32_t, FloatKeyHash> index_of;
+  PointBuffer points;
   for (std::uint32_t t = 0; t < count; ++t) {
     const std::size_t record = header_size + record_size * t;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -98,20 +99,20 @@ PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::stri
         if (bits == 0x80000000u) bits = 0;  // -0 and +0 are the same position
         key.bits[c] = bits;
       }
-      auto [it, inserted] = index_of.try_emplace(key, static_cast<std::uint32_t>(soup.points.size()));
+      auto [it, inserted] = index_of.try_emplace(key, static_cast<std::uint32_t>(points.size()));
       if (inserted) {
-        if (soup.points.size() + 1 > max_vertices)
+        if (points.size() + 1 > max_vertices)
           fail_at(source, record + 12 + 12 * k,
                   "more than " + std::to_string(max_vertices) + " distinct vertices (the limit)",
                   ErrorCategory::limit);
-        soup.points.push_back({rational_from_float(std::bit_cast<float>(key.bits[0])),
-                               rational_from_float(std::bit_cast<float>(key.bits[1])),
-                               rational_from_float(std::bit_cast<float>(key.bits[2]))});
+        Vec3& p = points.append();
+        for (int c = 0; c < 3; ++c) p[c] = rational_from_float(std::bit_cast<float>(key.bits[c]));
       }
       soup.face_indices.push_back(it->second);
     }
     soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
   }
+  soup.points = points.take();
   return soup;
 }
 
@@ -148,6 +149,8 @@ PolygonSoup parse_ascii(LineReader& reader) {
   TokenStream tokens(reader);
   PolygonSoup soup;
   std::unordered_map<Vec3, std::uint32_t> index_of;
+  PointBuffer points;
+  Vec3 p;
   tokens.expect("solid", [] { return std::string("at the start of an ASCII STL"); });
   tokens.skip_rest_of_line();  // the solid's name
   for (;;) {
@@ -165,11 +168,10 @@ PolygonSoup parse_ascii(LineReader& reader) {
     const std::size_t f = soup.num_faces();
     auto name = [f] { return "facet " + std::to_string(f); };
     tokens.expect("normal", [] { return std::string("after 'facet'"); });
-    for (int c = 0; c < 3; ++c) {
-      // The normal is ignored, but must be there; exporters write nan for degenerate facets.
-      t = tokens.next();
-      if (t.empty() || !(try_parse_rational(t, 400) || looks_non_finite(t)))
-        reader.fail(name() + ": normal component " + quote(t) + " is not a number");
+    for (std::uint64_t c = 0; c < 3; ++c) {
+      // The normal is ignored, but must be there and is checked like a
+      // coordinate, except that exporters write nan for degenerate facets.
+      check_number(reader, tokens.next(), {"normal component", "facet", f}, true);
     }
     tokens.expect("outer", [&] { return "after the normal of " + name(); });
     tokens.expect("loop", [] { return std::string("after 'outer'"); });
@@ -181,13 +183,13 @@ PolygonSoup parse_ascii(LineReader& reader) {
         context += " needs 3 vertices)";
         return context;
       });
-      Vec3 p = parse_point(
-          reader, [&] { return tokens.next(); }, "vertex", k, "facet", f);
+      parse_point(
+          reader, [&] { return tokens.next(); }, p, "vertex", k, "facet", f);
       auto it = index_of.find(p);
       if (it == index_of.end()) {
-        check_vertex_limit(reader, soup.points.size() + 1);
-        it = index_of.emplace(p, static_cast<std::uint32_t>(soup.points.size())).first;
-        soup.points.push_back(std::move(p));
+        check_vertex_limit(reader, points.size() + 1);
+        it = index_of.emplace(p, static_cast<std::uint32_t>(points.size())).first;
+        points.append() = std::move(p);
       }
       soup.face_indices.push_back(it->second);
     }
@@ -196,6 +198,7 @@ PolygonSoup parse_ascii(LineReader& reader) {
     check_face_limit(reader, f + 1, soup.face_indices.size());
     soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
   }
+  soup.points = points.take();
   return soup;
 }
 

@@ -1,33 +1,62 @@
 // SPDX-License-Identifier: MIT
 // Exact decimal/fraction parsing and printing. Decimal text is parsed by
-// building the integer of all its digits and scaling by a power of ten, so
-// "0.1" is exactly 1/10 (never the double nearest to it).
+// building the integer of its significant digits and scaling it by a power of
+// ten, so "0.1" is exactly 1/10 (never the double nearest to it); the size of
+// that power is known from the text before it is built (rational_text.hpp).
 #include "cvms/rational.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 #include "cvms/error.hpp"
 #include "exact_double.hpp"
+#include "rational_text.hpp"
 
 namespace cvms {
+namespace detail {
 namespace {
+
+__extension__ using Int128 = __int128;
+__extension__ using Uint128 = unsigned __int128;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-// Parses an unsigned digit run into `out`; returns false if empty.
-bool parse_digits(std::string_view digits, mpz_class& out) {
-  if (digits.empty()) return false;
+// floor(n log2(10)) from below (332192809 / 10^8 < log2(10)), saturating
+// far beyond any cap; the same for log2(5).
+std::uint64_t times_floor(std::uint64_t n, std::uint64_t per_10e8) {
+  constexpr std::uint64_t saturated = gmp_max_bits * 4;
+  if (n < (std::uint64_t{1} << 32)) return n * per_10e8 / 100000000;  // no 128-bit division per token
+  return n > saturated ? saturated : static_cast<std::uint64_t>(n * Uint128{per_10e8} / 100000000);
+}
+std::uint64_t times_log2_10_floor(std::uint64_t n) { return times_floor(n, 332192809); }
+std::uint64_t times_log2_5_floor(std::uint64_t n) { return times_floor(n, 232192809); }
+
+// Sets z to the decimal digits of text (all digits, except a single '.'
+// that is skipped). Up to 19 digits never touch the heap.
+void set_digits(mpz_ptr z, std::string_view digits) {
+  if (digits.size() - (digits.find('.') != std::string_view::npos ? 1 : 0) <= 19) {
+    std::uint64_t value = 0;
+    for (char c : digits)
+      if (c != '.') value = value * 10 + static_cast<std::uint64_t>(c - '0');
+    mpz_set_ui(z, value);
+    return;
+  }
+  std::string nul_terminated;  // mpz_set_str needs one
+  nul_terminated.reserve(digits.size());
   for (char c : digits)
-    if (!is_digit(c)) return false;
-  // mpz_set_str needs a NUL-terminated string.
-  std::string s(digits);
-  return out.set_str(s, 10) == 0;
+    if (c != '.') nul_terminated += c;
+  mpz_set_str(z, nul_terminated.c_str(), 10);
 }
 
-std::optional<Rational> parse_fraction(std::string_view text, std::size_t slash) {
+// The bit length of a number of `count` significant decimal digits, from below.
+std::uint64_t bits_of_digits_at_least(std::uint64_t count) { return times_log2_10_floor(count - 1) + 1; }
+
+NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, const NumberTextLimits& limits,
+                                     Rational& out) {
   std::string_view num = text.substr(0, slash);
   std::string_view den = text.substr(slash + 1);
   bool negative = false;
@@ -35,18 +64,42 @@ std::optional<Rational> parse_fraction(std::string_view text, std::size_t slash)
     negative = num[0] == '-';
     num.remove_prefix(1);
   }
-  mpz_class p, q;
-  if (!parse_digits(num, p) || !parse_digits(den, q) || q == 0) return std::nullopt;
-  Rational r(negative ? mpz_class(-p) : p, q);
-  r.canonicalize();
-  return r;
+  auto all_digits = [](std::string_view digits) {
+    if (digits.empty()) return false;
+    for (char c : digits)
+      if (!is_digit(c)) return false;
+    return true;
+  };
+  if (!all_digits(num) || !all_digits(den)) return {NumberTextStatus::not_a_number};
+  num.remove_prefix(std::min(num.find_first_not_of('0'), num.size()));
+  den.remove_prefix(std::min(den.find_first_not_of('0'), den.size()));
+  if (den.empty()) return {NumberTextStatus::not_a_number};  // q = 0
+  if (!num.empty() && bits_of_digits_at_least(num.size()) > limits.max_bits)
+    return NumberTextResult{NumberTextStatus::numerator_too_large, bits_of_digits_at_least(num.size())};
+  if (bits_of_digits_at_least(den.size()) > limits.max_bits)
+    return NumberTextResult{NumberTextStatus::denominator_too_large, bits_of_digits_at_least(den.size())};
+  mpz_ptr p = out.get_num_mpz_t();
+  mpz_ptr q = out.get_den_mpz_t();
+  set_digits(p, num);
+  set_digits(q, den);
+  // The estimate from below may let a part through that is a few bits over.
+  if (mpz_sizeinbase(p, 2) > limits.max_bits)
+    return NumberTextResult{NumberTextStatus::numerator_too_large, mpz_sizeinbase(p, 2)};
+  if (mpz_sizeinbase(q, 2) > limits.max_bits)
+    return NumberTextResult{NumberTextStatus::denominator_too_large, mpz_sizeinbase(q, 2)};
+  if (negative) mpz_neg(p, p);
+  out.canonicalize();
+  return {};
 }
 
 }  // namespace
 
-std::optional<Rational> try_parse_rational(std::string_view text, long max_exponent) {
-  if (text.empty()) return std::nullopt;
-  if (auto slash = text.find('/'); slash != std::string_view::npos) return parse_fraction(text, slash);
+NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimits& requested,
+                                     Rational& out) {
+  const NumberTextLimits limits{requested.max_exponent, std::min(requested.max_bits, gmp_max_bits)};
+  if (text.empty()) return {NumberTextStatus::not_a_number};
+  if (auto slash = text.find('/'); slash != std::string_view::npos)
+    return parse_fraction_into(text, slash, limits, out);
 
   std::size_t i = 0;
   bool negative = false;
@@ -54,27 +107,24 @@ std::optional<Rational> try_parse_rational(std::string_view text, long max_expon
     negative = text[i] == '-';
     ++i;
   }
-  std::string digits;
-  std::size_t int_start = i;
+  const std::size_t mantissa_start = i;
   while (i < text.size() && is_digit(text[i])) ++i;
-  digits.append(text.substr(int_start, i - int_start));
-  bool has_int = i > int_start;
-  long frac_len = 0;
-  bool has_frac = false;
+  bool has_digits = i > mantissa_start;
+  std::size_t frac_len = 0;
   if (i < text.size() && text[i] == '.') {
     ++i;
-    std::size_t frac_start = i;
+    const std::size_t frac_start = i;
     while (i < text.size() && is_digit(text[i])) ++i;
-    frac_len = static_cast<long>(i - frac_start);
-    has_frac = frac_len > 0;
-    digits.append(text.substr(frac_start, i - frac_start));
+    frac_len = i - frac_start;
+    has_digits = has_digits || frac_len > 0;
   }
-  if (!has_int && !has_frac) return std::nullopt;
+  const std::size_t mantissa_end = i;
+  if (!has_digits) return {NumberTextStatus::not_a_number};
   // The exponent is accumulated saturating at max_exponent + 1, so that no
   // digit string (and no max_exponent up to LONG_MAX) can overflow it.
-  if (max_exponent < 0) max_exponent = 0;
+  const long max_exponent = limits.max_exponent < 0 ? 0 : limits.max_exponent;
   long exponent = 0;
-  bool exponent_too_big = false;
+  bool exponent_too_large = false;
   if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
     ++i;
     bool exp_negative = false;
@@ -82,36 +132,101 @@ std::optional<Rational> try_parse_rational(std::string_view text, long max_expon
       exp_negative = text[i] == '-';
       ++i;
     }
-    std::size_t exp_start = i;
+    const std::size_t exp_start = i;
     while (i < text.size() && is_digit(text[i])) {
       long digit = text[i] - '0';
       if (exponent > max_exponent / 10 || exponent * 10 > max_exponent - digit)
-        exponent_too_big = true;
+        exponent_too_large = true;
       else
         exponent = exponent * 10 + digit;
       ++i;
     }
-    if (i == exp_start) return std::nullopt;
+    if (i == exp_start) return {NumberTextStatus::not_a_number};
     if (exp_negative) exponent = -exponent;
   }
-  if (i != text.size()) return std::nullopt;
-  if (exponent_too_big) return std::nullopt;
+  if (i != text.size()) return {NumberTextStatus::not_a_number};
+  if (exponent_too_large) return {NumberTextStatus::exponent_too_large};
 
-  mpz_class mantissa;
-  if (!parse_digits(digits, mantissa)) return std::nullopt;
-  if (negative) mantissa = -mantissa;
-  // value = mantissa * 10^scale. |exponent| <= max_exponent and frac_len is
-  // bounded by the text length, so this cannot overflow; a negative scale
-  // costs memory proportional to the text plus max_exponent, which is the
-  // bound we promise.
-  if (exponent <= std::numeric_limits<long>::min() + frac_len) return std::nullopt;  // absurd max_exponent
-  long scale = exponent - frac_len;
-  if (mantissa == 0) return Rational(0);
-  mpz_class power;
-  mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));
-  Rational r = scale >= 0 ? Rational(mantissa * power) : Rational(mantissa, power);
-  r.canonicalize();
-  return r;
+  // The significant digits [first, last] (a '.' may sit among them); the
+  // zeros after the last one only scale the value.
+  std::string_view mantissa = text.substr(mantissa_start, mantissa_end - mantissa_start);
+  const std::size_t first = mantissa.find_first_not_of("0.");
+  if (first == std::string_view::npos) {
+    out = 0;
+    return {};
+  }
+  const std::size_t last = mantissa.find_last_not_of("0.");
+  const std::size_t dot = mantissa.find('.');
+  std::string_view significant = mantissa.substr(first, last + 1 - first);
+  const bool dot_inside = dot != std::string_view::npos && dot > first && dot < last;
+  const std::uint64_t digits = significant.size() - (dot_inside ? 1 : 0);
+  // Zeros after the last significant digit, counted as digits of the mantissa.
+  std::uint64_t trailing = mantissa.size() - 1 - last;
+  if (dot != std::string_view::npos && dot > last) --trailing;
+  // value = M * 10^scale, M the significant digits as an integer.
+  const Int128 scale = Int128{exponent} - static_cast<Int128>(frac_len) + static_cast<Int128>(trailing);
+
+  mpz_ptr num = out.get_num_mpz_t();
+  mpz_ptr den = out.get_den_mpz_t();
+  if (scale >= 0) {
+    const std::uint64_t shift =
+        scale > Int128{gmp_max_bits} ? gmp_max_bits : static_cast<std::uint64_t>(scale);
+    const std::uint64_t at_least = times_log2_10_floor(digits - 1 + shift) + 1;
+    if (at_least > limits.max_bits) return NumberTextResult{NumberTextStatus::numerator_too_large, at_least};
+    set_digits(num, significant);
+    if (shift > 0) {
+      mpz_class power;
+      mpz_ui_pow_ui(power.get_mpz_t(), 10, shift);
+      mpz_mul(num, num, power.get_mpz_t());
+    }
+    if (mpz_sizeinbase(num, 2) > limits.max_bits)
+      return NumberTextResult{NumberTextStatus::numerator_too_large, mpz_sizeinbase(num, 2)};
+    mpz_set_ui(den, 1);
+  } else {
+    // The reduced denominator 2^(k-a) 5^(k-b) has at least k + 1 bits, and
+    // as 10^k / gcd(M, 10^k) >= 10^k / M at least those of 10^(k-digits).
+    const std::uint64_t k = -scale > Int128{gmp_max_bits} ? gmp_max_bits : static_cast<std::uint64_t>(-scale);
+    const std::uint64_t den_early = std::max(k + 1, k > digits ? times_log2_10_floor(k - digits) + 1 : 0);
+    if (den_early > limits.max_bits)
+      return NumberTextResult{NumberTextStatus::denominator_too_large, den_early};
+    set_digits(num, significant);  // no bigger than the text
+    // M is not a multiple of 10: at most one of 2 and 5 divides it.
+    const std::uint64_t a = std::min<std::uint64_t>(mpz_scan1(num, 0), k);
+    std::uint64_t b = 0;
+    if (a > 0) {
+      mpz_tdiv_q_2exp(num, num, a);
+    } else if (mpz_divisible_ui_p(num, 5)) {
+      mpz_class five(5);
+      b = mpz_remove(num, num, five.get_mpz_t());
+      if (b > k) {  // keep the fives the denominator cannot take
+        mpz_class extra;
+        mpz_ui_pow_ui(extra.get_mpz_t(), 5, b - k);
+        mpz_mul(num, num, extra.get_mpz_t());
+        b = k;
+      }
+    }
+    const std::uint64_t den_at_least = (k - a) + times_log2_5_floor(k - b) + 1;
+    if (den_at_least > limits.max_bits)
+      return NumberTextResult{NumberTextStatus::denominator_too_large, den_at_least};
+    if (mpz_sizeinbase(num, 2) > limits.max_bits)
+      return NumberTextResult{NumberTextStatus::numerator_too_large, mpz_sizeinbase(num, 2)};
+    mpz_ui_pow_ui(den, 5, k - b);
+    mpz_mul_2exp(den, den, k - a);
+    if (mpz_sizeinbase(den, 2) > limits.max_bits)
+      return NumberTextResult{NumberTextStatus::denominator_too_large, mpz_sizeinbase(den, 2)};
+  }
+  if (negative) mpz_neg(num, num);
+  return {};  // in lowest terms by construction
+}
+
+}  // namespace detail
+
+std::optional<Rational> try_parse_rational(std::string_view text, long max_exponent) {
+  Rational value;
+  if (detail::parse_rational_into(text, {max_exponent, detail::gmp_max_bits}, value).status !=
+      detail::NumberTextStatus::ok)
+    return std::nullopt;
+  return value;
 }
 
 Rational parse_rational(std::string_view text) {

@@ -114,8 +114,12 @@ void check_soup(const PolygonSoup& soup, const ReadLimits& limits, const char* r
       if (v >= soup.points.size()) finding(who + "face index out of range");
   }
   for (const Vec3& p : soup.points)
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
       if (!is_canonical(p[i])) finding(who + "non-canonical rational coordinate");
+      if (mpz_sizeinbase(p[i].get_num_mpz_t(), 2) > limits.max_number_bits ||
+          mpz_sizeinbase(p[i].get_den_mpz_t(), 2) > limits.max_number_bits)
+        finding(who + "a coordinate beyond max_number_bits");
+    }
 }
 
 // Rough size of the exact text of a soup, to keep round trips of inputs like
