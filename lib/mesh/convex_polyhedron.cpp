@@ -53,8 +53,9 @@
 #include <utility>
 
 #include "cvms/error.hpp"
-#include "filtered_predicates.hpp"
 #include "dyadic.hpp"
+#include "element_names.hpp"
+#include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
@@ -62,11 +63,8 @@ namespace {
 
 constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
 
-std::string str(std::uint32_t i) { return std::to_string(i); }
-
-std::string edge_name(std::uint32_t a, std::uint32_t b) {
-  return "edge (" + str(std::min(a, b)) + ", " + str(std::max(a, b)) + ")";
-}
+using detail::edge_name;
+using detail::str;
 
 [[noreturn]] void not_convex(const std::string& message) { throw Error(ErrorCategory::not_convex, message); }
 

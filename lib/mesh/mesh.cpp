@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "cvms/error.hpp"
+#include "element_names.hpp"
 
 namespace cvms {
 namespace {
@@ -17,11 +18,8 @@ constexpr std::uint32_t invalid = std::numeric_limits<std::uint32_t>::max();
 
 [[noreturn]] void fail(const std::string& message) { throw Error(ErrorCategory::topology, message); }
 
-std::string str(std::uint32_t i) { return std::to_string(i); }
-
-std::string edge_name(std::uint32_t a, std::uint32_t b) {
-  return "edge (" + str(std::min(a, b)) + ", " + str(std::max(a, b)) + ")";
-}
+using detail::edge_name;
+using detail::str;
 
 }  // namespace
 
