@@ -46,7 +46,6 @@
 #include "cvms/convex_polyhedron.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
 #include <set>
 #include <string>
@@ -56,13 +55,13 @@
 #include "dyadic.hpp"
 #include "element_names.hpp"
 #include "filtered_predicates.hpp"
+#include "no_index.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
 namespace {
 
-constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-
+using detail::no_index;
 using detail::edge_name;
 using detail::str;
 
@@ -302,10 +301,10 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   std::vector<std::uint32_t> region(nf);
   std::vector<std::uint32_t> region_first_face;
   {
-    std::vector<std::uint32_t> id_of_root(nf, none);
+    std::vector<std::uint32_t> id_of_root(nf, no_index);
     for (std::uint32_t f = 0; f < nf; ++f) {
       const std::uint32_t r = regions_uf.find(f);
-      if (id_of_root[r] == none) {
+      if (id_of_root[r] == no_index) {
         id_of_root[r] = static_cast<std::uint32_t>(region_first_face.size());
         region_first_face.push_back(f);
       }
@@ -381,7 +380,7 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   // 7. The result: extreme vertices in input order, facets ordered by their
   // smallest input face, each starting at its smallest vertex index.
   PolygonSoup out;
-  std::vector<std::uint32_t> new_index(nv, none);
+  std::vector<std::uint32_t> new_index(nv, no_index);
   for (std::uint32_t v = 0; v < nv; ++v)
     if (extreme(v)) {
       new_index[v] = static_cast<std::uint32_t>(out.points.size());

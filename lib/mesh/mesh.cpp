@@ -10,12 +10,12 @@
 
 #include "cvms/error.hpp"
 #include "element_names.hpp"
+#include "no_index.hpp"
 
 namespace cvms {
 namespace {
 
-constexpr std::uint32_t invalid = std::numeric_limits<std::uint32_t>::max();
-
+using detail::no_index;
 [[noreturn]] void fail(const std::string& message) { throw Error(ErrorCategory::topology, message); }
 
 using detail::edge_name;
@@ -54,7 +54,7 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points) {
          " faces");
   // Halfedge ids go up to the number of corners; keep every id below the
   // invalid marker, and edge ids (h >> 1) well defined.
-  if (soup.points.size() >= invalid || indices.size() >= (std::size_t{1} << 31) || num_faces >= invalid)
+  if (soup.points.size() >= no_index || indices.size() >= (std::size_t{1} << 31) || num_faces >= no_index)
     throw Error(ErrorCategory::limit,
                 "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) + " points, " +
                     std::to_string(indices.size()) + " face corners");
@@ -62,7 +62,7 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points) {
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
 
   // Faces: size, range, repeated vertices. stamp[v] is the last face using v.
-  std::vector<std::uint32_t> stamp(n, invalid);
+  std::vector<std::uint32_t> stamp(n, no_index);
   for (std::uint32_t f = 0; f < num_faces; ++f) {
     const std::uint32_t deg = offsets[f + 1] - offsets[f];
     if (deg < 3) fail("face " + str(f) + " has " + str(deg) + " vertices (at least 3 are needed)");
@@ -75,7 +75,7 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points) {
     }
   }
   for (std::uint32_t v = 0; v < n; ++v)
-    if (stamp[v] == invalid) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
+    if (stamp[v] == no_index) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
 
   if (check_points) {
     // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
@@ -213,7 +213,7 @@ void Mesh::validate() const {
   if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
     fail("validate: halfedge arrays have inconsistent sizes");
   if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
-  if (nh >= invalid || positions_.size() >= invalid || face_he_.size() >= invalid)
+  if (nh >= no_index || positions_.size() >= no_index || face_he_.size() >= no_index)
     fail("validate: element counts exceed 32-bit handles");
   const std::uint32_t H = num_halfedges(), V = num_vertices(), F = num_faces();
   if (V == 0 || F == 0) fail("validate: empty mesh");
@@ -236,7 +236,7 @@ void Mesh::validate() const {
   }
   // Faces: since next is a permutation that keeps the face, the face cycles
   // cover every halfedge exactly once iff their lengths sum to H.
-  std::vector<std::uint32_t> stamp(V, invalid);
+  std::vector<std::uint32_t> stamp(V, no_index);
   std::uint64_t total = 0;
   for (std::uint32_t f = 0; f < F; ++f) {
     const HalfedgeId start = face_he_[f];
