@@ -51,6 +51,7 @@
 #include <string>
 #include <utility>
 
+#include "angular_order.hpp"
 #include "cvms/error.hpp"
 #include "dyadic.hpp"
 #include "element_names.hpp"
@@ -105,15 +106,12 @@ PolygonCheck check_convex_polygon(const std::vector<const Vec3*>& p, const Vec3&
   std::vector<Vec3> e(k);
   for (std::size_t j = 0; j < k; ++j) e[j] = *p[corners[(j + 1) % k]] - *p[corners[j]];
   const Vec3& ref = e[0];
-  // Half 0: angle in [0, pi) from ref, half 1: [pi, 2 pi).
+  // Angles about n from ref (lib/predicates/angular_order.hpp).
   auto half = [&](const Vec3& v) {
-    const Sign s = sign_triple(n, ref, v);
-    return (s == Sign::positive || (s == Sign::zero && sign_dot(ref, v) == Sign::positive)) ? 0 : 1;
+    return detail::half_turn(sign_triple(n, ref, v), [&] { return sign_dot(ref, v); });
   };
   auto angle_less = [&](const Vec3& a, const Vec3& b) {
-    const int ha = half(a), hb = half(b);
-    if (ha != hb) return ha < hb;
-    return sign_triple(n, a, b) == Sign::positive;
+    return detail::compare_angle(half(a), half(b), [&] { return sign_triple(n, a, b); }) == Sign::negative;
   };
   std::size_t descents = 0;
   for (std::size_t j = 0; j < k; ++j)
