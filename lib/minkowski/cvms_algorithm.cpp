@@ -28,18 +28,17 @@
 #include "cvms_algorithm.hpp"
 
 #include <algorithm>
-#include <exception>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "arc_trace.hpp"
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
-#include "stitch.hpp"
 #include "polyhedron_builder.hpp"
+#include "stitch.hpp"
+#include "worker.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -218,21 +217,10 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   // in the order one thread gives.
   SumFacetBuilder tracer_out(a, b);
   Stats tracer_stats;
-  PredicateCounters tracer_predicates;
-  std::exception_ptr tracer_failure;
-  std::jthread tracer;  // after what it writes: destroyed (joined) first
+  Worker tracer;  // after what it writes: destroyed (joined) first
   if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
       std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
-    tracer = std::jthread([&] {
-      try {
-        const PredicateCounters before = predicate_counters();
-        edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats);
-        const PredicateCounters& after = predicate_counters();
-        tracer_predicates = {after.filtered - before.filtered, after.exact - before.exact};
-      } catch (...) {
-        tracer_failure = std::current_exception();
-      }
-    });
+    tracer.start([&] { edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats); });
   }
 
   // Step 2: corner facets. The contributing vertices of a facet of B that
@@ -277,14 +265,10 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
   if (tracer.joinable()) {
-    tracer.join();
-    if (tracer_failure) std::rethrow_exception(tracer_failure);
+    tracer.join();  // its predicates count as this thread's
     out.append(tracer_out);
     stats.edge_candidates += tracer_stats.edge_candidates;
     stats.edge_facets += tracer_stats.edge_facets;
-    // Evaluated on this call's behalf: counted as if on this thread.
-    predicate_counters().filtered += tracer_predicates.filtered;
-    predicate_counters().exact += tracer_predicates.exact;
   } else if (research.edge_facet_search == EdgeFacetSearch::paper) {
     const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
