@@ -150,20 +150,10 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
   }
 }
 
-}  // namespace
-
-ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          const ResearchOptions& research, Stats& stats) {
-  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
-  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
-}
-
-SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            const ResearchOptions& research, Stats& stats) {
-  const Mesh& ma = a.mesh();
-  const Mesh& mb = b.mesh();
-  const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
-  if (!walk_vertices && research.contributing_vertex_search != ContributingVertexSearch::scan) {
+// The search modes are plain enums a caller may set to anything.
+void check_search_modes(const ResearchOptions& research) {
+  if (research.contributing_vertex_search != ContributingVertexSearch::walk &&
+      research.contributing_vertex_search != ContributingVertexSearch::scan) {
     throw Error(ErrorCategory::invalid_argument,
                 "minkowski_sum: unknown contributing vertex search " +
                     std::to_string(static_cast<int>(research.contributing_vertex_search)));
@@ -174,22 +164,38 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
                 "minkowski_sum: unknown edge facet search " +
                     std::to_string(static_cast<int>(research.edge_facet_search)));
   }
-  SumFacetBuilder out(a, b);
-  std::vector<VertexId> cv;
+}
 
-  // Step 1: translated facets. partner[f_B] is the facet of A with the same
-  // normal, if any (then f_B contributes with it, Property 2).
-  ContributingVertices cv_a(a.num_facets());
-  if (walk_vertices) {
-    contributing_vertices_walk(a, b, {}, cv_a);
-  } else {
-    for (FaceId fa : ma.faces()) {
-      maximising_vertices(b, detail::normal_ref(a, fa), cv);
-      cv_a.append(cv);
-    }
+// The contributing vertices of every facet of p in q, by walking or by the
+// paper's scan. partner[f], if partner is non-empty and it is valid, is the
+// facet of q with f's normal: its vertices are the list, with no search.
+ContributingVertices find_contributing_vertices(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
+                                                std::span<const FaceId> partner, bool walk) {
+  ContributingVertices cv(p.num_facets());
+  if (walk) {
+    contributing_vertices_walk(p, q, partner, cv);
+    return cv;
   }
+  std::vector<VertexId> list;
+  for (FaceId f : p.mesh().faces()) {
+    const FaceId g = partner.empty() ? FaceId() : partner[f.index()];
+    if (g.is_valid()) {
+      sorted_facet_vertices(q, g, list);
+    } else {
+      maximising_vertices(q, detail::normal_ref(p, f), list);
+    }
+    cv.append(list);
+  }
+  return cv;
+}
+
+// Step 1: translated facets. Returns partner: partner[f_B] is the facet of A
+// with the same normal, if any (then f_B contributes with it, Property 2).
+std::vector<FaceId> add_translated_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                                          const ContributingVertices& cv_a, SumFacetBuilder& out,
+                                          Stats& stats) {
   std::vector<FaceId> partner(b.num_facets());
-  for (FaceId fa : ma.faces()) {
+  for (FaceId fa : a.mesh().faces()) {
     const std::span<const VertexId> c = cv_a.of(fa);
     if (c.size() == 1) {
       out.add_facet_plus_vertex(Operand::a, fa, c[0]);
@@ -210,37 +216,13 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
     }
     ++stats.translated_facets;
   }
+  return partner;
+}
 
-  // Step 3 with the arc walk needs only the contributing vertices of A's
-  // facets: with threads > 1, a worker traces the edge facets into a builder
-  // of its own during step 2, and they are appended after step 2's facets,
-  // in the order one thread gives.
-  SumFacetBuilder tracer_out(a, b);
-  Stats tracer_stats;
-  Worker tracer;  // after what it writes: destroyed (joined) first
-  if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
-      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
-    tracer.start([&] { edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats); });
-  }
-
-  // Step 2: corner facets. The contributing vertices of a facet of B that
-  // has a partner are the vertices of the partner (the face of A supporting
-  // A in that direction); we record them for Property 1 without a search.
-  ContributingVertices cv_b(b.num_facets());
-  if (walk_vertices) {
-    contributing_vertices_walk(b, a, partner, cv_b);
-  } else {
-    for (FaceId fb : mb.faces()) {
-      const FaceId fa = partner[fb.index()];
-      if (fa.is_valid()) {
-        sorted_facet_vertices(a, fa, cv);
-      } else {
-        maximising_vertices(a, detail::normal_ref(b, fb), cv);
-      }
-      cv_b.append(cv);
-    }
-  }
-  for (FaceId fb : mb.faces()) {
+// Step 2: corner facets, from the facets of B without a partner.
+void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv_b,
+                       std::span<const FaceId> partner, SumFacetBuilder& out, Stats& stats) {
+  for (FaceId fb : b.mesh().faces()) {
     if (partner[fb.index()].is_valid()) {
       ++stats.contributing_ties;
       continue;
@@ -262,6 +244,42 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
     }
     ++stats.corner_facets;
   }
+}
+
+}  // namespace
+
+ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                          const ResearchOptions& research, Stats& stats) {
+  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
+  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
+}
+
+SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                            const ResearchOptions& research, Stats& stats) {
+  check_search_modes(research);
+  const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
+  SumFacetBuilder out(a, b);
+
+  const ContributingVertices cv_a = find_contributing_vertices(a, b, {}, walk_vertices);
+  const std::vector<FaceId> partner = add_translated_facets(a, b, cv_a, out, stats);
+
+  // Step 3 with the arc walk needs only the contributing vertices of A's
+  // facets: with threads > 1, a worker traces the edge facets into a builder
+  // of its own during step 2, and they are appended after step 2's facets,
+  // in the order one thread gives.
+  SumFacetBuilder tracer_out(a, b);
+  Stats tracer_stats;
+  Worker tracer;  // after what it writes: destroyed (joined) first
+  if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
+      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
+    tracer.start([&] { edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats); });
+  }
+
+  // Step 2. The contributing vertices of a facet of B that has a partner are
+  // the vertices of the partner (the face of A supporting A in that
+  // direction); we record them for Property 1 without a search.
+  const ContributingVertices cv_b = find_contributing_vertices(b, a, partner, walk_vertices);
+  add_corner_facets(b, cv_b, partner, out, stats);
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
   if (tracer.joinable()) {
@@ -276,7 +294,6 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   } else {
     edge_facets_walk(a, b, cv_a, out, stats);
   }
-
   return out;
 }
 
