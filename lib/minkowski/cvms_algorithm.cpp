@@ -55,25 +55,20 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
 
 // Step 3 with the paper's search (Section 4.3, Eqs. 4 and 5), decided exactly.
 //
-// Conventions. For a halfedge h of a convex polyhedron with d = to(h) -
-// from(h), n1 the normal of face(h) (on its left) and n2 the normal of
-// face(twin(h)), cross(n1, n2) is a positive multiple of d: the Gaussian arc
-// of the edge runs from n1 to n2 counterclockwise about d. A direction x on
-// the great circle of that arc (x perpendicular to d) is strictly inside the
-// arc iff det[n1, x, d] > 0 and det[x, n2, d] > 0 (paper Eq. 9 with the arc's
-// pole d in place of cross(n1, n2)).
+// Conventions (lib/minkowski/arc_crossing.hpp). For a halfedge h with
+// d = to(h) - from(h), n1 the normal of face(h) and n2 that of
+// face(twin(h)), the Gaussian arc of the edge runs from n1 to n2
+// counterclockwise about d.
 //
 // The exact test. e_A + e_B is a facet of S iff the arcs cross at a point
-// interior to both. The great circles of the arcs are perpendicular to d_A
-// and d_B, so they meet at +-n with n = cross(d_A, d_B) (n = 0: parallel
-// edges, same great circle, no edge facet). Using a x (b x c) = b<a,c> -
-// c<a,b> and <n1_B, d_B> = <n2_B, d_B> = 0:
-//   det[n1_B, n, d_B] = -|d_B|^2 <n1_B, d_A>,  det[n, n2_B, d_B] = |d_B|^2 <n2_B, d_A>,
-// so n is strictly inside the arc of h_B iff face(h_B) is strictly visible
-// from d_A (<n1_B, d_A> < 0) and face(twin(h_B)) strictly invisible
-// (<n2_B, d_A> > 0, paper Eq. 4). Hence the candidates are exactly the
-// horizon edges of B, oriented so that the invisible facet is on the right,
-// with n = cross(d_A, d_B) as the candidate outward normal; the paper's
+// interior to both. The great circles of the arcs meet at +-n with
+// n = cross(d_A, d_B) (n = 0: parallel edges, same great circle, no edge
+// facet). By the reduction of Eq. 9 in arc_crossing.hpp (with e = d_A), n is
+// strictly inside the arc of h_B iff face(h_B) is strictly visible from d_A
+// (<n1_B, d_A> < 0) and face(twin(h_B)) strictly invisible (<n2_B, d_A> > 0,
+// paper Eq. 4). Hence the candidates are exactly the horizon edges of B,
+// oriented so that the invisible facet is on the right, with
+// n = cross(d_A, d_B) as the candidate outward normal; the paper's
 // normal-orientation criterion (Eq. 5, here det[n1_A, n, d_A] > 0 and
 // det[n, n2_A, d_A] > 0; the paper writes "< 0" with e_A oriented as
 // cross(n2_A, n1_A)) then decides whether n is strictly inside the arc
