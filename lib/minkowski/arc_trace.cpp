@@ -50,21 +50,13 @@
 #include "arc_trace.hpp"
 
 #include <algorithm>
-#include <string>
 
 #include "contributing_vertices.hpp"
-#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
-
-[[noreturn]] void inconsistent(HalfedgeId ha, const char* what) {
-  throw Error(ErrorCategory::invalid_argument,
-              "minkowski_sum: operands are not valid ConvexPolyhedra: the Gaussian arc walk of edge " +
-                  std::to_string(Mesh::edge(ha).index()) + " of A " + what);
-}
 
 // The halfedge of f's boundary from u to w, or invalid.
 HalfedgeId halfedge_between(const Mesh& m, FaceId f, VertexId u, VertexId w) {
@@ -102,16 +94,19 @@ WalkPosition start_of_walk(const ConvexPolyhedron& a, HalfedgeId ha, const Conve
     } else {
       // The edge is parallel to d_A: G runs along its arc, from its facet
       // point on the left towards the end reached moving ccw about d_A.
+      // (Two maximisers are the ends of the edge of B supporting B in
+      // direction n1, so h is found.)
       HalfedgeId h;
       for (HalfedgeId g : mb.outgoing_halfedges(c1[0]))
         if (mb.to(g) == c1[1]) h = g;
-      if (!h.is_valid()) inconsistent(ha, "starts on an edge of B that does not exist");
       // The arc of h runs from n(face(h)) to n(face(twin(h))) ccw about d_h.
       at.event = sign_dot(Vec3Ref{d, d_approx}, da) == Sign::positive ? mb.face(Mesh::twin(h)) : mb.face(h);
     }
   } else {
+    // Three or more maximisers span the facet of B supporting B in direction
+    // n1 (an edge has only two vertices, all being extreme): its primitive
+    // normal is n1's, and it is incident to c1[0].
     at.event = facet_with_normal(b, c1[0], a.normal(f1));
-    if (!at.event.is_valid()) inconsistent(ha, "starts at a facet point that B does not have");
   }
   return at;
 }
@@ -176,12 +171,11 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
   const ApproxVec3 da_approx = ApproxVec3::of(da);
   const Vec3Ref da_ref{da, da_approx};
   auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
-  if (c1.empty() || c2.empty()) inconsistent(ha, "has no contributing vertices");
 
+  // The walk ends: it only moves forward along G (each exit is unique, see
+  // the file comment), past finitely many events, and stops in c2's region.
   WalkPosition at = start_of_walk(a, ha, b, c1, da_ref);
-  const std::uint64_t limit = std::uint64_t{mb.num_halfedges()} + mb.num_faces() + 4u;
-  for (std::uint64_t step = 0;; ++step) {
-    if (step > limit) inconsistent(ha, "does not reach its end");
+  for (;;) {
     ++steps;
     if (at.event.is_valid()) {
       const FacetMaximisers m = maximisers_along_tangent(b, at.event, da);
@@ -189,17 +183,19 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
         at = {m.best, FaceId()};
       } else {
         // An edge of F parallel to d_A: G runs along its arc to the facet
-        // point of the facet on its other side.
+        // point of the facet on its other side. (A linear function on the
+        // strictly convex polygon F is maximal at a corner or on a side, so
+        // best and tie are the ends of a side and h is found.)
         if (in_c2(m.best) || in_c2(m.tie)) return;
         const HalfedgeId h = halfedge_between(mb, at.event, m.best, m.tie);
-        if (!h.is_valid()) inconsistent(ha, "meets a facet of B with two non-adjacent tied vertices");
         at.event = mb.face(Mesh::twin(h));
         continue;
       }
     }
     if (in_c2(at.u)) return;
+    // G passes through the interior of u's normal cone here, so the exit
+    // exists (file comment).
     const ConeExit exit = leave_normal_cone(b, at.u, da_ref);
-    if (!exit.h.is_valid()) inconsistent(ha, "finds no way out of the normal cone of a vertex of B");
     if (exit.crossing) {
       out.push_back(Mesh::twin(exit.h));
       at.u = mb.to(exit.h);

@@ -198,13 +198,10 @@ std::vector<FaceId> add_translated_facets(const ConvexPolyhedron& a, const Conve
       out.add_facet_plus_edge(Operand::a, fa, c[0], c[1]);
       ++stats.contributing_ties;
     } else {
+      // Three or more maximisers span the facet of B supporting B in the
+      // direction of n(fa) (an edge has only two vertices, all being
+      // extreme): its primitive normal is n(fa), and it is incident to c[0].
       const FaceId fb = facet_with_normal(b, c[0], a.normal(fa));
-      if (!fb.is_valid()) {
-        throw Error(ErrorCategory::invalid_argument,
-                    "minkowski_sum: operand B is not a valid ConvexPolyhedron: facet " +
-                        std::to_string(fa.index()) +
-                        " of A has >= 3 contributing vertices but B has no facet with its normal");
-      }
       partner[fb.index()] = fa;
       out.add_facet_plus_facet(fa, fb);
       ++stats.contributing_ties;
@@ -222,20 +219,14 @@ void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv
       ++stats.contributing_ties;
       continue;
     }
+    // One or two contributing vertices: three or more would mean a facet of
+    // A with the same (primitive) normal, which step 1 paired with fb.
     const std::span<const VertexId> c = cv_b.of(fb);
     if (c.size() == 1) {
       out.add_facet_plus_vertex(Operand::b, fb, c[0]);
-    } else if (c.size() == 2) {
+    } else {
       out.add_facet_plus_edge(Operand::b, fb, c[0], c[1]);
       ++stats.contributing_ties;
-    } else {
-      // >= 3 contributing vertices means a facet of A with the same (primitive)
-      // normal, which step 1 paired with this facet: only an operand that
-      // breaks the ConvexPolyhedron guarantees gets here.
-      throw Error(ErrorCategory::invalid_argument,
-                  "minkowski_sum: operand A is not a valid ConvexPolyhedron: facet " +
-                      std::to_string(fb.index()) +
-                      " of B has >= 3 contributing vertices but A has no facet with its normal");
     }
     ++stats.corner_facets;
   }

@@ -53,12 +53,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "arc_crossing.hpp"
 #include "contributing_vertices.hpp"
-#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 #include "stitch.hpp"
@@ -97,8 +95,6 @@ struct EdgeArcs {
   [[nodiscard]] std::size_t size() const noexcept { return halfedges.size(); }
   [[nodiscard]] Vec3Ref pole(std::size_t i) const noexcept { return {poles[i], pole_approx[i]}; }
 };
-
-const char* name_of(Operand which) { return which == Operand::a ? "A" : "B"; }
 
 // Case 1 (Eqs. 6-7).
 void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
@@ -154,16 +150,10 @@ void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
   std::vector<VertexId> cv;
   for (FaceId f : p.mesh().faces()) {
     if (loc[f.index()].where != Location::unknown) continue;
+    // One maximiser: two or more would put the facet point on an arc or a
+    // facet point of q (the directions maximised by an edge of q are its
+    // open arc, by a facet its facet point), where case 1 or 2 located it.
     maximising_vertices(q, detail::normal_ref(p, f), cv);
-    if (cv.size() != 1) {
-      // Two or more maximisers put the facet point on an arc or a facet
-      // point of q, which cases 1 and 2 would have found for a valid operand.
-      throw Error(ErrorCategory::invalid_argument,
-                  std::string("minkowski_sum: operands are not valid ConvexPolyhedra: facet ") +
-                      std::to_string(f.index()) + " of " + name_of(which) + " has " +
-                      std::to_string(cv.size()) +
-                      " contributing vertices but lies on no facet point or edge arc of the other operand");
-    }
     loc[f.index()] = {Location::in_vertex_region, cv[0].index()};
     out.add_facet_plus_vertex(which, f, cv[0]);
     ++(which == Operand::a ? stats.translated_facets : stats.corner_facets);
