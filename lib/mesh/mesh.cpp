@@ -288,74 +288,82 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points) {
   return m;
 }
 
-void Mesh::validate() const {
-  const std::size_t nh = he_to_.size();
-  if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
-    fail("validate: halfedge arrays have inconsistent sizes");
-  if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
-  if (nh >= no_index || positions_.size() >= no_index || face_he_.size() >= no_index)
-    fail("validate: element counts exceed 32-bit handles");
-  const std::uint32_t H = num_halfedges(), V = num_vertices(), F = num_faces();
-  if (V == 0 || F == 0) fail("validate: empty mesh");
+namespace {
 
+// Every stored reference in range, and next, prev, face and to consistent.
+void check_halfedge_links(const Mesh& m) {
+  const std::uint32_t H = m.num_halfedges(), V = m.num_vertices(), F = m.num_faces();
   for (std::uint32_t i = 0; i < H; ++i) {
     const HalfedgeId h(i);
-    if (to(h).index() >= V) fail("validate: halfedge " + str(i) + " points to an invalid vertex");
-    if (next(h).index() >= H || prev(h).index() >= H)
+    if (m.to(h).index() >= V) fail("validate: halfedge " + str(i) + " points to an invalid vertex");
+    if (m.next(h).index() >= H || m.prev(h).index() >= H)
       fail("validate: halfedge " + str(i) + " has an invalid next or prev");
-    if (face(h).index() >= F) fail("validate: halfedge " + str(i) + " has no valid face (open surface)");
+    if (m.face(h).index() >= F) fail("validate: halfedge " + str(i) + " has no valid face (open surface)");
   }
   for (std::uint32_t i = 0; i < H; ++i) {
     const HalfedgeId h(i);
-    if (prev(next(h)) != h || next(prev(h)) != h)
+    if (m.prev(m.next(h)) != h || m.next(m.prev(h)) != h)
       fail("validate: halfedge " + str(i) + ": next and prev disagree");
-    if (face(next(h)) != face(h))
+    if (m.face(m.next(h)) != m.face(h))
       fail("validate: halfedge " + str(i) + " and its next lie in different faces");
-    if (from(next(h)) != to(h)) fail("validate: halfedge " + str(i) + ": next does not start where it ends");
-    if (from(h) == to(h)) fail("validate: halfedge " + str(i) + " is a loop at vertex " + str(to(h).index()));
+    if (m.from(m.next(h)) != m.to(h))
+      fail("validate: halfedge " + str(i) + ": next does not start where it ends");
+    if (m.from(h) == m.to(h))
+      fail("validate: halfedge " + str(i) + " is a loop at vertex " + str(m.to(h).index()));
   }
-  // Faces: since next is a permutation that keeps the face, the face cycles
-  // cover every halfedge exactly once iff their lengths sum to H.
-  std::vector<std::uint32_t> stamp(V, no_index);
+}
+
+// Faces: since next is a permutation that keeps the face, the face cycles
+// cover every halfedge exactly once iff their lengths sum to H.
+void check_face_cycles(const Mesh& m) {
+  const std::uint32_t H = m.num_halfedges(), F = m.num_faces();
+  std::vector<std::uint32_t> stamp(m.num_vertices(), no_index);
   std::uint64_t total = 0;
   for (std::uint32_t f = 0; f < F; ++f) {
-    const HalfedgeId start = face_he_[f];
-    if (start.index() >= H || face(start) != FaceId(f))
+    const HalfedgeId start = m.halfedge(FaceId(f));
+    if (start.index() >= H || m.face(start) != FaceId(f))
       fail("validate: face " + str(f) + " has an invalid stored halfedge");
     HalfedgeId h = start;
     std::uint32_t len = 0;
     do {
-      const std::uint32_t v = to(h).index();
+      const std::uint32_t v = m.to(h).index();
       if (stamp[v] == f) fail("validate: face " + str(f) + " visits vertex " + str(v) + " twice");
       stamp[v] = f;
       ++len;
-      h = next(h);
+      h = m.next(h);
     } while (h != start && len <= H);
     if (h != start) fail("validate: face " + str(f) + " has no closed cycle");
     if (len < 3) fail("validate: face " + str(f) + " has fewer than 3 halfedges");
     total += len;
   }
   if (total != H) fail("validate: some face has more than one halfedge cycle");
-  // Vertex fans, likewise: twin(prev(.)) permutes the halfedges leaving a vertex.
-  total = 0;
+}
+
+// Vertex fans, likewise: twin(prev(.)) permutes the halfedges leaving a vertex.
+void check_vertex_fans(const Mesh& m) {
+  const std::uint32_t H = m.num_halfedges(), V = m.num_vertices();
+  std::uint64_t total = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
-    const HalfedgeId start = vertex_he_[v];
-    if (start.index() >= H || from(start) != VertexId(v))
+    const HalfedgeId start = m.halfedge(VertexId(v));
+    if (start.index() >= H || m.from(start) != VertexId(v))
       fail("validate: vertex " + str(v) + " has an invalid stored halfedge (unreferenced vertex?)");
     HalfedgeId h = start;
     std::uint32_t len = 0;
     do {
       ++len;
-      h = twin(prev(h));
+      h = Mesh::twin(m.prev(h));
     } while (h != start && len <= H);
     if (h != start) fail("validate: the fan of vertex " + str(v) + " is not closed");
     total += len;
   }
   if (total != H) fail("validate: some vertex has more than one fan (non-manifold vertex)");
-  // No two edges between the same pair of vertices.
-  std::vector<std::uint64_t> keys(num_edges());
-  for (std::uint32_t e = 0; e < num_edges(); ++e) {
-    const std::uint64_t a = to(HalfedgeId(2 * e)).index(), b = to(HalfedgeId(2 * e + 1)).index();
+}
+
+// No two edges between the same pair of vertices.
+void check_distinct_edges(const Mesh& m) {
+  std::vector<std::uint64_t> keys(m.num_edges());
+  for (std::uint32_t e = 0; e < m.num_edges(); ++e) {
+    const std::uint64_t a = m.to(HalfedgeId(2 * e)).index(), b = m.to(HalfedgeId(2 * e + 1)).index();
     keys[e] = (std::min(a, b) << 32) | std::max(a, b);
   }
   std::sort(keys.begin(), keys.end());
@@ -363,6 +371,22 @@ void Mesh::validate() const {
   if (dup != keys.end())
     fail("validate: " + edge_name(static_cast<std::uint32_t>(*dup >> 32), static_cast<std::uint32_t>(*dup)) +
          " appears more than once");
+}
+
+}  // namespace
+
+void Mesh::validate() const {
+  const std::size_t nh = he_to_.size();
+  if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
+    fail("validate: halfedge arrays have inconsistent sizes");
+  if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
+  if (nh >= no_index || positions_.size() >= no_index || face_he_.size() >= no_index)
+    fail("validate: element counts exceed 32-bit handles");
+  if (num_vertices() == 0 || num_faces() == 0) fail("validate: empty mesh");
+  check_halfedge_links(*this);
+  check_face_cycles(*this);
+  check_vertex_fans(*this);
+  check_distinct_edges(*this);
 }
 
 PolygonSoup Mesh::to_soup() const {
