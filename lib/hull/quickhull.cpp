@@ -58,13 +58,14 @@
 #include "error_bounds.hpp"
 #include "filter_polynomials.hpp"
 #include "filtered_predicates.hpp"
+#include "no_index.hpp"
 #include "plane_filter.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
 namespace {
 
-constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t none = detail::no_index;
 
 constexpr std::uint32_t next3(std::uint32_t i) { return i == 2 ? 0 : i + 1; }
 constexpr std::uint32_t prev3(std::uint32_t i) { return i == 0 ? 2 : i - 1; }

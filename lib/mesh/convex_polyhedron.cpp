@@ -46,27 +46,25 @@
 #include "cvms/convex_polyhedron.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
 #include <set>
 #include <string>
 #include <utility>
 
+#include "angular_order.hpp"
 #include "cvms/error.hpp"
-#include "filtered_predicates.hpp"
 #include "dyadic.hpp"
+#include "element_names.hpp"
+#include "filtered_predicates.hpp"
+#include "no_index.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
 namespace {
 
-constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-
-std::string str(std::uint32_t i) { return std::to_string(i); }
-
-std::string edge_name(std::uint32_t a, std::uint32_t b) {
-  return "edge (" + str(std::min(a, b)) + ", " + str(std::max(a, b)) + ")";
-}
+using detail::no_index;
+using detail::edge_name;
+using detail::str;
 
 [[noreturn]] void not_convex(const std::string& message) { throw Error(ErrorCategory::not_convex, message); }
 
@@ -108,15 +106,12 @@ PolygonCheck check_convex_polygon(const std::vector<const Vec3*>& p, const Vec3&
   std::vector<Vec3> e(k);
   for (std::size_t j = 0; j < k; ++j) e[j] = *p[corners[(j + 1) % k]] - *p[corners[j]];
   const Vec3& ref = e[0];
-  // Half 0: angle in [0, pi) from ref, half 1: [pi, 2 pi).
+  // Angles about n from ref (lib/predicates/angular_order.hpp).
   auto half = [&](const Vec3& v) {
-    const Sign s = sign_triple(n, ref, v);
-    return (s == Sign::positive || (s == Sign::zero && sign_dot(ref, v) == Sign::positive)) ? 0 : 1;
+    return detail::half_turn(sign_triple(n, ref, v), [&] { return sign_dot(ref, v); });
   };
   auto angle_less = [&](const Vec3& a, const Vec3& b) {
-    const int ha = half(a), hb = half(b);
-    if (ha != hb) return ha < hb;
-    return sign_triple(n, a, b) == Sign::positive;
+    return detail::compare_angle(half(a), half(b), [&] { return sign_triple(n, a, b); }) == Sign::negative;
   };
   std::size_t descents = 0;
   for (std::size_t j = 0; j < k; ++j)
@@ -162,6 +157,292 @@ struct UnionFind {
 
 enum class EdgeKind : unsigned char { coplanar, fold, convex, reflex };
 
+// 1. Topology: connected and a sphere.
+void check_sphere(const Mesh& mesh) {
+  const std::uint32_t nv = mesh.num_vertices(), nf = mesh.num_faces();
+  UnionFind components(nf);
+  for (EdgeId e : mesh.edges()) {
+    const HalfedgeId h = Mesh::halfedge(e);
+    components.unite(mesh.face(h).index(), mesh.face(Mesh::twin(h)).index());
+  }
+  std::uint32_t count = 0;
+  for (std::uint32_t f = 0; f < nf; ++f) count += components.find(f) == f;
+  if (count != 1)
+    throw Error(ErrorCategory::topology,
+                "the surface has " + str(count) + " connected components (a convex polyhedron has one)");
+  const long long chi = static_cast<long long>(nv) - mesh.num_edges() + nf;
+  if (chi != 2)
+    throw Error(ErrorCategory::topology, "the surface has Euler characteristic " + std::to_string(chi) +
+                                             " (genus " + std::to_string((2 - chi) / 2) +
+                                             "); a convex polyhedron is a sphere (2)");
+}
+
+// The orientation normal of face f with corners pts (vertex indices ids),
+// once the face is known to have nonzero area and, beyond triangles, to be
+// planar and a convex polygon.
+Vec3 checked_face_normal(FaceId f, const std::vector<const Vec3*>& pts,
+                         const std::vector<std::uint32_t>& ids) {
+  Vec3 n = area_vector(pts);
+  if (is_zero(n)) {
+    bool collinear = true;
+    for (std::size_t i = 2; i < pts.size() && collinear; ++i)
+      collinear = is_parallel(*pts[1] - *pts[0], *pts[i] - *pts[0]);
+    if (collinear)
+      throw Error(ErrorCategory::degenerate,
+                  "face " + str(f.index()) + " has zero area (its vertices are collinear)");
+    not_convex("face " + str(f.index()) + " has zero signed area (it is not a convex polygon)");
+  }
+  if (pts.size() > 3) {
+    for (std::size_t i = 1; i < pts.size(); ++i)
+      if (sign_dot(n, *pts[i] - *pts[0]) != Sign::zero)
+        not_convex("face " + str(f.index()) + " is not planar (vertex " + str(ids[i]) +
+                   " is off the plane of the others)");
+    PolygonCheck c = check_convex_polygon(pts, n);
+    if (c.fault != PolygonFault::none)
+      not_convex("face " + str(f.index()) + " is not a convex polygon: it " + describe_fault(c, ids));
+  }
+  return n;
+}
+
+// 2. Faces: orientation normal, zero area, planarity, convexity.
+std::vector<Vec3> face_normals(const Mesh& mesh) {
+  std::vector<Vec3> face_normal(mesh.num_faces());
+  std::vector<const Vec3*> pts;
+  std::vector<std::uint32_t> ids;
+  for (FaceId f : mesh.faces()) {
+    pts.clear();
+    ids.clear();
+    for (HalfedgeId h : mesh.face_halfedges(f)) {
+      pts.push_back(&mesh.position(mesh.from(h)));
+      ids.push_back(mesh.from(h).index());
+    }
+    face_normal[f.index()] = checked_face_normal(f, pts, ids);
+  }
+  return face_normal;
+}
+
+// 3. Flat: every vertex on the plane of face 0 (normal n).
+void check_not_flat(const Mesh& mesh, const Vec3& n) {
+  const Vec3& p0 = mesh.position(mesh.from(mesh.halfedge(FaceId(0))));
+  bool flat = true;
+  for (VertexId v : mesh.vertices())
+    if (sign_dot(n, mesh.position(v) - p0) != Sign::zero) {
+      flat = false;
+      break;
+    }
+  if (flat)
+    throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
+}
+
+// What step 4 finds: the faces joined by coplanar edges, and whether the
+// mesh is consistently inward (then flipped).
+struct EdgeClasses {
+  UnionFind coplanar;
+  bool flip;
+};
+
+// 4. Edges.
+EdgeClasses classify_edges(const Mesh& mesh, const std::vector<Vec3>& face_normal) {
+  std::vector<EdgeKind> kind(mesh.num_edges());
+  std::size_t num_convex = 0, num_reflex = 0;
+  EdgeClasses out{UnionFind(mesh.num_faces()), false};
+  for (EdgeId e : mesh.edges()) {
+    const HalfedgeId h = Mesh::halfedge(e);
+    const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
+    const Vec3& n_f = face_normal[f];
+    const Vec3& n_g = face_normal[g];
+    EdgeKind k;
+    if (is_parallel(n_f, n_g)) {
+      k = sign_dot(n_f, n_g) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
+    } else {
+      const Vec3 d = mesh.position(mesh.to(h)) - mesh.position(mesh.from(h));
+      k = sign_triple(n_f, n_g, d) == Sign::positive ? EdgeKind::convex : EdgeKind::reflex;
+    }
+    kind[e.index()] = k;
+    if (k == EdgeKind::coplanar) out.coplanar.unite(f, g);
+    if (k == EdgeKind::fold)
+      not_convex(edge_name(mesh.from(h).index(), mesh.to(h).index()) + ": faces " + str(f) + " and " + str(g) +
+                 " fold back onto each other (zero dihedral angle)");
+    num_convex += k == EdgeKind::convex;
+    num_reflex += k == EdgeKind::reflex;
+  }
+  out.flip = num_reflex > num_convex;
+  const EdgeKind wrong = out.flip ? EdgeKind::convex : EdgeKind::reflex;
+  for (EdgeId e : mesh.edges())
+    if (kind[e.index()] == wrong) {
+      const HalfedgeId h = Mesh::halfedge(e);
+      not_convex("reflex " + edge_name(mesh.from(h).index(), mesh.to(h).index()) + " between faces " +
+                 str(mesh.face(h).index()) + " and " + str(mesh.face(Mesh::twin(h)).index()));
+    }
+  return out;
+}
+
+// 5. Regions (merged facets), numbered by their smallest face.
+struct Regions {
+  const Mesh& mesh;
+  std::vector<std::uint32_t> of_face;     // the region of each face
+  std::vector<std::uint32_t> first_face;  // the smallest face of each region
+
+  Regions(const Mesh& m, UnionFind& coplanar) : mesh(m), of_face(m.num_faces()) {
+    std::vector<std::uint32_t> id_of_root(m.num_faces(), no_index);
+    for (std::uint32_t f = 0; f < m.num_faces(); ++f) {
+      const std::uint32_t r = coplanar.find(f);
+      if (id_of_root[r] == no_index) {
+        id_of_root[r] = static_cast<std::uint32_t>(first_face.size());
+        first_face.push_back(f);
+      }
+      of_face[f] = id_of_root[r];
+    }
+  }
+  [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(first_face.size()); }
+  [[nodiscard]] std::uint32_t of(HalfedgeId h) const { return of_face[mesh.face(h).index()]; }
+  [[nodiscard]] bool is_border(HalfedgeId h) const { return of(h) != of(Mesh::twin(h)); }
+  [[nodiscard]] std::string facet_name(std::uint32_t r) const {
+    return "the facet containing face " + str(first_face[r]);
+  }
+};
+
+// Boundary cycles: from a border halfedge h, the next border halfedge of the
+// same region leaves to(h); rotate clockwise around to(h) through the
+// region's faces until the face across is outside the region.
+std::vector<std::vector<HalfedgeId>> boundary_cycles(const Regions& regions) {
+  const Mesh& mesh = regions.mesh;
+  const std::uint32_t nh = mesh.num_halfedges();
+  std::vector<std::vector<HalfedgeId>> cycle(regions.size());
+  std::vector<char> visited(nh, 0);
+  for (HalfedgeId start : mesh.halfedges()) {
+    if (visited[start.index()] || !regions.is_border(start)) continue;
+    const std::uint32_t r = regions.of(start);
+    if (!cycle[r].empty())
+      not_convex(regions.facet_name(r) +
+                 " (coplanar faces merged) has more than one boundary cycle (a hole)");
+    HalfedgeId h = start;
+    std::uint32_t steps = 0;
+    do {
+      visited[h.index()] = 1;
+      cycle[r].push_back(h);
+      HalfedgeId n = mesh.next(h);
+      while (!regions.is_border(n) && ++steps <= nh) n = mesh.next(Mesh::twin(n));
+      h = n;
+    } while (h != start && ++steps <= 2 * nh);
+    if (h != start) throw Error(ErrorCategory::topology, "corrupt mesh: a facet boundary does not close");
+  }
+  for (std::uint32_t r = 0; r < regions.size(); ++r)
+    if (cycle[r].size() < 3) not_convex(regions.facet_name(r) + " has no proper boundary");
+  return cycle;
+}
+
+// 6. Extreme vertices: on >= 3 facets.
+struct FacetsAtVertices {
+  std::vector<std::uint32_t> count;
+  [[nodiscard]] bool extreme(std::uint32_t v) const { return count[v] >= 3; }
+};
+
+FacetsAtVertices facets_at_vertices(const Regions& regions) {
+  FacetsAtVertices facets_at{std::vector<std::uint32_t>(regions.mesh.num_vertices(), 0)};
+  for (HalfedgeId h : regions.mesh.halfedges())
+    if (regions.is_border(h)) ++facets_at.count[regions.mesh.from(h).index()];
+  return facets_at;
+}
+
+// Facet polygons, and corners agree with extremality.
+std::vector<std::vector<std::uint32_t>> facet_corners(const Regions& regions,
+                                                      const std::vector<std::vector<HalfedgeId>>& cycle,
+                                                      const std::vector<Vec3>& face_normal,
+                                                      const FacetsAtVertices& facets_at) {
+  const Mesh& mesh = regions.mesh;
+  std::vector<std::vector<std::uint32_t>> corners(regions.size());
+  std::vector<const Vec3*> pts;
+  std::vector<std::uint32_t> ids;
+  for (std::uint32_t r = 0; r < regions.size(); ++r) {
+    pts.clear();
+    ids.clear();
+    for (HalfedgeId h : cycle[r]) {
+      pts.push_back(&mesh.position(mesh.from(h)));
+      ids.push_back(mesh.from(h).index());
+    }
+    PolygonCheck c = check_convex_polygon(pts, face_normal[regions.first_face[r]]);
+    if (c.fault != PolygonFault::none)
+      not_convex(regions.facet_name(r) + " (coplanar faces merged) is not a convex polygon: it " +
+                 describe_fault(c, ids));
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (c.corner[i] != 0 && !facets_at.extreme(ids[i]))
+        not_convex("vertex " + str(ids[i]) + " is a corner of " + regions.facet_name(r) +
+                   " but lies on only " + str(facets_at.count[ids[i]]) + " facets");
+      if (c.corner[i] == 0 && facets_at.extreme(ids[i]))
+        not_convex("vertex " + str(ids[i]) + " lies on " + str(facets_at.count[ids[i]]) +
+                   " facets but on a straight side of " + regions.facet_name(r));
+      if (c.corner[i] != 0) corners[r].push_back(ids[i]);
+    }
+  }
+  return corners;
+}
+
+// 7. The result: extreme vertices in input order, facets ordered by their
+// smallest input face, each starting at its smallest vertex index.
+Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>& facet_corners,
+                 const FacetsAtVertices& facets_at, bool flip) {
+  PolygonSoup out;
+  std::vector<std::uint32_t> new_index(mesh.num_vertices(), no_index);
+  for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
+    if (facets_at.extreme(v)) {
+      new_index[v] = static_cast<std::uint32_t>(out.points.size());
+      out.points.push_back(mesh.position(VertexId(v)));
+    }
+  std::vector<std::uint32_t> facet;
+  for (const std::vector<std::uint32_t>& corners : facet_corners) {
+    facet.clear();
+    for (std::uint32_t v : corners) facet.push_back(new_index[v]);
+    if (flip) std::reverse(facet.begin(), facet.end());
+    std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
+    out.add_face(facet);
+  }
+  Mesh merged;
+  try {
+    merged = Mesh::from_soup(std::move(out));
+  } catch (const Error& e) {
+    not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
+  }
+  return merged;
+}
+
+// 8. Global: an interior point o below every facet, and a ray from o that
+// crosses facet 0 only. The facets of p are the regions, in order.
+void check_global(const ConvexPolyhedron& p, const Regions& regions) {
+  const Mesh& m = p.mesh();
+  const HalfedgeId h0 = m.halfedge(FaceId(0));
+  const Vec3& a = m.position(m.from(h0));
+  const Vec3& b = m.position(m.to(h0));
+  const Vec3& c = m.position(m.to(m.next(h0)));
+  const Vec3* w = nullptr;
+  for (VertexId v : m.vertices())
+    if (side_of_plane(m.position(v), p.normal(FaceId(0)), p.plane_offset(FaceId(0))) == Sign::negative) {
+      w = &m.position(v);
+      break;
+    }
+  if (w == nullptr) not_convex(regions.facet_name(0) + " has every vertex on its plane");
+  const Vec3 o = Rational(1, 4) * (a + b + c + *w);
+  const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
+  for (FaceId f : m.faces()) {
+    if (side_of_plane(o, p.normal(f), p.plane_offset(f)) != Sign::negative)
+      not_convex("the surface is locally convex but not convex: an interior point lies above " +
+                 regions.facet_name(f.index()));
+  }
+  for (FaceId f : m.faces()) {
+    if (f.index() == 0 || sign_dot(p.normal(f), dir) != Sign::positive) continue;
+    bool hit = true;
+    for (HalfedgeId h : m.face_halfedges(f))
+      if (sign_triple(m.position(m.from(h)) - o, m.position(m.to(h)) - o, dir) == Sign::negative) {
+        hit = false;
+        break;
+      }
+    if (hit)
+      not_convex("the surface is locally convex but winds around its interior more than once (" +
+                 regions.facet_name(0) + " and " + regions.facet_name(f.index()) +
+                 " overlap as seen from inside)");
+  }
+}
+
 }  // namespace
 
 Vec3 primitive_direction(const Vec3& v) {
@@ -197,247 +478,20 @@ ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
       approx_(std::make_shared<const detail::PolyhedronApproximations>(std::move(parts.approx))) {}
 
 ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
-  const std::uint32_t nv = mesh.num_vertices(), nf = mesh.num_faces(), nh = mesh.num_halfedges();
-  if (nf == 0 || nv == 0) throw Error(ErrorCategory::topology, "empty mesh");
-
-  // 1. Topology: connected and a sphere.
-  {
-    UnionFind components(nf);
-    for (EdgeId e : mesh.edges()) {
-      const HalfedgeId h = Mesh::halfedge(e);
-      components.unite(mesh.face(h).index(), mesh.face(Mesh::twin(h)).index());
-    }
-    std::uint32_t count = 0;
-    for (std::uint32_t f = 0; f < nf; ++f) count += components.find(f) == f;
-    if (count != 1)
-      throw Error(ErrorCategory::topology,
-                  "the surface has " + str(count) + " connected components (a convex polyhedron has one)");
-    const long long chi = static_cast<long long>(nv) - mesh.num_edges() + nf;
-    if (chi != 2)
-      throw Error(ErrorCategory::topology, "the surface has Euler characteristic " + std::to_string(chi) +
-                                               " (genus " + std::to_string((2 - chi) / 2) +
-                                               "); a convex polyhedron is a sphere (2)");
-  }
-
-  // 2. Faces: orientation normal, zero area, planarity, convexity.
-  std::vector<Vec3> face_normal(nf);
-  {
-    std::vector<const Vec3*> pts;
-    std::vector<std::uint32_t> ids;
-    for (FaceId f : mesh.faces()) {
-      pts.clear();
-      ids.clear();
-      for (HalfedgeId h : mesh.face_halfedges(f)) {
-        pts.push_back(&mesh.position(mesh.from(h)));
-        ids.push_back(mesh.from(h).index());
-      }
-      Vec3 n = area_vector(pts);
-      if (is_zero(n)) {
-        bool collinear = true;
-        for (std::size_t i = 2; i < pts.size() && collinear; ++i)
-          collinear = is_parallel(*pts[1] - *pts[0], *pts[i] - *pts[0]);
-        if (collinear)
-          throw Error(ErrorCategory::degenerate,
-                      "face " + str(f.index()) + " has zero area (its vertices are collinear)");
-        not_convex("face " + str(f.index()) + " has zero signed area (it is not a convex polygon)");
-      }
-      if (pts.size() > 3) {
-        for (std::size_t i = 1; i < pts.size(); ++i)
-          if (sign_dot(n, *pts[i] - *pts[0]) != Sign::zero)
-            not_convex("face " + str(f.index()) + " is not planar (vertex " + str(ids[i]) +
-                       " is off the plane of the others)");
-        PolygonCheck c = check_convex_polygon(pts, n);
-        if (c.fault != PolygonFault::none)
-          not_convex("face " + str(f.index()) + " is not a convex polygon: it " + describe_fault(c, ids));
-      }
-      face_normal[f.index()] = std::move(n);
-    }
-  }
-
-  // 3. Flat: every vertex on the plane of face 0.
-  {
-    const Vec3& n = face_normal[0];
-    const Vec3& p0 = mesh.position(mesh.from(mesh.halfedge(FaceId(0))));
-    bool flat = true;
-    for (VertexId v : mesh.vertices())
-      if (sign_dot(n, mesh.position(v) - p0) != Sign::zero) {
-        flat = false;
-        break;
-      }
-    if (flat) throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
-  }
-
-  // 4. Edges.
-  std::vector<EdgeKind> kind(mesh.num_edges());
-  std::size_t num_convex = 0, num_reflex = 0;
-  UnionFind regions_uf(nf);
-  for (EdgeId e : mesh.edges()) {
-    const HalfedgeId h = Mesh::halfedge(e);
-    const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
-    const Vec3& n_f = face_normal[f];
-    const Vec3& n_g = face_normal[g];
-    EdgeKind k;
-    if (is_parallel(n_f, n_g)) {
-      k = sign_dot(n_f, n_g) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
-    } else {
-      const Vec3 d = mesh.position(mesh.to(h)) - mesh.position(mesh.from(h));
-      k = sign_triple(n_f, n_g, d) == Sign::positive ? EdgeKind::convex : EdgeKind::reflex;
-    }
-    kind[e.index()] = k;
-    if (k == EdgeKind::coplanar) regions_uf.unite(f, g);
-    if (k == EdgeKind::fold)
-      not_convex(edge_name(mesh.from(h).index(), mesh.to(h).index()) + ": faces " + str(f) + " and " + str(g) +
-                 " fold back onto each other (zero dihedral angle)");
-    num_convex += k == EdgeKind::convex;
-    num_reflex += k == EdgeKind::reflex;
-  }
-  const bool flip = num_reflex > num_convex;
-  const EdgeKind wrong = flip ? EdgeKind::convex : EdgeKind::reflex;
-  for (EdgeId e : mesh.edges())
-    if (kind[e.index()] == wrong) {
-      const HalfedgeId h = Mesh::halfedge(e);
-      not_convex("reflex " + edge_name(mesh.from(h).index(), mesh.to(h).index()) + " between faces " +
-                 str(mesh.face(h).index()) + " and " + str(mesh.face(Mesh::twin(h)).index()));
-    }
-
-  // 5. Regions (merged facets), numbered by their smallest face.
-  std::vector<std::uint32_t> region(nf);
-  std::vector<std::uint32_t> region_first_face;
-  {
-    std::vector<std::uint32_t> id_of_root(nf, none);
-    for (std::uint32_t f = 0; f < nf; ++f) {
-      const std::uint32_t r = regions_uf.find(f);
-      if (id_of_root[r] == none) {
-        id_of_root[r] = static_cast<std::uint32_t>(region_first_face.size());
-        region_first_face.push_back(f);
-      }
-      region[f] = id_of_root[r];
-    }
-  }
-  const auto nr = static_cast<std::uint32_t>(region_first_face.size());
-  auto region_of = [&](HalfedgeId h) { return region[mesh.face(h).index()]; };
-  auto is_border = [&](HalfedgeId h) { return region_of(h) != region_of(Mesh::twin(h)); };
-  auto facet_name = [&](std::uint32_t r) {
-    return "the facet containing face " + str(region_first_face[r]);
-  };
-
-  // Boundary cycles: from a border halfedge h, the next border halfedge of the
-  // same region leaves to(h); rotate clockwise around to(h) through the
-  // region's faces until the face across is outside the region.
-  std::vector<std::vector<HalfedgeId>> cycle(nr);
-  {
-    std::vector<char> visited(nh, 0);
-    for (HalfedgeId start : mesh.halfedges()) {
-      if (visited[start.index()] || !is_border(start)) continue;
-      const std::uint32_t r = region_of(start);
-      if (!cycle[r].empty())
-        not_convex(facet_name(r) + " (coplanar faces merged) has more than one boundary cycle (a hole)");
-      HalfedgeId h = start;
-      std::uint32_t steps = 0;
-      do {
-        visited[h.index()] = 1;
-        cycle[r].push_back(h);
-        HalfedgeId n = mesh.next(h);
-        while (!is_border(n) && ++steps <= nh) n = mesh.next(Mesh::twin(n));
-        h = n;
-      } while (h != start && ++steps <= 2 * nh);
-      if (h != start) throw Error(ErrorCategory::topology, "corrupt mesh: a facet boundary does not close");
-    }
-    for (std::uint32_t r = 0; r < nr; ++r)
-      if (cycle[r].size() < 3) not_convex(facet_name(r) + " has no proper boundary");
-  }
-
-  // 6. Extreme vertices: on >= 3 facets.
-  std::vector<std::uint32_t> facets_at(nv, 0);
-  for (HalfedgeId h : mesh.halfedges())
-    if (is_border(h)) ++facets_at[mesh.from(h).index()];
-  auto extreme = [&](std::uint32_t v) { return facets_at[v] >= 3; };
-
-  // Facet polygons, and corners agree with extremality.
-  std::vector<std::vector<std::uint32_t>> facet_corners(nr);
-  {
-    std::vector<const Vec3*> pts;
-    std::vector<std::uint32_t> ids;
-    for (std::uint32_t r = 0; r < nr; ++r) {
-      pts.clear();
-      ids.clear();
-      for (HalfedgeId h : cycle[r]) {
-        pts.push_back(&mesh.position(mesh.from(h)));
-        ids.push_back(mesh.from(h).index());
-      }
-      PolygonCheck c = check_convex_polygon(pts, face_normal[region_first_face[r]]);
-      if (c.fault != PolygonFault::none)
-        not_convex(facet_name(r) + " (coplanar faces merged) is not a convex polygon: it " + describe_fault(c, ids));
-      for (std::size_t i = 0; i < ids.size(); ++i) {
-        if (c.corner[i] != 0 && !extreme(ids[i]))
-          not_convex("vertex " + str(ids[i]) + " is a corner of " + facet_name(r) + " but lies on only " +
-                     str(facets_at[ids[i]]) + " facets");
-        if (c.corner[i] == 0 && extreme(ids[i]))
-          not_convex("vertex " + str(ids[i]) + " lies on " + str(facets_at[ids[i]]) +
-                     " facets but on a straight side of " + facet_name(r));
-        if (c.corner[i] != 0) facet_corners[r].push_back(ids[i]);
-      }
-    }
-  }
-
-  // 7. The result: extreme vertices in input order, facets ordered by their
-  // smallest input face, each starting at its smallest vertex index.
-  PolygonSoup out;
-  std::vector<std::uint32_t> new_index(nv, none);
-  for (std::uint32_t v = 0; v < nv; ++v)
-    if (extreme(v)) {
-      new_index[v] = static_cast<std::uint32_t>(out.points.size());
-      out.points.push_back(mesh.position(VertexId(v)));
-    }
-  std::vector<std::uint32_t> facet;
-  for (std::uint32_t r = 0; r < nr; ++r) {
-    facet.clear();
-    for (std::uint32_t v : facet_corners[r]) facet.push_back(new_index[v]);
-    if (flip) std::reverse(facet.begin(), facet.end());
-    std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
-    out.add_face(facet);
-  }
-  Mesh merged;
-  try {
-    merged = Mesh::from_soup(std::move(out));
-  } catch (const Error& e) {
-    not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
-  }
-  ConvexPolyhedron p(detail::parts_with_planes(std::move(merged)));
-
-  // 8. Global: an interior point o below every facet, and a ray from o that
-  // crosses facet 0 only.
-  const Mesh& m = p.mesh_;
-  const HalfedgeId h0 = m.halfedge(FaceId(0));
-  const Vec3& a = m.position(m.from(h0));
-  const Vec3& b = m.position(m.to(h0));
-  const Vec3& c = m.position(m.to(m.next(h0)));
-  const Vec3* w = nullptr;
-  for (VertexId v : m.vertices())
-    if (side_of_plane(m.position(v), p.normal(FaceId(0)), p.plane_offset(FaceId(0))) == Sign::negative) {
-      w = &m.position(v);
-      break;
-    }
-  if (w == nullptr) not_convex(facet_name(0) + " has every vertex on its plane");
-  const Vec3 o = Rational(1, 4) * (a + b + c + *w);
-  const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
-  for (FaceId f : m.faces()) {
-    if (side_of_plane(o, p.normal(f), p.plane_offset(f)) != Sign::negative)
-      not_convex("the surface is locally convex but not convex: an interior point lies above " +
-                 facet_name(f.index()));
-  }
-  for (FaceId f : m.faces()) {
-    if (f.index() == 0 || sign_dot(p.normal(f), dir) != Sign::positive) continue;
-    bool hit = true;
-    for (HalfedgeId h : m.face_halfedges(f))
-      if (sign_triple(m.position(m.from(h)) - o, m.position(m.to(h)) - o, dir) == Sign::negative) {
-        hit = false;
-        break;
-      }
-    if (hit)
-      not_convex("the surface is locally convex but winds around its interior more than once (" +
-                 facet_name(0) + " and " + facet_name(f.index()) + " overlap as seen from inside)");
-  }
+  if (mesh.num_faces() == 0 || mesh.num_vertices() == 0) throw Error(ErrorCategory::topology, "empty mesh");
+  // Steps 1-6 check the input, step 7 builds the result and step 8 checks it
+  // globally (the file comment says why that suffices).
+  check_sphere(mesh);
+  const std::vector<Vec3> face_normal = face_normals(mesh);
+  check_not_flat(mesh, face_normal[0]);
+  EdgeClasses edges = classify_edges(mesh, face_normal);
+  const Regions regions(mesh, edges.coplanar);
+  const std::vector<std::vector<HalfedgeId>> cycles = boundary_cycles(regions);
+  const FacetsAtVertices facets_at = facets_at_vertices(regions);
+  const std::vector<std::vector<std::uint32_t>> corners =
+      facet_corners(regions, cycles, face_normal, facets_at);
+  ConvexPolyhedron p(detail::parts_with_planes(merged_mesh(mesh, corners, facets_at, edges.flip)));
+  check_global(p, regions);
   return p;
 }
 

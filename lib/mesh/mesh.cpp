@@ -9,18 +9,241 @@
 #include <utility>
 
 #include "cvms/error.hpp"
+#include "element_names.hpp"
+#include "no_index.hpp"
 
 namespace cvms {
 namespace {
 
-constexpr std::uint32_t invalid = std::numeric_limits<std::uint32_t>::max();
+using detail::edge_name;
+using detail::no_index;
+using detail::str;
 
 [[noreturn]] void fail(const std::string& message) { throw Error(ErrorCategory::topology, message); }
 
-std::string str(std::uint32_t i) { return std::to_string(i); }
+// The soup's index structure: offsets well formed, something to build, and
+// counts that fit the 32-bit handles.
+void check_soup_shape(const PolygonSoup& soup) {
+  const auto& offsets = soup.face_offsets;
+  const auto& indices = soup.face_indices;
+  if (offsets.empty() || offsets.front() != 0 || offsets.back() != indices.size())
+    throw Error(ErrorCategory::invalid_argument,
+                "malformed polygon soup: face_offsets must start at 0 and end at face_indices.size()");
+  const std::size_t num_faces = offsets.size() - 1;
+  for (std::size_t f = 0; f < num_faces; ++f)
+    if (offsets[f + 1] < offsets[f])
+      throw Error(ErrorCategory::invalid_argument,
+                  "malformed polygon soup: face_offsets decrease at face " + std::to_string(f));
+  if (soup.points.empty() || num_faces == 0)
+    fail("empty mesh: " + std::to_string(soup.points.size()) + " points and " + std::to_string(num_faces) +
+         " faces");
+  // Halfedge ids go up to the number of corners; keep every id below the
+  // invalid marker, and edge ids (h >> 1) well defined.
+  if (soup.points.size() >= no_index || indices.size() >= (std::size_t{1} << 31) || num_faces >= no_index)
+    throw Error(ErrorCategory::limit,
+                "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) + " points, " +
+                    std::to_string(indices.size()) + " face corners");
+}
 
-std::string edge_name(std::uint32_t a, std::uint32_t b) {
-  return "edge (" + str(std::min(a, b)) + ", " + str(std::max(a, b)) + ")";
+// Faces: size, range, repeated vertices. stamp[v] is the last face using v.
+void check_faces(const PolygonSoup& soup) {
+  const auto& offsets = soup.face_offsets;
+  const auto& indices = soup.face_indices;
+  const auto n = static_cast<std::uint32_t>(soup.points.size());
+  const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
+  std::vector<std::uint32_t> stamp(n, no_index);
+  for (std::uint32_t f = 0; f < num_faces; ++f) {
+    const std::uint32_t deg = offsets[f + 1] - offsets[f];
+    if (deg < 3) fail("face " + str(f) + " has " + str(deg) + " vertices (at least 3 are needed)");
+    for (std::uint32_t c = offsets[f]; c < offsets[f + 1]; ++c) {
+      const std::uint32_t v = indices[c];
+      if (v >= n)
+        fail("face " + str(f) + ": vertex index " + str(v) + " out of range (" + str(n) + " points)");
+      if (stamp[v] == f) fail("face " + str(f) + " uses vertex " + str(v) + " more than once");
+      stamp[v] = f;
+    }
+  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    if (stamp[v] == no_index) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
+}
+
+// GMP's comparisons, hashing and arithmetic assume canonical fractions; a
+// caller that built 0/3 by hand would otherwise get wrong answers.
+void canonicalize_points(std::vector<Vec3>& points) {
+  for (Vec3& p : points)
+    for (int i = 0; i < 3; ++i) p[i].canonicalize();
+}
+
+// Duplicate points: a hash set of indices keyed by exact position.
+// \pre the coordinates are canonical.
+void check_distinct_points(const std::vector<Vec3>& pts) {
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  auto hash = [&pts](std::uint32_t i) { return hash_value(pts[i]); };
+  auto equal = [&pts](std::uint32_t a, std::uint32_t b) { return pts[a] == pts[b]; };
+  std::unordered_set<std::uint32_t, decltype(hash), decltype(equal)> seen(n, hash, equal);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    auto [it, inserted] = seen.insert(v);
+    if (!inserted)
+      fail("vertices " + str(*it) + " and " + str(v) + " are at the same point (duplicate point)");
+  }
+}
+
+// Corners: the directed edge of corner c runs from indices[c] to
+// indices[next[c]].
+struct Corners {
+  std::vector<std::uint32_t> face;
+  std::vector<std::uint32_t> next;
+  std::vector<std::uint32_t> prev;
+};
+
+Corners corner_cycles(const std::vector<std::uint32_t>& offsets) {
+  const std::uint32_t num_corners = offsets.back();
+  const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
+  Corners corners{std::vector<std::uint32_t>(num_corners), std::vector<std::uint32_t>(num_corners),
+                  std::vector<std::uint32_t>(num_corners)};
+  for (std::uint32_t f = 0; f < num_faces; ++f) {
+    const std::uint32_t b = offsets[f], e = offsets[f + 1];
+    for (std::uint32_t c = b; c < e; ++c) {
+      corners.face[c] = f;
+      corners.next[c] = (c + 1 == e) ? b : c + 1;
+      corners.prev[c] = (c == b) ? e - 1 : c - 1;
+    }
+  }
+  return corners;
+}
+
+// Each corner keyed by the undirected vertex pair (smaller << 32 | larger)
+// of its directed edge.
+using KeyedCorners = std::vector<std::pair<std::uint64_t, std::uint32_t>>;
+
+// Group the directed edges by their undirected vertex pair, sorted by
+// (smaller, larger) vertex and then by corner: a counting sort by the
+// smaller vertex (stable, so corners stay in order), then each bucket,
+// about a vertex degree long, sorted by the larger vertex.
+KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const Corners& corners,
+                             std::uint32_t n) {
+  const auto num_corners = static_cast<std::uint32_t>(indices.size());
+  KeyedCorners keyed(num_corners);
+  std::vector<std::uint32_t> bucket_start(std::size_t{n} + 1, 0);
+  for (std::uint32_t c = 0; c < num_corners; ++c)
+    ++bucket_start[std::min(indices[c], indices[corners.next[c]]) + 1];
+  for (std::uint32_t v = 0; v < n; ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
+  for (std::uint32_t c = 0; c < num_corners; ++c) {
+    const std::uint64_t a = indices[c], b = indices[corners.next[c]];
+    keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c};
+  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    std::sort(keyed.begin() + bucket_start[v], keyed.begin() + bucket_start[v + 1]);
+  return keyed;
+}
+
+// Every edge used by exactly two faces in opposite directions; returns the
+// number of edges. Scan all groups first, then report by severity: a
+// non-manifold edge explains the orientation and boundary symptoms it causes.
+std::uint32_t check_edge_groups(const KeyedCorners& keyed, const std::vector<std::uint32_t>& indices,
+                                const Corners& corners) {
+  std::string non_manifold, inconsistent, boundary;
+  std::uint32_t num_edges = 0;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    const std::uint32_t c0 = keyed[i].second;
+    const std::uint32_t a = indices[c0], b = indices[corners.next[c0]];
+    if (j - i > 2) {
+      if (non_manifold.empty()) {
+        non_manifold = edge_name(a, b) + " is shared by " + std::to_string(j - i) + " faces (";
+        for (std::size_t k = i; k < j && k < i + 6; ++k)
+          non_manifold += (k == i ? "" : ", ") + str(corners.face[keyed[k].second]);
+        non_manifold += (j - i > 6 ? ", ...)" : ")");
+        non_manifold += ": non-manifold edge";
+      }
+    } else if (j - i == 2) {
+      const std::uint32_t c1 = keyed[i + 1].second;
+      if (indices[c1] == a && inconsistent.empty())
+        inconsistent = edge_name(a, b) + " is used in the same direction " + str(a) + " -> " + str(b) +
+                       " by faces " + str(corners.face[c0]) + " and " + str(corners.face[c1]) +
+                       ": inconsistent orientation (flipped face?)";
+    } else if (boundary.empty()) {
+      boundary = edge_name(a, b) + " of face " + str(corners.face[c0]) +
+                 " has no opposite face: the surface is open (boundary edge)";
+    }
+    ++num_edges;
+    i = j;
+  }
+  if (!non_manifold.empty()) fail(non_manifold);
+  if (!inconsistent.empty()) fail(inconsistent);
+  if (!boundary.empty()) fail(boundary);
+  return num_edges;
+}
+
+// The connectivity arrays of the mesh (see Mesh's members), and the number of
+// halfedges leaving each vertex.
+struct Connectivity {
+  std::vector<HalfedgeId> vertex_he;
+  std::vector<VertexId> he_to;
+  std::vector<HalfedgeId> he_next;
+  std::vector<HalfedgeId> he_prev;
+  std::vector<FaceId> he_face;
+  std::vector<HalfedgeId> face_he;
+  std::vector<std::uint32_t> out_degree;
+};
+
+// Edge e's corners are keyed[2e] and keyed[2e + 1]; halfedge 2e runs from the
+// smaller to the larger vertex.
+Connectivity link_halfedges(const PolygonSoup& soup, const Corners& corners, const KeyedCorners& keyed,
+                            std::uint32_t num_edges) {
+  const auto& indices = soup.face_indices;
+  const auto n = static_cast<std::uint32_t>(soup.points.size());
+  const auto num_corners = static_cast<std::uint32_t>(indices.size());
+  const auto num_faces = static_cast<std::uint32_t>(soup.face_offsets.size() - 1);
+  std::vector<HalfedgeId> corner_he(num_corners);
+  for (std::uint32_t e = 0; e < num_edges; ++e) {
+    for (std::uint32_t k = 0; k < 2; ++k) {
+      const std::uint32_t c = keyed[2 * e + k].second;
+      const bool ascending = indices[c] < indices[corners.next[c]];
+      corner_he[c] = HalfedgeId(2 * e + (ascending ? 0u : 1u));
+    }
+  }
+  Connectivity m;
+  m.he_to.resize(num_corners);
+  m.he_next.resize(num_corners);
+  m.he_prev.resize(num_corners);
+  m.he_face.resize(num_corners);
+  for (std::uint32_t c = 0; c < num_corners; ++c) {
+    const std::uint32_t h = corner_he[c].index();
+    m.he_to[h] = VertexId(indices[corners.next[c]]);
+    m.he_next[h] = corner_he[corners.next[c]];
+    m.he_prev[h] = corner_he[corners.prev[c]];
+    m.he_face[h] = FaceId(corners.face[c]);
+  }
+  m.face_he.resize(num_faces);
+  for (std::uint32_t f = 0; f < num_faces; ++f) m.face_he[f] = corner_he[soup.face_offsets[f]];
+  m.vertex_he.assign(n, HalfedgeId());
+  m.out_degree.assign(n, 0);
+  for (std::uint32_t h = 0; h < num_corners; ++h) {
+    const std::uint32_t v = m.he_to[h ^ 1u].index();  // from(h)
+    if (!m.vertex_he[v].is_valid()) m.vertex_he[v] = HalfedgeId(h);
+    ++m.out_degree[v];
+  }
+  return m;
+}
+
+// Manifold vertices: the fan around v, followed with twin(prev(h)), must
+// reach every halfedge leaving v. (Each step is a permutation of the
+// halfedges leaving v, so the walk always returns to its start.)
+void check_manifold_vertices(const Mesh& m, const std::vector<std::uint32_t>& out_degree) {
+  for (VertexId v : m.vertices()) {
+    const HalfedgeId start = m.halfedge(v);
+    HalfedgeId h = start;
+    std::uint32_t len = 0;
+    do {
+      ++len;
+      h = Mesh::twin(m.prev(h));
+    } while (h != start && len <= out_degree[v.index()]);
+    if (len != out_degree[v.index()])
+      fail("vertex " + str(v.index()) + ": its faces form more than one fan (non-manifold vertex)");
+  }
 }
 
 }  // namespace
@@ -41,243 +264,106 @@ Mesh Mesh::from_soup(PolygonSoup soup) { return build(std::move(soup), true); }
 Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) { return build(std::move(soup), false); }
 
 Mesh Mesh::build(PolygonSoup soup, bool check_points) {
-  const auto& offsets = soup.face_offsets;
-  const auto& indices = soup.face_indices;
-  if (offsets.empty() || offsets.front() != 0 || offsets.back() != indices.size())
-    throw Error(ErrorCategory::invalid_argument,
-                "malformed polygon soup: face_offsets must start at 0 and end at face_indices.size()");
-  const std::size_t num_faces = offsets.size() - 1;
-  for (std::size_t f = 0; f < num_faces; ++f)
-    if (offsets[f + 1] < offsets[f])
-      throw Error(ErrorCategory::invalid_argument,
-                  "malformed polygon soup: face_offsets decrease at face " + std::to_string(f));
-  if (soup.points.empty() || num_faces == 0)
-    fail("empty mesh: " + std::to_string(soup.points.size()) + " points and " + std::to_string(num_faces) +
-         " faces");
-  // Halfedge ids go up to the number of corners; keep every id below the
-  // invalid marker, and edge ids (h >> 1) well defined.
-  if (soup.points.size() >= invalid || indices.size() >= (std::size_t{1} << 31) || num_faces >= invalid)
-    throw Error(ErrorCategory::limit,
-                "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) + " points, " +
-                    std::to_string(indices.size()) + " face corners");
-  const auto n = static_cast<std::uint32_t>(soup.points.size());
-  const auto num_corners = static_cast<std::uint32_t>(indices.size());
-
-  // Faces: size, range, repeated vertices. stamp[v] is the last face using v.
-  std::vector<std::uint32_t> stamp(n, invalid);
-  for (std::uint32_t f = 0; f < num_faces; ++f) {
-    const std::uint32_t deg = offsets[f + 1] - offsets[f];
-    if (deg < 3) fail("face " + str(f) + " has " + str(deg) + " vertices (at least 3 are needed)");
-    for (std::uint32_t c = offsets[f]; c < offsets[f + 1]; ++c) {
-      const std::uint32_t v = indices[c];
-      if (v >= n)
-        fail("face " + str(f) + ": vertex index " + str(v) + " out of range (" + str(n) + " points)");
-      if (stamp[v] == f) fail("face " + str(f) + " uses vertex " + str(v) + " more than once");
-      stamp[v] = f;
-    }
-  }
-  for (std::uint32_t v = 0; v < n; ++v)
-    if (stamp[v] == invalid) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
-
+  check_soup_shape(soup);
+  check_faces(soup);
   if (check_points) {
-    // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
-    // caller that built 0/3 by hand would otherwise get wrong answers.
-    for (Vec3& p : soup.points)
-      for (int i = 0; i < 3; ++i) p[i].canonicalize();
-
-    // Duplicate points: a hash set of indices keyed by exact position.
-    const std::vector<Vec3>& pts = soup.points;
-    auto hash = [&pts](std::uint32_t i) { return hash_value(pts[i]); };
-    auto equal = [&pts](std::uint32_t a, std::uint32_t b) { return pts[a] == pts[b]; };
-    std::unordered_set<std::uint32_t, decltype(hash), decltype(equal)> seen(n, hash, equal);
-    for (std::uint32_t v = 0; v < n; ++v) {
-      auto [it, inserted] = seen.insert(v);
-      if (!inserted)
-        fail("vertices " + str(*it) + " and " + str(v) + " are at the same point (duplicate point)");
-    }
+    canonicalize_points(soup.points);
+    check_distinct_points(soup.points);
   }
-
-  // Corners: the directed edge of corner c runs from indices[c] to
-  // indices[corner_next[c]].
-  std::vector<std::uint32_t> corner_face(num_corners), corner_next(num_corners), corner_prev(num_corners);
-  for (std::uint32_t f = 0; f < num_faces; ++f) {
-    const std::uint32_t b = offsets[f], e = offsets[f + 1];
-    for (std::uint32_t c = b; c < e; ++c) {
-      corner_face[c] = f;
-      corner_next[c] = (c + 1 == e) ? b : c + 1;
-      corner_prev[c] = (c == b) ? e - 1 : c - 1;
-    }
-  }
-
-  // Group the directed edges by their undirected vertex pair, sorted by
-  // (smaller, larger) vertex and then by corner: a counting sort by the
-  // smaller vertex (stable, so corners stay in order), then each bucket,
-  // about a vertex degree long, sorted by the larger vertex.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(num_corners);
-  {
-    std::vector<std::uint32_t> bucket_start(std::size_t{n} + 1, 0);
-    for (std::uint32_t c = 0; c < num_corners; ++c)
-      ++bucket_start[std::min(indices[c], indices[corner_next[c]]) + 1];
-    for (std::uint32_t v = 0; v < n; ++v) bucket_start[v + 1] += bucket_start[v];
-    std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
-    for (std::uint32_t c = 0; c < num_corners; ++c) {
-      const std::uint64_t a = indices[c], b = indices[corner_next[c]];
-      keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c};
-    }
-    for (std::uint32_t v = 0; v < n; ++v)
-      std::sort(keyed.begin() + bucket_start[v], keyed.begin() + bucket_start[v + 1]);
-  }
-
-  // Scan all groups first, then report by severity: a non-manifold edge
-  // explains the orientation and boundary symptoms it causes.
-  std::string non_manifold, inconsistent, boundary;
-  std::uint32_t num_edges = 0;
-  for (std::size_t i = 0; i < keyed.size();) {
-    std::size_t j = i;
-    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
-    const std::uint32_t c0 = keyed[i].second;
-    const std::uint32_t a = indices[c0], b = indices[corner_next[c0]];
-    if (j - i > 2) {
-      if (non_manifold.empty()) {
-        non_manifold = edge_name(a, b) + " is shared by " + std::to_string(j - i) + " faces (";
-        for (std::size_t k = i; k < j && k < i + 6; ++k)
-          non_manifold += (k == i ? "" : ", ") + str(corner_face[keyed[k].second]);
-        non_manifold += (j - i > 6 ? ", ...)" : ")");
-        non_manifold += ": non-manifold edge";
-      }
-    } else if (j - i == 2) {
-      const std::uint32_t c1 = keyed[i + 1].second;
-      if (indices[c1] == a && inconsistent.empty())
-        inconsistent = edge_name(a, b) + " is used in the same direction " + str(a) + " -> " + str(b) +
-                       " by faces " + str(corner_face[c0]) + " and " + str(corner_face[c1]) +
-                       ": inconsistent orientation (flipped face?)";
-    } else if (boundary.empty()) {
-      boundary = edge_name(a, b) + " of face " + str(corner_face[c0]) +
-                 " has no opposite face: the surface is open (boundary edge)";
-    }
-    ++num_edges;
-    i = j;
-  }
-  if (!non_manifold.empty()) fail(non_manifold);
-  if (!inconsistent.empty()) fail(inconsistent);
-  if (!boundary.empty()) fail(boundary);
+  const auto n = static_cast<std::uint32_t>(soup.points.size());
+  const Corners corners = corner_cycles(soup.face_offsets);
+  const KeyedCorners keyed = corners_by_edge(soup.face_indices, corners, n);
+  const std::uint32_t num_edges = check_edge_groups(keyed, soup.face_indices, corners);
+  Connectivity c = link_halfedges(soup, corners, keyed, num_edges);
 
   Mesh m;
   m.positions_ = std::move(soup.points);
-  std::vector<HalfedgeId> corner_he(num_corners);
-  for (std::uint32_t e = 0; e < num_edges; ++e) {
-    for (std::uint32_t k = 0; k < 2; ++k) {
-      const std::uint32_t c = keyed[2 * e + k].second;
-      const bool ascending = indices[c] < indices[corner_next[c]];
-      corner_he[c] = HalfedgeId(2 * e + (ascending ? 0u : 1u));
-    }
-  }
-  m.he_to_.resize(num_corners);
-  m.he_next_.resize(num_corners);
-  m.he_prev_.resize(num_corners);
-  m.he_face_.resize(num_corners);
-  for (std::uint32_t c = 0; c < num_corners; ++c) {
-    const std::uint32_t h = corner_he[c].index();
-    m.he_to_[h] = VertexId(indices[corner_next[c]]);
-    m.he_next_[h] = corner_he[corner_next[c]];
-    m.he_prev_[h] = corner_he[corner_prev[c]];
-    m.he_face_[h] = FaceId(corner_face[c]);
-  }
-  m.face_he_.resize(num_faces);
-  for (std::uint32_t f = 0; f < num_faces; ++f) m.face_he_[f] = corner_he[offsets[f]];
-  m.vertex_he_.assign(n, HalfedgeId());
-  std::vector<std::uint32_t> out_degree(n, 0);
-  for (std::uint32_t h = 0; h < num_corners; ++h) {
-    const std::uint32_t v = m.from(HalfedgeId(h)).index();
-    if (!m.vertex_he_[v].is_valid()) m.vertex_he_[v] = HalfedgeId(h);
-    ++out_degree[v];
-  }
-
-  // Manifold vertices: the fan around v, followed with twin(prev(h)), must
-  // reach every halfedge leaving v. (Each step is a permutation of the
-  // halfedges leaving v, so the walk always returns to its start.)
-  for (std::uint32_t v = 0; v < n; ++v) {
-    const HalfedgeId start = m.vertex_he_[v];
-    HalfedgeId h = start;
-    std::uint32_t len = 0;
-    do {
-      ++len;
-      h = twin(m.prev(h));
-    } while (h != start && len <= out_degree[v]);
-    if (len != out_degree[v])
-      fail("vertex " + str(v) + ": its faces form more than one fan (non-manifold vertex)");
-  }
+  m.vertex_he_ = std::move(c.vertex_he);
+  m.he_to_ = std::move(c.he_to);
+  m.he_next_ = std::move(c.he_next);
+  m.he_prev_ = std::move(c.he_prev);
+  m.he_face_ = std::move(c.he_face);
+  m.face_he_ = std::move(c.face_he);
+  check_manifold_vertices(m, c.out_degree);
   return m;
 }
 
-void Mesh::validate() const {
-  const std::size_t nh = he_to_.size();
-  if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
-    fail("validate: halfedge arrays have inconsistent sizes");
-  if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
-  if (nh >= invalid || positions_.size() >= invalid || face_he_.size() >= invalid)
-    fail("validate: element counts exceed 32-bit handles");
-  const std::uint32_t H = num_halfedges(), V = num_vertices(), F = num_faces();
-  if (V == 0 || F == 0) fail("validate: empty mesh");
+namespace {
 
+// Every stored reference in range, and next, prev, face and to consistent.
+void check_halfedge_links(const Mesh& m) {
+  const std::uint32_t H = m.num_halfedges(), V = m.num_vertices(), F = m.num_faces();
   for (std::uint32_t i = 0; i < H; ++i) {
     const HalfedgeId h(i);
-    if (to(h).index() >= V) fail("validate: halfedge " + str(i) + " points to an invalid vertex");
-    if (next(h).index() >= H || prev(h).index() >= H)
+    if (m.to(h).index() >= V) fail("validate: halfedge " + str(i) + " points to an invalid vertex");
+    if (m.next(h).index() >= H || m.prev(h).index() >= H)
       fail("validate: halfedge " + str(i) + " has an invalid next or prev");
-    if (face(h).index() >= F) fail("validate: halfedge " + str(i) + " has no valid face (open surface)");
+    if (m.face(h).index() >= F) fail("validate: halfedge " + str(i) + " has no valid face (open surface)");
   }
   for (std::uint32_t i = 0; i < H; ++i) {
     const HalfedgeId h(i);
-    if (prev(next(h)) != h || next(prev(h)) != h)
+    if (m.prev(m.next(h)) != h || m.next(m.prev(h)) != h)
       fail("validate: halfedge " + str(i) + ": next and prev disagree");
-    if (face(next(h)) != face(h))
+    if (m.face(m.next(h)) != m.face(h))
       fail("validate: halfedge " + str(i) + " and its next lie in different faces");
-    if (from(next(h)) != to(h)) fail("validate: halfedge " + str(i) + ": next does not start where it ends");
-    if (from(h) == to(h)) fail("validate: halfedge " + str(i) + " is a loop at vertex " + str(to(h).index()));
+    if (m.from(m.next(h)) != m.to(h))
+      fail("validate: halfedge " + str(i) + ": next does not start where it ends");
+    if (m.from(h) == m.to(h))
+      fail("validate: halfedge " + str(i) + " is a loop at vertex " + str(m.to(h).index()));
   }
-  // Faces: since next is a permutation that keeps the face, the face cycles
-  // cover every halfedge exactly once iff their lengths sum to H.
-  std::vector<std::uint32_t> stamp(V, invalid);
+}
+
+// Faces: since next is a permutation that keeps the face, the face cycles
+// cover every halfedge exactly once iff their lengths sum to H.
+void check_face_cycles(const Mesh& m) {
+  const std::uint32_t H = m.num_halfedges(), F = m.num_faces();
+  std::vector<std::uint32_t> stamp(m.num_vertices(), no_index);
   std::uint64_t total = 0;
   for (std::uint32_t f = 0; f < F; ++f) {
-    const HalfedgeId start = face_he_[f];
-    if (start.index() >= H || face(start) != FaceId(f))
+    const HalfedgeId start = m.halfedge(FaceId(f));
+    if (start.index() >= H || m.face(start) != FaceId(f))
       fail("validate: face " + str(f) + " has an invalid stored halfedge");
     HalfedgeId h = start;
     std::uint32_t len = 0;
     do {
-      const std::uint32_t v = to(h).index();
+      const std::uint32_t v = m.to(h).index();
       if (stamp[v] == f) fail("validate: face " + str(f) + " visits vertex " + str(v) + " twice");
       stamp[v] = f;
       ++len;
-      h = next(h);
+      h = m.next(h);
     } while (h != start && len <= H);
     if (h != start) fail("validate: face " + str(f) + " has no closed cycle");
     if (len < 3) fail("validate: face " + str(f) + " has fewer than 3 halfedges");
     total += len;
   }
   if (total != H) fail("validate: some face has more than one halfedge cycle");
-  // Vertex fans, likewise: twin(prev(.)) permutes the halfedges leaving a vertex.
-  total = 0;
+}
+
+// Vertex fans, likewise: twin(prev(.)) permutes the halfedges leaving a vertex.
+void check_vertex_fans(const Mesh& m) {
+  const std::uint32_t H = m.num_halfedges(), V = m.num_vertices();
+  std::uint64_t total = 0;
   for (std::uint32_t v = 0; v < V; ++v) {
-    const HalfedgeId start = vertex_he_[v];
-    if (start.index() >= H || from(start) != VertexId(v))
+    const HalfedgeId start = m.halfedge(VertexId(v));
+    if (start.index() >= H || m.from(start) != VertexId(v))
       fail("validate: vertex " + str(v) + " has an invalid stored halfedge (unreferenced vertex?)");
     HalfedgeId h = start;
     std::uint32_t len = 0;
     do {
       ++len;
-      h = twin(prev(h));
+      h = Mesh::twin(m.prev(h));
     } while (h != start && len <= H);
     if (h != start) fail("validate: the fan of vertex " + str(v) + " is not closed");
     total += len;
   }
   if (total != H) fail("validate: some vertex has more than one fan (non-manifold vertex)");
-  // No two edges between the same pair of vertices.
-  std::vector<std::uint64_t> keys(num_edges());
-  for (std::uint32_t e = 0; e < num_edges(); ++e) {
-    const std::uint64_t a = to(HalfedgeId(2 * e)).index(), b = to(HalfedgeId(2 * e + 1)).index();
+}
+
+// No two edges between the same pair of vertices.
+void check_distinct_edges(const Mesh& m) {
+  std::vector<std::uint64_t> keys(m.num_edges());
+  for (std::uint32_t e = 0; e < m.num_edges(); ++e) {
+    const std::uint64_t a = m.to(HalfedgeId(2 * e)).index(), b = m.to(HalfedgeId(2 * e + 1)).index();
     keys[e] = (std::min(a, b) << 32) | std::max(a, b);
   }
   std::sort(keys.begin(), keys.end());
@@ -285,6 +371,22 @@ void Mesh::validate() const {
   if (dup != keys.end())
     fail("validate: " + edge_name(static_cast<std::uint32_t>(*dup >> 32), static_cast<std::uint32_t>(*dup)) +
          " appears more than once");
+}
+
+}  // namespace
+
+void Mesh::validate() const {
+  const std::size_t nh = he_to_.size();
+  if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
+    fail("validate: halfedge arrays have inconsistent sizes");
+  if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
+  if (nh >= no_index || positions_.size() >= no_index || face_he_.size() >= no_index)
+    fail("validate: element counts exceed 32-bit handles");
+  if (num_vertices() == 0 || num_faces() == 0) fail("validate: empty mesh");
+  check_halfedge_links(*this);
+  check_face_cycles(*this);
+  check_vertex_fans(*this);
+  check_distinct_edges(*this);
 }
 
 PolygonSoup Mesh::to_soup() const {

@@ -50,21 +50,13 @@
 #include "arc_trace.hpp"
 
 #include <algorithm>
-#include <string>
 
 #include "contributing_vertices.hpp"
-#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
-
-[[noreturn]] void inconsistent(HalfedgeId ha, const char* what) {
-  throw Error(ErrorCategory::invalid_argument,
-              "minkowski_sum: operands are not valid ConvexPolyhedra: the Gaussian arc walk of edge " +
-                  std::to_string(Mesh::edge(ha).index()) + " of A " + what);
-}
 
 // The halfedge of f's boundary from u to w, or invalid.
 HalfedgeId halfedge_between(const Mesh& m, FaceId f, VertexId u, VertexId w) {
@@ -75,113 +67,140 @@ HalfedgeId halfedge_between(const Mesh& m, FaceId f, VertexId u, VertexId w) {
   return {};
 }
 
+// Where the walk is: at the maximiser u, or at the facet point event when
+// that is valid.
+struct WalkPosition {
+  VertexId u;
+  FaceId event;
+};
+
+// Start (see the file comment): the maximiser at n1, given by c1.
+WalkPosition start_of_walk(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
+                           std::span<const VertexId> c1, Vec3Ref da) {
+  const Mesh& mb = b.mesh();
+  const FaceId f1 = a.mesh().face(ha);
+  WalkPosition at;
+  if (c1.size() == 1) {
+    at.u = c1[0];
+  } else if (c1.size() == 2) {
+    const Vec3 d = b.vertex(c1[1]) - b.vertex(c1[0]);
+    const ApproxVec3 d_approx = ApproxVec3::of(d);
+    // sign <d_A x n1, d> = det[d_A, n1, d].
+    const Sign s = sign_triple(da, detail::normal_ref(a, f1), Vec3Ref{d, d_approx});
+    if (s == Sign::positive) {
+      at.u = c1[1];
+    } else if (s == Sign::negative) {
+      at.u = c1[0];
+    } else {
+      // The edge is parallel to d_A: G runs along its arc, from its facet
+      // point on the left towards the end reached moving ccw about d_A.
+      // (Two maximisers are the ends of the edge of B supporting B in
+      // direction n1, so h is found.)
+      HalfedgeId h;
+      for (HalfedgeId g : mb.outgoing_halfedges(c1[0]))
+        if (mb.to(g) == c1[1]) h = g;
+      // The arc of h runs from n(face(h)) to n(face(twin(h))) ccw about d_h.
+      at.event = sign_dot(Vec3Ref{d, d_approx}, da) == Sign::positive ? mb.face(Mesh::twin(h)) : mb.face(h);
+    }
+  } else {
+    // Three or more maximisers span the facet of B supporting B in direction
+    // n1 (an edge has only two vertices, all being extreme): its primitive
+    // normal is n1's, and it is incident to c1[0].
+    at.event = facet_with_normal(b, c1[0], a.normal(f1));
+  }
+  return at;
+}
+
+// The vertices of F maximising <., t> for the tangent t = d_A x n_F at the
+// facet point n_F of F (parallel to d_A): best, and tie if an edge of F
+// ties with it.
+struct FacetMaximisers {
+  VertexId best;
+  VertexId tie;
+};
+
+FacetMaximisers maximisers_along_tangent(const ConvexPolyhedron& b, FaceId f, const Vec3& da) {
+  const Vec3 t = cross(da, b.normal(f));
+  const ApproxVec3 t_approx = ApproxVec3::of(t);
+  const Vec3Ref t_ref{t, t_approx};
+  FacetMaximisers m;
+  for (HalfedgeId h : b.mesh().face_halfedges(f)) {
+    const VertexId w = b.mesh().from(h);
+    if (!m.best.is_valid()) {
+      m.best = w;
+      continue;
+    }
+    const Sign s = compare_dot(detail::vertex_ref(b, w), detail::vertex_ref(b, m.best), t_ref);
+    if (s == Sign::positive) {
+      m.best = w;
+      m.tie = VertexId();
+    } else if (s == Sign::zero) {
+      m.tie = w;
+    }
+  }
+  return m;
+}
+
+// The way out of u's normal cone forwards (see the file comment): an
+// outgoing halfedge h with s(face(twin(h))) = - and s(face(h)) = + (a
+// crossing) or 0 (a facet point event); h is invalid if there is none.
+struct ConeExit {
+  HalfedgeId h;
+  bool crossing = false;
+};
+
+ConeExit leave_normal_cone(const ConvexPolyhedron& b, VertexId u, Vec3Ref da) {
+  const Mesh& mb = b.mesh();
+  auto side = [&](FaceId f) { return sign_dot(detail::normal_ref(b, f), da); };
+  for (HalfedgeId h : mb.outgoing_halfedges(u)) {
+    if (side(mb.face(Mesh::twin(h))) != Sign::negative) continue;
+    const Sign left = side(mb.face(h));
+    if (left == Sign::positive) return {h, true};
+    if (left == Sign::zero) return {h, false};
+  }
+  return {};
+}
+
 }  // namespace
 
 void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
                        std::span<const VertexId> c1, std::span<const VertexId> c2,
                        std::vector<HalfedgeId>& out, std::uint64_t& steps) {
-  const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   const Vec3 da = a.edge_vector(ha);
   const ApproxVec3 da_approx = ApproxVec3::of(da);
   const Vec3Ref da_ref{da, da_approx};
-  auto side = [&](FaceId f) { return sign_dot(detail::normal_ref(b, f), da_ref); };
   auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
-  if (c1.empty() || c2.empty()) inconsistent(ha, "has no contributing vertices");
 
-  VertexId u;    // the current maximiser, when valid
-  FaceId event;  // the current facet point event, when valid
-  if (c1.size() == 1) {
-    u = c1[0];
-  } else {
-    const FaceId f1 = ma.face(ha);
-    if (c1.size() == 2) {
-      const Vec3 d = b.vertex(c1[1]) - b.vertex(c1[0]);
-      const ApproxVec3 d_approx = ApproxVec3::of(d);
-      // sign <d_A x n1, d> = det[d_A, n1, d].
-      const Sign s = sign_triple(da_ref, detail::normal_ref(a, f1), Vec3Ref{d, d_approx});
-      if (s == Sign::positive) {
-        u = c1[1];
-      } else if (s == Sign::negative) {
-        u = c1[0];
-      } else {
-        // The edge is parallel to d_A: G runs along its arc, from its facet
-        // point on the left towards the end reached moving ccw about d_A.
-        HalfedgeId h;
-        for (HalfedgeId g : mb.outgoing_halfedges(c1[0]))
-          if (mb.to(g) == c1[1]) h = g;
-        if (!h.is_valid()) inconsistent(ha, "starts on an edge of B that does not exist");
-        // The arc of h runs from n(face(h)) to n(face(twin(h))) ccw about d_h.
-        event =
-            sign_dot(Vec3Ref{d, d_approx}, da_ref) == Sign::positive ? mb.face(Mesh::twin(h)) : mb.face(h);
-      }
-    } else {
-      event = facet_with_normal(b, c1[0], a.normal(f1));
-      if (!event.is_valid()) inconsistent(ha, "starts at a facet point that B does not have");
-    }
-  }
-
-  const std::uint64_t limit = std::uint64_t{mb.num_halfedges()} + mb.num_faces() + 4u;
-  for (std::uint64_t step = 0;; ++step) {
-    if (step > limit) inconsistent(ha, "does not reach its end");
+  // The walk ends: it only moves forward along G (each exit is unique, see
+  // the file comment), past finitely many events, and stops in c2's region.
+  WalkPosition at = start_of_walk(a, ha, b, c1, da_ref);
+  for (;;) {
     ++steps;
-    if (event.is_valid()) {
-      // At the facet point n_F of F (parallel to d_A), moving along t.
-      const Vec3 t = cross(da, b.normal(event));
-      const ApproxVec3 t_approx = ApproxVec3::of(t);
-      const Vec3Ref t_ref{t, t_approx};
-      VertexId best;
-      VertexId tie;
-      for (HalfedgeId h : mb.face_halfedges(event)) {
-        const VertexId w = mb.from(h);
-        if (!best.is_valid()) {
-          best = w;
-          continue;
-        }
-        const Sign s = compare_dot(detail::vertex_ref(b, w), detail::vertex_ref(b, best), t_ref);
-        if (s == Sign::positive) {
-          best = w;
-          tie = VertexId();
-        } else if (s == Sign::zero) {
-          tie = w;
-        }
-      }
-      if (!tie.is_valid()) {
-        u = best;
-        event = FaceId();
+    if (at.event.is_valid()) {
+      const FacetMaximisers m = maximisers_along_tangent(b, at.event, da);
+      if (!m.tie.is_valid()) {
+        at = {m.best, FaceId()};
       } else {
         // An edge of F parallel to d_A: G runs along its arc to the facet
-        // point of the facet on its other side.
-        if (in_c2(best) || in_c2(tie)) return;
-        const HalfedgeId h = halfedge_between(mb, event, best, tie);
-        if (!h.is_valid()) inconsistent(ha, "meets a facet of B with two non-adjacent tied vertices");
-        event = mb.face(Mesh::twin(h));
+        // point of the facet on its other side. (A linear function on the
+        // strictly convex polygon F is maximal at a corner or on a side, so
+        // best and tie are the ends of a side and h is found.)
+        if (in_c2(m.best) || in_c2(m.tie)) return;
+        const HalfedgeId h = halfedge_between(mb, at.event, m.best, m.tie);
+        at.event = mb.face(Mesh::twin(h));
         continue;
       }
     }
-    if (in_c2(u)) return;
-    // Leave u's normal cone forwards (see the file comment).
-    HalfedgeId exit;
-    bool crossing = false;
-    for (HalfedgeId h : mb.outgoing_halfedges(u)) {
-      if (side(mb.face(Mesh::twin(h))) != Sign::negative) continue;
-      const Sign left = side(mb.face(h));
-      if (left == Sign::positive) {
-        exit = h;
-        crossing = true;
-        break;
-      }
-      if (left == Sign::zero) {
-        exit = h;
-        break;
-      }
-    }
-    if (!exit.is_valid()) inconsistent(ha, "finds no way out of the normal cone of a vertex of B");
-    if (crossing) {
-      out.push_back(Mesh::twin(exit));
-      u = mb.to(exit);
+    if (in_c2(at.u)) return;
+    // G passes through the interior of u's normal cone here, so the exit
+    // exists (file comment).
+    const ConeExit exit = leave_normal_cone(b, at.u, da_ref);
+    if (exit.crossing) {
+      out.push_back(Mesh::twin(exit.h));
+      at.u = mb.to(exit.h);
     } else {
-      event = mb.face(exit);
+      at.event = mb.face(exit.h);
     }
   }
 }

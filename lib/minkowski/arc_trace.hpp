@@ -21,9 +21,10 @@ namespace cvms::detail {
 /// invisible, so that the facet's outward normal is cross(d_A, d_g).
 /// In the order met along the arc. See lib/minkowski/arc_trace.cpp for the walk and
 /// its degenerate cases.
-/// \pre c1 and c2 are the exact contributing-vertex lists and are disjoint.
-/// \throw Error(invalid_argument) if the walk finds b inconsistent (an
-///   operand that breaks the ConvexPolyhedron guarantees).
+/// \pre c1 and c2 are the exact contributing-vertex lists (non-empty) and
+///   are disjoint. Nothing is checked: every ConvexPolyhedron meets the
+///   guarantees the walk relies on, since only the checked from_mesh and the
+///   library's own builders make one.
 /// Cost: O(the degrees of the vertices of b the arc passes) predicates.
 void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
                        std::span<const VertexId> c1, std::span<const VertexId> c2,

@@ -4,9 +4,7 @@
 #include "contributing_vertices.hpp"
 
 #include <algorithm>
-#include <string>
 
-#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 
@@ -62,20 +60,19 @@ bool disjoint_sorted(std::span<const VertexId> x, std::span<const VertexId> y) n
 
 namespace {
 
-[[noreturn]] void invalid_ties(FaceId f, VertexId v, std::size_t ties) {
-  throw Error(ErrorCategory::invalid_argument,
-              "minkowski_sum: operand is not a valid ConvexPolyhedron: the maximiser " +
-                  std::to_string(v.index()) + " for the normal of facet " + std::to_string(f.index()) +
-                  " of the other operand has " + std::to_string(ties) +
-                  " tied neighbours but no facet with that normal");
-}
-
-// The contributing vertices of q for direction n (the normal of facet f of
+// The contributing vertices of q for direction n (the normal of a facet of
 // the other operand), climbing from `start`. Leaves the sorted list in `out`.
-void climb(const ConvexPolyhedron& q, FaceId f, Vec3Ref n, VertexId start, std::vector<VertexId>& out) {
+//
+// A vertex v has at most two neighbours tied with it: they lie with v in the
+// plane H = {x : <x, n> = <v, n>}, and an edge of q from v inside H is a
+// side, at its corner v, of the section of q by H (a polygon, or the face of
+// q in H where H supports q). At the maximiser, two ties make v a corner of
+// the facet of q in H, whose primitive normal is n: facet_with_normal finds
+// it.
+void climb(const ConvexPolyhedron& q, Vec3Ref n, VertexId start, std::vector<VertexId>& out) {
   const Mesh& m = q.mesh();
   VertexId v = start;
-  VertexId tied[3];
+  VertexId tied[2];
   std::size_t num_tied = 0;
   for (bool improved = true; improved;) {
     improved = false;
@@ -88,10 +85,7 @@ void climb(const ConvexPolyhedron& q, FaceId f, Vec3Ref n, VertexId start, std::
         improved = true;
         break;
       }
-      if (s == Sign::zero) {
-        if (num_tied == 3) invalid_ties(f, v, 4);
-        tied[num_tied++] = w;
-      }
+      if (s == Sign::zero) tied[num_tied++] = w;
     }
   }
   out.clear();
@@ -101,10 +95,7 @@ void climb(const ConvexPolyhedron& q, FaceId f, Vec3Ref n, VertexId start, std::
     std::sort(out.begin(), out.end());
     return;
   }
-  if (num_tied > 2) invalid_ties(f, v, num_tied);
-  const FaceId g = facet_with_normal(q, v, n.exact);
-  if (!g.is_valid()) invalid_ties(f, v, num_tied);
-  sorted_facet_vertices(q, g, out);
+  sorted_facet_vertices(q, facet_with_normal(q, v, n.exact), out);
 }
 
 }  // namespace
@@ -127,7 +118,7 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
     if (g.is_valid()) {
       sorted_facet_vertices(q, g, list);
     } else {
-      climb(q, f, detail::normal_ref(p, f), seed[f.index()], list);
+      climb(q, detail::normal_ref(p, f), seed[f.index()], list);
     }
     out.assign(f, list);
     for (HalfedgeId h : mp.face_halfedges(f)) {
@@ -137,10 +128,7 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
       queue.push_back(next);
     }
   }
-  if (queue.size() != nf)
-    throw Error(ErrorCategory::invalid_argument, "minkowski_sum: operand is not connected (" +
-                                                     std::to_string(queue.size()) + " of " +
-                                                     std::to_string(nf) + " facets reachable)");
+  // The queue reaches every facet: a ConvexPolyhedron's surface is connected.
 }
 
 }  // namespace cvms::detail

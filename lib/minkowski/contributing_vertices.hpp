@@ -80,8 +80,6 @@ class ContributingVertices {
 /// partner[f], if valid (and partner is non-empty), is a facet of q known to
 /// have the normal of f: its vertices are taken without climbing.
 /// The lists equal those of maximising_vertices exactly.
-/// 	hrow Error(invalid_argument) if q breaks the ConvexPolyhedron guarantees
-///   (ties that are neither an edge nor a facet with the same normal).
 /// Cost: O(sum over facets of the climb length times the degrees met) predicates,
 /// in practice O(f_p + v_q) for operands of similar resolution.
 void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,

@@ -28,18 +28,17 @@
 #include "cvms_algorithm.hpp"
 
 #include <algorithm>
-#include <exception>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "arc_trace.hpp"
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
-#include "stitch.hpp"
 #include "polyhedron_builder.hpp"
+#include "stitch.hpp"
+#include "worker.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -56,25 +55,20 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
 
 // Step 3 with the paper's search (Section 4.3, Eqs. 4 and 5), decided exactly.
 //
-// Conventions. For a halfedge h of a convex polyhedron with d = to(h) -
-// from(h), n1 the normal of face(h) (on its left) and n2 the normal of
-// face(twin(h)), cross(n1, n2) is a positive multiple of d: the Gaussian arc
-// of the edge runs from n1 to n2 counterclockwise about d. A direction x on
-// the great circle of that arc (x perpendicular to d) is strictly inside the
-// arc iff det[n1, x, d] > 0 and det[x, n2, d] > 0 (paper Eq. 9 with the arc's
-// pole d in place of cross(n1, n2)).
+// Conventions (lib/minkowski/arc_crossing.hpp). For a halfedge h with
+// d = to(h) - from(h), n1 the normal of face(h) and n2 that of
+// face(twin(h)), the Gaussian arc of the edge runs from n1 to n2
+// counterclockwise about d.
 //
 // The exact test. e_A + e_B is a facet of S iff the arcs cross at a point
-// interior to both. The great circles of the arcs are perpendicular to d_A
-// and d_B, so they meet at +-n with n = cross(d_A, d_B) (n = 0: parallel
-// edges, same great circle, no edge facet). Using a x (b x c) = b<a,c> -
-// c<a,b> and <n1_B, d_B> = <n2_B, d_B> = 0:
-//   det[n1_B, n, d_B] = -|d_B|^2 <n1_B, d_A>,  det[n, n2_B, d_B] = |d_B|^2 <n2_B, d_A>,
-// so n is strictly inside the arc of h_B iff face(h_B) is strictly visible
-// from d_A (<n1_B, d_A> < 0) and face(twin(h_B)) strictly invisible
-// (<n2_B, d_A> > 0, paper Eq. 4). Hence the candidates are exactly the
-// horizon edges of B, oriented so that the invisible facet is on the right,
-// with n = cross(d_A, d_B) as the candidate outward normal; the paper's
+// interior to both. The great circles of the arcs meet at +-n with
+// n = cross(d_A, d_B) (n = 0: parallel edges, same great circle, no edge
+// facet). By the reduction of Eq. 9 in arc_crossing.hpp (with e = d_A), n is
+// strictly inside the arc of h_B iff face(h_B) is strictly visible from d_A
+// (<n1_B, d_A> < 0) and face(twin(h_B)) strictly invisible (<n2_B, d_A> > 0,
+// paper Eq. 4). Hence the candidates are exactly the horizon edges of B,
+// oriented so that the invisible facet is on the right, with
+// n = cross(d_A, d_B) as the candidate outward normal; the paper's
 // normal-orientation criterion (Eq. 5, here det[n1_A, n, d_A] > 0 and
 // det[n, n2_A, d_A] > 0; the paper writes "< 0" with e_A oriented as
 // cross(n2_A, n1_A)) then decides whether n is strictly inside the arc
@@ -151,20 +145,10 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
   }
 }
 
-}  // namespace
-
-ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          const ResearchOptions& research, Stats& stats) {
-  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
-  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
-}
-
-SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            const ResearchOptions& research, Stats& stats) {
-  const Mesh& ma = a.mesh();
-  const Mesh& mb = b.mesh();
-  const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
-  if (!walk_vertices && research.contributing_vertex_search != ContributingVertexSearch::scan) {
+// The search modes are plain enums a caller may set to anything.
+void check_search_modes(const ResearchOptions& research) {
+  if (research.contributing_vertex_search != ContributingVertexSearch::walk &&
+      research.contributing_vertex_search != ContributingVertexSearch::scan) {
     throw Error(ErrorCategory::invalid_argument,
                 "minkowski_sum: unknown contributing vertex search " +
                     std::to_string(static_cast<int>(research.contributing_vertex_search)));
@@ -175,22 +159,38 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
                 "minkowski_sum: unknown edge facet search " +
                     std::to_string(static_cast<int>(research.edge_facet_search)));
   }
-  SumFacetBuilder out(a, b);
-  std::vector<VertexId> cv;
+}
 
-  // Step 1: translated facets. partner[f_B] is the facet of A with the same
-  // normal, if any (then f_B contributes with it, Property 2).
-  ContributingVertices cv_a(a.num_facets());
-  if (walk_vertices) {
-    contributing_vertices_walk(a, b, {}, cv_a);
-  } else {
-    for (FaceId fa : ma.faces()) {
-      maximising_vertices(b, detail::normal_ref(a, fa), cv);
-      cv_a.append(cv);
-    }
+// The contributing vertices of every facet of p in q, by walking or by the
+// paper's scan. partner[f], if partner is non-empty and it is valid, is the
+// facet of q with f's normal: its vertices are the list, with no search.
+ContributingVertices find_contributing_vertices(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
+                                                std::span<const FaceId> partner, bool walk) {
+  ContributingVertices cv(p.num_facets());
+  if (walk) {
+    contributing_vertices_walk(p, q, partner, cv);
+    return cv;
   }
+  std::vector<VertexId> list;
+  for (FaceId f : p.mesh().faces()) {
+    const FaceId g = partner.empty() ? FaceId() : partner[f.index()];
+    if (g.is_valid()) {
+      sorted_facet_vertices(q, g, list);
+    } else {
+      maximising_vertices(q, detail::normal_ref(p, f), list);
+    }
+    cv.append(list);
+  }
+  return cv;
+}
+
+// Step 1: translated facets. Returns partner: partner[f_B] is the facet of A
+// with the same normal, if any (then f_B contributes with it, Property 2).
+std::vector<FaceId> add_translated_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                                          const ContributingVertices& cv_a, SumFacetBuilder& out,
+                                          Stats& stats) {
   std::vector<FaceId> partner(b.num_facets());
-  for (FaceId fa : ma.faces()) {
+  for (FaceId fa : a.mesh().faces()) {
     const std::span<const VertexId> c = cv_a.of(fa);
     if (c.size() == 1) {
       out.add_facet_plus_vertex(Operand::a, fa, c[0]);
@@ -198,19 +198,56 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
       out.add_facet_plus_edge(Operand::a, fa, c[0], c[1]);
       ++stats.contributing_ties;
     } else {
+      // Three or more maximisers span the facet of B supporting B in the
+      // direction of n(fa) (an edge has only two vertices, all being
+      // extreme): its primitive normal is n(fa), and it is incident to c[0].
       const FaceId fb = facet_with_normal(b, c[0], a.normal(fa));
-      if (!fb.is_valid()) {
-        throw Error(ErrorCategory::invalid_argument,
-                    "minkowski_sum: operand B is not a valid ConvexPolyhedron: facet " +
-                        std::to_string(fa.index()) +
-                        " of A has >= 3 contributing vertices but B has no facet with its normal");
-      }
       partner[fb.index()] = fa;
       out.add_facet_plus_facet(fa, fb);
       ++stats.contributing_ties;
     }
     ++stats.translated_facets;
   }
+  return partner;
+}
+
+// Step 2: corner facets, from the facets of B without a partner.
+void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv_b,
+                       std::span<const FaceId> partner, SumFacetBuilder& out, Stats& stats) {
+  for (FaceId fb : b.mesh().faces()) {
+    if (partner[fb.index()].is_valid()) {
+      ++stats.contributing_ties;
+      continue;
+    }
+    // One or two contributing vertices: three or more would mean a facet of
+    // A with the same (primitive) normal, which step 1 paired with fb.
+    const std::span<const VertexId> c = cv_b.of(fb);
+    if (c.size() == 1) {
+      out.add_facet_plus_vertex(Operand::b, fb, c[0]);
+    } else {
+      out.add_facet_plus_edge(Operand::b, fb, c[0], c[1]);
+      ++stats.contributing_ties;
+    }
+    ++stats.corner_facets;
+  }
+}
+
+}  // namespace
+
+ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                          const ResearchOptions& research, Stats& stats) {
+  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
+  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
+}
+
+SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                            const ResearchOptions& research, Stats& stats) {
+  check_search_modes(research);
+  const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
+  SumFacetBuilder out(a, b);
+
+  const ContributingVertices cv_a = find_contributing_vertices(a, b, {}, walk_vertices);
+  const std::vector<FaceId> partner = add_translated_facets(a, b, cv_a, out, stats);
 
   // Step 3 with the arc walk needs only the contributing vertices of A's
   // facets: with threads > 1, a worker traces the edge facets into a builder
@@ -218,73 +255,24 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   // in the order one thread gives.
   SumFacetBuilder tracer_out(a, b);
   Stats tracer_stats;
-  PredicateCounters tracer_predicates;
-  std::exception_ptr tracer_failure;
-  std::jthread tracer;  // after what it writes: destroyed (joined) first
+  Worker tracer;  // after what it writes: destroyed (joined) first
   if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
       std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
-    tracer = std::jthread([&] {
-      try {
-        const PredicateCounters before = predicate_counters();
-        edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats);
-        const PredicateCounters& after = predicate_counters();
-        tracer_predicates = {after.filtered - before.filtered, after.exact - before.exact};
-      } catch (...) {
-        tracer_failure = std::current_exception();
-      }
-    });
+    tracer.start([&] { edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats); });
   }
 
-  // Step 2: corner facets. The contributing vertices of a facet of B that
-  // has a partner are the vertices of the partner (the face of A supporting
-  // A in that direction); we record them for Property 1 without a search.
-  ContributingVertices cv_b(b.num_facets());
-  if (walk_vertices) {
-    contributing_vertices_walk(b, a, partner, cv_b);
-  } else {
-    for (FaceId fb : mb.faces()) {
-      const FaceId fa = partner[fb.index()];
-      if (fa.is_valid()) {
-        sorted_facet_vertices(a, fa, cv);
-      } else {
-        maximising_vertices(a, detail::normal_ref(b, fb), cv);
-      }
-      cv_b.append(cv);
-    }
-  }
-  for (FaceId fb : mb.faces()) {
-    if (partner[fb.index()].is_valid()) {
-      ++stats.contributing_ties;
-      continue;
-    }
-    const std::span<const VertexId> c = cv_b.of(fb);
-    if (c.size() == 1) {
-      out.add_facet_plus_vertex(Operand::b, fb, c[0]);
-    } else if (c.size() == 2) {
-      out.add_facet_plus_edge(Operand::b, fb, c[0], c[1]);
-      ++stats.contributing_ties;
-    } else {
-      // >= 3 contributing vertices means a facet of A with the same (primitive)
-      // normal, which step 1 paired with this facet: only an operand that
-      // breaks the ConvexPolyhedron guarantees gets here.
-      throw Error(ErrorCategory::invalid_argument,
-                  "minkowski_sum: operand A is not a valid ConvexPolyhedron: facet " +
-                      std::to_string(fb.index()) +
-                      " of B has >= 3 contributing vertices but A has no facet with its normal");
-    }
-    ++stats.corner_facets;
-  }
+  // Step 2. The contributing vertices of a facet of B that has a partner are
+  // the vertices of the partner (the face of A supporting A in that
+  // direction); we record them for Property 1 without a search.
+  const ContributingVertices cv_b = find_contributing_vertices(b, a, partner, walk_vertices);
+  add_corner_facets(b, cv_b, partner, out, stats);
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
   if (tracer.joinable()) {
-    tracer.join();
-    if (tracer_failure) std::rethrow_exception(tracer_failure);
+    tracer.join();  // its predicates count as this thread's
     out.append(tracer_out);
     stats.edge_candidates += tracer_stats.edge_candidates;
     stats.edge_facets += tracer_stats.edge_facets;
-    // Evaluated on this call's behalf: counted as if on this thread.
-    predicate_counters().filtered += tracer_predicates.filtered;
-    predicate_counters().exact += tracer_predicates.exact;
   } else if (research.edge_facet_search == EdgeFacetSearch::paper) {
     const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
@@ -292,7 +280,6 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   } else {
     edge_facets_walk(a, b, cv_a, out, stats);
   }
-
   return out;
 }
 

@@ -11,11 +11,11 @@
 // facets' normals. Every test is the sign of a dot, cross or triple product
 // of these vectors, decided by the predicates module.
 //
-// Arc convention. For a halfedge h with d = to(h) - from(h), s = n(face(h))
-// and t = n(face(twin(h))), cross(s, t) is a positive multiple of d (checked
-// by a test), so d serves as the pole n of Eqs. 8-9: the great circle of the
-// arc is {x : <x, d> = 0} and x on it is strictly inside the arc iff
-// det[s, x, d] > 0 and det[x, t, d] > 0.
+// Arc convention (lib/minkowski/arc_crossing.hpp). For a halfedge h with
+// d = to(h) - from(h), s = n(face(h)) and t = n(face(twin(h))), cross(s, t)
+// is a positive multiple of d (checked by a test), so d serves as the pole n
+// of Eqs. 8-9: the great circle of the arc is {x : <x, d> = 0} and x on it is
+// strictly inside the arc iff det[s, x, d] > 0 and det[x, t, d] > 0.
 //
 // The merge handles the paper's four intersection cases in this order:
 //  1. coincident facet points (Eq. 6: parallel normals, positive dot):
@@ -35,21 +35,13 @@
 //     cases 1-3 are exactly those left after cases 1-2.
 //  3. two edge arcs crossing at a point interior to both: e_A + e_B (Eq. 12).
 //     Pre-check (Property 1): an arc whose two facets share a contributing
-//     vertex is dropped. The great circles of arcs with poles d_A and d_B
-//     meet at +-x, x = cross(d_A, d_B). With a x (b x c) = b<a,c> - c<a,b>
-//     and <s_A, d_A> = <t_A, d_A> = <s_B, d_B> = <t_B, d_B> = 0, Eq. 9 for x
-//     on both arcs reduces to dot products of facet points with poles:
-//       det[s_A, x, d_A] =  |d_A|^2 <s_A, d_B>,  det[x, t_A, d_A] = -|d_A|^2 <t_A, d_B>,
-//       det[s_B, x, d_B] = -|d_B|^2 <s_B, d_A>,  det[x, t_B, d_B] =  |d_B|^2 <t_B, d_A>,
-//     so sigma * x (sigma = +-1) is strictly inside both arcs iff
-//       sign<s_A, d_B> = sigma, sign<t_A, d_B> = -sigma,
-//       sign<s_B, d_A> = -sigma, sign<t_B, d_A> = sigma,
-//     and the facet's outward normal is sigma * cross(d_A, d_B). Nothing is
-//     constructed per pair. Arcs on one great circle (parallel edges, x = 0)
-//     have <s_A, d_B> = 0 and are rejected: overlapping arcs give no facet.
-//     An arc through a facet point of the other diagram, or ending on the
-//     other arc, makes one of the four signs zero: that contact is case 1 or
-//     2, not an edge facet.
+//     vertex is dropped. Eq. 9 for a point on both arcs reduces to four
+//     signs of dot products of facet points with the other arc's pole, which
+//     also give the facet's outward normal sigma * cross(d_A, d_B)
+//     (arc_crossing.hpp derives it): nothing is constructed per pair. Arcs
+//     on one great circle give no facet, and an arc through a facet point of
+//     the other diagram, or ending on the other arc, makes one of the four
+//     signs zero: that contact is case 1 or 2, not an edge facet.
 //
 // Every facet of A yields a translated facet (case 1, 2 or 4), every facet of
 // B not matched in case 1 a corner facet, and every crossing an edge facet;
@@ -61,14 +53,13 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <string>
 #include <vector>
 
+#include "arc_crossing.hpp"
 #include "contributing_vertices.hpp"
-#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
-#include "stitch.hpp"
 #include "polyhedron_builder.hpp"
+#include "stitch.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -104,8 +95,6 @@ struct EdgeArcs {
   [[nodiscard]] std::size_t size() const noexcept { return halfedges.size(); }
   [[nodiscard]] Vec3Ref pole(std::size_t i) const noexcept { return {poles[i], pole_approx[i]}; }
 };
-
-const char* name_of(Operand which) { return which == Operand::a ? "A" : "B"; }
 
 // Case 1 (Eqs. 6-7).
 void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
@@ -161,16 +150,10 @@ void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
   std::vector<VertexId> cv;
   for (FaceId f : p.mesh().faces()) {
     if (loc[f.index()].where != Location::unknown) continue;
+    // One maximiser: two or more would put the facet point on an arc or a
+    // facet point of q (the directions maximised by an edge of q are its
+    // open arc, by a facet its facet point), where case 1 or 2 located it.
     maximising_vertices(q, detail::normal_ref(p, f), cv);
-    if (cv.size() != 1) {
-      // Two or more maximisers put the facet point on an arc or a facet
-      // point of q, which cases 1 and 2 would have found for a valid operand.
-      throw Error(ErrorCategory::invalid_argument,
-                  std::string("minkowski_sum: operands are not valid ConvexPolyhedra: facet ") +
-                      std::to_string(f.index()) + " of " + name_of(which) + " has " +
-                      std::to_string(cv.size()) +
-                      " contributing vertices but lies on no facet point or edge arc of the other operand");
-    }
     loc[f.index()] = {Location::in_vertex_region, cv[0].index()};
     out.add_facet_plus_vertex(which, f, cv[0]);
     ++(which == Operand::a ? stats.translated_facets : stats.corner_facets);
@@ -219,26 +202,20 @@ std::vector<std::uint32_t> arcs_passing_precheck(const ConvexPolyhedron& p, cons
   return out;
 }
 
-// Case 3 (Eq. 12), with the reduction of Eq. 9 explained in the file comment.
+// Case 3 (Eq. 12), by the reduction of Eq. 9 in arc_crossing.hpp.
 void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const EdgeArcs& arcs_a,
                         const EdgeArcs& arcs_b, const std::vector<std::uint32_t>& ia,
                         const std::vector<std::uint32_t>& ib, SumFacetBuilder& out, Stats& stats) {
   const Mesh& ma = a.mesh();
-  const Mesh& mb = b.mesh();
   for (std::uint32_t i : ia) {
     const HalfedgeId ha = arcs_a.halfedges[i];
-    const Vec3Ref sa = detail::normal_ref(a, ma.face(ha));
-    const Vec3Ref ta = detail::normal_ref(a, ma.face(Mesh::twin(ha)));
-    const Vec3Ref da = arcs_a.pole(i);
+    const ArcRef arc_a{detail::normal_ref(a, ma.face(ha)), detail::normal_ref(a, ma.face(Mesh::twin(ha))),
+                       arcs_a.pole(i)};
     for (std::uint32_t j : ib) {
       const HalfedgeId hb = arcs_b.halfedges[j];
-      const Vec3Ref db = arcs_b.pole(j);
       ++stats.edge_candidates;
-      const Sign sigma = sign_dot(sa, db);
-      if (sigma == Sign::zero) continue;  // parallel arcs, or s_A on the great circle of the arc of B
-      if (sign_dot(ta, db) != -sigma) continue;
-      if (sign_dot(detail::normal_ref(b, mb.face(hb)), da) != -sigma) continue;
-      if (sign_dot(detail::normal_ref(b, mb.face(Mesh::twin(hb))), da) != sigma) continue;
+      const Sign sigma = proper_crossing(arc_a, b, hb, arcs_b.pole(j));
+      if (sigma == Sign::zero) continue;
       out.add_edge_plus_edge(ha, hb, sigma);
       ++stats.edge_facets;
     }

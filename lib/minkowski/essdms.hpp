@@ -11,8 +11,6 @@ namespace cvms::detail {
 /// Adds its facet counts, ties and arc-pair counts to `stats` (not the
 /// predicate counters: the caller measures those). \pre a and b are
 /// non-empty.
-/// \throw Error(invalid_argument) if an operand breaks the ConvexPolyhedron
-///   guarantees in a way the merge notices.
 ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Stats& stats);
 
 }  // namespace cvms::detail

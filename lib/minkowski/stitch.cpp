@@ -6,17 +6,16 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <exception>
 #include <latch>
-#include <thread>
 #include <unordered_map>
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
 #include "dyadic.hpp"
 #include "error_bounds.hpp"
-#include "small_direction.hpp"
 #include "polyhedron_builder.hpp"
+#include "small_direction.hpp"
+#include "worker.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -345,33 +344,29 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   FacetPlanes planes;
   std::atomic<std::size_t> next{0};
   std::latch sized(1);
-  std::exception_ptr failure;
   auto take_chunks = [&](const Mesh* with_mesh) {
     PlaneScratch scratch(*this);
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
       write_planes(planes, begin, std::min(begin + chunk, n), with_mesh, scratch);
   };
   {
-    std::jthread worker([&] {
+    Worker worker;
+    worker.start([&] {
       try {
         planes = sized_planes();
       } catch (...) {
-        failure = std::current_exception();
-        next = n;  // nothing for anyone to write
+        next = n;            // nothing for anyone to write
+        sized.count_down();  // also on failure: the other thread waits for this
+        throw;
       }
-      sized.count_down();  // also on failure: the other thread waits for this
-      if (failure) return;
-      try {
-        take_chunks(nullptr);
-      } catch (...) {
-        failure = std::current_exception();
-      }
+      sized.count_down();
+      take_chunks(nullptr);
     });
-    build_mesh();  // if this throws, the jthread joins before the exception leaves
+    build_mesh();  // if this throws, the worker joins before the exception leaves
     sized.wait();
     take_chunks(&mesh);
+    worker.join();  // rethrows the worker's exception
   }
-  if (failure) std::rethrow_exception(failure);
   return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
 }
 

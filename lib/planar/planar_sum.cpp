@@ -17,29 +17,21 @@
 #include <limits>
 #include <string>
 
+#include "angular_order.hpp"
 #include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
 
 namespace cvms {
 namespace {
 
-// 0 for directions with angle in [0, pi) (y > 0, or y == 0 and x > 0),
-// 1 for [pi, 2pi). d is nonzero.
-int half_turn(const Vec2& d) {
-  int sy = sgn(d.y);
-  if (sy != 0) return sy > 0 ? 0 : 1;
-  return sgn(d.x) > 0 ? 0 : 1;
-}
-
-// Sign of angle(a) - angle(b) with angles taken in [0, 2pi); a, b nonzero.
+// Sign of angle(a) - angle(b) with angles taken in [0, 2pi) from the x
+// axis; a, b nonzero. Against the x axis, the signs of cross(r, d) and
+// <r, d> are those of d.y and d.x (lib/predicates/angular_order.hpp).
 Sign compare_angle(Vec2Ref a, Vec2Ref b) {
-  int ha = half_turn(a.exact);
-  int hb = half_turn(b.exact);
-  if (ha != hb) return ha < hb ? Sign::negative : Sign::positive;
-  // Within one half-turn, b counterclockwise of a means angle(a) < angle(b),
-  // and a zero cross product means the same direction (opposite ones lie in
-  // different half-turns).
-  return -sign_cross2(a, b);
+  auto half_turn = [](const Vec2& d) {
+    return detail::half_turn(sign_of(sgn(d.y)), [&d] { return sign_of(sgn(d.x)); });
+  };
+  return detail::compare_angle(half_turn(a.exact), half_turn(b.exact), [&] { return sign_cross2(a, b); });
 }
 
 // One operand prepared for the merge: its lowest vertex and its edge vectors

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// One step of an algorithm run on a second thread on the caller's behalf, so
+// that the parallel step behaves like the sequential one: join() waits for
+// it, rethrows what it threw, and counts its predicate evaluations as the
+// joining thread's. The counters are per thread (filtered_predicates.hpp),
+// and minkowski_sum reports the difference of its own thread's over the call,
+// so without the merge a threaded run would report fewer predicates than the
+// same run on one thread.
+//
+// A worker nobody joined (the caller is leaving by an exception of its own)
+// is joined by the destructor, and what it threw is dropped: the caller's
+// exception is the one that leaves. Declare the worker after everything its
+// callable writes, so that it is joined before those are destroyed.
+#pragma once
+
+#include <exception>
+#include <thread>
+#include <utility>
+
+#include "filtered_predicates.hpp"
+
+namespace cvms::detail {
+
+class Worker {
+ public:
+  Worker() = default;
+  Worker(const Worker&) = delete;
+  Worker& operator=(const Worker&) = delete;
+  ~Worker() = default;  // the jthread joins
+
+  /// Runs f() on a new thread. \pre not started yet.
+  template <class F>
+  void start(F f) {
+    thread_ = std::jthread([this, f = std::move(f)]() mutable { run(f); });
+  }
+
+  /// True from start() until join().
+  [[nodiscard]] bool joinable() const noexcept { return thread_.joinable(); }
+
+  /// Waits for f, adds its predicate counts to this thread's counters and
+  /// rethrows its exception, if any. \pre joinable().
+  void join() {
+    thread_.join();
+    PredicateCounters& counters = predicate_counters();
+    counters.filtered += counted_.filtered;
+    counters.exact += counted_.exact;
+    if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
+  }
+
+ private:
+  template <class F>
+  void run(F& f) noexcept {
+    const PredicateCounters before = predicate_counters();
+    try {
+      f();
+    } catch (...) {
+      failure_ = std::current_exception();
+    }
+    const PredicateCounters& after = predicate_counters();
+    counted_ = {after.filtered - before.filtered, after.exact - before.exact};
+  }
+
+  PredicateCounters counted_;
+  std::exception_ptr failure_;
+  std::jthread thread_;  // last: destroyed (joined) first
+};
+
+}  // namespace cvms::detail
