@@ -50,8 +50,11 @@
 #include "arc_trace.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <string>
 
 #include "contributing_vertices.hpp"
+#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 
@@ -174,8 +177,16 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
 
   // The walk ends: it only moves forward along G (each exit is unique, see
   // the file comment), past finitely many events, and stops in c2's region.
+  // The bound on its steps costs one comparison a step and turns a bug into
+  // an error instead of a hang.
   WalkPosition at = start_of_walk(a, ha, b, c1, da_ref);
-  for (;;) {
+  const std::uint64_t limit = std::uint64_t{mb.num_halfedges()} + mb.num_faces() + 4u;
+  for (std::uint64_t step = 0;; ++step) {
+    if (step > limit)
+      throw Error(ErrorCategory::invalid_argument,
+                  "minkowski_sum: internal error: the Gaussian arc walk of edge " +
+                      std::to_string(Mesh::edge(ha).index()) + " of A did not end within " + std::to_string(limit) +
+                      " steps");
     ++steps;
     if (at.event.is_valid()) {
       const FacetMaximisers m = maximisers_along_tangent(b, at.event, da);
