@@ -10,10 +10,6 @@
 namespace cvms::test {
 namespace {
 
-std::string str(const Vec3& v) {
-  return "(" + to_string(v.x) + ", " + to_string(v.y) + ", " + to_string(v.z) + ")";
-}
-
 std::vector<Vec3> edge_vectors(const ConvexPolyhedron& p) {
   std::vector<Vec3> out;
   const Mesh& m = p.mesh();
@@ -61,7 +57,7 @@ std::string check_facet_origins(const ConvexPolyhedron& a, const ConvexPolyhedro
       if (found) break;
     }
     if (!found)
-      return "facet normal " + str(p.normal) + " is no facet normal of A or B and no edge cross product";
+      return "facet normal " + to_text(p.normal) + " is no facet normal of A or B and no edge cross product";
   }
   return "";
 }

@@ -64,6 +64,9 @@ std::vector<Vec3> pairwise_sums(std::span<const Vec3> a, std::span<const Vec3> b
 /// Human-readable difference between two shapes (for test failure messages).
 std::string difference(const Shape& expected, const Shape& actual);
 
+/// "(x, y, z)" with exact coordinates (for test failure messages).
+std::string to_text(const Vec3& v);
+
 /// Checks every invariant of a ConvexPolyhedron that can be checked
 /// independently of the code that built it: mesh.validate(), Euler
 /// characteristic 2, every facet planar and convex with all vertices on or
