@@ -36,6 +36,22 @@
 
 namespace cvms {
 
+namespace test {
+// The user's options and CVMS's research switches (lib/minkowski/research_options.hpp).
+struct SumOptions {
+  Options options;
+  detail::ResearchOptions research;
+};
+
+// check_sum of the support library with the research switches set.
+std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Shape& expected,
+                      const SumOptions& o, bool check_origins = true) {
+  return check_sum(a, b, expected, o.options, check_origins, [&o](const ConvexPolyhedron& x, const ConvexPolyhedron& y) {
+    return detail::minkowski_sum(x, y, o.options, o.research);
+  });
+}
+}  // namespace test
+
 // How gtest prints the parameter of a failing test (found by ADL).
 void PrintTo(Algorithm a, std::ostream* os) { *os << to_string(a); }
 

@@ -69,11 +69,13 @@ Shape chms_shape(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
 }
 
 std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Shape& expected,
-                      const SumOptions& sum_options, bool check_origins) {
-  const Options& options = sum_options.options;
+                      const Options& options, bool check_origins, const SumFunction& sum) {
+  auto run = [&](const ConvexPolyhedron& x, const ConvexPolyhedron& y) {
+    return sum ? sum(x, y) : minkowski_sum(x, y, options);
+  };
   std::ostringstream out;
-  const MinkowskiResult ab = detail::minkowski_sum(a, b, options, sum_options.research);
-  const MinkowskiResult ba = detail::minkowski_sum(b, a, options, sum_options.research);
+  const MinkowskiResult ab = run(a, b);
+  const MinkowskiResult ba = run(b, a);
   for (const MinkowskiResult* r : {&ab, &ba}) {
     const char* name = r == &ab ? "A+B" : "B+A";
     const std::string inv = check_invariants(r->polyhedron);

@@ -5,10 +5,10 @@
 // rational arithmetic, independent of the code under test.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "cvms/minkowski.hpp"
-#include "research_options.hpp"
 #include "support/oracle.hpp"
 
 namespace cvms::test {
@@ -24,16 +24,12 @@ std::string check_facet_origins(const ConvexPolyhedron& a, const ConvexPolyhedro
 /// and ESSDMS that the stats add up to F, that translated facets = f_A and
 /// that corner facets = the facets of B whose normal no facet of A has. Returns ""
 /// or a message. \p check_origins can be switched off for big inputs.
-/// What check_sum runs: the user's options and CVMS's research switches.
-struct SumOptions {
-  Options options;
-  detail::ResearchOptions research;
-  SumOptions() = default;
-  SumOptions(const Options& user) : options(user) {}  // NOLINT(google-explicit-constructor): an Options is a SumOptions
-};
+/// How check_sum computes a sum; empty: minkowski_sum(x, y, options). Tests
+/// of internals pass one that sets CVMS's research switches.
+using SumFunction = std::function<MinkowskiResult(const ConvexPolyhedron&, const ConvexPolyhedron&)>;
 
 std::string check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Shape& expected,
-                      const SumOptions& options = {}, bool check_origins = true);
+                      const Options& options = {}, bool check_origins = true, const SumFunction& sum = {});
 
 /// The oracle: describe(CHMS(a, b)).
 Shape chms_shape(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
