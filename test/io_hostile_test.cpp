@@ -392,7 +392,10 @@ std::string paraboloid_off(const std::string& suffix) {
     text += to_string(p.x) + suffix + " " + to_string(p.y) + suffix + " " + to_string(p.z) + suffix + "\n";
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     text += std::to_string(soup.face(f).size());
-    for (std::uint32_t i : soup.face(f)) text += " " + std::to_string(i);
+    for (std::uint32_t i : soup.face(f)) {
+      text += ' ';  // not " " + to_string(i): a false GCC 12 -Wrestrict at -O3 (bug 105329)
+      text += std::to_string(i);
+    }
     text += "\n";
   }
   return text;

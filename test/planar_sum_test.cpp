@@ -56,7 +56,15 @@ Poly pairwise_sums(const Poly& p, const Poly& q) {
 
 std::string show(const Poly& poly) {
   std::string s;
-  for (const Vec2& v : poly) s += "(" + v.x.get_str() + ", " + v.y.get_str() + ") ";
+  // Appended piece by piece: "literal" + std::string&& makes GCC 12 at -O3
+  // warn a false -Wrestrict (GCC bug 105329).
+  for (const Vec2& v : poly) {
+    s += '(';
+    s += v.x.get_str();
+    s += ", ";
+    s += v.y.get_str();
+    s += ") ";
+  }
   return s;
 }
 
