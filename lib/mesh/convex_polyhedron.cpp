@@ -188,18 +188,18 @@ struct FaceCorners {
   std::vector<std::uint32_t> ids;
 };
 
-// The primitive integer normal of cross(b - a, c - a) (nonzero): in 128-bit
-// integers when the points are doubles of close exponents, else rational.
-Vec3 primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c) {
+// out = the primitive integer normal of cross(b - a, c - a) (nonzero): in
+// 128-bit integers when the points are doubles of close exponents, else
+// rational. Written into out's storage (a moved mpq_class allocates anew).
+void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3& out) {
   const std::optional<detail::SmallDirection> u = detail::small_integer_direction(a.approx, b.approx);
   const std::optional<detail::SmallDirection> v =
       u ? detail::small_integer_direction(a.approx, c.approx) : std::nullopt;
-  Vec3 n;
   if (u && v) {
-    detail::primitive_cross(*u, *v, n);
-    return n;
+    detail::primitive_cross(*u, *v, out);
+    return;
   }
-  return primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
+  out = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
 }
 
 // Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
@@ -208,37 +208,36 @@ Vec3 primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c) {
 // vertices in cyclic order, not collinear) turns like the polygon, so the
 // normal of that triangle is a positive multiple of the area vector and the
 // polygon check against it decides as the check against the area vector
-// would. Sets the corner flags of a face that passes.
-struct FaceVerdict {
-  std::optional<FacePlane> plane;  // when the face is known to lie in one plane
-  bool passed = false;
+// would. Writes that plane into `plane` and, for a face that passes, the
+// corner flags into `corner`.
+enum class FaceVerdict {
+  passed,
+  failed_in_plane,  // planar (in `plane`), but not a convex polygon
+  failed            // collinear or not planar
 };
 
-FaceVerdict fast_face_plane(const FaceCorners& face, std::vector<char>& corner) {
+FaceVerdict fast_face_plane(const FaceCorners& face, FacePlane& plane, std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
   std::size_t k = 2;
   while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
-  if (k == m) return {};
-  FaceVerdict verdict{plane_of(primitive_normal(pts[0], pts[1], pts[k])), false};
-  const FacePlane& plane = *verdict.plane;
+  if (k == m) return FaceVerdict::failed;
+  primitive_normal(pts[0], pts[1], pts[k], plane.normal);
+  plane.approx = ApproxVec3::of(plane.normal);
   if (m == 3) {
     corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
-    verdict.passed = true;
-    return verdict;
+    return FaceVerdict::passed;
   }
   thread_local detail::DotScratch scratch;
-  Rational offset;
+  thread_local Rational offset;
   detail::integer_dot(plane.normal, pts[0].exact, scratch, offset);
   const Approx offset_approx = Approx::of(offset);
   for (std::size_t i = 2; i < m; ++i)
-    if (i != k && side_of_plane(pts[i], plane.ref(), offset, offset_approx) != Sign::zero) return {};
+    if (i != k && side_of_plane(pts[i], plane.ref(), offset, offset_approx) != Sign::zero) return FaceVerdict::failed;
   PolygonCheck c = check_convex_polygon(pts, plane.ref());
-  if (c.fault == PolygonFault::none) {
-    corner = std::move(c.corner);
-    verdict.passed = true;
-  }
-  return verdict;
+  if (c.fault != PolygonFault::none) return FaceVerdict::failed_in_plane;
+  corner = std::move(c.corner);
+  return FaceVerdict::passed;
 }
 
 // Step 2 as stated, on the exact area vector N_f, for a face that
@@ -285,7 +284,7 @@ struct FacePlanes {
 // 2. Faces: orientation normal, zero area, planarity, convexity.
 FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   FacePlanes out;
-  out.plane.reserve(mesh.num_faces());
+  out.plane.resize(mesh.num_faces());
   out.corner.assign(mesh.num_halfedges(), 0);
   FaceCorners face{FaceId(0), {}, {}};
   std::vector<char> corner;
@@ -297,11 +296,12 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
       face.pts.push_back(points[mesh.from(h)]);
       face.ids.push_back(mesh.from(h).index());
     }
-    FaceVerdict verdict = fast_face_plane(face, corner);
-    if (!verdict.passed) report_face_fault(face, verdict.plane ? &*verdict.plane : nullptr);
+    FacePlane& plane = out.plane[f.index()];
+    const FaceVerdict verdict = fast_face_plane(face, plane, corner);
+    if (verdict != FaceVerdict::passed)
+      report_face_fault(face, verdict == FaceVerdict::failed_in_plane ? &plane : nullptr);
     std::size_t i = 0;
     for (HalfedgeId h : mesh.face_halfedges(f)) out.corner[h.index()] = corner[i++];
-    out.plane.push_back(std::move(*verdict.plane));
   }
   return out;
 }
@@ -487,6 +487,9 @@ Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>
                  const FacetsAtVertices& facets_at, bool flip) {
   PolygonSoup out;
   std::vector<std::uint32_t> new_index(mesh.num_vertices(), no_index);
+  // Reserved: growing would copy every Rational (their moves are not noexcept).
+  out.points.reserve(static_cast<std::size_t>(
+      std::count_if(facets_at.count.begin(), facets_at.count.end(), [](std::uint32_t c) { return c >= 3; })));
   for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
     if (facets_at.extreme(v)) {
       new_index[v] = static_cast<std::uint32_t>(out.points.size());
@@ -514,7 +517,7 @@ Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>
 // that plane), so its outward primitive normal is that of its first face,
 // negated when the mesh is flipped, and its offset the normal's dot product
 // with any of its corners: the planes detail::parts_with_planes would find.
-ConvexPolyhedron merged_polyhedron(const Mesh& input, Mesh merged, const Points& points, const FacePlanes& faces,
+ConvexPolyhedron merged_polyhedron(const Mesh& input, Mesh merged, const Points& points, FacePlanes&& faces,
                                    const Regions& regions, const FacetsAtVertices& facets_at, bool flip) {
   std::vector<ApproxVec3> vertex_approx;
   vertex_approx.reserve(merged.num_vertices());
@@ -526,8 +529,12 @@ ConvexPolyhedron merged_polyhedron(const Mesh& input, Mesh merged, const Points&
   planes.offsets.resize(regions.size());
   detail::DotScratch scratch;
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    const FacePlane& plane = faces.plane[regions.first_face[r]];
-    planes.normals.push_back(flip ? -plane.normal : plane.normal);
+    // Each face is the first face of at most one region: its normal moves.
+    FacePlane& plane = faces.plane[regions.first_face[r]];
+    if (flip)
+      for (int i = 0; i < 3; ++i) mpq_neg(plane.normal[i].get_mpq_t(), plane.normal[i].get_mpq_t());
+    planes.normals.emplace_back();
+    for (int i = 0; i < 3; ++i) mpq_swap(planes.normals.back()[i].get_mpq_t(), plane.normal[i].get_mpq_t());
     planes.normal_approx.push_back(flip ? ApproxVec3::of(planes.normals.back()) : plane.approx);
     const Vec3& corner = merged.position(merged.from(merged.halfedge(FaceId(r))));
     detail::integer_dot(planes.normals.back(), corner, scratch, planes.offsets[r]);
@@ -618,15 +625,15 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   // globally (the file comment says why that suffices).
   check_sphere(mesh);
   const Points points(mesh);
-  const FacePlanes faces = face_planes(mesh, points);
+  FacePlanes faces = face_planes(mesh, points);
   check_not_flat(mesh, points, faces.plane[0].ref());
   EdgeClasses edges = classify_edges(mesh, points, faces);
   const Regions regions(mesh, edges.coplanar);
   const std::vector<std::vector<HalfedgeId>> cycles = boundary_cycles(regions);
   const FacetsAtVertices facets_at = facets_at_vertices(regions);
   const std::vector<std::vector<std::uint32_t>> corners = facet_corners(regions, cycles, points, faces, facets_at);
-  ConvexPolyhedron p = merged_polyhedron(mesh, merged_mesh(mesh, corners, facets_at, edges.flip), points, faces,
-                                         regions, facets_at, edges.flip);
+  ConvexPolyhedron p = merged_polyhedron(mesh, merged_mesh(mesh, corners, facets_at, edges.flip), points,
+                                         std::move(faces), regions, facets_at, edges.flip);
   check_global(p, regions);
   return p;
 }
