@@ -181,7 +181,7 @@ void check_sphere(const Mesh& mesh) {
                                              "); a convex polyhedron is a sphere (2)");
 }
 
-// A face with corners pts, in vertex order, and what step 2 learns of it.
+// A face's corners in vertex order, with their vertex indices (for messages).
 struct FaceCorners {
   FaceId f;
   std::vector<Vec3Ref> pts;
