@@ -121,6 +121,20 @@ TEST(FilteredDifferencePredicates, MatchTheExactReferenceOnRandomAndDegenerateIn
     const Vec3 u = minus(c.p[3], c.p[2]), v = minus(c.p[4], c.p[2]);
     const bool on_line = u.y * v.z == u.z * v.y && u.z * v.x == u.x * v.z && u.x * v.y == u.y * v.x;
     EXPECT_EQ(collinear(c[2], c[3], c[4]), on_line);
+    // In a plane: points 0..4 of the coplanar configurations, n their normal.
+    if ((kind / 4) % 3 == 2) {
+      const Vec3 u = minus(c.p[1], c.p[0]), v = minus(c.p[2], c.p[0]);
+      const Vec3 normal{u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
+      if (!is_zero(normal)) {
+        const ApproxVec3 normal_approx = ApproxVec3::of(normal);
+        const Vec3Ref w{normal, normal_approx};
+        for (std::size_t i = 0; i < 3; ++i)
+          EXPECT_EQ(sign_triple_in_plane(w, c[i], c[i + 1], c[i + 1], c[i + 2]),
+                    sign_of_rational(det3(normal, minus(c.p[i + 1], c.p[i]), minus(c.p[i + 2], c.p[i + 1]))));
+        EXPECT_EQ(sign_triple_in_plane(w, c[0], c[3], c[4], c[1]),
+                  sign_of_rational(det3(normal, minus(c.p[3], c.p[0]), minus(c.p[1], c.p[4]))));
+      }
+    }
     // side_of_plane with an integer normal (its exact fallback is new).
     const Vec3 m{Rational(small_int(round, 0)), Rational(small_int(round, 1)), Rational(small_int(round, 2))};
     const ApproxVec3 m_approx = ApproxVec3::of(m);

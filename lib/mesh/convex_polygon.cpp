@@ -27,7 +27,7 @@ PolygonCheck check_convex_polygon(const std::vector<Vec3Ref>& p, Vec3Ref n) {
   for (std::size_t i = 0; i < m; ++i) {
     const Vec3Ref prev = p[(i + m - 1) % m];
     const Vec3Ref next = p[(i + 1) % m];
-    const Sign s = sign_triple_of_differences(n, prev, p[i], p[i], next);
+    const Sign s = sign_triple_in_plane(n, prev, p[i], p[i], next);
     if (s == Sign::negative) return {PolygonFault::right_turn, i, {}};
     if (s == Sign::zero) {
       if (sign_dot_of_differences(prev, p[i], p[i], next) != Sign::positive) return {PolygonFault::reversal, i, {}};
@@ -44,7 +44,7 @@ PolygonCheck check_convex_polygon(const std::vector<Vec3Ref>& p, Vec3Ref n) {
   const Chord& ref = e[0];
   // Angles about n from ref (lib/predicates/angular_order.hpp).
   auto half = [&](const Chord& v) {
-    return half_turn(sign_triple_of_differences(n, ref.from, ref.to, v.from, v.to),
+    return half_turn(sign_triple_in_plane(n, ref.from, ref.to, v.from, v.to),
                      [&] { return sign_dot_of_differences(ref.from, ref.to, v.from, v.to); });
   };
   // Each chord's half-turn once; ref's own is 0 (along ref), which the
@@ -53,7 +53,7 @@ PolygonCheck check_convex_polygon(const std::vector<Vec3Ref>& p, Vec3Ref n) {
   for (std::size_t j = 1; j < k; ++j) halves[j] = half(e[j]);
   auto angle_less = [&](std::size_t a, std::size_t b) {
     return compare_angle(halves[a], halves[b], [&] {
-             return sign_triple_of_differences(n, e[a].from, e[a].to, e[b].from, e[b].to);
+             return sign_triple_in_plane(n, e[a].from, e[a].to, e[b].from, e[b].to);
            }) == Sign::negative;
   };
   std::size_t descents = 0;

@@ -29,6 +29,7 @@ struct PolygonCheck {
 /// Checks that p[0..m) (m >= 3, consecutive points distinct) is, seen from
 /// the side n points to, a strictly convex counterclockwise polygon once the
 /// vertices where it runs straight on are dropped.
+/// \pre the points lie in one plane orthogonal to n (n nonzero).
 PolygonCheck check_convex_polygon(const std::vector<Vec3Ref>& p, Vec3Ref n);
 
 /// What the fault says about the polygon whose positions are vertex_ids

@@ -306,12 +306,17 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   return out;
 }
 
-// 3. Flat: every vertex on the plane of face 0 (normal n).
+// 3. Flat: every vertex on the plane of face 0 (integer normal n): with
+// the plane's offset, the exact test of a vertex on it (the usual answer
+// until the first vertex off it) is one integer comparison.
 void check_not_flat(const Mesh& mesh, const Points& points, Vec3Ref n) {
-  const Vec3Ref p0 = points[mesh.from(mesh.halfedge(FaceId(0)))];
+  Rational offset;
+  detail::DotScratch scratch;
+  detail::integer_dot(n.exact, mesh.position(mesh.from(mesh.halfedge(FaceId(0)))), scratch, offset);
+  const Approx offset_approx = Approx::of(offset);
   bool flat = true;
   for (VertexId v : mesh.vertices())
-    if (compare_dot(points[v], p0, n) != Sign::zero) {
+    if (side_of_plane(points[v], n, offset, offset_approx) != Sign::zero) {
       flat = false;
       break;
     }

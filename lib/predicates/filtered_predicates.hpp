@@ -45,6 +45,11 @@ bool is_parallel(Vec3Ref u, Vec3Ref v);
 // cached approximations, and only an exact fallback forms the differences.
 /// Sign of det[n, a1 - a0, b1 - b0].
 Sign sign_triple_of_differences(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1);
+/// As sign_triple_of_differences for differences orthogonal to n (points of
+/// a polygon in a plane with normal n): then the value is zero iff the
+/// differences are parallel, which the exact fallback tests first, without n.
+/// \pre a0, a1, b0, b1 lie in one plane orthogonal to n, n nonzero.
+Sign sign_triple_in_plane(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1);
 /// Sign of dot(a1 - a0, b1 - b0).
 Sign sign_dot_of_differences(Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1);
 /// Sign of det[u, v, w1 - w0].

@@ -180,6 +180,12 @@ Sign sign_triple_of_differences(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, V
   });
 }
 
+Sign sign_triple_in_plane(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1) {
+  return decide(filter(filtered::triple_of_differences_approx, n, a0, a1, b0, b1), [&] {
+    return exact::sign_triple_in_plane(n.exact, a0.exact, a1.exact, b0.exact, b1.exact);
+  });
+}
+
 Sign sign_dot_of_differences(Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1) {
   return decide(filter(filtered::dot_of_differences_approx, a0, a1, b0, b1),
                 [&] { return exact::sign_dot_of_differences(a0.exact, a1.exact, b0.exact, b1.exact); });

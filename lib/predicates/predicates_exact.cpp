@@ -36,6 +36,14 @@ Sign sign_triple_of_differences(const Vec3& n, const Vec3& a0, const Vec3& a1, c
   return exact::sign_triple(n, detail::subtract(a1, a0), detail::subtract(b1, b0));
 }
 
+// a, b orthogonal to n != 0: cross(a, b) is a multiple of n, zero iff a and
+// b are parallel, so det[n, a, b] = dot(n, cross(a, b)) is zero iff they are.
+Sign sign_triple_in_plane(const Vec3& n, const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+  const Vec3 a = detail::subtract(a1, a0), b = detail::subtract(b1, b0);
+  if (exact::is_parallel(a, b)) return Sign::zero;
+  return exact::sign_triple(n, a, b);
+}
+
 Sign sign_dot_of_differences(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
   return exact::sign_dot(detail::subtract(a1, a0), detail::subtract(b1, b0));
 }

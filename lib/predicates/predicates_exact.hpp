@@ -20,6 +20,7 @@ Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w);
 bool is_parallel(const Vec3& u, const Vec3& v);
 // The predicates on differences of points (filtered_predicates.hpp).
 Sign sign_triple_of_differences(const Vec3& n, const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1);
+Sign sign_triple_in_plane(const Vec3& n, const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1);
 Sign sign_dot_of_differences(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1);
 Sign sign_triple_with_difference(const Vec3& u, const Vec3& v, const Vec3& w0, const Vec3& w1);
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c);
