@@ -7,7 +7,10 @@
 //  1. topology: one connected component and Euler characteristic 2 (a sphere);
 //  2. every face: exact area vector N_f (its orientation normal); zero area is
 //     `degenerate`; a face must be planar and a convex polygon (collinear
-//     vertices allowed), else `not_convex`;
+//     vertices allowed), else `not_convex`. A face that passes keeps, for N_f,
+//     the primitive normal of three of its vertices (a positive multiple,
+//     found in O(degree): fast_face_plane); only a failing face has its N_f
+//     computed, to report its fault as stated;
 //  3. all vertices on one plane: `degenerate` (flat, zero volume);
 //  4. every edge between faces f, g with halfedge h in f and direction d:
 //     coplanar if N_f, N_g are parallel (same direction: merged into one
@@ -47,17 +50,19 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
 
-#include "angular_order.hpp"
+#include "convex_polygon.hpp"
 #include "cvms/error.hpp"
 #include "dyadic.hpp"
 #include "element_names.hpp"
 #include "filtered_predicates.hpp"
 #include "no_index.hpp"
 #include "polyhedron_builder.hpp"
+#include "small_direction.hpp"
 
 namespace cvms {
 namespace {
@@ -68,75 +73,74 @@ using detail::str;
 
 [[noreturn]] void not_convex(const std::string& message) { throw Error(ErrorCategory::not_convex, message); }
 
-// Outcome of checking a closed planar polygon for strict convexity.
-enum class PolygonFault { none, right_turn, reversal, too_few_corners, winds_more_than_once };
+// The input's vertices with their double approximations, made once, for
+// the filtered predicates.
+class Points {
+ public:
+  explicit Points(const Mesh& mesh) : mesh_(mesh) {
+    approx_.reserve(mesh.num_vertices());
+    for (VertexId v : mesh.vertices()) approx_.push_back(ApproxVec3::of(mesh.position(v)));
+  }
+  Vec3Ref operator[](VertexId v) const { return {mesh_.position(v), approx_[v.index()]}; }
+  [[nodiscard]] const ApproxVec3& approx(VertexId v) const { return approx_[v.index()]; }
 
-struct PolygonCheck {
-  PolygonFault fault = PolygonFault::none;
-  std::size_t at = 0;        // polygon position of the fault
-  std::vector<char> corner;  // per position: strict left turn (1) or straight (0)
+ private:
+  const Mesh& mesh_;
+  std::vector<ApproxVec3> approx_;
 };
 
-// Checks that p[0..m) (m >= 3, consecutive points distinct) is, seen from the
-// side n points to, a strictly convex counterclockwise polygon once the
-// vertices where it runs straight on are dropped. All turns must be left or
-// straight on; then the polygon is convex iff its corners' edge directions turn
-// around exactly once, i.e. (every turn being in (0, pi)) iff their angles,
-// measured counterclockwise from the first corner edge, descend exactly once.
-PolygonCheck check_convex_polygon(const std::vector<const Vec3*>& p, const Vec3& n) {
-  const std::size_t m = p.size();
-  PolygonCheck r;
-  r.corner.assign(m, 0);
-  std::vector<std::size_t> corners;
-  for (std::size_t i = 0; i < m; ++i) {
-    const Vec3& prev = *p[(i + m - 1) % m];
-    const Vec3& next = *p[(i + 1) % m];
-    const Vec3 a = *p[i] - prev, b = next - *p[i];
-    const Sign s = sign_triple(n, a, b);
-    if (s == Sign::negative) return {PolygonFault::right_turn, i, {}};
-    if (s == Sign::zero) {
-      if (sign_dot(a, b) != Sign::positive) return {PolygonFault::reversal, i, {}};
-    } else {
-      r.corner[i] = 1;
-      corners.push_back(i);
+// The plane of a face: its primitive integer normal, oriented like the face
+// (a positive multiple of its area vector), and the normal's approximation.
+// Every use of a face normal in steps 2-6 is a sign that a positive factor
+// does not change, so this is as good as the area vector, whose numbers grow
+// with the face when its vertices have different denominators.
+struct FacePlane {
+  Vec3 normal;
+  ApproxVec3 approx;
+  [[nodiscard]] Vec3Ref ref() const { return {normal, approx}; }
+};
+
+FacePlane plane_of(Vec3 normal) {
+  const ApproxVec3 approx = ApproxVec3::of(normal);
+  return {std::move(normal), approx};
+}
+
+// The area vector (twice the vector area) of a polygon, the sum of the
+// cross products of its fan from p[0], added in a balanced tree of
+// unreduced fractions: the terms' denominators differ, and a running sum
+// would grow by each of them in turn (quadratic in the degree).
+Vec3 area_vector(const std::vector<Vec3Ref>& p) {
+  using Fraction = std::pair<mpz_class, mpz_class>;  // numerator, denominator > 0
+  std::vector<Fraction> terms[3];
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const Vec3 t = cross(detail::subtract(p[i].exact, p[0].exact), detail::subtract(p[i + 1].exact, p[0].exact));
+    for (int c = 0; c < 3; ++c) terms[c].emplace_back(t[c].get_num(), t[c].get_den());
+  }
+  Vec3 n{0, 0, 0};
+  for (int c = 0; c < 3; ++c) {
+    std::vector<Fraction>& level = terms[c];
+    while (level.size() > 1) {
+      std::size_t out = 0;
+      for (std::size_t i = 0; i + 1 < level.size(); i += 2, ++out) {
+        const auto& [a, b] = level[i];
+        const auto& [x, y] = level[i + 1];
+        level[out] = {a * y + x * b, b * y};
+      }
+      if (level.size() % 2 == 1) level[out++] = std::move(level.back());
+      level.resize(out);
+    }
+    if (!level.empty()) {
+      n[c] = Rational(level[0].first, level[0].second);
+      n[c].canonicalize();
     }
   }
-  const std::size_t k = corners.size();
-  if (k < 3) return {PolygonFault::too_few_corners, 0, {}};
-  std::vector<Vec3> e(k);
-  for (std::size_t j = 0; j < k; ++j) e[j] = *p[corners[(j + 1) % k]] - *p[corners[j]];
-  const Vec3& ref = e[0];
-  // Angles about n from ref (lib/predicates/angular_order.hpp).
-  auto half = [&](const Vec3& v) {
-    return detail::half_turn(sign_triple(n, ref, v), [&] { return sign_dot(ref, v); });
-  };
-  auto angle_less = [&](const Vec3& a, const Vec3& b) {
-    return detail::compare_angle(half(a), half(b), [&] { return sign_triple(n, a, b); }) == Sign::negative;
-  };
-  std::size_t descents = 0;
-  for (std::size_t j = 0; j < k; ++j)
-    if (angle_less(e[(j + 1) % k], e[j])) ++descents;
-  if (descents != 1) return {PolygonFault::winds_more_than_once, 0, {}};
-  return r;
-}
-
-std::string describe_fault(const PolygonCheck& c, const std::vector<std::uint32_t>& vertex_ids) {
-  switch (c.fault) {
-    case PolygonFault::right_turn: return "has a reflex corner at vertex " + str(vertex_ids[c.at]);
-    case PolygonFault::reversal: return "turns back on itself at vertex " + str(vertex_ids[c.at]);
-    case PolygonFault::too_few_corners: return "has fewer than 3 corners";
-    case PolygonFault::winds_more_than_once: return "winds around more than once (self-intersecting)";
-    case PolygonFault::none: break;
-  }
-  return "";
-}
-
-// The orientation normal (twice the vector area) of a planar polygon.
-Vec3 area_vector(const std::vector<const Vec3*>& p) {
-  Vec3 n{0, 0, 0};
-  for (std::size_t i = 1; i + 1 < p.size(); ++i) n += cross(*p[i] - *p[0], *p[i + 1] - *p[0]);
   return n;
 }
+
+using detail::PolygonCheck;
+using detail::PolygonFault;
+using detail::check_convex_polygon;
+using detail::describe_fault;
 
 struct UnionFind {
   std::vector<std::uint32_t> parent;
@@ -177,56 +181,142 @@ void check_sphere(const Mesh& mesh) {
                                              "); a convex polyhedron is a sphere (2)");
 }
 
-// The orientation normal of face f with corners pts (vertex indices ids),
-// once the face is known to have nonzero area and, beyond triangles, to be
-// planar and a convex polygon.
-Vec3 checked_face_normal(FaceId f, const std::vector<const Vec3*>& pts,
-                         const std::vector<std::uint32_t>& ids) {
-  Vec3 n = area_vector(pts);
+// A face's corners in vertex order, with their vertex indices (for messages).
+struct FaceCorners {
+  FaceId f;
+  std::vector<Vec3Ref> pts;
+  std::vector<std::uint32_t> ids;
+};
+
+// out = the primitive integer normal of cross(b - a, c - a) (nonzero): in
+// 128-bit integers when the points are doubles of close exponents, else
+// rational. Written into out's storage (a moved mpq_class allocates anew).
+void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3& out) {
+  const std::optional<detail::SmallDirection> u = detail::small_integer_direction(a.approx, b.approx);
+  const std::optional<detail::SmallDirection> v =
+      u ? detail::small_integer_direction(a.approx, c.approx) : std::nullopt;
+  if (u && v) {
+    detail::primitive_cross(*u, *v, out);
+    return;
+  }
+  out = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
+}
+
+// Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
+// p1 and the first pk off their line span the face's plane if it is planar,
+// and if it is moreover a convex polygon, the triangle p0 p1 pk (three of its
+// vertices in cyclic order, not collinear) turns like the polygon, so the
+// normal of that triangle is a positive multiple of the area vector and the
+// polygon check against it decides as the check against the area vector
+// would. Writes that plane into `plane` and, for a face that passes, the
+// corner flags into `corner`.
+enum class FaceVerdict {
+  passed,
+  failed_in_plane,  // planar (in `plane`), but not a convex polygon
+  failed            // collinear or not planar
+};
+
+FaceVerdict fast_face_plane(const FaceCorners& face, FacePlane& plane, std::vector<char>& corner) {
+  const std::vector<Vec3Ref>& pts = face.pts;
+  const std::size_t m = pts.size();
+  std::size_t k = 2;
+  while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
+  if (k == m) return FaceVerdict::failed;
+  primitive_normal(pts[0], pts[1], pts[k], plane.normal);
+  plane.approx = ApproxVec3::of(plane.normal);
+  if (m == 3) {
+    corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
+    return FaceVerdict::passed;
+  }
+  thread_local detail::DotScratch scratch;
+  thread_local Rational offset;
+  detail::integer_dot(plane.normal, pts[0].exact, scratch, offset);
+  const Approx offset_approx = Approx::of(offset);
+  for (std::size_t i = 2; i < m; ++i)
+    if (i != k && side_of_plane(pts[i], plane.ref(), offset, offset_approx) != Sign::zero) return FaceVerdict::failed;
+  PolygonCheck c = check_convex_polygon(pts, plane.ref());
+  if (c.fault != PolygonFault::none) return FaceVerdict::failed_in_plane;
+  corner = std::move(c.corner);
+  return FaceVerdict::passed;
+}
+
+// Step 2 as stated, on the exact area vector N_f, for a face that
+// fast_face_plane refused: throws its first fault. `normal` is the plane of
+// the face when it is known to be planar (then N_f is a multiple of it, and
+// a positive multiple stands in for N_f in the polygon check).
+[[noreturn]] void report_face_fault(const FaceCorners& face, const FacePlane* normal) {
+  const std::vector<Vec3Ref>& pts = face.pts;
+  const std::string name = "face " + str(face.f.index());
+  const Vec3 n = area_vector(pts);
   if (is_zero(n)) {
-    bool collinear = true;
-    for (std::size_t i = 2; i < pts.size() && collinear; ++i)
-      collinear = is_parallel(*pts[1] - *pts[0], *pts[i] - *pts[0]);
-    if (collinear)
-      throw Error(ErrorCategory::degenerate,
-                  "face " + str(f.index()) + " has zero area (its vertices are collinear)");
-    not_convex("face " + str(f.index()) + " has zero signed area (it is not a convex polygon)");
+    bool collinear_face = true;
+    for (std::size_t i = 2; i < pts.size() && collinear_face; ++i)
+      collinear_face = collinear(pts[0], pts[1], pts[i]);
+    if (collinear_face) throw Error(ErrorCategory::degenerate, name + " has zero area (its vertices are collinear)");
+    not_convex(name + " has zero signed area (it is not a convex polygon)");
   }
   if (pts.size() > 3) {
-    for (std::size_t i = 1; i < pts.size(); ++i)
-      if (sign_dot(n, *pts[i] - *pts[0]) != Sign::zero)
-        not_convex("face " + str(f.index()) + " is not planar (vertex " + str(ids[i]) +
-                   " is off the plane of the others)");
-    PolygonCheck c = check_convex_polygon(pts, n);
+    FacePlane plane;
+    if (normal != nullptr) {
+      plane = *normal;
+      if (sign_dot(n, normal->normal) == Sign::negative) plane = plane_of(-normal->normal);
+    } else {
+      plane = plane_of(n);
+      for (std::size_t i = 1; i < pts.size(); ++i)
+        if (compare_dot(pts[i], pts[0], plane.ref()) != Sign::zero)
+          not_convex(name + " is not planar (vertex " + str(face.ids[i]) + " is off the plane of the others)");
+    }
+    PolygonCheck c = check_convex_polygon(pts, plane.ref());
     if (c.fault != PolygonFault::none)
-      not_convex("face " + str(f.index()) + " is not a convex polygon: it " + describe_fault(c, ids));
+      not_convex(name + " is not a convex polygon: it " + describe_fault(c, face.ids));
   }
-  return n;
+  // Not reached: fast_face_plane refuses only faces that fail (see there).
+  throw Error(ErrorCategory::not_convex, name + " could not be checked");
 }
+
+// What step 2 finds: each face's plane, and per halfedge whether its origin
+// is a corner of its face (a strict turn).
+struct FacePlanes {
+  std::vector<FacePlane> plane;
+  std::vector<char> corner;
+};
 
 // 2. Faces: orientation normal, zero area, planarity, convexity.
-std::vector<Vec3> face_normals(const Mesh& mesh) {
-  std::vector<Vec3> face_normal(mesh.num_faces());
-  std::vector<const Vec3*> pts;
-  std::vector<std::uint32_t> ids;
+FacePlanes face_planes(const Mesh& mesh, const Points& points) {
+  FacePlanes out;
+  out.plane.resize(mesh.num_faces());
+  out.corner.assign(mesh.num_halfedges(), 0);
+  FaceCorners face{FaceId(0), {}, {}};
+  std::vector<char> corner;
   for (FaceId f : mesh.faces()) {
-    pts.clear();
-    ids.clear();
+    face.f = f;
+    face.pts.clear();
+    face.ids.clear();
     for (HalfedgeId h : mesh.face_halfedges(f)) {
-      pts.push_back(&mesh.position(mesh.from(h)));
-      ids.push_back(mesh.from(h).index());
+      face.pts.push_back(points[mesh.from(h)]);
+      face.ids.push_back(mesh.from(h).index());
     }
-    face_normal[f.index()] = checked_face_normal(f, pts, ids);
+    FacePlane& plane = out.plane[f.index()];
+    const FaceVerdict verdict = fast_face_plane(face, plane, corner);
+    if (verdict != FaceVerdict::passed)
+      report_face_fault(face, verdict == FaceVerdict::failed_in_plane ? &plane : nullptr);
+    std::size_t i = 0;
+    for (HalfedgeId h : mesh.face_halfedges(f)) out.corner[h.index()] = corner[i++];
   }
-  return face_normal;
+  return out;
 }
 
-// 3. Flat: every vertex on the plane of face 0 (normal n).
-void check_not_flat(const Mesh& mesh, const Vec3& n) {
-  const Vec3& p0 = mesh.position(mesh.from(mesh.halfedge(FaceId(0))));
+// 3. Flat: every vertex on the plane of face 0 (integer normal n): with
+// the plane's offset, the exact test of a vertex on it (the usual answer
+// until the first vertex off it) is one integer comparison.
+void check_not_flat(const Mesh& mesh, const Points& points, Vec3Ref n) {
+  Rational offset;
+  detail::DotScratch scratch;
+  detail::integer_dot(n.exact, mesh.position(mesh.from(mesh.halfedge(FaceId(0)))), scratch, offset);
+  const Approx offset_approx = Approx::of(offset);
   bool flat = true;
   for (VertexId v : mesh.vertices())
-    if (sign_dot(n, mesh.position(v) - p0) != Sign::zero) {
+    if (side_of_plane(points[v], n, offset, offset_approx) != Sign::zero) {
       flat = false;
       break;
     }
@@ -242,21 +332,22 @@ struct EdgeClasses {
 };
 
 // 4. Edges.
-EdgeClasses classify_edges(const Mesh& mesh, const std::vector<Vec3>& face_normal) {
+EdgeClasses classify_edges(const Mesh& mesh, const Points& points, const FacePlanes& faces) {
   std::vector<EdgeKind> kind(mesh.num_edges());
   std::size_t num_convex = 0, num_reflex = 0;
   EdgeClasses out{UnionFind(mesh.num_faces()), false};
   for (EdgeId e : mesh.edges()) {
     const HalfedgeId h = Mesh::halfedge(e);
     const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
-    const Vec3& n_f = face_normal[f];
-    const Vec3& n_g = face_normal[g];
+    const Vec3Ref n_f = faces.plane[f].ref();
+    const Vec3Ref n_g = faces.plane[g].ref();
     EdgeKind k;
     if (is_parallel(n_f, n_g)) {
       k = sign_dot(n_f, n_g) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
     } else {
-      const Vec3 d = mesh.position(mesh.to(h)) - mesh.position(mesh.from(h));
-      k = sign_triple(n_f, n_g, d) == Sign::positive ? EdgeKind::convex : EdgeKind::reflex;
+      k = sign_triple_with_difference(n_f, n_g, points[mesh.from(h)], points[mesh.to(h)]) == Sign::positive
+              ? EdgeKind::convex
+              : EdgeKind::reflex;
     }
     kind[e.index()] = k;
     if (k == EdgeKind::coplanar) out.coplanar.unite(f, g);
@@ -282,6 +373,7 @@ struct Regions {
   const Mesh& mesh;
   std::vector<std::uint32_t> of_face;     // the region of each face
   std::vector<std::uint32_t> first_face;  // the smallest face of each region
+  std::vector<std::uint32_t> num_faces;   // the number of faces of each region
 
   Regions(const Mesh& m, UnionFind& coplanar) : mesh(m), of_face(m.num_faces()) {
     std::vector<std::uint32_t> id_of_root(m.num_faces(), no_index);
@@ -290,8 +382,10 @@ struct Regions {
       if (id_of_root[r] == no_index) {
         id_of_root[r] = static_cast<std::uint32_t>(first_face.size());
         first_face.push_back(f);
+        num_faces.push_back(0);
       }
       of_face[f] = id_of_root[r];
+      ++num_faces[of_face[f]];
     }
   }
   [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(first_face.size()); }
@@ -345,23 +439,37 @@ FacetsAtVertices facets_at_vertices(const Regions& regions) {
   return facets_at;
 }
 
+// The corner flags of a facet's boundary cycle: those of its face when the
+// facet is one face (the cycle is that face's, perhaps from another start:
+// the check of step 2 against the same plane decided them, and a strictly
+// convex polygon stays one from any start), else from the polygon check.
+PolygonCheck cycle_corners(const Regions& regions, const std::vector<HalfedgeId>& cycle, const Points& points,
+                           const FacePlanes& faces, std::uint32_t r) {
+  const Mesh& mesh = regions.mesh;
+  PolygonCheck c;
+  if (regions.num_faces[r] == 1) {
+    c.corner.reserve(cycle.size());
+    for (HalfedgeId h : cycle) c.corner.push_back(faces.corner[h.index()]);
+    return c;
+  }
+  std::vector<Vec3Ref> pts;
+  pts.reserve(cycle.size());
+  for (HalfedgeId h : cycle) pts.push_back(points[mesh.from(h)]);
+  return check_convex_polygon(pts, faces.plane[regions.first_face[r]].ref());
+}
+
 // Facet polygons, and corners agree with extremality.
 std::vector<std::vector<std::uint32_t>> facet_corners(const Regions& regions,
                                                       const std::vector<std::vector<HalfedgeId>>& cycle,
-                                                      const std::vector<Vec3>& face_normal,
+                                                      const Points& points, const FacePlanes& faces,
                                                       const FacetsAtVertices& facets_at) {
   const Mesh& mesh = regions.mesh;
   std::vector<std::vector<std::uint32_t>> corners(regions.size());
-  std::vector<const Vec3*> pts;
   std::vector<std::uint32_t> ids;
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    pts.clear();
     ids.clear();
-    for (HalfedgeId h : cycle[r]) {
-      pts.push_back(&mesh.position(mesh.from(h)));
-      ids.push_back(mesh.from(h).index());
-    }
-    PolygonCheck c = check_convex_polygon(pts, face_normal[regions.first_face[r]]);
+    for (HalfedgeId h : cycle[r]) ids.push_back(mesh.from(h).index());
+    PolygonCheck c = cycle_corners(regions, cycle[r], points, faces, r);
     if (c.fault != PolygonFault::none)
       not_convex(regions.facet_name(r) + " (coplanar faces merged) is not a convex polygon: it " +
                  describe_fault(c, ids));
@@ -384,6 +492,9 @@ Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>
                  const FacetsAtVertices& facets_at, bool flip) {
   PolygonSoup out;
   std::vector<std::uint32_t> new_index(mesh.num_vertices(), no_index);
+  // Reserved: growing would copy every Rational (their moves are not noexcept).
+  out.points.reserve(static_cast<std::size_t>(
+      std::count_if(facets_at.count.begin(), facets_at.count.end(), [](std::uint32_t c) { return c >= 3; })));
   for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
     if (facets_at.extreme(v)) {
       new_index[v] = static_cast<std::uint32_t>(out.points.size());
@@ -406,6 +517,36 @@ Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>
   return merged;
 }
 
+// The result's planes, with nothing recomputed: facet r lies in the plane
+// of its faces, and its boundary turns like them (step 5 checked it against
+// that plane), so its outward primitive normal is that of its first face,
+// negated when the mesh is flipped, and its offset the normal's dot product
+// with any of its corners: the planes detail::parts_with_planes would find.
+ConvexPolyhedron merged_polyhedron(const Mesh& input, Mesh merged, const Points& points, FacePlanes&& faces,
+                                   const Regions& regions, const FacetsAtVertices& facets_at, bool flip) {
+  std::vector<ApproxVec3> vertex_approx;
+  vertex_approx.reserve(merged.num_vertices());
+  for (VertexId v : input.vertices())
+    if (facets_at.extreme(v.index())) vertex_approx.push_back(points.approx(v));
+  detail::FacetPlanes planes;
+  planes.normals.reserve(regions.size());
+  planes.normal_approx.reserve(regions.size());
+  planes.offsets.resize(regions.size());
+  detail::DotScratch scratch;
+  for (std::uint32_t r = 0; r < regions.size(); ++r) {
+    // Each face is the first face of at most one region: its normal moves.
+    FacePlane& plane = faces.plane[regions.first_face[r]];
+    if (flip)
+      for (int i = 0; i < 3; ++i) mpq_neg(plane.normal[i].get_mpq_t(), plane.normal[i].get_mpq_t());
+    planes.normals.emplace_back();
+    for (int i = 0; i < 3; ++i) mpq_swap(planes.normals.back()[i].get_mpq_t(), plane.normal[i].get_mpq_t());
+    planes.normal_approx.push_back(flip ? ApproxVec3::of(planes.normals.back()) : plane.approx);
+    const Vec3& corner = merged.position(merged.from(merged.halfedge(FaceId(r))));
+    detail::integer_dot(planes.normals.back(), corner, scratch, planes.offsets[r]);
+  }
+  return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes));
+}
+
 // 8. Global: an interior point o below every facet, and a ray from o that
 // crosses facet 0 only. The facets of p are the regions, in order.
 void check_global(const ConvexPolyhedron& p, const Regions& regions) {
@@ -414,25 +555,31 @@ void check_global(const ConvexPolyhedron& p, const Regions& regions) {
   const Vec3& a = m.position(m.from(h0));
   const Vec3& b = m.position(m.to(h0));
   const Vec3& c = m.position(m.to(m.next(h0)));
+  const Vec3Ref n0 = detail::normal_ref(p, FaceId(0));
+  const Approx offset0 = Approx::of(p.plane_offset(FaceId(0)));
   const Vec3* w = nullptr;
   for (VertexId v : m.vertices())
-    if (side_of_plane(m.position(v), p.normal(FaceId(0)), p.plane_offset(FaceId(0))) == Sign::negative) {
+    if (side_of_plane(detail::vertex_ref(p, v), n0, p.plane_offset(FaceId(0)), offset0) == Sign::negative) {
       w = &m.position(v);
       break;
     }
   if (w == nullptr) not_convex(regions.facet_name(0) + " has every vertex on its plane");
   const Vec3 o = Rational(1, 4) * (a + b + c + *w);
   const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
+  const ApproxVec3 o_approx = ApproxVec3::of(o), dir_approx = ApproxVec3::of(dir);
+  const Vec3Ref o_ref{o, o_approx}, dir_ref{dir, dir_approx};
   for (FaceId f : m.faces()) {
-    if (side_of_plane(o, p.normal(f), p.plane_offset(f)) != Sign::negative)
+    const Rational& offset = p.plane_offset(f);
+    if (side_of_plane(o_ref, detail::normal_ref(p, f), offset, Approx::of(offset)) != Sign::negative)
       not_convex("the surface is locally convex but not convex: an interior point lies above " +
                  regions.facet_name(f.index()));
   }
   for (FaceId f : m.faces()) {
-    if (f.index() == 0 || sign_dot(p.normal(f), dir) != Sign::positive) continue;
+    if (f.index() == 0 || sign_dot(detail::normal_ref(p, f), dir_ref) != Sign::positive) continue;
     bool hit = true;
-    for (HalfedgeId h : m.face_halfedges(f))
-      if (sign_triple(m.position(m.from(h)) - o, m.position(m.to(h)) - o, dir) == Sign::negative) {
+    for (HalfedgeId h : m.face_halfedges(f))  // det[from - o, to - o, dir] = det[dir, from - o, to - o]
+      if (sign_triple_of_differences(dir_ref, o_ref, detail::vertex_ref(p, m.from(h)), o_ref,
+                                     detail::vertex_ref(p, m.to(h))) == Sign::negative) {
         hit = false;
         break;
       }
@@ -482,15 +629,16 @@ ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
   // Steps 1-6 check the input, step 7 builds the result and step 8 checks it
   // globally (the file comment says why that suffices).
   check_sphere(mesh);
-  const std::vector<Vec3> face_normal = face_normals(mesh);
-  check_not_flat(mesh, face_normal[0]);
-  EdgeClasses edges = classify_edges(mesh, face_normal);
+  const Points points(mesh);
+  FacePlanes faces = face_planes(mesh, points);
+  check_not_flat(mesh, points, faces.plane[0].ref());
+  EdgeClasses edges = classify_edges(mesh, points, faces);
   const Regions regions(mesh, edges.coplanar);
   const std::vector<std::vector<HalfedgeId>> cycles = boundary_cycles(regions);
   const FacetsAtVertices facets_at = facets_at_vertices(regions);
-  const std::vector<std::vector<std::uint32_t>> corners =
-      facet_corners(regions, cycles, face_normal, facets_at);
-  ConvexPolyhedron p(detail::parts_with_planes(merged_mesh(mesh, corners, facets_at, edges.flip)));
+  const std::vector<std::vector<std::uint32_t>> corners = facet_corners(regions, cycles, points, faces, facets_at);
+  ConvexPolyhedron p = merged_polyhedron(mesh, merged_mesh(mesh, corners, facets_at, edges.flip), points,
+                                         std::move(faces), regions, facets_at, edges.flip);
   check_global(p, regions);
   return p;
 }
@@ -515,7 +663,12 @@ bool ConvexPolyhedron::is_convex() const {
     if (dot(normals_[f.index()], *pts[0]) != offsets_[f.index()]) return false;
     for (const Vec3* q : pts)
       if (side_of_plane(*q, normals_[f.index()], offsets_[f.index()]) != Sign::zero) return false;
-    PolygonCheck c = check_convex_polygon(pts, n);
+    std::vector<ApproxVec3> approx;
+    for (const Vec3* q : pts) approx.push_back(ApproxVec3::of(*q));
+    std::vector<Vec3Ref> refs;
+    for (std::size_t i = 0; i < pts.size(); ++i) refs.push_back({*pts[i], approx[i]});
+    const ApproxVec3 n_approx = ApproxVec3::of(n);
+    PolygonCheck c = check_convex_polygon(refs, {n, n_approx});
     if (c.fault != PolygonFault::none) return false;
     if (std::count(c.corner.begin(), c.corner.end(), 1) != static_cast<std::ptrdiff_t>(pts.size())) return false;
   }

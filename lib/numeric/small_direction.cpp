@@ -20,10 +20,12 @@ int countr_zero(Uint128 x) noexcept {
 
 Uint128 magnitude(Int128 x) noexcept { return x < 0 ? -static_cast<Uint128>(x) : static_cast<Uint128>(x); }
 
-// Binary gcd; gcd(0, x) = x.
+// Binary gcd; gcd(0, x) = x. gcd(1, x) = 1 at once: the loop would take a
+// step per bit of x, and a primitive vector's partial gcd is usually 1.
 Uint128 gcd(Uint128 a, Uint128 b) noexcept {
   if (a == 0) return b;
   if (b == 0) return a;
+  if (a == 1 || b == 1) return 1;
   const int shift = countr_zero(a | b);
   a >>= countr_zero(a);
   do {

@@ -100,6 +100,37 @@ inline constexpr auto cross3_approx = [](const auto& u, const auto& v) noexcept 
                  sub(mul(u.x, v.y), mul(u.y, v.x))};
 };
 
+// --- polynomials on differences of points, for callers that hold the
+// points' approximations but not the exact differences (the polygon and
+// edge checks of ConvexPolyhedron::from_mesh): each difference is one
+// filtered subtraction per coordinate, whose bound covers the points' errors.
+
+/// det[n, a1 - a0, b1 - b0].
+inline constexpr auto triple_of_differences_approx = [](const auto& n, const auto& a0, const auto& a1,
+                                                        const auto& b0, const auto& b1) noexcept {
+  Approx3 a = difference(a1, a0), b = difference(b1, b0);
+  return triple_of(n.x, n.y, n.z, a, b);
+};
+
+/// dot(a1 - a0, b1 - b0).
+inline constexpr auto dot_of_differences_approx = [](const auto& a0, const auto& a1, const auto& b0,
+                                                     const auto& b1) noexcept {
+  Approx3 a = difference(a1, a0), b = difference(b1, b0);
+  return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
+};
+
+/// det[u, v, w1 - w0] = dot(w1 - w0, cross(u, v)).
+inline constexpr auto triple_with_difference_approx = [](const auto& u, const auto& v, const auto& w0,
+                                                         const auto& w1) noexcept {
+  Approx3 d = difference(w1, w0);
+  return triple_of(d.x, d.y, d.z, u, v);
+};
+
+/// cross(b - a, c - a).
+inline constexpr auto cross_of_differences_approx = [](const auto& a, const auto& b, const auto& c) noexcept {
+  return cross3_approx(difference(b, a), difference(c, a));
+};
+
 /// poly on the approximations: on their doubles when every one is exact
 /// (fewer operations, the same result), else with error propagation.
 template <class Poly, class... Approximations>

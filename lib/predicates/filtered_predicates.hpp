@@ -40,4 +40,21 @@ Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_a
 Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
 bool is_parallel(Vec3Ref u, Vec3Ref v);
 
+// Predicates on differences of points, given by the points (the polygon and
+// edge checks of ConvexPolyhedron::from_mesh): the filter subtracts the
+// cached approximations, and only an exact fallback forms the differences.
+/// Sign of det[n, a1 - a0, b1 - b0].
+Sign sign_triple_of_differences(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1);
+/// As sign_triple_of_differences for differences orthogonal to n (points of
+/// a polygon in a plane with normal n): then the value is zero iff the
+/// differences are parallel, which the exact fallback tests first, without n.
+/// \pre a0, a1, b0, b1 lie in one plane orthogonal to n, n nonzero.
+Sign sign_triple_in_plane(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1);
+/// Sign of dot(a1 - a0, b1 - b0).
+Sign sign_dot_of_differences(Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1);
+/// Sign of det[u, v, w1 - w0].
+Sign sign_triple_with_difference(Vec3Ref u, Vec3Ref v, Vec3Ref w0, Vec3Ref w1);
+/// True iff a, b, c lie on one line (cross(b - a, c - a) = 0).
+bool collinear(Vec3Ref a, Vec3Ref b, Vec3Ref c);
+
 }  // namespace cvms

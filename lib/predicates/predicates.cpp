@@ -45,6 +45,13 @@ auto filter(Poly poly, const Refs&... r) noexcept {
   return filtered::filtered_value(poly, r.approx...);
 }
 
+// Primitive normals (the facets' planes) are integer vectors: their exact
+// side_of_plane needs no rational arithmetic.
+bool has_integer_coordinates(const Vec3& v) noexcept {
+  return mpz_cmp_ui(v.x.get_den_mpz_t(), 1) == 0 && mpz_cmp_ui(v.y.get_den_mpz_t(), 1) == 0 &&
+         mpz_cmp_ui(v.z.get_den_mpz_t(), 1) == 0;
+}
+
 Vec2Ref ref(const Vec2& v, const ApproxVec2& a) noexcept { return {v, a}; }
 Vec3Ref ref(const Vec3& v, const ApproxVec3& a) noexcept { return {v, a}; }
 ApproxVec2 approximate(const Vec2& v) noexcept { return ApproxVec2::of(v); }
@@ -128,8 +135,10 @@ Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) {
 }
 
 Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_approx) {
-  return decide(filtered::sub(filter(filtered::dot3_approx, p, n), offset_approx),
-                [&] { return exact::side_of_plane(p.exact, n.exact, offset); });
+  return decide(filtered::sub(filter(filtered::dot3_approx, p, n), offset_approx), [&] {
+    return has_integer_coordinates(n.exact) ? exact::side_of_integer_plane(p.exact, n.exact, offset)
+                                            : exact::side_of_plane(p.exact, n.exact, offset);
+  });
 }
 Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset) {
   return on_the_fly([&](Vec3Ref rp, Vec3Ref rn) { return side_of_plane(rp, rn, offset, Approx::of(offset)); },
@@ -163,6 +172,40 @@ bool is_parallel(Vec3Ref u, Vec3Ref v) {
 }
 bool is_parallel(const Vec3& u, const Vec3& v) {
   return on_the_fly([](auto... r) { return is_parallel(r...); }, u, v);
+}
+
+Sign sign_triple_of_differences(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1) {
+  return decide(filter(filtered::triple_of_differences_approx, n, a0, a1, b0, b1), [&] {
+    return exact::sign_triple_of_differences(n.exact, a0.exact, a1.exact, b0.exact, b1.exact);
+  });
+}
+
+Sign sign_triple_in_plane(Vec3Ref n, Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1) {
+  return decide(filter(filtered::triple_of_differences_approx, n, a0, a1, b0, b1), [&] {
+    return exact::sign_triple_in_plane(n.exact, a0.exact, a1.exact, b0.exact, b1.exact);
+  });
+}
+
+Sign sign_dot_of_differences(Vec3Ref a0, Vec3Ref a1, Vec3Ref b0, Vec3Ref b1) {
+  return decide(filter(filtered::dot_of_differences_approx, a0, a1, b0, b1),
+                [&] { return exact::sign_dot_of_differences(a0.exact, a1.exact, b0.exact, b1.exact); });
+}
+
+Sign sign_triple_with_difference(Vec3Ref u, Vec3Ref v, Vec3Ref w0, Vec3Ref w1) {
+  return decide(filter(filtered::triple_with_difference_approx, u, v, w0, w1),
+                [&] { return exact::sign_triple_with_difference(u.exact, v.exact, w0.exact, w1.exact); });
+}
+
+bool collinear(Vec3Ref a, Vec3Ref b, Vec3Ref c) {
+  // As is_parallel: the filter can only prove a component nonzero.
+  const Approx3 n = filter(filtered::cross_of_differences_approx, a, b, c);
+  PredicateCounters& counters = predicate_counters();
+  if (filtered::certain(n.x) || filtered::certain(n.y) || filtered::certain(n.z)) {
+    ++counters.filtered;
+    return false;
+  }
+  ++counters.exact;
+  return exact::collinear(a.exact, b.exact, c.exact);
 }
 
 }  // namespace cvms

@@ -2,6 +2,8 @@
 // Exact rational evaluation of every predicate (the filter's fallback).
 #include "predicates_exact.hpp"
 
+#include "dyadic.hpp"
+
 namespace cvms::exact {
 
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) { return exact::sign_cross2(b - a, c - a); }
@@ -26,6 +28,54 @@ Sign sign_triple(const Vec3& u, const Vec3& v, const Vec3& w) { return sign_of(s
 
 bool is_parallel(const Vec3& u, const Vec3& v) {
   return u.y * v.z == u.z * v.y && u.z * v.x == u.x * v.z && u.x * v.y == u.y * v.x;
+}
+
+
+// The differences by detail::subtract: no gcd when the points are dyadic.
+Sign sign_triple_of_differences(const Vec3& n, const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+  return exact::sign_triple(n, detail::subtract(a1, a0), detail::subtract(b1, b0));
+}
+
+// a, b orthogonal to n != 0: cross(a, b) is a multiple of n, zero iff a and
+// b are parallel, so det[n, a, b] = dot(n, cross(a, b)) is zero iff they are.
+Sign sign_triple_in_plane(const Vec3& n, const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+  const Vec3 a = detail::subtract(a1, a0), b = detail::subtract(b1, b0);
+  if (exact::is_parallel(a, b)) return Sign::zero;
+  return exact::sign_triple(n, a, b);
+}
+
+Sign sign_dot_of_differences(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
+  return exact::sign_dot(detail::subtract(a1, a0), detail::subtract(b1, b0));
+}
+
+Sign sign_triple_with_difference(const Vec3& u, const Vec3& v, const Vec3& w0, const Vec3& w1) {
+  return exact::sign_triple(u, v, detail::subtract(w1, w0));
+}
+
+bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return exact::is_parallel(detail::subtract(b, a), detail::subtract(c, a));
+}
+
+Sign side_of_integer_plane(const Vec3& p, const Vec3& n, const Rational& offset) {
+  // With L the lcm of p's denominators and offset = a / b (b > 0):
+  // dot(p, n) - offset = (sum_i n_i num_i (L / den_i) b - a L) / (L b).
+  struct Scratch {
+    mpz_class l, sum, term;
+  };
+  thread_local Scratch s;
+  s.l = p.x.get_den();
+  for (int i = 1; i < 3; ++i)
+    if (p[i].get_den() != s.l) mpz_lcm(s.l.get_mpz_t(), s.l.get_mpz_t(), p[i].get_den_mpz_t());
+  s.sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (mpz_sgn(n[i].get_num_mpz_t()) == 0 || mpz_sgn(p[i].get_num_mpz_t()) == 0) continue;
+    mpz_divexact(s.term.get_mpz_t(), s.l.get_mpz_t(), p[i].get_den_mpz_t());
+    mpz_mul(s.term.get_mpz_t(), s.term.get_mpz_t(), p[i].get_num_mpz_t());
+    mpz_addmul(s.sum.get_mpz_t(), s.term.get_mpz_t(), n[i].get_num_mpz_t());
+  }
+  mpz_mul(s.sum.get_mpz_t(), s.sum.get_mpz_t(), offset.get_den_mpz_t());
+  mpz_mul(s.term.get_mpz_t(), s.l.get_mpz_t(), offset.get_num_mpz_t());
+  return sign_of(mpz_cmp(s.sum.get_mpz_t(), s.term.get_mpz_t()));
 }
 
 }  // namespace cvms::exact
