@@ -23,6 +23,7 @@
 #include "cvms/rational.hpp"
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
+#include "support/prism_attack.hpp"
 
 namespace cvms {
 namespace {
@@ -331,12 +332,9 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
 // with one line naming the limit and the option that raises it, writes
 // nothing, and the options take sizes with suffixes.
 TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
-  Mat3 quarter_turn_x;  // (x, y, z) -> (x, -z, y)
-  quarter_turn_x.m[0][0] = 1;
-  quarter_turn_x.m[1][2] = -1;
-  quarter_turn_x.m[2][1] = 1;
-  const ConvexPolyhedron a = shapes::prism(150, 2);
-  const ConvexPolyhedron b = shapes::prism(150, 3).transformed(quarter_turn_x, {});
+  const test::PrismPair pair = test::prism_attack(150);
+  const ConvexPolyhedron& a = pair.a;
+  const ConvexPolyhedron& b = pair.b;
   write_file(file("a.off"), a.to_soup());
   write_file(file("b.off"), b.to_soup());
   const test::Shape expected = test::describe(chms(a, b));  // the oracle

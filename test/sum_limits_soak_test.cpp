@@ -12,6 +12,7 @@
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "support/prism_attack.hpp"
 
 namespace cvms {
 namespace {
@@ -21,12 +22,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 TEST(SumLimitsSoak, PrismAttackIsRefusedAtTheDefaults) {
-  Mat3 quarter_turn_x;  // (x, y, z) -> (x, -z, y)
-  quarter_turn_x.m[0][0] = 1;
-  quarter_turn_x.m[1][2] = -1;
-  quarter_turn_x.m[2][1] = 1;
-  const ConvexPolyhedron a = shapes::prism(10000, 2);
-  const ConvexPolyhedron b = shapes::prism(10000, 3).transformed(quarter_turn_x, {});
+  const test::PrismPair pair = test::prism_attack(10000);
+  const ConvexPolyhedron& a = pair.a;
+  const ConvexPolyhedron& b = pair.b;
   for (Algorithm algorithm : {Algorithm::cvms, Algorithm::chms}) {
     SCOPED_TRACE(to_string(algorithm));
     Options options;

@@ -16,35 +16,20 @@
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
+#include "support/prism_attack.hpp"
 
 namespace cvms {
 namespace {
 
 using test::describe;
+using test::prism_attack;
+using test::PrismPair;
 using test::difference;
 using test::Shape;
 
 // "" if the shapes are equal, else what differs.
 std::string mismatch(const Shape& expected, const Shape& actual) {
   return expected == actual ? std::string() : difference(expected, actual);
-}
-
-// (x, y, z) -> (x, -z, y): the prism's axis z becomes y, exactly.
-Mat3 quarter_turn_x() {
-  Mat3 m;
-  m.m[0][0] = 1;
-  m.m[1][2] = -1;
-  m.m[2][1] = 1;
-  return m;
-}
-
-struct PrismPair {
-  ConvexPolyhedron a, b;
-};
-
-// The attack: an n-gon prism along z and one along y.
-PrismPair prism_attack(int n) {
-  return {shapes::prism(n, 2), shapes::prism(n, 3).transformed(quarter_turn_x(), {})};
 }
 
 Options with(Algorithm algorithm, unsigned threads = 1) {
