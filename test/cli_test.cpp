@@ -23,6 +23,7 @@
 #include "cvms/rational.hpp"
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
+#include "support/prism_attack.hpp"
 
 namespace cvms {
 namespace {
@@ -324,6 +325,60 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
   expect_bad_input("check -", "<stdin>", "broken.off");
   // An unwritable output.
   expect_bad_input("gen cube -o no/such/dir/x.off", "no/such/dir/x.off");
+}
+
+// Issue 18, item 5: output quadratic in the input. Two n-gon prisms with
+// perpendicular axes have about n^2 / 2 output facets; sum refuses them
+// with one line naming the limit and the option that raises it, writes
+// nothing, and the options take sizes with suffixes.
+TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
+  const test::PrismPair pair = test::prism_attack(150);
+  const ConvexPolyhedron& a = pair.a;
+  const ConvexPolyhedron& b = pair.b;
+  write_file(file("a.off"), a.to_soup());
+  write_file(file("b.off"), b.to_soup());
+  const test::Shape expected = test::describe(chms(a, b));  // the oracle
+  const std::uint64_t facets = expected.planes.size();
+  ASSERT_GT(facets, 8000u);
+
+  expect_bad_input("sum a.off b.off --max-facets 5000 -o s.off", "--max-facets");
+  Outcome o = run("sum a.off b.off --max-facets 5000 -o s.off");
+  EXPECT_NE(o.err.find("cvms: limit: "), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("beyond the limit of 5000 facets (SumLimits::max_output_facets)"), std::string::npos)
+      << o.err;
+  EXPECT_FALSE(fs::exists(file("s.off")));
+  expect_bad_input("sum a.off b.off --max-memory 1M -o s.off", "--max-memory");
+  o = run("sum a.off b.off --max-memory 1M -o s.off");
+  EXPECT_NE(o.err.find("beyond the limit of 1048576 bytes (SumLimits::max_memory_bytes)"), std::string::npos)
+      << o.err;
+  expect_bad_input("sum a.off b.off --algorithm essdms --max-facets 5000 -o s.off", "--max-facets");
+  expect_bad_input("sum a.off b.off --algorithm chms --max-memory 1M -o s.off", "--max-memory");
+  EXPECT_FALSE(fs::exists(file("s.off")));
+
+  // At the exact count (and with room to spare) the sum is the CHMS oracle's.
+  for (const std::string& limits : {"--max-facets " + std::to_string(facets), std::string("--max-memory 64M"),
+                                    std::string("--max-memory 1GiB --max-facets 50000")}) {
+    SCOPED_TRACE(limits);
+    ASSERT_EQ(run("sum a.off b.off -o s.off " + limits).code, 0);
+    EXPECT_TRUE(test::describe(load("s.off")) == expected);
+  }
+  o = run("sum a.off b.off -o s.off --max-facets " + std::to_string(facets - 1));
+  EXPECT_EQ(o.code, 1) << o.err;
+
+  // Sizes: digits, then K, M, G or T (binary), optionally B or iB.
+  for (const char* size : {"1048576", "1024K", "64M", "4G", "1T", "64MB", "64MiB", "64m"})
+    EXPECT_EQ(run(std::string("sum a.off a.off -o t.off --max-memory ") + size).code, 0) << size;
+  for (const char* bad : {"12X", "-5", "M", "1.5G", "99999999999999999999", "20000000000000000G", "4 G"})
+    expect_usage(std::string("sum a.off a.off -o t.off --max-memory '") + bad + "'");
+  for (const char* bad : {"0", "-1", "many", "1e6"})
+    expect_usage(std::string("sum a.off a.off -o t.off --max-facets ") + bad);
+
+  // The help shows the library's defaults.
+  o = run("sum --help");
+  EXPECT_NE(o.out.find("--max-facets"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find(std::to_string(SumLimits{}.max_output_facets)), std::string::npos) << o.out;
+  const std::string memory_line = o.out.substr(o.out.find("--max-memory"));
+  EXPECT_NE(memory_line.substr(0, memory_line.find('\n')).find("4G"), std::string::npos) << o.out;
 }
 
 }  // namespace

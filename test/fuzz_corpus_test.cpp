@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/parse_number_target.hpp"
 #include "support/fuzz_targets.hpp"
 
 namespace {
@@ -27,9 +28,9 @@ std::vector<std::uint8_t> read_bytes(const fs::path& path) {
 }
 
 // Runs every file under fuzz_dir/<kind>/<target>/ through the target;
-// returns how many files there were.
-std::size_t replay(const std::string& kind, const std::string& target) {
-  const cvms::fuzz::Target run = cvms::fuzz::target_by_name(target);
+// returns how many files there were. `run` defaults to the target of that name.
+std::size_t replay(const std::string& kind, const std::string& target, cvms::fuzz::Target run = nullptr) {
+  if (run == nullptr) run = cvms::fuzz::target_by_name(target);
   const fs::path dir = fuzz_dir / kind / target;
   std::size_t count = 0;
   if (!fs::is_directory(dir)) return 0;
@@ -61,6 +62,20 @@ TEST_P(FuzzCorpus, RegressionInputsPassTheTarget) { replay("regressions", GetPar
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzCorpus, ::testing::ValuesIn(cvms::fuzz::target_names()),
                          [](const auto& info) { return info.param; });
+
+// The number-parser harness (test/fuzz/parse_number_target.hpp) tests a
+// private function, so it is not among target_names(); its corpus is
+// replayed here.
+TEST(FuzzCorpusParseNumber, SeedsPassTheTarget) {
+  EXPECT_GE(replay("corpus", "parse_number", cvms::fuzz::parse_number_target), 4u)
+      << "the seed corpus of parse_number is missing";
+}
+
+TEST(FuzzCorpusParseNumber, RegressionInputsPassTheTarget) {
+  replay("regressions", "parse_number", cvms::fuzz::parse_number_target);
+}
+
+TEST(FuzzCorpusParseNumber, EmptyInputIsNotAFinding) { EXPECT_NO_THROW(cvms::fuzz::parse_number_target({})); }
 
 TEST(FuzzTargets, UnknownNameGivesNull) { EXPECT_EQ(cvms::fuzz::target_by_name("nope"), nullptr); }
 

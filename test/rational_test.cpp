@@ -486,5 +486,20 @@ TEST(RationalText, AgreesWithTheExactSizesOnRandomDecimals) {
   }
 }
 
+// Found by the parse_number fuzz harness (test/fuzz/regressions/parse_number/
+// both_parts_over_the_cap): with both parts of p/q beyond the cap, the
+// denominator's digit-count estimate shows it first and is named, a true
+// lower bound; a numerator over the cap alone is always named.
+TEST(RationalText, FractionWithBothPartsOverTheCapNamesEither) {
+  Rational out;
+  NumberTextResult r = capped("99999999999999999991/218446744073709551616", 64, out);
+  EXPECT_EQ(r.status, NumberTextStatus::denominator_too_large);
+  EXPECT_GT(r.bits, 64u);
+  EXPECT_LE(r.bits, 68u);  // 218446744073709551616 has 68 bits
+  r = capped("99999999999999999991/3", 64, out);
+  EXPECT_EQ(r.status, NumberTextStatus::numerator_too_large);
+  EXPECT_EQ(r.bits, 67u);
+}
+
 }  // namespace
 }  // namespace cvms

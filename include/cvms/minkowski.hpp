@@ -22,6 +22,50 @@ enum class Algorithm {
 /// "essdms" or "chms" ("unknown" for a value outside the enum).
 const char* to_string(Algorithm algorithm) noexcept;
 
+/// Bounds on the work and memory of one Minkowski sum, checked from counts
+/// the algorithm knows before it allocates the exact output: the output of
+/// two convex polyhedra can have about f_A x f_B facets (two 10,000-gon
+/// prisms with non-parallel axes, 3 MB of input, have 5 x 10^7, which would
+/// need some 50 GB), so an unchecked sum of small files can exhaust the
+/// machine. A sum beyond a limit throws Error(limit) naming the count, the
+/// limit and the field to raise. CVMS and ESSDMS count their translated and
+/// corner facets before building anything and stop the edge-facet search as
+/// soon as its running count passes what is left, so a refused sum costs
+/// the search up to the limit (about 0.5 microseconds and 48 bytes per
+/// facet found), not the sum. The defaults admit every honest sum whose
+/// output fits in about 4 GiB (Sphere8 + rotated Sphere8 has 1.0 x 10^6
+/// facets) and refuse the prism attack above after about 2 s.
+struct SumLimits {
+  /// Estimated bytes of the exact output per output facet: normals, offsets,
+  /// vertices (at most 2 per facet) and mesh of a ConvexPolyhedron, with the
+  /// build's temporaries. Measured at the peak: about 680 for Sphere8 +
+  /// rotated Sphere8 (double coordinates), 1,140 for two 1,000-gon prisms
+  /// with perpendicular axes (rationals with 40-bit denominators).
+  static constexpr std::uint64_t bytes_per_output_facet = 1024;
+  /// Estimated bytes CHMS needs per pairwise vertex sum: its double
+  /// approximation and its entries in the hull's conflict lists (measured:
+  /// about 130), not counting the output hull.
+  static constexpr std::uint64_t bytes_per_pairwise_sum = 128;
+
+  /// Most facets the sum may have (CVMS, ESSDMS). The default, 2^26 =
+  /// 67,108,864, is beyond what the default memory limit allows: it matters
+  /// only when max_memory_bytes is raised.
+  std::uint64_t max_output_facets = std::uint64_t{1} << 26;
+  /// Most bytes the output may be estimated to need: facets times
+  /// bytes_per_output_facet (CVMS, ESSDMS), pairwise sums times
+  /// bytes_per_pairwise_sum (CHMS). The default, 4 GiB (2^22 = 4,194,304
+  /// output facets, 2^25 = 33,554,432 pairwise sums), fits a machine with
+  /// 8 GB.
+  std::uint64_t max_memory_bytes = std::uint64_t{4} << 30;
+  /// ESSDMS only: most (facet, facet), (facet, arc), (facet, vertex) and
+  /// (arc, arc) pairs its quadratic loops may test: f_A f_B + f_A e_B +
+  /// f_B e_A + f_A v_B + f_B v_A before they start, plus e_A' e_B' (the arcs
+  /// that pass the pre-check) before the last one. The default, 2^34 (about
+  /// 1.7 x 10^10 pairs, 1.5 minutes at 5 ns a pair), admits Sphere6 +
+  /// rotated Sphere6 (2 x 10^9 pairs).
+  std::uint64_t max_pair_tests = std::uint64_t{1} << 34;
+};
+
 /// How minkowski_sum computes the sum. The default is CVMS with the
 /// output-sensitive searches (contributing vertices by hill-climbing, edge
 /// facets by tracing Gaussian arcs) on the calling thread.
@@ -36,6 +80,8 @@ struct Options {
   /// thread, where starting a thread would cost more than it saves. The
   /// result, Stats included, is identical.
   unsigned threads = 1;
+  /// Bounds on the sum's output size, memory and (ESSDMS) work.
+  SumLimits limits;
 };
 
 /// What an algorithm did. For CVMS, translated + corner + edge facets equals
@@ -75,12 +121,16 @@ struct MinkowskiResult {
 /// ESSDMS costs O(f_A f_B + f_A e_B + f_B e_A + e_A' e_B' + f_A v_B + f_B v_A).
 /// \throw Error(invalid_argument) for an empty (default-constructed) operand
 ///   or an unknown option value.
+/// \throw Error(limit) if the sum is beyond options.limits (SumLimits),
+///   before the exact output is built.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});
 
 /// CHMS: the exact convex hull of all v_A * v_B pairwise vertex sums.
 /// Complexity: O(v_A v_B log(v_A v_B)) expected.
-/// \throw Error(limit) if v_A v_B >= 2^32 - 1 (the hull's 32-bit indices).
-ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
+/// \throw Error(limit) if v_A v_B >= 2^32 - 1 (the hull's 32-bit indices), or
+///   if v_A v_B x SumLimits::bytes_per_pairwise_sum exceeds
+///   limits.max_memory_bytes; checked before the sums are allocated.
+ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits = {});
 
 }  // namespace cvms

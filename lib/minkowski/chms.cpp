@@ -21,14 +21,30 @@
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
+namespace {
 
-ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+// Both checked before allocating: the hull indexes points with 32 bits, and
+// each pairwise sum costs about SumLimits::bytes_per_pairwise_sum (its
+// double approximation, 24 bytes, and its entries in the conflict lists,
+// 32 bytes each, in the pool and its compacted copy).
+void check_pair_count(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits) {
   const std::uint64_t count = std::uint64_t{a.num_vertices()} * b.num_vertices();
-  // Checked before allocating: the hull indexes points with 32 bits.
-  if (count >= 0xffffffffu)
-    throw Error(ErrorCategory::limit, "chms: " + std::to_string(a.num_vertices()) + " x " +
-                                          std::to_string(b.num_vertices()) +
-                                          " pairwise vertex sums exceed the limit of 2^32 - 2 points");
+  const std::string pairs =
+      "chms: " + std::to_string(a.num_vertices()) + " x " + std::to_string(b.num_vertices()) + " pairwise vertex sums";
+  if (count >= 0xffffffffu) throw Error(ErrorCategory::limit, pairs + " exceed the limit of 2^32 - 2 points");
+  if (count > limits.max_memory_bytes / SumLimits::bytes_per_pairwise_sum)
+    throw Error(ErrorCategory::limit, pairs + " need about " +
+                                          std::to_string(count * SumLimits::bytes_per_pairwise_sum) + " bytes (" +
+                                          std::to_string(SumLimits::bytes_per_pairwise_sum) +
+                                          " per sum), beyond the limit of " + std::to_string(limits.max_memory_bytes) +
+                                          " bytes (SumLimits::max_memory_bytes)");
+}
+
+}  // namespace
+
+ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits) {
+  check_pair_count(a, b, limits);
+  const std::uint64_t count = std::uint64_t{a.num_vertices()} * b.num_vertices();
   const std::uint32_t nb = b.num_vertices();
   std::vector<std::array<double, 3>> approx;
   approx.reserve(count);

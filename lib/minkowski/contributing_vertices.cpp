@@ -104,27 +104,45 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
                                 std::span<const FaceId> partner, ContributingVertices& out) {
   const Mesh& mp = p.mesh();
   const std::uint32_t nf = p.num_facets();
-  // seed[f]: a vertex of q to climb from, set when f is queued; the queue is
-  // the BFS order itself.
-  std::vector<VertexId> seed(nf);
+  // Facets in breadth-first order (the queue is the order itself). Each
+  // climbs from the answer of its neighbour that was done last, not of the
+  // one that queued it: all the neighbours of a facet of high degree are
+  // queued by it, and climbing each from its answer would cross half the
+  // operand every time (two n-gon prisms with perpendicular axes: the n side
+  // facets of A, queued by a cap, climbed n/4 vertices of B each, O(n^2)).
+  // The neighbour done last is usually the previous facet around that cap.
+  std::vector<std::uint32_t> done_at(nf, 0);  // 1 + position in the order; 0: not done
+  std::vector<VertexId> answer(nf);           // the first contributing vertex, once done
+  std::vector<bool> queued(nf, false);
   std::vector<FaceId> queue;
   queue.reserve(nf);
   std::vector<VertexId> list;
-  seed[0] = VertexId(0);
   queue.push_back(FaceId(0));
+  queued[0] = true;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const FaceId f = queue[head];
     const FaceId g = partner.empty() ? FaceId() : partner[f.index()];
     if (g.is_valid()) {
       sorted_facet_vertices(q, g, list);
     } else {
-      climb(q, detail::normal_ref(p, f), seed[f.index()], list);
+      VertexId seed(0);
+      std::uint32_t latest = 0;
+      for (HalfedgeId h : mp.face_halfedges(f)) {
+        const std::uint32_t k = mp.face(Mesh::twin(h)).index();
+        if (done_at[k] > latest) {
+          latest = done_at[k];
+          seed = answer[k];
+        }
+      }
+      climb(q, detail::normal_ref(p, f), seed, list);
     }
     out.assign(f, list);
+    answer[f.index()] = list.front();
+    done_at[f.index()] = static_cast<std::uint32_t>(head + 1);
     for (HalfedgeId h : mp.face_halfedges(f)) {
       const FaceId next = mp.face(Mesh::twin(h));
-      if (seed[next.index()].is_valid()) continue;  // queued already (facet 0 has seed 0)
-      seed[next.index()] = list.front();
+      if (queued[next.index()]) continue;
+      queued[next.index()] = true;
       queue.push_back(next);
     }
   }

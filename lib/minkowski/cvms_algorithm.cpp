@@ -36,12 +36,26 @@
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
+#include "output_budget.hpp"
 #include "polyhedron_builder.hpp"
 #include "stitch.hpp"
 #include "worker.hpp"
 
 namespace cvms::detail {
 namespace {
+
+// The output budget of step 3: the edge facets the search may find after the
+// translated and corner facets, which are counted before it starts. The
+// search checks after each edge of A, so it holds at most one edge's facets
+// (<= e_B) beyond the allowance when it stops; the count where it stops
+// depends only on the input, so threaded and sequential runs stop alike.
+struct EdgeFacetBudget {
+  const OutputBudget& budget;
+  std::uint64_t translated;
+  std::uint64_t corner;
+
+  void check(std::uint64_t edge_facets_found) const { budget.check(translated, corner, edge_facets_found); }
+};
 
 // The halfedge of each edge of p that passes Property 1.
 std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const ContributingVertices& cv) {
@@ -87,11 +101,13 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
 // horizon edge and the is_parallel test is implied.)
 void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                        const std::vector<HalfedgeId>& edges_a, const std::vector<HalfedgeId>& edges_b,
-                       SumFacetBuilder& out, Stats& stats) {
+                       const EdgeFacetBudget& budget, SumFacetBuilder& out, Stats& stats) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   std::vector<Sign> visibility(b.num_facets());  // sign of <d_A, n(f_B)>: positive = invisible
+  std::uint64_t found = 0;
   for (HalfedgeId ha : edges_a) {
+    budget.check(found);
     const Vec3 da = a.edge_vector(ha);
     const ApproxVec3 da_approx = ApproxVec3::of(da);
     const Vec3Ref da_ref{da, da_approx};
@@ -118,8 +134,10 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
       }
       out.add_edge_plus_edge(ha, g, Sign::positive);
       ++stats.edge_facets;
+      ++found;
     }
   }
+  budget.check(found);
 }
 
 }  // namespace
@@ -128,13 +146,15 @@ namespace {
 
 // Step 3 with the arc walk, for the edges of A that pass Property 1.
 void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
-                      SumFacetBuilder& out, Stats& stats) {
+                      const EdgeFacetBudget& budget, SumFacetBuilder& out, Stats& stats) {
   const Mesh& ma = a.mesh();
   // The walk meets the edges of B in arc order; sorting them by edge index
   // emits the facets in the paper search's order, so both modes build the
   // identical polyhedron.
   std::vector<HalfedgeId> crossed;
+  std::uint64_t found = 0;
   for (HalfedgeId ha : edges_passing_property1(a, cv_a)) {
+    budget.check(found);
     crossed.clear();
     trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed,
                       stats.edge_candidates);
@@ -142,7 +162,9 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
               [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
     for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
     stats.edge_facets += crossed.size();
+    found += crossed.size();
   }
+  budget.check(found);
 }
 
 // The search modes are plain enums a caller may set to anything.
@@ -211,6 +233,13 @@ std::vector<FaceId> add_translated_facets(const ConvexPolyhedron& a, const Conve
   return partner;
 }
 
+// The number of corner facets step 2 will add: the facets of B without a
+// partner.
+std::uint64_t count_corner_facets(std::span<const FaceId> partner) {
+  return static_cast<std::uint64_t>(
+      std::count_if(partner.begin(), partner.end(), [](FaceId f) { return !f.is_valid(); }));
+}
+
 // Step 2: corner facets, from the facets of B without a partner.
 void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv_b,
                        std::span<const FaceId> partner, SumFacetBuilder& out, Stats& stats) {
@@ -249,6 +278,13 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const ContributingVertices cv_a = find_contributing_vertices(a, b, {}, walk_vertices);
   const std::vector<FaceId> partner = add_translated_facets(a, b, cv_a, out, stats);
 
+  // The translated and corner facets are known now, before any of step 2
+  // and 3's output exists: checked at once, and step 3 stops once its
+  // running count passes what is left (output_budget.hpp).
+  const OutputBudget output_budget(options.limits, "cvms");
+  const EdgeFacetBudget budget{output_budget, a.num_facets(), count_corner_facets(partner)};
+  budget.check(0);
+
   // Step 3 with the arc walk needs only the contributing vertices of A's
   // facets: with threads > 1, a worker traces the edge facets into a builder
   // of its own during step 2, and they are appended after step 2's facets,
@@ -258,7 +294,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   Worker tracer;  // after what it writes: destroyed (joined) first
   if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
       std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
-    tracer.start([&] { edge_facets_walk(a, b, cv_a, tracer_out, tracer_stats); });
+    tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
   }
 
   // Step 2. The contributing vertices of a facet of B that has a partner are
@@ -276,9 +312,9 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   } else if (research.edge_facet_search == EdgeFacetSearch::paper) {
     const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
-    edge_facets_paper(a, b, edges_a, edges_b, out, stats);
+    edge_facets_paper(a, b, edges_a, edges_b, budget, out, stats);
   } else {
-    edge_facets_walk(a, b, cv_a, out, stats);
+    edge_facets_walk(a, b, cv_a, budget, out, stats);
   }
   return out;
 }

@@ -53,11 +53,14 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "arc_crossing.hpp"
 #include "contributing_vertices.hpp"
+#include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
+#include "output_budget.hpp"
 #include "polyhedron_builder.hpp"
 #include "stitch.hpp"
 
@@ -202,12 +205,51 @@ std::vector<std::uint32_t> arcs_passing_precheck(const ConvexPolyhedron& p, cons
   return out;
 }
 
-// Case 3 (Eq. 12), by the reduction of Eq. 9 in arc_crossing.hpp.
+// The pair tests of the quadratic loops, against SumLimits::max_pair_tests:
+// checked before a loop starts, so a refused sum costs no pair test.
+class PairWork {
+ public:
+  explicit PairWork(const SumLimits& limits) : max_(limits.max_pair_tests) {}
+
+  // Adds the `pairs` of the next loop (`what` names them) and throws
+  // Error(limit) if the total passes the limit.
+  void add(std::uint64_t pairs, const char* what) {
+    total_ = saturating_sum(total_, pairs);
+    if (total_ <= max_) return;
+    throw Error(ErrorCategory::limit, "minkowski_sum (essdms): " + std::string(what) + " bring its pair tests to " +
+                                          std::to_string(total_) + ", beyond the limit of " +
+                                          std::to_string(max_) + " (SumLimits::max_pair_tests)");
+  }
+
+ private:
+  std::uint64_t max_;
+  std::uint64_t total_ = 0;
+};
+
+// The pair tests of cases 1, 2 and 4: every facet of one operand against the
+// facets, the arcs and the vertices of the other (in the worst case).
+std::uint64_t location_pair_tests(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  const std::uint64_t fa = a.num_facets(), fb = b.num_facets();
+  std::uint64_t total = saturating_product(fa, fb);
+  total = saturating_sum(total, saturating_product(fa, b.num_edges()));
+  total = saturating_sum(total, saturating_product(fb, a.num_edges()));
+  total = saturating_sum(total, saturating_product(fa, b.num_vertices()));
+  return saturating_sum(total, saturating_product(fb, a.num_vertices()));
+}
+
+// Case 3 (Eq. 12), by the reduction of Eq. 9 in arc_crossing.hpp. Stops
+// once the edge facets found pass what the budget leaves them (checked per
+// arc of A, so at most e_B' beyond it).
 void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const EdgeArcs& arcs_a,
                         const EdgeArcs& arcs_b, const std::vector<std::uint32_t>& ia,
-                        const std::vector<std::uint32_t>& ib, SumFacetBuilder& out, Stats& stats) {
+                        const std::vector<std::uint32_t>& ib, const OutputBudget& budget, SumFacetBuilder& out,
+                        Stats& stats) {
   const Mesh& ma = a.mesh();
+  const std::uint64_t translated = stats.translated_facets, corner = stats.corner_facets;
+  std::uint64_t found = 0;
+  auto check = [&] { budget.check(translated, corner, found); };
   for (std::uint32_t i : ia) {
+    check();
     const HalfedgeId ha = arcs_a.halfedges[i];
     const ArcRef arc_a{detail::normal_ref(a, ma.face(ha)), detail::normal_ref(a, ma.face(Mesh::twin(ha))),
                        arcs_a.pole(i)};
@@ -218,13 +260,19 @@ void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, co
       if (sigma == Sign::zero) continue;
       out.add_edge_plus_edge(ha, hb, sigma);
       ++stats.edge_facets;
+      ++found;
     }
   }
+  check();
 }
 
 }  // namespace
 
-ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Stats& stats) {
+ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
+                            Stats& stats) {
+  PairWork work(limits);
+  work.add(location_pair_tests(a, b), "the facet point locations (f_A f_B + f_A e_B + f_B e_A + f_A v_B + f_B v_A)");
+  const OutputBudget budget(limits, "essdms");
   SumFacetBuilder out(a, b);
   std::vector<FacetPointLocation> loc_a(a.num_facets());
   std::vector<FacetPointLocation> loc_b(b.num_facets());
@@ -237,10 +285,15 @@ ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats);  // case 4, f_A + v_B
   facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats);  // case 4, f_B + v_A
 
+  // Every facet of A and every unmatched facet of B is a facet of the sum:
+  // counted before case 3, whose pairs are counted before it starts.
+  budget.check(stats.translated_facets, stats.corner_facets, 0);
   const ContributingVertices cv_a = contributing_vertices(a, loc_a, b);
   const ContributingVertices cv_b = contributing_vertices(b, loc_b, a);
-  crossing_edge_arcs(a, b, arcs_a, arcs_b, arcs_passing_precheck(a, arcs_a, cv_a),
-                     arcs_passing_precheck(b, arcs_b, cv_b), out, stats);  // case 3
+  const std::vector<std::uint32_t> ia = arcs_passing_precheck(a, arcs_a, cv_a);
+  const std::vector<std::uint32_t> ib = arcs_passing_precheck(b, arcs_b, cv_b);
+  work.add(saturating_product(ia.size(), ib.size()), "the arc pairs that pass the pre-check (e_A' e_B')");
+  crossing_edge_arcs(a, b, arcs_a, arcs_b, ia, ib, budget, out, stats);  // case 3
 
   return out.build();
 }

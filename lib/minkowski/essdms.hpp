@@ -10,7 +10,10 @@ namespace cvms::detail {
 /// A + B by merging the slope diagrams of A and B without embedding them.
 /// Adds its facet counts, ties and arc-pair counts to `stats` (not the
 /// predicate counters: the caller measures those). \pre a and b are
-/// non-empty.
-ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Stats& stats);
+/// non-empty, and `stats` starts at zero (its facet counts feed the budget).
+/// \throw Error(limit) beyond `limits`, before the loop or the output that
+///   would pass them (output_budget.hpp).
+ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
+                            Stats& stats);
 
 }  // namespace cvms::detail

@@ -41,10 +41,10 @@ MinkowskiResult detail::minkowski_sum(const ConvexPolyhedron& a, const ConvexPol
       result.polyhedron = cvms_sum(a, b, options, research, result.stats);
       break;
     case Algorithm::chms:
-      result.polyhedron = cvms::chms(a, b);
+      result.polyhedron = cvms::chms(a, b, options.limits);
       break;
     case Algorithm::essdms:
-      result.polyhedron = essdms_sum(a, b, result.stats);
+      result.polyhedron = essdms_sum(a, b, options.limits, result.stats);
       break;
     default:
       throw Error(ErrorCategory::invalid_argument,

@@ -36,7 +36,9 @@ struct NumberTextLimits {
   std::uint64_t max_bits = gmp_max_bits;
 };
 
-/// What parse_rational_into found; checked in this order.
+/// What parse_rational_into found; checked in this order, except that when
+/// both the numerator and the denominator are beyond max_bits either may be
+/// reported (whichever estimate shows it first).
 enum class NumberTextStatus {
   ok,
   not_a_number,           ///< not the syntax of try_parse_rational (or q = 0)

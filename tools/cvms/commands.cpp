@@ -37,9 +37,11 @@ struct Timed {
   std::chrono::steady_clock::duration time;
 };
 
-Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm algorithm) {
+Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm algorithm,
+                const SumLimits& limits = {}) {
   Options options;
   options.algorithm = algorithm;
+  options.limits = limits;
   auto start = std::chrono::steady_clock::now();
   MinkowskiResult result = minkowski_sum(a, b, options);
   return {std::move(result), std::chrono::steady_clock::now() - start};
@@ -52,6 +54,22 @@ void print_stats(std::ostream& report, const Stats& s) {
          << "predicates: filtered " << s.predicate_filtered << ", exact " << s.predicate_exact << "\n";
 }
 
+// The library names the SumLimits field that stopped a sum; the tool adds
+// the option that raises it.
+Timed limited_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args) {
+  try {
+    return timed_sum(a, b, args.algorithm, args.limits);
+  } catch (const Error& e) {
+    const std::string_view message = e.message();
+    if (e.category() != ErrorCategory::limit) throw;
+    if (message.find("max_output_facets") != std::string_view::npos)
+      throw Error(e.category(), std::string(message) + "; raise it with --max-facets");
+    if (message.find("max_memory_bytes") != std::string_view::npos)
+      throw Error(e.category(), std::string(message) + "; raise it with --max-memory");
+    throw;
+  }
+}
+
 }  // namespace
 
 void run_sum(const SumArgs& args, std::ostream& report) {
@@ -59,7 +77,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   check_output_directory(args.output);
   ConvexPolyhedron a = read_polyhedron(args.a);
   ConvexPolyhedron b = read_polyhedron(args.b);
-  Timed sum = timed_sum(a, b, args.algorithm);
+  Timed sum = limited_sum(a, b, args);
   write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output));
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)

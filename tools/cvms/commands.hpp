@@ -23,6 +23,7 @@ struct SumArgs {
   Algorithm algorithm = Options{}.algorithm;
   bool float_output = false;
   bool stats = false;
+  SumLimits limits;  ///< --max-facets, --max-memory
 };
 /// A + B written to output; with stats, counts, time and Stats go to report.
 void run_sum(const SumArgs& args, std::ostream& report);

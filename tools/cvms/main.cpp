@@ -6,12 +6,14 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "cvms/error.hpp"
 #include "files.hpp"
+#include "sizes.hpp"
 
 namespace {
 
@@ -45,6 +47,27 @@ CLI::Option* add_algorithm_option(CLI::App& command, cvms::Algorithm& algorithm,
       ->default_str(default_text);
 }
 
+// --max-facets and --max-memory of sum, with the library's defaults.
+void add_sum_limit_options(CLI::App& command, cvms::SumLimits& limits) {
+  command.add_option("--max-facets", limits.max_output_facets, "refuse a sum with more output facets")
+      ->default_val(limits.max_output_facets)
+      ->check(CLI::PositiveNumber);
+  command
+      .add_option_function<std::string>(
+          "--max-memory",
+          [&limits](const std::string& text) { limits.max_memory_bytes = cvms::cli::parse_byte_size(text); },
+          "refuse a sum whose output is estimated to need more memory (bytes, or 512M, 4G, ...)")
+      ->check([](const std::string& text) {
+        try {
+          cvms::cli::parse_byte_size(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      })
+      ->default_str(cvms::cli::format_byte_size(limits.max_memory_bytes));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,6 +86,7 @@ int main(int argc, char** argv) {
   add_algorithm_option(*sum_cmd, sum.algorithm, default_algorithm);
   sum_cmd->add_flag("--float", sum.float_output, "round output coordinates to the nearest double");
   sum_cmd->add_flag("--stats", sum.stats, "print counts, time and algorithm statistics");
+  add_sum_limit_options(*sum_cmd, sum.limits);
 
   HullArgs hull;
   CLI::App* hull_cmd = app.add_subcommand("hull", "exact convex hull of points");
