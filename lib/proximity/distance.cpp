@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// intersects() and squared_distance(): the exact GJK of gjk.cpp, and the
+// witnesses from its final simplex. With v = sum w_i (a_i - b_i) the nearest
+// point of A + (-B) (weights positive, sum 1), a = sum w_i a_i is in A and
+// b = sum w_i b_i is in B (convex combinations of their vertices), and
+// a - b = v: so |a - b|^2 = |v|^2 is the distance, and a = b when they
+// intersect.
+#include "cvms/proximity.hpp"
+#include "gjk.hpp"
+#include "placed_support.hpp"
+
+namespace cvms {
+
+bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
+  detail::check_operands(a, b, "intersects");
+  return detail::exact_gjk(a, b, detail::GjkGoal::intersection).intersect;
+}
+
+DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
+  detail::check_operands(a, b, "squared_distance");
+  detail::GjkOutcome g = detail::exact_gjk(a, b, detail::GjkGoal::distance);
+  DistanceResult r;
+  r.squared_distance = g.squared_norm;
+  r.intersect = g.intersect;
+  r.iterations = g.iterations;
+  r.witness_a = Vec3{0, 0, 0};
+  r.witness_b = Vec3{0, 0, 0};
+  for (int i = 0; i < g.size; ++i) {
+    r.witness_a += g.weight[i] * g.simplex[i].a;
+    r.witness_b += g.weight[i] * g.simplex[i].b;
+  }
+  return r;
+}
+
+}  // namespace cvms

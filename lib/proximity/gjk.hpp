@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// The exact GJK of this layer: the point of C = A + (-B) nearest to the
+// origin, from support walks on A and B (gjk.cpp has the algorithm and the
+// termination proof).
+#pragma once
+
+#include <array>
+
+#include "cvms/proximity.hpp"
+
+namespace cvms::detail {
+
+/// One point of the simplex: a vertex of A, a vertex of B (moved), their difference.
+struct GjkPoint {
+  VertexId vertex_a, vertex_b;
+  Vec3 a, b;
+  Vec3 c;  ///< a - b, a point of C
+};
+
+/// What the loop found.
+struct GjkOutcome {
+  bool intersect = false;   ///< the origin is in C
+  Vec3 nearest;             ///< the point of C nearest to the origin (0 if intersect)
+  Rational squared_norm;    ///< |nearest|^2
+  std::array<GjkPoint, 4> simplex;
+  std::array<Rational, 4> weight;  ///< nearest = sum weight_i simplex_i.c, weights positive, sum 1
+  int size = 0;                    ///< points in the simplex
+  int iterations = 0;
+};
+
+/// How far to go.
+enum class GjkGoal {
+  distance,     ///< to the nearest point
+  intersection  ///< stop at the first separating direction (nearest and weights then unset)
+};
+
+/// \pre both operands non-empty.
+GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal);
+
+}  // namespace cvms::detail
