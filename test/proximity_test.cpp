@@ -181,7 +181,7 @@ TEST(Proximity, TouchingFaceEdgeAndVertexOnFace) {
       cube_at(v3(1, 1, 0)),                                       // edge to edge
       cube_at(v3(1, 1, 1)),                                       // vertex to vertex
       octa.translated(q3(Rational(1, 2), Rational(1, 2), 2)),     // a vertex on the top face
-      octa.translated(q3(Rational(1, 2), 2, 2)),                  // a vertex on the top edge... of B
+      octa.translated(q3(Rational(1, 2), 1, 2)),                  // a vertex on the top edge
   };
   for (const ConvexPolyhedron& b : cases) {
     const DistanceResult d = squared_distance(a, b);
@@ -308,6 +308,25 @@ TEST(Placement, DoubleRotationsAgreeWithTheMovedOperands) {
     EXPECT_EQ(intersects(placed_a, placed_b), oracle.inside);
     EXPECT_EQ(test::check_penetration(ma, mb, penetration(placed_a, placed_b), oracle), "");
   }
+}
+
+// --- the rounded distance ------------------------------------------------------
+
+TEST(NearestDoubleSqrt, CorrectlyRounded) {
+  EXPECT_EQ(nearest_double_sqrt(Rational(0)), 0.0);
+  EXPECT_EQ(nearest_double_sqrt(Rational(9, 4)), 1.5);
+  EXPECT_EQ(nearest_double_sqrt(Rational(1, 9)), 1.0 / 3.0);
+  EXPECT_EQ(nearest_double_sqrt(Rational(2)), std::sqrt(2.0));  // IEEE sqrt is correctly rounded
+  EXPECT_EQ(nearest_double_sqrt(parse_rational("1e-18")), 1e-9);
+  EXPECT_EQ(nearest_double_sqrt(parse_rational("1e600")), 1e300);  // beyond the double range squared
+  EXPECT_EQ(nearest_double_sqrt(parse_rational("1e-600")), 1e-300);
+  std::mt19937_64 rng(99);
+  for (int i = 0; i < 2000; ++i) {
+    // For a double q, IEEE sqrt is the correctly rounded root: an independent oracle.
+    const double q = std::ldexp(static_cast<double>(rng() >> 11), static_cast<int>(rng() % 200) - 150);
+    EXPECT_EQ(nearest_double_sqrt(Rational(q)), std::sqrt(q)) << "q = " << q;
+  }
+  EXPECT_THROW((void)nearest_double_sqrt(Rational(-1)), Error);
 }
 
 // --- seeded random pairs ------------------------------------------------------

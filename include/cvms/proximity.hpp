@@ -195,4 +195,10 @@ struct PenetrationResult {
 /// Minkowski sum (see minkowski_sum) plus O(F) exact comparisons.
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
 
+/// The double nearest to the square root of q (ties to even), for printing a
+/// distance or a depth next to its exact square: decided by exact
+/// comparisons of q with squared midpoints, not by rounding twice.
+/// \throw Error(invalid_argument) if q is negative.
+double nearest_double_sqrt(const Rational& q);
+
 }  // namespace cvms

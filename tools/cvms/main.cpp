@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "cvms/error.hpp"
 #include "files.hpp"
+#include "proximity_commands.hpp"
 
 namespace {
 
@@ -99,6 +100,9 @@ int main(int argc, char** argv) {
   CLI::App* demo_cmd = app.add_subcommand("demo", "Cube + Sphere4 with counts and time");
   add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
 
+  ProximityArgs proximity;
+  add_proximity_commands(app, proximity, mesh_path);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -107,6 +111,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (run_proximity_command(proximity, std::cout)) return 0;
     if (*sum_cmd)
       run_sum(sum, sum.output == "-" ? std::cerr : std::cout);
     else if (*hull_cmd)
