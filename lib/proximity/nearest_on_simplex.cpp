@@ -17,31 +17,38 @@
 // the Gram system G mu = r, G_ij = <e_i, e_j>, r_i = -<e_i, w>; then x = w +
 // sum mu_i e_i, weights mu_i and 1 - sum mu_i. By Cramer's rule mu_i = N_i / D
 // with D = det G > 0 (independence), so a weight has the sign of its
-// numerator and no division is needed to test it; and
-// since x is orthogonal to every e_i, |x|^2 = <x, w> = <w, w> - sum mu_i r_i.
+// numerator and no division is needed to test it; and since x is orthogonal
+// to every e_i, |x|^2 = <x, w> = <w, w> - sum mu_i r_i = (D <w, w> - sum N_i
+// r_i) / D.
+//
+// Integers, not rationals. The barycentric coordinates of the projection do
+// not change when every point is scaled by the same positive factor, so the
+// points are first multiplied by the lcm L of their coordinates'
+// denominators: then every dot product, Gram entry and Cramer numerator is an
+// integer, and nothing is reduced by a gcd until the final weights (the
+// profile of the rational version was dominated by gcds). Candidates are
+// compared by cross-multiplication; |x|^2 is the scaled value over L^2.
 #include "nearest_on_simplex.hpp"
 
 namespace cvms::detail {
 namespace {
 
-// Dot products among the points, computed once: <p_i, p_j>.
-struct Dots {
-  Rational d[4][4];
-  Dots(const std::array<Vec3, 4>& p, int n) {
-    for (int i = 0; i < n; ++i)
-      for (int j = i; j < n; ++j) d[i][j] = d[j][i] = dot(p[i], p[j]);
-  }
+using Int = mpz_class;
+struct IntVec {
+  Int x, y, z;
 };
 
-Rational det2(const Rational& a, const Rational& b, const Rational& c, const Rational& d) { return a * d - b * c; }
+Int idot(const IntVec& a, const IntVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-Rational det3(const Rational g[3][3]) {
+Int det2(const Int& a, const Int& b, const Int& c, const Int& d) { return a * d - b * c; }
+
+Int det3(const Int g[3][3]) {
   return g[0][0] * det2(g[1][1], g[1][2], g[2][1], g[2][2]) - g[0][1] * det2(g[1][0], g[1][2], g[2][0], g[2][2]) +
          g[0][2] * det2(g[1][0], g[1][1], g[2][0], g[2][1]);
 }
 
 // Solves G mu = r for k <= 3 by Cramer's rule: numerators N and D = det G.
-void cramer(int k, const Rational g[3][3], const Rational r[3], Rational num[3], Rational& den) {
+void cramer(int k, const Int g[3][3], const Int r[3], Int num[3], Int& den) {
   if (k == 1) {
     den = g[0][0];
     num[0] = r[0];
@@ -55,63 +62,103 @@ void cramer(int k, const Rational g[3][3], const Rational r[3], Rational num[3],
   }
   den = det3(g);
   for (int c = 0; c < 3; ++c) {
-    Rational m[3][3];
+    Int m[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[i][j] = (j == c) ? r[i] : g[i][j];
     num[c] = det3(m);
   }
 }
 
+// The points scaled by the lcm of their denominators, as integers.
+Int scale_to_integers(const std::array<Vec3, 4>& points, int count, std::array<IntVec, 4>& out) {
+  Int l = 1;
+  for (int i = 0; i < count; ++i)
+    for (int c = 0; c < 3; ++c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), points[i][c].get_den_mpz_t());
+  for (int i = 0; i < count; ++i) {
+    Int* coords[3] = {&out[i].x, &out[i].y, &out[i].z};
+    for (int c = 0; c < 3; ++c) {
+      mpz_divexact(coords[c]->get_mpz_t(), l.get_mpz_t(), points[i][c].get_den_mpz_t());
+      *coords[c] *= points[i][c].get_num();
+    }
+  }
+  return l;
+}
+
+struct Candidate {
+  std::uint32_t others = 0;  // mask of the older points in the face
+  int idx[3] = {0, 0, 0};
+  int k = 0;
+  Int num[3];
+  Int den;
+  Int rest;         // D - sum N_i: the newest point's weight numerator
+  Int norm_num;     // D <w, w> - sum N_i r_i; scaled |x|^2 = norm_num / den
+};
+
 }  // namespace
 
 SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) {
   const int newest = count - 1;
-  const Dots dots(points, count);
-  const auto& d = dots.d;
-  SimplexNearest best;
+  std::array<IntVec, 4> p;
+  const Int scale = scale_to_integers(points, count, p);
+  Int d[4][4];
+  for (int i = 0; i < count; ++i)
+    for (int j = i; j < count; ++j) d[i][j] = d[j][i] = idot(p[i], p[j]);
+  Candidate best;
   bool found = false;
   // Subsets of the older points; the newest is always in.
   for (std::uint32_t others = 0; others < (1u << newest); ++others) {
-    int idx[3];
-    int k = 0;
+    Candidate c;
+    c.others = others;
     for (int i = 0; i < newest; ++i)
-      if (others & (1u << i)) idx[k++] = i;
-    Rational g[3][3];
-    Rational r[3];
-    for (int i = 0; i < k; ++i) {
+      if (others & (1u << i)) c.idx[c.k++] = i;
+    Int g[3][3];
+    Int r[3];
+    for (int i = 0; i < c.k; ++i) {
       // <e_i, e_j> = <p_i, p_j> - <p_i, w> - <p_j, w> + <w, w>
-      for (int j = 0; j < k; ++j) g[i][j] = d[idx[i]][idx[j]] - d[idx[i]][newest] - d[idx[j]][newest] + d[newest][newest];
-      r[i] = d[newest][newest] - d[idx[i]][newest];  // -<e_i, w>
+      for (int j = 0; j < c.k; ++j)
+        g[i][j] = d[c.idx[i]][c.idx[j]] - d[c.idx[i]][newest] - d[c.idx[j]][newest] + d[newest][newest];
+      r[i] = d[newest][newest] - d[c.idx[i]][newest];  // -<e_i, w>
     }
-    Rational num[3];
-    Rational den = 1;
-    if (k > 0) {
-      cramer(k, g, r, num, den);
-      if (sgn(den) <= 0) continue;  // dependent: excluded by the precondition, skipped defensively
+    c.den = 1;
+    if (c.k > 0) {
+      cramer(c.k, g, r, c.num, c.den);
+      if (sgn(c.den) <= 0) continue;  // dependent: excluded by the precondition, skipped defensively
     }
-    Rational rest = den;
+    c.rest = c.den;
     bool positive = true;
-    for (int i = 0; i < k; ++i) {
-      positive = positive && sgn(num[i]) > 0;
-      rest -= num[i];
+    for (int i = 0; i < c.k; ++i) {
+      positive = positive && sgn(c.num[i]) > 0;
+      c.rest -= c.num[i];
     }
-    if (!positive || sgn(rest) <= 0) continue;
-    // |x|^2 = <w, w> - sum mu_i r_i
-    Rational norm = d[newest][newest];
-    for (int i = 0; i < k; ++i) norm -= num[i] * r[i] / den;
-    if (found && norm >= best.squared_norm) continue;
+    if (!positive || sgn(c.rest) <= 0) continue;
+    c.norm_num = c.den * d[newest][newest];
+    for (int i = 0; i < c.k; ++i) c.norm_num -= c.num[i] * r[i];
+    if (found && c.norm_num * best.den >= best.norm_num * c.den) continue;
     found = true;
-    best.squared_norm = norm;
-    best.support_mask = (others) | (1u << newest);
-    for (Rational& w : best.weight) w = 0;
-    best.weight[newest] = rest / den;
-    for (int i = 0; i < k; ++i) best.weight[idx[i]] = num[i] / den;
+    best = std::move(c);
   }
   // The newest point alone always qualifies, so `found` holds here.
-  best.point = Vec3{0, 0, 0};
-  for (int i = 0; i < count; ++i)
-    if (best.support_mask & (1u << i)) best.point += best.weight[i] * points[i];
-  return best;
+  SimplexNearest out;
+  out.support_mask = best.others | (1u << newest);
+  for (Rational& w : out.weight) w = 0;
+  IntVec y{best.rest * p[newest].x, best.rest * p[newest].y, best.rest * p[newest].z};
+  out.weight[newest] = Rational(best.rest, best.den);
+  out.weight[newest].canonicalize();
+  for (int i = 0; i < best.k; ++i) {
+    const int j = best.idx[i];
+    out.weight[j] = Rational(best.num[i], best.den);
+    out.weight[j].canonicalize();
+    y.x += best.num[i] * p[j].x;
+    y.y += best.num[i] * p[j].y;
+    y.z += best.num[i] * p[j].z;
+  }
+  // x = Y / (D L), |x|^2 = norm_num / (D L^2)
+  const Int dl = best.den * scale;
+  out.point = Vec3{Rational(y.x, dl), Rational(y.y, dl), Rational(y.z, dl)};
+  for (int c = 0; c < 3; ++c) out.point[c].canonicalize();
+  out.squared_norm = Rational(best.norm_num, dl * scale);
+  out.squared_norm.canonicalize();
+  return out;
 }
 
 }  // namespace cvms::detail
