@@ -20,46 +20,15 @@
 #include "cvms/proximity.hpp"
 #include "cvms/shapes.hpp"
 #include "filtered_predicates.hpp"
+#include "proximity_operands.hpp"
 
 namespace {
 
 using cvms::ConvexPolyhedron;
-using cvms::Rational;
-using cvms::Vec3;
-
-constexpr int kPairs = 7;
-constexpr const char* kPlacements[] = {"overlapping", "touching", "separated"};
-
-struct Operands {
-  ConvexPolyhedron a;
-  ConvexPolyhedron b;
-  std::string label;
-};
-
-Operands base_pair(int pair) {
-  if (pair == 0) return {cvms::shapes::cube(), cvms::shapes::cube(), "Cube/Cube"};
-  const int k = 3 + (pair - 1) % 3;
-  if (pair <= 3)
-    return {cvms::shapes::geodesic_sphere(k), cvms::shapes::rotated_geodesic_sphere(k),
-            "Sphere" + std::to_string(k) + "/rotSphere" + std::to_string(k)};
-  return {cvms::shapes::geodesic_sphere(k), cvms::shapes::cube(), "Sphere" + std::to_string(k) + "/Cube"};
-}
-
-// B moved by lambda p (see the file comment).
-const Operands& operands(int pair, int placement) {
-  static std::array<std::array<Operands, 3>, kPairs> cache;
-  static std::array<std::array<bool, 3>, kPairs> built{};
-  if (!built[pair][placement]) {
-    Operands o = base_pair(pair);
-    const Vec3 d{Rational(1), Rational(1, 3), Rational(1, 5)};
-    const Vec3 p = cvms::support(o.a, d).point - cvms::support(o.b, -d).point;
-    const Rational lambda = Rational(placement + 1, 2);
-    o.b = o.b.translated(lambda * p);
-    cache[pair][placement] = std::move(o);
-    built[pair][placement] = true;
-  }
-  return cache[pair][placement];
-}
+using cvms_bench::kPairs;
+using cvms_bench::kPlacements;
+using cvms_bench::operands;
+using cvms_bench::Operands;
 
 void label(benchmark::State& state) {
   const Operands& o = operands(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
