@@ -331,72 +331,18 @@ TEST(NearestDoubleSqrt, CorrectlyRounded) {
 
 // --- seeded random pairs ------------------------------------------------------
 
-// B is moved by t = c + lambda (q - c), with c an interior point of
-// M = A + (-B) and q a point on its boundary: A and B + t then overlap for
-// lambda < 1, touch for lambda = 1 and are apart for lambda > 1 (the origin
-// is in M - t iff t is in M).
-struct Placed {
-  ConvexPolyhedron b;
-  const char* how;
-};
-
-Placed place_against(const ConvexPolyhedron& m, const ConvexPolyhedron& b, std::mt19937_64& rng) {
-  Vec3 c{0, 0, 0};
-  for (VertexId v : m.mesh().vertices()) c += m.vertex(v);
-  c = Rational(1, m.num_vertices()) * c;
-  // q: a vertex, an edge midpoint or the average of a facet's vertices.
-  const Mesh& mesh = m.mesh();
-  Vec3 q;
-  switch (rng() % 3) {
-    case 0:
-      q = m.vertex(VertexId(static_cast<std::uint32_t>(rng() % m.num_vertices())));
-      break;
-    case 1: {
-      const HalfedgeId h = Mesh::halfedge(EdgeId(static_cast<std::uint32_t>(rng() % m.num_edges())));
-      q = Rational(1, 2) * (mesh.position(mesh.from(h)) + mesh.position(mesh.to(h)));
-      break;
-    }
-    default: {
-      const FaceId f(static_cast<std::uint32_t>(rng() % m.num_facets()));
-      Vec3 s{0, 0, 0};
-      for (HalfedgeId h : mesh.face_halfedges(f)) s += mesh.position(mesh.from(h));
-      q = Rational(1, mesh.degree(f)) * s;
-    }
-  }
-  const int kind = static_cast<int>(rng() % 3);
-  const Rational lambda = kind == 0 ? Rational(static_cast<long>(rng() % 7) + 1, 8)
-                                    : (kind == 1 ? Rational(1) : Rational(static_cast<long>(rng() % 16) + 9, 8));
-  return {b.translated(c + lambda * (q - c)), kind == 0 ? "overlapping" : (kind == 1 ? "touching" : "separated")};
-}
-
-void run_random_pairs(std::uint64_t first_seed, int count) {
+TEST(RandomPairs, TwoThousandSeededPairsAgreeWithTheOracle) {
   int kinds[3] = {0, 0, 0};
-  for (std::uint64_t seed = first_seed; seed < first_seed + static_cast<std::uint64_t>(count); ++seed) {
-    test::RandomPair pair = test::random_pair(seed, 20);
-    std::mt19937_64 rng(seed);
-    const ConvexPolyhedron m = chms(pair.a, pair.b.reflected());
-    const Placed placed = place_against(m, pair.b, rng);
-    const ConvexPolyhedron& a = pair.a;
-    const ConvexPolyhedron& b = placed.b;
-    SCOPED_TRACE("seed " + std::to_string(seed) + ": " + pair.description + ", " + placed.how);
-    const test::OriginAndPolytope oracle = test::proximity_oracle(a, b);
-    const std::string how = placed.how;
-    EXPECT_EQ(oracle.inside, how != "separated");
-    if (how == "touching") {
-      EXPECT_EQ(oracle.boundary_distance2, 0);
-    }
-    kinds[how == "overlapping" ? 0 : (how == "touching" ? 1 : 2)]++;
-    const DistanceResult d = squared_distance(a, b);
-    ASSERT_EQ(test::check_distance(a, b, d, oracle), "");
-    ASSERT_EQ(intersects(a, b), oracle.inside);
-    ASSERT_EQ(test::check_penetration(a, b, penetration(a, b), oracle), "");
+  constexpr int count = 2000;
+  for (std::uint64_t seed = 1; seed <= count; ++seed) {
+    const test::RandomPlacementCheck c = test::check_random_placement(seed);
+    ASSERT_EQ(c.failure, "") << "seed " << seed << ": " << c.description;
+    ++kinds[static_cast<int>(c.kind)];
   }
   EXPECT_GT(kinds[0], count / 5);
   EXPECT_GT(kinds[1], count / 5);
   EXPECT_GT(kinds[2], count / 5);
 }
-
-TEST(RandomPairs, TwoThousandSeededPairsAgreeWithTheOracle) { run_random_pairs(1, 2000); }
 
 }  // namespace
 }  // namespace cvms

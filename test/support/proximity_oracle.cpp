@@ -10,8 +10,11 @@
 #include <algorithm>
 #include <optional>
 
+#include <random>
+
 #include "cvms/minkowski.hpp"
 #include "support/oracle.hpp"
+#include "support/random_clouds.hpp"
 
 namespace cvms::test {
 namespace {
@@ -111,6 +114,64 @@ std::string check_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron&
   if (!contains(b, p.witness_b)) return "witness_b " + to_text(p.witness_b) + " is not in B";
   if (p.witness_a - p.witness_b != t) return "witness_a - witness_b is not the translation";
   return "";
+}
+
+namespace {
+
+// A point on the boundary of m: a vertex, an edge midpoint or the average of a facet's vertices.
+Vec3 boundary_point(const ConvexPolyhedron& m, std::mt19937_64& rng) {
+  const Mesh& mesh = m.mesh();
+  switch (rng() % 3) {
+    case 0:
+      return m.vertex(VertexId(static_cast<std::uint32_t>(rng() % m.num_vertices())));
+    case 1: {
+      const HalfedgeId h = Mesh::halfedge(EdgeId(static_cast<std::uint32_t>(rng() % m.num_edges())));
+      return Rational(1, 2) * (mesh.position(mesh.from(h)) + mesh.position(mesh.to(h)));
+    }
+    default: {
+      const FaceId f(static_cast<std::uint32_t>(rng() % m.num_facets()));
+      Vec3 s{0, 0, 0};
+      for (HalfedgeId h : mesh.face_halfedges(f)) s += mesh.position(mesh.from(h));
+      return Rational(1, mesh.degree(f)) * s;
+    }
+  }
+}
+
+const char* placing_name(Placing p) {
+  return p == Placing::overlapping ? "overlapping" : (p == Placing::touching ? "touching" : "separated");
+}
+
+}  // namespace
+
+RandomPlacementCheck check_random_placement(std::uint64_t seed) {
+  RandomPair pair = random_pair(seed, 20);
+  std::mt19937_64 rng(seed);
+  const ConvexPolyhedron m = chms(pair.a, pair.b.reflected());
+  Vec3 c{0, 0, 0};
+  for (VertexId v : m.mesh().vertices()) c += m.vertex(v);
+  c = Rational(1, m.num_vertices()) * c;  // interior: M is full-dimensional
+  const Vec3 q = boundary_point(m, rng);
+  RandomPlacementCheck out;
+  out.kind = static_cast<Placing>(rng() % 3);
+  const Rational lambda = out.kind == Placing::overlapping ? Rational(static_cast<long>(rng() % 7) + 1, 8)
+                          : out.kind == Placing::touching  ? Rational(1)
+                                                           : Rational(static_cast<long>(rng() % 16) + 9, 8);
+  const ConvexPolyhedron& a = pair.a;
+  const ConvexPolyhedron b = pair.b.translated(c + lambda * (q - c));
+  out.description = pair.description + ", " + placing_name(out.kind);
+  const OriginAndPolytope oracle = proximity_oracle(a, b);
+  if (oracle.inside != (out.kind != Placing::separated)) {
+    out.failure = "the oracle contradicts the construction (inside)";
+    return out;
+  }
+  if (out.kind == Placing::touching && sgn(oracle.boundary_distance2) != 0) {
+    out.failure = "the oracle contradicts the construction (touching)";
+    return out;
+  }
+  out.failure = check_distance(a, b, squared_distance(a, b), oracle);
+  if (out.failure.empty() && intersects(a, b) != oracle.inside) out.failure = "intersects disagrees";
+  if (out.failure.empty()) out.failure = check_penetration(a, b, penetration(a, b), oracle);
+  return out;
 }
 
 }  // namespace cvms::test

@@ -6,6 +6,7 @@
 // the code under test but the hull.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,24 @@ std::string check_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
 /// what is wrong.
 std::string check_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const PenetrationResult& p,
                               const OriginAndPolytope& oracle);
+
+/// How a random pair was placed.
+enum class Placing { overlapping = 0, touching = 1, separated = 2 };
+
+/// The outcome of one seeded random placement.
+struct RandomPlacementCheck {
+  Placing kind = Placing::overlapping;
+  std::string description;  ///< the pair and the placement
+  std::string failure;      ///< "" when every query agreed with the oracle
+};
+
+/// A random pair (random_pair(seed, 20)) with B moved by t = c + lambda (q -
+/// c), c an interior point of M = A + (-B) and q a point on its boundary (a
+/// vertex, an edge midpoint or a facet's vertex average): A and B + t overlap
+/// for lambda < 1, touch for lambda = 1 and are apart for lambda > 1 (the
+/// origin is in M - t iff t is in M). Then squared_distance, intersects and
+/// penetration are checked against the oracle, and the oracle against the
+/// construction.
+RandomPlacementCheck check_random_placement(std::uint64_t seed);
 
 }  // namespace cvms::test
