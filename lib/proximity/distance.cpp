@@ -7,6 +7,7 @@
 // intersect.
 #include "cvms/proximity.hpp"
 #include "gjk.hpp"
+#include "nearest_on_simplex.hpp"
 #include "placed_support.hpp"
 
 namespace cvms {
@@ -23,12 +24,14 @@ DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedro
   r.squared_distance = g.squared_norm;
   r.intersect = g.intersect;
   r.iterations = g.iterations;
-  r.witness_a = Vec3{0, 0, 0};
-  r.witness_b = Vec3{0, 0, 0};
+  const Vec3* a_points[4];
+  const Vec3* b_points[4];
   for (int i = 0; i < g.size; ++i) {
-    r.witness_a += g.weight[i] * g.simplex[i].a;
-    r.witness_b += g.weight[i] * g.simplex[i].b;
+    a_points[i] = &g.simplex[i].a;
+    b_points[i] = &g.simplex[i].b;
   }
+  r.witness_a = detail::weighted_sum(a_points, g.weight_num.data(), g.weight_den, g.size);
+  r.witness_b = detail::weighted_sum(b_points, g.weight_num.data(), g.weight_den, g.size);
   return r;
 }
 

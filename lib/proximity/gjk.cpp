@@ -60,9 +60,10 @@ void add_and_reduce(GjkOutcome& out, GjkPoint w) {
   for (int i = 0; i < out.size; ++i) {
     if (!(n.support_mask & (1u << i))) continue;
     if (kept != i) out.simplex[kept] = std::move(out.simplex[i]);
-    out.weight[kept++] = std::move(n.weight[i]);
+    out.weight_num[kept++] = std::move(n.weight_num[i]);
   }
   out.size = kept;
+  out.weight_den = std::move(n.weight_den);
   out.nearest = std::move(n.point);
   out.squared_norm = std::move(n.squared_norm);
 }
@@ -74,7 +75,8 @@ GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGo
   VertexId hint_a(0);
   VertexId hint_b(0);
   out.simplex[0] = point_of(a, b, hint_a, hint_b);
-  out.weight[0] = 1;
+  out.weight_num[0] = 1;
+  out.weight_den = 1;
   out.size = 1;
   out.nearest = out.simplex[0].c;
   out.squared_norm = dot(out.nearest, out.nearest);

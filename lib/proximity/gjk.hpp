@@ -23,7 +23,9 @@ struct GjkOutcome {
   Vec3 nearest;             ///< the point of C nearest to the origin (0 if intersect)
   Rational squared_norm;    ///< |nearest|^2
   std::array<GjkPoint, 4> simplex;
-  std::array<Rational, 4> weight;  ///< nearest = sum weight_i simplex_i.c, weights positive, sum 1
+  /// nearest = sum weight_num_i simplex_i.c / weight_den; weights positive, sum 1.
+  std::array<mpz_class, 4> weight_num;
+  mpz_class weight_den;
   int size = 0;                    ///< points in the simplex
   int iterations = 0;
 };

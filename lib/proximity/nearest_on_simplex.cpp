@@ -28,7 +28,20 @@
 // integer, and nothing is reduced by a gcd until the final weights (the
 // profile of the rational version was dominated by gcds). Candidates are
 // compared by cross-multiplication; |x|^2 is the scaled value over L^2.
+//
+// Guess in doubles, verify exactly. The face is first chosen in double
+// arithmetic (the same enumeration on rounded dot products), and only that
+// face is solved exactly; it is accepted iff its exact weights are positive
+// and the optimality condition holds exactly: <x, p - x> >= 0 for every point
+// p of W, which (x being in conv(W)) makes x the nearest point of conv(W), the
+// first-order condition of a convex problem. In the scaled integer frame, with
+// Y = D x = sum of the weight numerators times the points, that is
+// <Y, P_j> >= D <w, w> - sum N_i r_i for every j. Only if the guess fails
+// (rounding chose wrongly) does the exact enumeration run; so the answer never
+// depends on the doubles, only the time does.
 #include "nearest_on_simplex.hpp"
+
+#include <cmath>
 
 namespace cvms::detail {
 namespace {
@@ -94,6 +107,123 @@ struct Candidate {
   Int norm_num;     // D <w, w> - sum N_i r_i; scaled |x|^2 = norm_num / den
 };
 
+
+// The exact projection onto the face {newest} + others; false if its weights
+// are not all positive (or the face is dependent).
+bool solve_face(const Int d[4][4], int newest, std::uint32_t others, Candidate& c) {
+  c = Candidate{};
+  c.others = others;
+  for (int i = 0; i < newest; ++i)
+    if (others & (1u << i)) c.idx[c.k++] = i;
+  Int g[3][3];
+  Int r[3];
+  for (int i = 0; i < c.k; ++i) {
+    // <e_i, e_j> = <p_i, p_j> - <p_i, w> - <p_j, w> + <w, w>
+    for (int j = 0; j < c.k; ++j)
+      g[i][j] = d[c.idx[i]][c.idx[j]] - d[c.idx[i]][newest] - d[c.idx[j]][newest] + d[newest][newest];
+    r[i] = d[newest][newest] - d[c.idx[i]][newest];  // -<e_i, w>
+  }
+  c.den = 1;
+  if (c.k > 0) {
+    cramer(c.k, g, r, c.num, c.den);
+    if (sgn(c.den) <= 0) return false;  // dependent: excluded by the precondition, rejected defensively
+  }
+  c.rest = c.den;
+  for (int i = 0; i < c.k; ++i) {
+    if (sgn(c.num[i]) <= 0) return false;
+    c.rest -= c.num[i];
+  }
+  if (sgn(c.rest) <= 0) return false;
+  c.norm_num = c.den * d[newest][newest];
+  for (int i = 0; i < c.k; ++i) c.norm_num -= c.num[i] * r[i];
+  return true;
+}
+
+// <Y, P_j> >= norm_num for every point j: the exact optimality condition.
+bool is_optimal(const Int d[4][4], int count, const Candidate& c) {
+  const int newest = count - 1;
+  for (int j = 0; j < count; ++j) {
+    Int y_dot = c.rest * d[newest][j];
+    for (int i = 0; i < c.k; ++i) y_dot += c.num[i] * d[c.idx[i]][j];
+    if (y_dot < c.norm_num) return false;
+  }
+  return true;
+}
+
+// The face the double-precision enumeration picks (the mask of the older
+// points in it); 0, the newest alone, if nothing qualifies in doubles.
+std::uint32_t guess_face(const Int d[4][4], int count) {
+  const int newest = count - 1;
+  double f[4][4];
+  for (int i = 0; i < count; ++i)
+    for (int j = 0; j < count; ++j) f[i][j] = d[i][j].get_d();
+  std::uint32_t best = 0;
+  double best_norm = f[newest][newest];
+  for (std::uint32_t others = 1; others < (1u << newest); ++others) {
+    int idx[3];
+    int k = 0;
+    for (int i = 0; i < newest; ++i)
+      if (others & (1u << i)) idx[k++] = i;
+    double g[3][3];
+    double r[3];
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; j < k; ++j) g[i][j] = f[idx[i]][idx[j]] - f[idx[i]][newest] - f[idx[j]][newest] + f[newest][newest];
+      r[i] = f[newest][newest] - f[idx[i]][newest];
+    }
+    double mu[3];
+    double det = 0;
+    if (k == 1) {
+      det = g[0][0];
+      mu[0] = r[0] / det;
+    } else if (k == 2) {
+      det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
+      mu[0] = (r[0] * g[1][1] - g[0][1] * r[1]) / det;
+      mu[1] = (g[0][0] * r[1] - r[0] * g[1][0]) / det;
+    } else {
+      auto det3d = [](const double m[3][3]) {
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+      };
+      det = det3d(g);
+      for (int col = 0; col < 3; ++col) {
+        double m[3][3];
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) m[i][j] = (j == col) ? r[i] : g[i][j];
+        mu[col] = det3d(m) / det;
+      }
+    }
+    if (!(det > 0) || !std::isfinite(det)) continue;
+    double rest = 1;
+    bool positive = true;
+    double norm = f[newest][newest];
+    for (int i = 0; i < k; ++i) {
+      positive = positive && mu[i] > 0;
+      rest -= mu[i];
+      norm -= mu[i] * r[i];
+    }
+    if (!positive || !(rest > 0) || !(norm < best_norm)) continue;
+    best = others;
+    best_norm = norm;
+  }
+  return best;
+}
+
+// The exact enumeration: the nearest of the faces with positive weights.
+Candidate enumerate_faces(const Int d[4][4], int count) {
+  const int newest = count - 1;
+  Candidate best;
+  bool found = false;
+  for (std::uint32_t others = 0; others < (1u << newest); ++others) {
+    Candidate c;
+    if (!solve_face(d, newest, others, c)) continue;
+    if (found && c.norm_num * best.den >= best.norm_num * c.den) continue;
+    found = true;
+    best = std::move(c);
+  }
+  // The newest point alone always qualifies, so `found` holds here.
+  return best;
+}
+
 }  // namespace
 
 SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) {
@@ -104,50 +234,16 @@ SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) 
   for (int i = 0; i < count; ++i)
     for (int j = i; j < count; ++j) d[i][j] = d[j][i] = idot(p[i], p[j]);
   Candidate best;
-  bool found = false;
-  // Subsets of the older points; the newest is always in.
-  for (std::uint32_t others = 0; others < (1u << newest); ++others) {
-    Candidate c;
-    c.others = others;
-    for (int i = 0; i < newest; ++i)
-      if (others & (1u << i)) c.idx[c.k++] = i;
-    Int g[3][3];
-    Int r[3];
-    for (int i = 0; i < c.k; ++i) {
-      // <e_i, e_j> = <p_i, p_j> - <p_i, w> - <p_j, w> + <w, w>
-      for (int j = 0; j < c.k; ++j)
-        g[i][j] = d[c.idx[i]][c.idx[j]] - d[c.idx[i]][newest] - d[c.idx[j]][newest] + d[newest][newest];
-      r[i] = d[newest][newest] - d[c.idx[i]][newest];  // -<e_i, w>
-    }
-    c.den = 1;
-    if (c.k > 0) {
-      cramer(c.k, g, r, c.num, c.den);
-      if (sgn(c.den) <= 0) continue;  // dependent: excluded by the precondition, skipped defensively
-    }
-    c.rest = c.den;
-    bool positive = true;
-    for (int i = 0; i < c.k; ++i) {
-      positive = positive && sgn(c.num[i]) > 0;
-      c.rest -= c.num[i];
-    }
-    if (!positive || sgn(c.rest) <= 0) continue;
-    c.norm_num = c.den * d[newest][newest];
-    for (int i = 0; i < c.k; ++i) c.norm_num -= c.num[i] * r[i];
-    if (found && c.norm_num * best.den >= best.norm_num * c.den) continue;
-    found = true;
-    best = std::move(c);
-  }
-  // The newest point alone always qualifies, so `found` holds here.
+  if (!solve_face(d, newest, guess_face(d, count), best) || !is_optimal(d, count, best)) best = enumerate_faces(d, count);
   SimplexNearest out;
   out.support_mask = best.others | (1u << newest);
-  for (Rational& w : out.weight) w = 0;
+  for (mpz_class& w : out.weight_num) w = 0;
+  out.weight_den = best.den;
   IntVec y{best.rest * p[newest].x, best.rest * p[newest].y, best.rest * p[newest].z};
-  out.weight[newest] = Rational(best.rest, best.den);
-  out.weight[newest].canonicalize();
+  out.weight_num[newest] = best.rest;
   for (int i = 0; i < best.k; ++i) {
     const int j = best.idx[i];
-    out.weight[j] = Rational(best.num[i], best.den);
-    out.weight[j].canonicalize();
+    out.weight_num[j] = best.num[i];
     y.x += best.num[i] * p[j].x;
     y.y += best.num[i] * p[j].y;
     y.z += best.num[i] * p[j].z;
@@ -158,6 +254,23 @@ SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) 
   for (int c = 0; c < 3; ++c) out.point[c].canonicalize();
   out.squared_norm = Rational(best.norm_num, dl * scale);
   out.squared_norm.canonicalize();
+  return out;
+}
+
+Vec3 weighted_sum(const Vec3* const points[], const mpz_class weight_num[], const mpz_class& weight_den, int count) {
+  std::array<Vec3, 4> pts;
+  for (int i = 0; i < count; ++i) pts[i] = *points[i];
+  std::array<IntVec, 4> scaled;
+  const Int scale = scale_to_integers(pts, count, scaled);
+  IntVec sum{0, 0, 0};
+  for (int i = 0; i < count; ++i) {
+    sum.x += weight_num[i] * scaled[i].x;
+    sum.y += weight_num[i] * scaled[i].y;
+    sum.z += weight_num[i] * scaled[i].z;
+  }
+  const Int den = weight_den * scale;
+  Vec3 out{Rational(sum.x, den), Rational(sum.y, den), Rational(sum.z, den)};
+  for (int c = 0; c < 3; ++c) out[c].canonicalize();
   return out;
 }
 
