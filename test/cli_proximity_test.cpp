@@ -3,18 +3,13 @@
 // line format, the exact numbers (hand-checked: unit cubes 1/3 apart, cubes
 // overlapping by 1/10) and the exit codes of bad input and usage errors.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 
-namespace {
+#include "support/cli_runner.hpp"
 
-namespace fs = std::filesystem;
+namespace {
 
 // The cube [x0, x0 + 1] x [0, 1] x [0, 1] as OFF text (x0 exact text).
 std::string cube_off(const std::string& x0, const std::string& x1) {
@@ -25,51 +20,33 @@ std::string cube_off(const std::string& x0, const std::string& x1) {
   return s.str();
 }
 
-struct Outcome {
-  int code = -1;
-  std::string out, err;
-};
-
 class CliProximity : public ::testing::Test {
  protected:
   void SetUp() override {
 #ifndef CVMS_CLI_PATH
     GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
-#else
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("cvms_cli_proximity_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    write("a.off", cube_off("0", "1"));
-    write("apart.off", cube_off("4/3", "7/3"));
-    write("over.off", cube_off("0.9", "1.9"));
 #endif
+    dir_.write("a.off", cube_off("0", "1"));
+    dir_.write("apart.off", cube_off("4/3", "7/3"));
+    dir_.write("over.off", cube_off("0.9", "1.9"));
   }
   void TearDown() override {
-    if (!dir_.empty() && !HasFailure()) fs::remove_all(dir_);
+    if (HasFailure()) dir_.keep();
   }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(dir_ / name) << text; }
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  Outcome run(const std::string& args) const {
+  [[nodiscard]] cvms::test::CliOutcome run(const std::string& args) const {
 #ifdef CVMS_CLI_PATH
-    const std::string command = "cd '" + dir_.string() + "' && '" CVMS_CLI_PATH "' " + args + " > out.txt 2> err.txt";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"), slurp(dir_ / "err.txt")};
+    return cvms::test::run_cli(dir_.path(), CVMS_CLI_PATH, args);
 #else
     (void)args;
     return {};
 #endif
   }
-  fs::path dir_;
+  cvms::test::ScratchDirectory dir_{std::string("cli_proximity_") +
+                                    ::testing::UnitTest::GetInstance()->current_test_info()->name()};
 };
 
 TEST_F(CliProximity, DistanceOfCubesOneThirdApart) {
-  const Outcome o = run("distance a.off apart.off");
+  const cvms::test::CliOutcome o = run("distance a.off apart.off");
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_EQ(o.out,
             "squared_distance 1/9\n"
@@ -80,7 +57,7 @@ TEST_F(CliProximity, DistanceOfCubesOneThirdApart) {
 }
 
 TEST_F(CliProximity, PenetrationOfCubesOverlappingByOneTenth) {
-  const Outcome o = run("penetration a.off over.off");
+  const cvms::test::CliOutcome o = run("penetration a.off over.off");
   ASSERT_EQ(o.code, 0) << o.err;
   const std::string head =
       "squared_depth 0.01\n"
@@ -93,7 +70,7 @@ TEST_F(CliProximity, PenetrationOfCubesOverlappingByOneTenth) {
 }
 
 TEST_F(CliProximity, PenetrationOfSeparatedAndDistanceOfOverlapping) {
-  Outcome o = run("penetration a.off apart.off");
+  cvms::test::CliOutcome o = run("penetration a.off apart.off");
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_EQ(o.out.rfind("squared_depth 0\ndepth 0\ndirection 0 0 0\n", 0), 0u) << o.out;
   EXPECT_NE(o.out.find("intersect no\n"), std::string::npos) << o.out;
@@ -104,7 +81,7 @@ TEST_F(CliProximity, PenetrationOfSeparatedAndDistanceOfOverlapping) {
 }
 
 TEST_F(CliProximity, BadInputAndUsage) {
-  Outcome o = run("distance a.off missing.off");
+  cvms::test::CliOutcome o = run("distance a.off missing.off");
   EXPECT_EQ(o.code, 1);
   EXPECT_NE(o.err.find("missing.off"), std::string::npos) << o.err;
   o = run("penetration - -");
