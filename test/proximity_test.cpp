@@ -50,7 +50,7 @@ Rational scan_max(const ConvexPolyhedron& p, const Vec3& u) {
   return best;
 }
 
-TEST(Support, CubeVertexEdgeAndFacet) {
+TEST(ProximitySupport, CubeVertexEdgeAndFacet) {
   ASSERT_EQ(unit_cube().vertex(VertexId(0)), v3(0, 0, 0));
   const ConvexPolyhedron c = unit_cube();
   SupportResult r = support(c, v3(1, 2, 3), VertexId(0), true);
@@ -77,7 +77,7 @@ TEST(Support, CubeVertexEdgeAndFacet) {
   EXPECT_TRUE(r.face.vertices.empty());
 }
 
-TEST(Support, WalkEqualsScanOnRandomHullsAndDirections) {
+TEST(ProximitySupport, WalkEqualsScanOnRandomHullsAndDirections) {
   std::mt19937_64 rng(17);
   for (int trial = 0; trial < 60; ++trial) {
     SCOPED_TRACE("seed 17, trial " + std::to_string(trial));
@@ -99,7 +99,7 @@ TEST(Support, WalkEqualsScanOnRandomHullsAndDirections) {
   }
 }
 
-TEST(Support, PlacedEqualsMaterialized) {
+TEST(ProximitySupport, PlacedEqualsMaterialized) {
   const ConvexPolyhedron s = shapes::geodesic_sphere(2);
   const double c = std::cos(0.3), sn = std::sin(0.3);
   Placement pl;
@@ -114,7 +114,7 @@ TEST(Support, PlacedEqualsMaterialized) {
   }
 }
 
-TEST(Support, BadArguments) {
+TEST(ProximitySupport, BadArguments) {
   const ConvexPolyhedron c = unit_cube();
   EXPECT_THROW((void)support(c, v3(0, 0, 0)), Error);
   EXPECT_THROW((void)support(c, v3(1, 0, 0), VertexId(8)), Error);
@@ -137,7 +137,7 @@ TEST(Support, BadArguments) {
 
 // --- hand-checked distance and penetration ----------------------------------
 
-TEST(Distance, CubesAtDistanceOneThird) {
+TEST(ProximityDistance, CubesAtDistanceOneThird) {
   const ConvexPolyhedron a = unit_cube();
   const ConvexPolyhedron b = cube_at(q3(Rational(4, 3), 0, 0));
   const DistanceResult d = squared_distance(a, b);
@@ -153,7 +153,7 @@ TEST(Distance, CubesAtDistanceOneThird) {
   expect_penetration(a, b, p);
 }
 
-TEST(Penetration, CubesOverlappingByOneTenth) {
+TEST(ProximityPenetration, CubesOverlappingByOneTenth) {
   const ConvexPolyhedron a = unit_cube();
   const ConvexPolyhedron b = cube_at(q3(Rational(9, 10), 0, 0));
   const PenetrationResult p = penetration(a, b);
@@ -204,7 +204,7 @@ TEST(Proximity, TouchingFaceEdgeAndVertexOnFace) {
 
 // fcl #545: box-box and box-mesh where the true normal is a face normal (EPA
 // returned a normal towards a vertex and a depth sqrt(3) too large).
-TEST(Regression, Fcl545BoxBoxAndBoxMeshFaceNormal) {
+TEST(ProximityRegression, Fcl545BoxBoxAndBoxMeshFaceNormal) {
   const ConvexPolyhedron a = shapes::box(v3(-1, -1, -1), v3(1, 1, 1));
   const ConvexPolyhedron b = shapes::box(q3(Rational(-1, 2), Rational(-1, 2), Rational(9, 10)),
                                          q3(Rational(1, 2), Rational(1, 2), Rational(19, 10)));
@@ -222,7 +222,7 @@ TEST(Regression, Fcl545BoxBoxAndBoxMeshFaceNormal) {
 }
 
 // fcl #493 / #495: boxes kissing within 1e-9 (GJK and EPA disagreed or threw).
-TEST(Regression, Fcl493And495BoxesWithinOneBillionth) {
+TEST(ProximityRegression, Fcl493And495BoxesWithinOneBillionth) {
   const ConvexPolyhedron a = unit_cube();
   const Rational e = parse_rational("1e-9");
   const ConvexPolyhedron apart = cube_at(q3(1 + e, 0, 0));
@@ -244,7 +244,7 @@ TEST(Regression, Fcl493And495BoxesWithinOneBillionth) {
   EXPECT_EQ(squared_distance(a, cube_at(v3(1, 0, 0))).squared_distance, 0);
 }
 
-TEST(Degenerate, IdenticalOperandsTieBreak) {
+TEST(ProximityDegenerate, IdenticalOperandsTieBreak) {
   const ConvexPolyhedron a = unit_cube();
   const PenetrationResult p = penetration(a, a);
   EXPECT_TRUE(p.intersect);
@@ -254,7 +254,7 @@ TEST(Degenerate, IdenticalOperandsTieBreak) {
   expect_distance(a, a, squared_distance(a, a));
 }
 
-TEST(Degenerate, OneInsideTheOther) {
+TEST(ProximityDegenerate, OneInsideTheOther) {
   const ConvexPolyhedron big = shapes::box(v3(-10, -10, -10), v3(10, 10, 10));
   const ConvexPolyhedron small = shapes::geodesic_sphere(2).translated(v3(3, 0, 0));
   const PenetrationResult p = penetration(big, small);
@@ -264,7 +264,7 @@ TEST(Degenerate, OneInsideTheOther) {
   expect_penetration(small, big, penetration(small, big));
 }
 
-TEST(Degenerate, FarApartAndTinyGaps) {
+TEST(ProximityDegenerate, FarApartAndTinyGaps) {
   const ConvexPolyhedron a = shapes::geodesic_sphere(2);
   const ConvexPolyhedron far = shapes::rotated_geodesic_sphere(2).translated(v3(1000000000, 3, -7));
   expect_distance(a, far, squared_distance(a, far));
@@ -282,7 +282,7 @@ TEST(Degenerate, FarApartAndTinyGaps) {
 
 // --- transforms --------------------------------------------------------------
 
-TEST(Placement, DoubleRotationsAgreeWithTheMovedOperands) {
+TEST(ProximityPlacement, DoubleRotationsAgreeWithTheMovedOperands) {
   const ConvexPolyhedron a = shapes::geodesic_sphere(1);
   const ConvexPolyhedron b = shapes::cube();
   std::mt19937_64 rng(4242);
@@ -312,7 +312,7 @@ TEST(Placement, DoubleRotationsAgreeWithTheMovedOperands) {
 
 // --- the rounded distance ------------------------------------------------------
 
-TEST(NearestDoubleSqrt, CorrectlyRounded) {
+TEST(ProximityNearestDoubleSqrt, CorrectlyRounded) {
   EXPECT_EQ(nearest_double_sqrt(Rational(0)), 0.0);
   EXPECT_EQ(nearest_double_sqrt(Rational(9, 4)), 1.5);
   EXPECT_EQ(nearest_double_sqrt(Rational(1, 9)), 1.0 / 3.0);
@@ -331,7 +331,7 @@ TEST(NearestDoubleSqrt, CorrectlyRounded) {
 
 // --- seeded random pairs ------------------------------------------------------
 
-TEST(RandomPairs, TwoThousandSeededPairsAgreeWithTheOracle) {
+TEST(ProximityRandomPairs, TwoThousandSeededPairsAgreeWithTheOracle) {
   int kinds[3] = {0, 0, 0};
   constexpr int count = 2000;
   for (std::uint64_t seed = 1; seed <= count; ++seed) {
