@@ -37,7 +37,7 @@
 // plane {x : <v, x> = <v, w>} then separating the origin from C.
 #include "gjk.hpp"
 
-#include "cvms/predicates.hpp"
+#include "filtered_predicates.hpp"
 #include "nearest_on_simplex.hpp"
 #include "placed_support.hpp"
 
@@ -82,12 +82,15 @@ GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGo
   out.squared_norm = dot(out.nearest, out.nearest);
   while (sgn(out.squared_norm) != 0) {
     ++out.iterations;
-    const Vec3& v = out.nearest;
-    hint_a = support_vertex(a, -v, hint_a);
-    hint_b = support_vertex(b, v, hint_b);
+    const ApproxVec3 v_approx = ApproxVec3::of(out.nearest);
+    const Vec3Ref v{out.nearest, v_approx};
+    hint_a = support_vertex(a, v, Sign::negative, hint_a);  // maximises <x, -v> on A
+    hint_b = support_vertex(b, v, Sign::positive, hint_b);
     GjkPoint w = point_of(a, b, hint_a, hint_b);
-    if (goal == GjkGoal::intersection && sign_dot(v, w.c) == Sign::positive) return out;
-    if (compare_dot(w.c, v, v) != Sign::negative) return out;  // <w, v> >= <v, v>: v is nearest
+    const ApproxVec3 w_approx = ApproxVec3::of(w.c);
+    const Vec3Ref wr{w.c, w_approx};
+    if (goal == GjkGoal::intersection && sign_dot(v, wr) == Sign::positive) return out;
+    if (compare_dot(wr, v, v) != Sign::negative) return out;  // <w, v> >= <v, v>: v is nearest
     add_and_reduce(out, std::move(w));
   }
   out.intersect = true;

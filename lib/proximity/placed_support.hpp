@@ -3,13 +3,15 @@
 // (support.cpp explains how the placement is applied to the direction).
 #pragma once
 
+#include "approx.hpp"
 #include "cvms/proximity.hpp"
+#include "cvms/sign.hpp"
 
 namespace cvms::detail {
 
-/// A vertex of p maximising <x, u> over the moved polyhedron, climbing from
-/// `start` (a valid vertex).
-VertexId support_vertex(const PlacedPolyhedron& p, const Vec3& u, VertexId start);
+/// A vertex of p maximising <x, u> (sense positive) or minimising it (sense
+/// negative) over the moved polyhedron, climbing from `start` (a valid vertex).
+VertexId support_vertex(const PlacedPolyhedron& p, Vec3Ref u, Sign sense, VertexId start);
 
 /// \throw Error(invalid_argument) naming `who` if an operand is empty.
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who);

@@ -49,15 +49,12 @@ ConvexPolyhedron PlacedPolyhedron::materialized() const {
 
 namespace detail {
 
-VertexId support_vertex(const PlacedPolyhedron& p, const Vec3& u, VertexId start) {
+VertexId support_vertex(const PlacedPolyhedron& p, Vec3Ref u, Sign sense, VertexId start) {
   const PolyhedronGraph graph{p.polyhedron()};
-  if (!p.is_placed()) {
-    const ApproxVec3 approx = ApproxVec3::of(u);
-    return climb_to_maximum(graph, Vec3Ref{u, approx}, start);
-  }
-  const Vec3 local = p.linear_transposed() * u;
+  if (!p.is_placed()) return climb_to_maximum(graph, u, start, sense);
+  const Vec3 local = p.linear_transposed() * u.exact;
   const ApproxVec3 approx = ApproxVec3::of(local);
-  return climb_to_maximum(graph, Vec3Ref{local, approx}, start);
+  return climb_to_maximum(graph, Vec3Ref{local, approx}, start, sense);
 }
 
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who) {

@@ -39,16 +39,17 @@ struct PolyhedronGraph {
 };
 
 // The climb: from `start`, move to the first strictly better neighbour until
-// none is. Returns a maximiser of <x, u>.
+// none is. Returns a maximiser of <x, u>, or with `better` = negative a
+// minimiser (a maximiser of <x, -u>, without building -u).
 template <class Graph>
-VertexId climb_to_maximum(const Graph& g, Vec3Ref u, VertexId start) {
+VertexId climb_to_maximum(const Graph& g, Vec3Ref u, VertexId start, Sign better_sign = Sign::positive) {
   VertexId v = start;
   for (bool improved = true; improved;) {
     improved = false;
     const Vec3Ref here = g.ref(v);
     VertexId better;
     g.for_each_neighbour(v, [&](VertexId w) {
-      if (!better.is_valid() && compare_dot(g.ref(w), here, u) == Sign::positive) better = w;
+      if (!better.is_valid() && compare_dot(g.ref(w), here, u) == better_sign) better = w;
     });
     if (better.is_valid()) {
       v = better;
