@@ -74,8 +74,11 @@ PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron&
     r.witness_b = apart.witness_b;
     return r;
   }
-  const ConvexPolyhedron pa = a.materialized();
-  const ConvexPolyhedron pb = b.materialized();
+  // The moved operands, built only when a placement asks for it.
+  std::optional<ConvexPolyhedron> moved_a;
+  std::optional<ConvexPolyhedron> moved_b;
+  const ConvexPolyhedron& pa = a.is_placed() ? moved_a.emplace(a.materialized()) : a.polyhedron();
+  const ConvexPolyhedron& pb = b.is_placed() ? moved_b.emplace(b.materialized()) : b.polyhedron();
   const ConvexPolyhedron m = minkowski_sum(pa, pb.reflected()).polyhedron;
   const FaceId f = nearest_facet(m);
   r.direction = m.normal(f);
