@@ -17,9 +17,10 @@ bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
   return detail::exact_gjk(a, b, detail::GjkGoal::intersection).intersect;
 }
 
-DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
-  detail::check_operands(a, b, "squared_distance");
-  detail::GjkOutcome g = detail::exact_gjk(a, b, detail::GjkGoal::distance);
+namespace detail {
+
+DistanceResult distance_with_offset(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset) {
+  GjkOutcome g = exact_gjk(a, b, GjkGoal::distance, b_offset);
   DistanceResult r;
   r.squared_distance = g.squared_norm;
   r.intersect = g.intersect;
@@ -30,9 +31,16 @@ DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedro
     a_points[i] = &g.simplex[i].a;
     b_points[i] = &g.simplex[i].b;
   }
-  r.witness_a = detail::weighted_sum(a_points, g.weight_num.data(), g.weight_den, g.size);
-  r.witness_b = detail::weighted_sum(b_points, g.weight_num.data(), g.weight_den, g.size);
+  r.witness_a = weighted_sum(a_points, g.weight_num.data(), g.weight_den, g.size);
+  r.witness_b = weighted_sum(b_points, g.weight_num.data(), g.weight_den, g.size);
   return r;
+}
+
+}  // namespace detail
+
+DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
+  detail::check_operands(a, b, "squared_distance");
+  return detail::distance_with_offset(a, b, nullptr);
 }
 
 }  // namespace cvms

@@ -44,8 +44,10 @@
 namespace cvms::detail {
 namespace {
 
-GjkPoint point_of(const PlacedPolyhedron& a, const PlacedPolyhedron& b, VertexId va, VertexId vb) {
+GjkPoint point_of(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset, VertexId va,
+                  VertexId vb) {
   GjkPoint p{va, vb, a.position(va), b.position(vb), {}};
+  if (b_offset != nullptr) p.b += *b_offset;
   p.c = p.a - p.b;
   return p;
 }
@@ -70,11 +72,11 @@ void add_and_reduce(GjkOutcome& out, GjkPoint w) {
 
 }  // namespace
 
-GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal) {
+GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal, const Vec3* b_offset) {
   GjkOutcome out;
   VertexId hint_a(0);
   VertexId hint_b(0);
-  out.simplex[0] = point_of(a, b, hint_a, hint_b);
+  out.simplex[0] = point_of(a, b, b_offset, hint_a, hint_b);
   out.weight_num[0] = 1;
   out.weight_den = 1;
   out.size = 1;
@@ -86,7 +88,7 @@ GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGo
     const Vec3Ref v{out.nearest, v_approx};
     hint_a = support_vertex(a, v, Sign::negative, hint_a);  // maximises <x, -v> on A
     hint_b = support_vertex(b, v, Sign::positive, hint_b);
-    GjkPoint w = point_of(a, b, hint_a, hint_b);
+    GjkPoint w = point_of(a, b, b_offset, hint_a, hint_b);
     const ApproxVec3 w_approx = ApproxVec3::of(w.c);
     const Vec3Ref wr{w.c, w_approx};
     if (goal == GjkGoal::intersection && sign_dot(v, wr) == Sign::positive) return out;

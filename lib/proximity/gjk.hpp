@@ -36,7 +36,9 @@ enum class GjkGoal {
   intersection  ///< stop at the first separating direction (nearest and weights then unset)
 };
 
-/// \pre both operands non-empty.
-GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal);
+/// \pre both operands non-empty. With b_offset, B is moved further by that
+/// exact vector (the simplex's b points include it).
+GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal,
+                     const Vec3* b_offset = nullptr);
 
 }  // namespace cvms::detail

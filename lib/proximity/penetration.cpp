@@ -30,6 +30,7 @@
 #include "cvms/proximity.hpp"
 #include "gjk.hpp"
 #include "placed_support.hpp"
+#include "reflection.hpp"
 
 namespace cvms {
 namespace {
@@ -79,13 +80,13 @@ PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron&
   std::optional<ConvexPolyhedron> moved_b;
   const ConvexPolyhedron& pa = a.is_placed() ? moved_a.emplace(a.materialized()) : a.polyhedron();
   const ConvexPolyhedron& pb = b.is_placed() ? moved_b.emplace(b.materialized()) : b.polyhedron();
-  const ConvexPolyhedron m = minkowski_sum(pa, pb.reflected()).polyhedron;
+  const ConvexPolyhedron m = minkowski_sum(pa, detail::reflection(pb)).polyhedron;
   const FaceId f = nearest_facet(m);
   r.direction = m.normal(f);
   r.offset = m.plane_offset(f);
   r.squared_depth = r.offset * r.offset / dot(r.direction, r.direction);
   const Vec3 t = r.translation();
-  const DistanceResult contact = squared_distance(pa, pb.translated(t));
+  const DistanceResult contact = detail::distance_with_offset(pa, pb, &t);
   r.witness_a = contact.witness_a;
   r.witness_b = contact.witness_b - t;
   return r;

@@ -13,6 +13,10 @@ namespace cvms::detail {
 /// negative) over the moved polyhedron, climbing from `start` (a valid vertex).
 VertexId support_vertex(const PlacedPolyhedron& p, Vec3Ref u, Sign sense, VertexId start);
 
+/// squared_distance with B moved further by *b_offset (if not null), exact;
+/// witness_b includes the offset. \pre both operands non-empty.
+DistanceResult distance_with_offset(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset);
+
 /// \throw Error(invalid_argument) naming `who` if an operand is empty.
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who);
 
