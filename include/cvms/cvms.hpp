@@ -2,7 +2,8 @@
 /// \file
 /// The whole public API of cvms in one include: exact numbers and vectors,
 /// meshes and convex polyhedra, the convex hull, the planar and the 3D
-/// Minkowski sums, file I/O and the built-in shapes. A sum of two files:
+/// Minkowski sums, proximity (support, distance, penetration), file I/O and
+/// the built-in shapes. A sum of two files:
 /// \code
 /// #include <cvms/cvms.hpp>
 ///
@@ -27,6 +28,7 @@
 #include "cvms/planar_sum.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/predicates.hpp"
+#include "cvms/proximity.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/shapes.hpp"
 #include "cvms/sign.hpp"

@@ -14,6 +14,7 @@
 #include "cvms/error.hpp"
 #include "files.hpp"
 #include "sizes.hpp"
+#include "proximity_commands.hpp"
 
 namespace {
 
@@ -123,6 +124,9 @@ int main(int argc, char** argv) {
   CLI::App* demo_cmd = app.add_subcommand("demo", "Cube + Sphere4 with counts and time");
   add_algorithm_option(*demo_cmd, demo.algorithm, default_algorithm);
 
+  ProximityArgs proximity;
+  add_proximity_commands(app, proximity, mesh_path);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -131,6 +135,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (run_proximity_command(proximity, std::cout)) return 0;
     if (*sum_cmd)
       run_sum(sum, sum.output == "-" ? std::cerr : std::cout);
     else if (*hull_cmd)

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+/// \file
+/// Exact proximity queries on convex polyhedra: support, intersection test,
+/// separation distance and penetration depth. Everything is exact: inputs are
+/// rational, answers are rational (the squared distance of two polytopes with
+/// rational vertices is rational, and so is the squared depth), every sign
+/// decision goes through the filtered predicates.
+///
+/// The configuration-space view: A and B intersect iff the origin lies in
+/// C = A + (-B); their distance is the distance from the origin to C and the
+/// penetration depth is the distance from the origin to the boundary of C.
+/// Closed sets throughout: touching (a common boundary point) counts as
+/// intersecting, with distance 0 and depth 0.
+///
+/// Operands may carry a rigid motion given in doubles (Placement): every
+/// double is an exact rational, so the moved operand is the exact image
+/// R P + t; distance queries apply it lazily (to the search directions and to
+/// the few vertices they touch), never re-validating or copying the operand.
+///
+/// \code
+/// cvms::ConvexPolyhedron a = cvms::shapes::cube(), b = ...;
+/// cvms::DistanceResult d = cvms::squared_distance(a, b);  // exact, with witnesses
+/// if (d.intersect) {
+///   cvms::PenetrationResult p = cvms::penetration(a, b);  // translate B by p.translation() to separate
+/// }
+/// \endcode
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "cvms/convex_polyhedron.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms {
+
+/// A rigid motion x -> rotation * x + translation given in doubles, applied
+/// exactly (each double is the exact binary number it is). The matrix need
+/// not be exactly orthogonal (a rotation rounded to doubles never is): the
+/// moved operand is the exact image under this linear map, which is what the
+/// answers refer to. Row-major: rotation[row][column].
+struct Placement {
+  /// The linear part; the identity by default.
+  std::array<std::array<double, 3>, 3> rotation{{{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}};
+  /// The translation; zero by default.
+  std::array<double, 3> translation{0.0, 0.0, 0.0};
+};
+
+/// A convex polyhedron together with an optional placement: the operand of
+/// the proximity queries. A view: it refers to the polyhedron, which must
+/// outlive it. Implicitly made from a polyhedron (no motion).
+class PlacedPolyhedron {
+ public:
+  /// p itself (no motion).
+  PlacedPolyhedron(const ConvexPolyhedron& p) noexcept : polyhedron_(&p) {}  // NOLINT: implicit on purpose
+  /// The image of p under `placement`, applied exactly.
+  /// \throw Error(invalid_argument) if a number of the placement is NaN or infinite.
+  PlacedPolyhedron(const ConvexPolyhedron& p, const Placement& placement);
+
+  /// The unmoved polyhedron.
+  [[nodiscard]] const ConvexPolyhedron& polyhedron() const noexcept { return *polyhedron_; }
+  /// True iff a placement was given.
+  [[nodiscard]] bool is_placed() const noexcept { return placed_; }
+  /// The exact linear part (the identity when not placed).
+  [[nodiscard]] const Mat3& linear() const noexcept { return linear_; }
+  /// The exact transposed linear part (maps a search direction into the
+  /// polyhedron's own frame).
+  [[nodiscard]] const Mat3& linear_transposed() const noexcept { return transposed_; }
+  /// The exact translation (zero when not placed).
+  [[nodiscard]] const Vec3& translation() const noexcept { return translation_; }
+  /// The moved position of vertex v: linear() * vertex(v) + translation().
+  [[nodiscard]] Vec3 position(VertexId v) const;
+  /// The moved polyhedron, built explicitly (ConvexPolyhedron::transformed:
+  /// O(V + F) exact arithmetic; the penetration query needs it).
+  /// \throw Error(invalid_argument) if the linear part is singular.
+  [[nodiscard]] ConvexPolyhedron materialized() const;
+
+ private:
+  const ConvexPolyhedron* polyhedron_;
+  bool placed_ = false;
+  Mat3 linear_ = Mat3::identity();
+  Mat3 transposed_ = Mat3::identity();
+  Vec3 translation_{0, 0, 0};
+};
+
+/// The face of a polyhedron on which a linear function is maximal.
+struct SupportFace {
+  /// 0 (a vertex), 1 (an edge) or 2 (a facet).
+  int dimension = 0;
+  /// The face's vertices in increasing index order (1, 2 or the facet's).
+  std::vector<VertexId> vertices;
+  /// The facet when dimension is 2, else invalid.
+  FaceId facet;
+};
+
+/// The answer of support(): the maximum of <x, u> over P and where it is reached.
+struct SupportResult {
+  /// A vertex of P that maximises <x, u> (the one the walk ends at).
+  VertexId vertex;
+  /// The position of that vertex (moved, for a placed operand).
+  Vec3 point;
+  /// The maximum value of <x, u> over P, exact.
+  Rational value;
+  /// The whole maximising face; filled only when asked for (else empty).
+  SupportFace face;
+};
+
+/// The support of P in direction u: max over x in P of <x, u>, a maximising
+/// vertex, and on request the whole maximising face. Found by hill-climbing on
+/// the vertex graph from `start` (a linear function on a convex polyhedron has
+/// no local maximum that is not global; see lib/proximity/support_walk.hpp),
+/// not by a scan: pass the previous answer's vertex as `start` for coherent
+/// queries (nearby directions) and the walk is a few steps.
+/// Ties among maximising vertices are broken by the walk (deterministic for
+/// the same inputs); the face, when asked, lists all of them.
+/// \throw Error(invalid_argument) if P is empty (default-constructed), u is
+///   zero, or start is not a vertex of P.
+/// Complexity: O(length of the climb times the vertex degrees) filtered
+/// predicates, plus O(face) when the face is asked for.
+SupportResult support(const PlacedPolyhedron& p, const Vec3& u, VertexId start = VertexId(0),
+                      bool want_face = false);
+
+/// True iff A and B have a common point (touching counts: closed sets).
+/// Exact GJK on support walks that stops at the first separating direction
+/// (see squared_distance); sign decisions only, filtered.
+/// \throw Error(invalid_argument) for an empty operand.
+bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
+
+/// The distance between two operands and where it is reached.
+struct DistanceResult {
+  /// min |a - b|^2 over a in A, b in B: exact; 0 iff they intersect.
+  Rational squared_distance;
+  /// A point of A closest to B (moved, for a placed operand).
+  Vec3 witness_a;
+  /// A point of B closest to A: |witness_a - witness_b|^2 == squared_distance;
+  /// equal to witness_a when they intersect (a common point).
+  Vec3 witness_b;
+  /// True iff they intersect (squared_distance == 0; touching counts).
+  bool intersect = false;
+  /// Iterations of the exact GJK loop (one support query of each operand each).
+  int iterations = 0;
+};
+
+/// The exact squared distance between A and B with witness points, by an
+/// exact GJK: support walks on A and B give points of A + (-B), and the
+/// nearest point to the origin of the current simplex (at most 4 such
+/// points) is computed in exact rationals; the loop ends when the support
+/// point proves optimality exactly. It terminates because the distance
+/// strictly decreases and there are finitely many simplices (the proof is in
+/// lib/proximity/gjk.cpp). Output-sensitive: it never builds A + (-B).
+/// Which closest points are reported when they are not unique (parallel
+/// faces) is deterministic for the same inputs.
+/// \throw Error(invalid_argument) for an empty operand.
+DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
+
+/// The penetration of two operands: how far B must be translated to separate.
+struct PenetrationResult {
+  /// True iff they intersect (touching counts).
+  bool intersect = false;
+  /// The squared minimum translation distance: the squared distance from the
+  /// origin to the boundary of A + (-B); 0 when they only touch or are apart.
+  Rational squared_depth;
+  /// When they intersect, the primitive integer outward normal of the facet
+  /// of A + (-B) nearest to the origin: translating B by depth along it
+  /// (translation()) makes them touch. Zero when they are apart.
+  Vec3 direction;
+  /// When they intersect, the plane offset of that facet:
+  /// dot(direction, x) = offset on it, offset >= 0.
+  Rational offset;
+  /// When they intersect: a point of A and a point of B with
+  /// witness_a - witness_b == translation() (the contact after separating
+  /// B by translation()); when apart, the closest points.
+  Vec3 witness_a;
+  /// See witness_a.
+  Vec3 witness_b;
+
+  /// The minimum translation of B, exact: offset / |direction|^2 * direction
+  /// (zero when apart).
+  [[nodiscard]] Vec3 translation() const;
+};
+
+/// The exact penetration depth of A and B. First version: the exact GJK
+/// decides intersection; if they intersect, the CVMS sum A + (-B) is built
+/// and the depth is the minimum over its facets of offset^2 / |normal|^2
+/// (the origin is inside, and the distance from an interior point of a convex
+/// polytope to its boundary is the smallest distance to a facet plane; the
+/// proof is in lib/proximity/penetration.cpp), compared exactly. Ties (several
+/// facets at the same depth) go to the lexicographically smallest primitive
+/// normal (x, then y, then z), so the answer does not depend on facet
+/// numbering. The witnesses come from an exact GJK of A against B moved by
+/// the translation (they touch there).
+/// \throw Error(invalid_argument) for an empty operand or, when they
+///   intersect, a placed operand with a singular linear part.
+/// Complexity: the distance query when apart; when they intersect, one
+/// Minkowski sum (see minkowski_sum) plus O(F) exact comparisons.
+PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
+
+/// The double nearest to the square root of q (ties to even), for printing a
+/// distance or a depth next to its exact square: decided by exact
+/// comparisons of q with squared midpoints, not by rounding twice.
+/// \throw Error(invalid_argument) if q is negative.
+double nearest_double_sqrt(const Rational& q);
+
+}  // namespace cvms

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// intersects() and squared_distance(): the exact GJK of gjk.cpp, and the
+// witnesses from its final simplex. With v = sum w_i (a_i - b_i) the nearest
+// point of A + (-B) (weights positive, sum 1), a = sum w_i a_i is in A and
+// b = sum w_i b_i is in B (convex combinations of their vertices), and
+// a - b = v: so |a - b|^2 = |v|^2 is the distance, and a = b when they
+// intersect.
+#include "cvms/proximity.hpp"
+#include "gjk.hpp"
+#include "nearest_on_simplex.hpp"
+#include "placed_support.hpp"
+
+namespace cvms {
+
+bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
+  detail::check_operands(a, b, "intersects");
+  return detail::exact_gjk(a, b, detail::GjkGoal::intersection).intersect;
+}
+
+namespace detail {
+
+DistanceResult distance_with_offset(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset) {
+  GjkOutcome g = exact_gjk(a, b, GjkGoal::distance, b_offset);
+  DistanceResult r;
+  r.squared_distance = g.squared_norm;
+  r.intersect = g.intersect;
+  r.iterations = g.iterations;
+  const Vec3* a_points[4];
+  const Vec3* b_points[4];
+  for (int i = 0; i < g.size; ++i) {
+    a_points[i] = &g.simplex[i].a;
+    b_points[i] = &g.simplex[i].b;
+  }
+  r.witness_a = weighted_sum(a_points, g.weight_num.data(), g.weight_den, g.size);
+  r.witness_b = weighted_sum(b_points, g.weight_num.data(), g.weight_den, g.size);
+  return r;
+}
+
+}  // namespace detail
+
+DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
+  detail::check_operands(a, b, "squared_distance");
+  return detail::distance_with_offset(a, b, nullptr);
+}
+
+}  // namespace cvms

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// Exact GJK (Gilbert, Johnson and Keerthi 1988) on support walks, in exact
+// rationals: the point of C = A + (-B) nearest to the origin.
+//
+// The loop. Keep a set W of points of C (each a_i - b_j for a vertex a_i of
+// A and b_j of B) and v, the point of conv(W) nearest to the origin. Take the
+// support point w of C in direction -v: w = a - b with a maximising <x, -v>
+// on A and b maximising <x, v> on B (two support walks, each started from the
+// previous answer). For every x in C, <v, x> >= <v, w>. Then:
+//  - if <v, w> >= |v|^2, every x in C has <v, x> >= |v|^2, so |x| >= |v|
+//    (Cauchy-Schwarz): v is the nearest point of C, exactly;
+//  - otherwise replace W by the support of the nearest point of
+//    conv(W' + {w}), W' the points of W with positive weight
+//    (nearest_on_simplex).
+// A zero v means the origin is in C: the operands intersect.
+//
+// Why W' + {w} is affinely independent (nearest_on_simplex's precondition).
+// v is the projection of the origin onto aff(W'), so every x in aff(W') has
+// <v, x> = |v|^2; w has <v, w> < |v|^2, so w is not in aff(W'). Induction
+// from the one-point start.
+//
+// Why the nearest point's support contains w. Every face of conv(W') has its
+// nearest point at distance >= |v|; the segment from v to w holds points
+// nearer than v (the derivative of |v + t (w - v)|^2 at t = 0 is
+// 2 <v, w - v> < 0), so the new nearest point is not on a face without w.
+//
+// Termination. The squared distance |v|^2 strictly decreases at every step
+// (by the previous paragraph), and each value is the distance to conv(S) for
+// a subset S of the finite set {a_i - b_j}; no S can come back, so the loop
+// ends after at most 2^(v_A v_B) steps, and in practice after a handful
+// (the points a_i - b_j with nonzero weight are at most 4, and each support
+// walk starts at the previous answer). Exactness makes this argument hold:
+// there is no tolerance to tune and no "no progress" case to guess at, which
+// is where the floating-point versions fail (fcl #493, #495).
+//
+// Intersection only (GjkGoal::intersection): stop as soon as <v, w> > 0, the
+// plane {x : <v, x> = <v, w>} then separating the origin from C.
+#include "gjk.hpp"
+
+#include "filtered_predicates.hpp"
+#include "nearest_on_simplex.hpp"
+#include "placed_support.hpp"
+
+namespace cvms::detail {
+namespace {
+
+GjkPoint point_of(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset, VertexId va,
+                  VertexId vb) {
+  GjkPoint p{va, vb, a.position(va), b.position(vb), {}};
+  if (b_offset != nullptr) p.b += *b_offset;
+  p.c = p.a - p.b;
+  return p;
+}
+
+// W := the support of conv(W + {w})'s nearest point, w appended last.
+void add_and_reduce(GjkOutcome& out, GjkPoint w) {
+  out.simplex[out.size++] = std::move(w);
+  std::array<Vec3, 4> points;
+  for (int i = 0; i < out.size; ++i) points[i] = out.simplex[i].c;
+  SimplexNearest n = nearest_on_simplex(points, out.size);
+  int kept = 0;
+  for (int i = 0; i < out.size; ++i) {
+    if (!(n.support_mask & (1u << i))) continue;
+    if (kept != i) out.simplex[kept] = std::move(out.simplex[i]);
+    out.weight_num[kept++] = std::move(n.weight_num[i]);
+  }
+  out.size = kept;
+  out.weight_den = std::move(n.weight_den);
+  out.nearest = std::move(n.point);
+  out.squared_norm = std::move(n.squared_norm);
+}
+
+}  // namespace
+
+GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal, const Vec3* b_offset) {
+  GjkOutcome out;
+  VertexId hint_a(0);
+  VertexId hint_b(0);
+  out.simplex[0] = point_of(a, b, b_offset, hint_a, hint_b);
+  out.weight_num[0] = 1;
+  out.weight_den = 1;
+  out.size = 1;
+  out.nearest = out.simplex[0].c;
+  out.squared_norm = dot(out.nearest, out.nearest);
+  while (sgn(out.squared_norm) != 0) {
+    ++out.iterations;
+    const ApproxVec3 v_approx = ApproxVec3::of(out.nearest);
+    const Vec3Ref v{out.nearest, v_approx};
+    hint_a = support_vertex(a, v, Sign::negative, hint_a);  // maximises <x, -v> on A
+    hint_b = support_vertex(b, v, Sign::positive, hint_b);
+    GjkPoint w = point_of(a, b, b_offset, hint_a, hint_b);
+    const ApproxVec3 w_approx = ApproxVec3::of(w.c);
+    const Vec3Ref wr{w.c, w_approx};
+    if (goal == GjkGoal::intersection && sign_dot(v, wr) == Sign::positive) return out;
+    if (compare_dot(wr, v, v) != Sign::negative) return out;  // <w, v> >= <v, v>: v is nearest
+    add_and_reduce(out, std::move(w));
+  }
+  out.intersect = true;
+  return out;
+}
+
+}  // namespace cvms::detail

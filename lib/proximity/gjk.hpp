@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// The exact GJK of this layer: the point of C = A + (-B) nearest to the
+// origin, from support walks on A and B (gjk.cpp has the algorithm and the
+// termination proof).
+#pragma once
+
+#include <array>
+
+#include "cvms/proximity.hpp"
+
+namespace cvms::detail {
+
+/// One point of the simplex: a vertex of A, a vertex of B (moved), their difference.
+struct GjkPoint {
+  VertexId vertex_a, vertex_b;
+  Vec3 a, b;
+  Vec3 c;  ///< a - b, a point of C
+};
+
+/// What the loop found.
+struct GjkOutcome {
+  bool intersect = false;   ///< the origin is in C
+  Vec3 nearest;             ///< the point of C nearest to the origin (0 if intersect)
+  Rational squared_norm;    ///< |nearest|^2
+  std::array<GjkPoint, 4> simplex;
+  /// nearest = sum weight_num_i simplex_i.c / weight_den; weights positive, sum 1.
+  std::array<mpz_class, 4> weight_num;
+  mpz_class weight_den;
+  int size = 0;                    ///< points in the simplex
+  int iterations = 0;
+};
+
+/// How far to go.
+enum class GjkGoal {
+  distance,     ///< to the nearest point
+  intersection  ///< stop at the first separating direction (nearest and weights then unset)
+};
+
+/// \pre both operands non-empty. With b_offset, B is moved further by that
+/// exact vector (the simplex's b points include it).
+GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal,
+                     const Vec3* b_offset = nullptr);
+
+}  // namespace cvms::detail

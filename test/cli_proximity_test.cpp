@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+// `cvms distance` and `cvms penetration` run as a program on real files: the
+// line format, the exact numbers (hand-checked: unit cubes 1/3 apart, cubes
+// overlapping by 1/10) and the exit codes of bad input and usage errors.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "support/cli_runner.hpp"
+
+namespace {
+
+// The cube [x0, x0 + 1] x [0, 1] x [0, 1] as OFF text (x0 exact text).
+std::string cube_off(const std::string& x0, const std::string& x1) {
+  std::ostringstream s;
+  s << "OFF\n8 6 0\n";
+  for (int i = 0; i < 8; ++i) s << ((i & 1) ? x1 : x0) << ' ' << ((i & 2) ? 1 : 0) << ' ' << ((i & 4) ? 1 : 0) << '\n';
+  s << "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
+  return s.str();
+}
+
+class CliProximity : public ::testing::Test {
+ protected:
+  void SetUp() override {
+#ifndef CVMS_CLI_PATH
+    GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
+#endif
+    dir_.write("a.off", cube_off("0", "1"));
+    dir_.write("apart.off", cube_off("4/3", "7/3"));
+    dir_.write("over.off", cube_off("0.9", "1.9"));
+  }
+  void TearDown() override {
+    if (HasFailure()) dir_.keep();
+  }
+  [[nodiscard]] cvms::test::CliOutcome run(const std::string& args) const {
+#ifdef CVMS_CLI_PATH
+    return cvms::test::run_cli(dir_.path(), CVMS_CLI_PATH, args);
+#else
+    (void)args;
+    return {};
+#endif
+  }
+  cvms::test::ScratchDirectory dir_{std::string("cli_proximity_") +
+                                    ::testing::UnitTest::GetInstance()->current_test_info()->name()};
+};
+
+TEST_F(CliProximity, DistanceOfCubesOneThirdApart) {
+  const cvms::test::CliOutcome o = run("distance a.off apart.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(o.out,
+            "squared_distance 1/9\n"
+            "distance 0.3333333333333333\n"
+            "witness_a 1 0 0\n"
+            "witness_b 4/3 0 0\n"
+            "intersect no\n");
+}
+
+TEST_F(CliProximity, PenetrationOfCubesOverlappingByOneTenth) {
+  const cvms::test::CliOutcome o = run("penetration a.off over.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  const std::string head =
+      "squared_depth 0.01\n"
+      "depth 0.1\n"
+      "direction 1 0 0\n";
+  EXPECT_EQ(o.out.substr(0, head.size()), head) << o.out;
+  EXPECT_NE(o.out.find("\nwitness_a 1 "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\nwitness_b 0.9 "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\nintersect yes\n"), std::string::npos) << o.out;
+}
+
+TEST_F(CliProximity, PenetrationOfSeparatedAndDistanceOfOverlapping) {
+  cvms::test::CliOutcome o = run("penetration a.off apart.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("squared_depth 0\ndepth 0\ndirection 0 0 0\n", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("intersect no\n"), std::string::npos) << o.out;
+  o = run("distance a.off over.off");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("squared_distance 0\ndistance 0\n", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("intersect yes\n"), std::string::npos) << o.out;
+}
+
+TEST_F(CliProximity, BadInputAndUsage) {
+  cvms::test::CliOutcome o = run("distance a.off missing.off");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_NE(o.err.find("missing.off"), std::string::npos) << o.err;
+  o = run("penetration - -");
+  EXPECT_EQ(o.code, 2);
+  o = run("distance a.off");
+  EXPECT_EQ(o.code, 2);
+  o = run("distance a.off b.txt");
+  EXPECT_EQ(o.code, 2);
+}
+
+}  // namespace

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Running the built `cvms` tool from a test: a scratch directory per test and
+// one call that runs the program there and collects exit code, stdout and
+// stderr. (The program's path comes from the test target: CVMS_CLI_PATH.)
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace cvms::test {
+
+/// What a run of the tool produced.
+struct CliOutcome {
+  int code = -1;  ///< exit code, -1 if it did not exit normally
+  std::string out, err;
+};
+
+/// A fresh, empty directory under the system's temporary directory, named
+/// after `tag` and the process id; removed on destruction unless keep() was
+/// called (so a failing test leaves its files to look at).
+class ScratchDirectory {
+ public:
+  explicit ScratchDirectory(const std::string& tag);
+  ~ScratchDirectory();
+  ScratchDirectory(const ScratchDirectory&) = delete;
+  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
+
+  [[nodiscard]] const std::filesystem::path& path() const noexcept { return dir_; }
+  /// Writes `text` to the file `name` in the directory.
+  void write(const std::string& name, const std::string& text) const;
+  /// Leave the directory in place.
+  void keep() noexcept { keep_ = true; }
+
+ private:
+  std::filesystem::path dir_;
+  bool keep_ = false;
+};
+
+/// Runs `program args` with the directory as working directory.
+CliOutcome run_cli(const std::filesystem::path& dir, const std::string& program, const std::string& args);
+
+}  // namespace cvms::test
