@@ -20,6 +20,7 @@
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/convex_set.hpp"
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
 #include "cvms/mesh.hpp"
@@ -28,6 +29,7 @@
 #include "cvms/polygon_soup.hpp"
 #include "cvms/predicates.hpp"
 #include "cvms/rational.hpp"
+#include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "cvms/sign.hpp"
 #include "cvms/vec.hpp"
