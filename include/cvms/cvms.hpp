@@ -29,6 +29,7 @@
 #include "cvms/polygon_soup.hpp"
 #include "cvms/predicates.hpp"
 #include "cvms/rational.hpp"
+#include "cvms/set_io.hpp"
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "cvms/sign.hpp"
