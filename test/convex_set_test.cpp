@@ -11,19 +11,14 @@
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
+#include "support/random_numbers.hpp"
 #include "support/set_oracle.hpp"
 
 namespace cvms {
 namespace {
 
+using test::fraction;
 using test::v3;
-
-// a / b in lowest terms (mpq_class(a, b) is not canonicalised).
-Rational fraction(long a, long b) {
-  Rational r(a, b);
-  r.canonicalize();
-  return r;
-}
 
 template <class F>
 void expect_error(F&& f, ErrorCategory category, const std::string& word) {

@@ -19,19 +19,14 @@
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
+#include "support/random_numbers.hpp"
 #include "support/set_oracle.hpp"
 
 namespace cvms {
 namespace {
 
+using test::fraction;
 using test::v3;
-
-// a / b in lowest terms (mpq_class(a, b) is not canonicalised).
-Rational fraction(long a, long b) {
-  Rational r(a, b);
-  r.canonicalize();
-  return r;
-}
 using Rng = std::mt19937_64;
 
 ConvexSet square(long side, long z = 0) {
@@ -136,6 +131,25 @@ TEST(SetSum, RandomPairsAgainstOracle) {
     options.algorithm = seed % 3 == 0 ? Algorithm::essdms : (seed % 3 == 1 ? Algorithm::cvms : Algorithm::chms);
     ASSERT_EQ(check_pair(a, b, options), "") << "seed " << seed << " (dimensions " << a.dimension() << " and "
                                              << b.dimension() << ", " << to_string(options.algorithm) << ")";
+  }
+}
+
+// Bigger polygons (many meridians per arc) in random and axis planes plus
+// random hulls, prisms and boxes (facets parallel to the polygon's plane).
+TEST(SetSum, BigPolygonsPlusPolyhedra) {
+  for (std::uint64_t seed = 0; seed < 60; ++seed) {
+    Rng rng(seed);
+    std::uniform_int_distribution<int> coordinate(-40, 40), small(-3, 3);
+    const Vec3 u = seed % 2 == 0 ? v3(1, 0, 0) : v3(small(rng), small(rng), 1);
+    const Vec3 w = seed % 2 == 0 ? v3(0, 1, 0) : v3(1, small(rng), small(rng));
+    std::vector<Vec3> points;
+    for (int i = 0; i < 60; ++i) points.push_back(Rational(coordinate(rng)) * u + Rational(coordinate(rng)) * w);
+    const ConvexSet polygon = convex_hull_set(points);
+    if (polygon.dimension() != 2) continue;  // u and w happened to be parallel
+    const ConvexSet p = seed % 3 == 0   ? ConvexSet(shapes::prism(7 + static_cast<int>(seed % 5), 3))
+                        : seed % 3 == 1 ? ConvexSet(shapes::random_hull(seed, 40, 20))
+                                        : box(3, 5, 7);
+    ASSERT_EQ(check_pair(polygon, p), "") << "seed " << seed;
   }
 }
 

@@ -24,8 +24,9 @@ namespace cvms {
 /// prism, whose sweep is then undone exactly.
 /// \throw Error(invalid_argument) for an unknown option value.
 /// Complexity: output-sensitive, no hull of pairwise sums: O(size of the
-///   operands and the result) predicates plus, for a polygon and a
-///   polyhedron, the cost of minkowski_sum.
+///   operands and the result) predicates (times log of the polygon's size
+///   for a polygon and a polyhedron); for two polyhedra that of
+///   minkowski_sum.
 ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& options = {});
 
 /// The sum of all operands; the point at the origin (the neutral element) for

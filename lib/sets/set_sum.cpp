@@ -36,11 +36,11 @@ ConvexSet segment_polygon_sum(const std::vector<Vec3>& s, const ConvexSet& q) {
   return ConvexSet(detail::prism(q, s[0], d));
 }
 
-ConvexSet polygon_polygon_sum(const ConvexSet& a, const ConvexSet& b, const Options& options) {
+ConvexSet polygon_polygon_sum(const ConvexSet& a, const ConvexSet& b) {
   if (a.normal() == b.normal()) return detail::coplanar_sum(a.vertices(), b.vertices(), a.normal());
   // Not parallel: a + b = (a + prism of b) less b's sweep.
   const ConvexPolyhedron swept = detail::prism(b, Vec3{0, 0, 0}, b.normal());
-  return detail::unswept(detail::polygon_polyhedron_sum(a, swept, options).polyhedron(), b.normal());
+  return detail::unswept(detail::polygon_polyhedron_sum(a, swept).polyhedron(), b.normal());
 }
 
 }  // namespace
@@ -57,8 +57,8 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
       if (b.dimension() == 2) return segment_polygon_sum(low, b);
       return detail::segment_polyhedron_sum(low[0], low[1] - low[0], b.polyhedron());
     case 2:
-      if (b.dimension() == 2) return polygon_polygon_sum(a, b, options);
-      return detail::polygon_polyhedron_sum(a, b.polyhedron(), options);
+      if (b.dimension() == 2) return polygon_polygon_sum(a, b);
+      return detail::polygon_polyhedron_sum(a, b.polyhedron());
     default:
       return ConvexSet(minkowski_sum(a.polyhedron(), b.polyhedron(), options).polyhedron);
   }

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The direct constructions behind minkowski_sum of convex sets (set_sum.cpp
 // dispatches), one file each: planar_set_sum.cpp, segment_sum.cpp,
-// sweep_sum.cpp.
+// polygon_sum.cpp, sweep_sum.cpp.
 #pragma once
 
 #include <vector>
 
 #include "cvms/convex_set.hpp"
-#include "cvms/minkowski.hpp"
 
 namespace cvms::detail {
 
@@ -27,7 +26,7 @@ ConvexPolyhedron prism(const ConvexSet& polygon, const Vec3& start, const Vec3& 
 /// facets of R below the sweep, those above moved back, the side facets shrunk.
 ConvexSet unswept(const ConvexPolyhedron& r, const Vec3& sweep);
 
-/// Q + P for a polygon Q and a polyhedron P: unswept(CVMS(prism of Q, P)).
-ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const Options& options);
+/// Q + P for a polygon Q and a polyhedron P, from the Gaussian maps (polygon_sum.cpp).
+ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p);
 
 }  // namespace cvms::detail

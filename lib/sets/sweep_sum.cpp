@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// A polygon Q plus a polyhedron P through CVMS: R = (Q + [0, m]) + P, with m
-// the polygon's normal, is a sum of two polyhedra, and Q + P = X is recovered
-// from R = X + [0, m] exactly by undoing the sweep.
+// Two polygons in non-parallel planes: R = Q1 + (Q2 + [0, m]), with m the
+// normal of Q2, is a polygon plus a polyhedron (polygon_sum.cpp), and
+// Q1 + Q2 = X is recovered from R = X + [0, m] exactly by undoing the sweep.
 //
 // Undoing a sweep by s (unswept): the face of R in direction u is
 // F_X(u) + F_S(u) with S = [0, s]. For a facet of R with dot(n, s) < 0 it is
@@ -18,7 +18,7 @@
 // facet of X with dot(n, s) = 0 is the side facet F + S less the sweep. When
 // X is flat (one lower and one upper facet, all sides collapse), it is the
 // lower facet. ConvexPolyhedron's checked construction merges and verifies.
-// Cost: CVMS on an operand of 2|Q| vertices, then O(size of R).
+// Cost: O(size of R).
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -82,12 +82,6 @@ ConvexSet unswept(const ConvexPolyhedron& r, const Vec3& sweep) {
     return ConvexSet::polygon(polygon);
   }
   return ConvexSet(ConvexPolyhedron::from_soup(std::move(soup)));
-}
-
-ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const Options& options) {
-  const Vec3& sweep = polygon.normal();
-  const ConvexPolyhedron swept = prism(polygon, Vec3{0, 0, 0}, sweep);
-  return unswept(minkowski_sum(swept, p, options).polyhedron, sweep);
 }
 
 }  // namespace cvms::detail
