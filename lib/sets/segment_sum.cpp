@@ -17,9 +17,11 @@
 // between a stretched facet and another facet lies in both with the same
 // endpoints (its in-plane outward normal has the other facet's sign), and an
 // edge between two stretched facets is parallel to d and stretched in both.
-// Consecutive silhouette edges whose parallelograms are coplanar are merged
-// (and the vertices between them kept or dropped) by ConvexPolyhedron's
-// checked construction, which also verifies the result.
+// Consecutive silhouette edges whose parallelograms are coplanar (e, e' and d
+// coplanar) are merged, and the vertices between them kept or dropped, by
+// ConvexPolyhedron's checked construction; without such a pair every facet
+// is maximal and strictly convex, and the trusted builder
+// (polyhedron_builder.hpp) only checks the topology.
 // Cost: O(size of P) predicates plus the planar sums and the check.
 #include <cstdint>
 #include <unordered_map>
@@ -28,6 +30,7 @@
 #include "cvms/planar_sum.hpp"
 #include "cvms/predicates.hpp"
 #include "plane_chart.hpp"
+#include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
 
 namespace cvms::detail {
@@ -90,13 +93,26 @@ ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const
     for (HalfedgeId h : m.face_halfedges(f)) face.push_back(soup.vertex(m.from(h), s == Sign::negative ? 0 : 1));
     soup.add_face(face);
   }
+  // The silhouette edges at each vertex, to find coplanar neighbours.
+  std::vector<std::vector<Vec3>> silhouette_at(m.num_vertices());
+  bool coplanar_neighbours = false;
   for (HalfedgeId h : m.halfedges()) {
     if (side[m.face(h).index()] != Sign::negative || side[m.face(Mesh::twin(h)).index()] != Sign::positive) continue;
     // h runs u -> w in the facet kept in place; the parallelogram runs the
     // other way along it, then up d, back, and down.
     const VertexId u = m.from(h), w = m.to(h);
     soup.add_face({soup.vertex(w, 0), soup.vertex(u, 0), soup.vertex(u, 1), soup.vertex(w, 1)});
+    const Vec3 e = p.edge_vector(h);
+    for (VertexId x : {u, w}) {
+      for (const Vec3& other : silhouette_at[x.index()])
+        coplanar_neighbours = coplanar_neighbours || sign_triple(e, other, direction) == Sign::zero;
+      silhouette_at[x.index()].push_back(e);
+    }
   }
+  // Without coplanar parallelograms every facet is maximal (the others have
+  // pairwise different normals: P's, and e x d for silhouette edges e), so
+  // the trusted builder applies; otherwise the checked construction merges.
+  if (!coplanar_neighbours) return ConvexSet(trusted_polyhedron(soup.take()));
   return ConvexSet(ConvexPolyhedron::from_soup(soup.take()));
 }
 
