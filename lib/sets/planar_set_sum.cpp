@@ -4,7 +4,9 @@
 // (plane_chart.hpp). The chart is an affine bijection of each plane
 // orthogonal to the normal that maps sums to sums up to the constant offset
 // of the planes, so the convolution's index pairs are the vertices of the
-// sum in 3D; they are added in 3D, never lifted back.
+// sum in 3D; they are added in 3D, never lifted back. Also the stretched
+// facets of segment_sum.cpp and polygon_sum.cpp: a facet plus a segment
+// parallel to it.
 #include <vector>
 
 #include "cvms/planar_sum.hpp"
@@ -31,6 +33,22 @@ ConvexSet coplanar_sum(const std::vector<Vec3>& a, const std::vector<Vec3>& b, c
   if (sum.size() == 1) return ConvexSet::point(sum[0]);
   if (sum.size() == 2) return ConvexSet::segment(sum[0], sum[1]);
   return ConvexSet::polygon(sum);
+}
+
+std::vector<std::pair<VertexId, std::uint32_t>> stretched_facet(const ConvexPolyhedron& p, FaceId f, const Vec3& from,
+                                                                const Vec3& to) {
+  const Mesh& m = p.mesh();
+  const PlaneChart chart(p.normal(f));
+  std::vector<VertexId> corners;
+  std::vector<Vec2> flat;
+  for (HalfedgeId h : m.face_halfedges(f)) {
+    corners.push_back(m.from(h));
+    flat.push_back(chart(p.vertex(m.from(h))));
+  }
+  const std::vector<Vec2> segment{chart(from), chart(to)};
+  std::vector<std::pair<VertexId, std::uint32_t>> pairs;
+  for (const auto& [i, j] : planar_sum_indices(flat, segment)) pairs.emplace_back(corners[i], j);
+  return pairs;
 }
 
 }  // namespace cvms::detail

@@ -170,15 +170,8 @@ void add_facet(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p, Fac
   if (!on_meridian) {
     for (HalfedgeId h : m.face_halfedges(f)) out.push_back(soup.vertex(last + 1, m.from(h)));
   } else {  // stretched along the edge e_last
-    const PlaneChart chart(p.normal(f));
-    std::vector<VertexId> corners;
-    std::vector<Vec2> flat;
-    for (HalfedgeId h : m.face_halfedges(f)) {
-      corners.push_back(m.from(h));
-      flat.push_back(chart(p.vertex(m.from(h))));
-    }
-    const std::vector<Vec2> edge{chart(q.vertex(last)), chart(q.vertex(last + 1))};
-    for (const auto& [i, j] : planar_sum_indices(flat, edge)) out.push_back(soup.vertex(last + j, corners[i]));
+    for (const auto& [v, end] : stretched_facet(p, f, q.vertex(last), q.vertex(last + 1)))
+      out.push_back(soup.vertex(last + end, v));
   }
   soup.add_face(out);
 }

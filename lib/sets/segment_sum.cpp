@@ -27,9 +27,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "cvms/planar_sum.hpp"
 #include "cvms/predicates.hpp"
-#include "plane_chart.hpp"
 #include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
 
@@ -62,17 +60,8 @@ class SweptSoup {
 };
 
 void add_stretched_facet(SweptSoup& soup, const ConvexPolyhedron& p, FaceId f, const Vec3& direction) {
-  const Mesh& m = p.mesh();
-  const PlaneChart chart(p.normal(f));
-  std::vector<VertexId> corners;
-  std::vector<Vec2> flat;
-  for (HalfedgeId h : m.face_halfedges(f)) {
-    corners.push_back(m.from(h));
-    flat.push_back(chart(p.vertex(m.from(h))));
-  }
-  const std::vector<Vec2> segment{chart(Vec3{0, 0, 0}), chart(direction)};
   std::vector<std::uint32_t> face;
-  for (const auto& [i, j] : planar_sum_indices(flat, segment)) face.push_back(soup.vertex(corners[i], int(j)));
+  for (const auto& [v, end] : stretched_facet(p, f, Vec3{0, 0, 0}, direction)) face.push_back(soup.vertex(v, int(end)));
   soup.add_face(face);
 }
 

@@ -4,6 +4,8 @@
 // polygon_sum.cpp, sweep_sum.cpp.
 #pragma once
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "cvms/convex_set.hpp"
@@ -13,6 +15,12 @@ namespace cvms::detail {
 /// A + B for point lists that are each a point, a segment or a polygon
 /// counterclockwise seen from `normal`, all in planes orthogonal to it.
 ConvexSet coplanar_sum(const std::vector<Vec3>& a, const std::vector<Vec3>& b, const Vec3& normal);
+
+/// The facet f of P plus the segment [from, to] parallel to its plane, as
+/// (corner of f, 0 for `from` or 1 for `to`) pairs counterclockwise from f's
+/// outward normal. \pre dot(normal(f), to - from) == 0.
+std::vector<std::pair<VertexId, std::uint32_t>> stretched_facet(const ConvexPolyhedron& p, FaceId f, const Vec3& from,
+                                                                const Vec3& to);
 
 /// [start, start + direction] + P, from P's facets split by the sign of
 /// dot(normal, direction) and its silhouette edges. \pre direction != 0.
