@@ -19,13 +19,12 @@
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
-#include "support/random_numbers.hpp"
+#include "support/random_sets.hpp"
 #include "support/set_oracle.hpp"
 
 namespace cvms {
 namespace {
 
-using test::fraction;
 using test::v3;
 using Rng = std::mt19937_64;
 
@@ -34,18 +33,6 @@ ConvexSet square(long side, long z = 0) {
 }
 
 ConvexSet box(long x, long y, long z) { return ConvexSet(shapes::box(v3(0, 0, 0), v3(x, y, z))); }
-
-// "" or what is wrong with a + b and b + a against the oracle.
-std::string check_pair(const ConvexSet& a, const ConvexSet& b, const Options& options = {}) {
-  const test::SetShape expected = test::sum_oracle(a, b);
-  for (int order = 0; order < 2; ++order) {
-    const ConvexSet sum = order == 0 ? minkowski_sum(a, b, options) : minkowski_sum(b, a, options);
-    const std::string which = order == 0 ? "a + b: " : "b + a: ";
-    if (std::string bad = test::check_set_invariants(sum); !bad.empty()) return which + bad;
-    if (test::describe_set(sum) != expected) return which + test::difference(expected, test::describe_set(sum));
-  }
-  return "";
-}
 
 TEST(SetSum, KnownResults) {
   const ConvexSet x = ConvexSet::segment(v3(0, 0, 0), v3(1, 0, 0));
@@ -94,30 +81,9 @@ TEST(SetSum, EveryPairOfDimensionsWithAlignments) {
       for (Algorithm algorithm : {Algorithm::cvms, Algorithm::essdms, Algorithm::chms}) {
         Options options;
         options.algorithm = algorithm;
-        EXPECT_EQ(check_pair(sets[i], sets[j], options), "") << "sets " << i << " and " << j << ", "
+        EXPECT_EQ(test::check_set_sum(sets[i], sets[j], options), "") << "sets " << i << " and " << j << ", "
                                                              << to_string(algorithm);
       }
-}
-
-// A random operand of the given dimension on a small grid around origin.
-ConvexSet random_operand(Rng& rng, int dimension, const Vec3& origin) {
-  std::uniform_int_distribution<int> small(-2, 2);
-  auto grid = [&] { return v3(small(rng), small(rng), small(rng)); };
-  auto coefficient = [&] { return fraction(small(rng), 1 + static_cast<long>(rng() % 2)); };
-  for (;;) {
-    Vec3 basis[3];
-    for (int k = 0; k < 3; ++k)
-      basis[k] = rng() % 3 == 0 ? grid() : Vec3{Rational(k == 0), Rational(k == 1), Rational(k == 2)};
-    std::vector<Vec3> points;
-    const int n = dimension == 0 ? 1 : dimension + 1 + static_cast<int>(rng() % 8);
-    for (int i = 0; i < n; ++i) {
-      Vec3 p = origin;
-      for (int k = 0; k < dimension; ++k) p += coefficient() * basis[k];
-      points.push_back(p);
-    }
-    ConvexSet s = convex_hull_set(points);
-    if (s.dimension() == dimension) return s;
-  }
 }
 
 TEST(SetSum, RandomPairsAgainstOracle) {
@@ -125,11 +91,11 @@ TEST(SetSum, RandomPairsAgainstOracle) {
   for (std::uint64_t seed = 0; seed < pairs; ++seed) {
     Rng rng(seed);
     const Vec3 origin_a = seed % 7 == 0 ? Vec3{Rational(1000000000), 0, Rational(-1, 3)} : Vec3{0, 0, 0};
-    const ConvexSet a = random_operand(rng, static_cast<int>(seed % 4), origin_a);
-    const ConvexSet b = random_operand(rng, static_cast<int>((seed / 4) % 4), v3(1, 0, -1));
+    const ConvexSet a = test::random_set(rng, static_cast<int>(seed % 4), origin_a);
+    const ConvexSet b = test::random_set(rng, static_cast<int>((seed / 4) % 4), v3(1, 0, -1));
     Options options;
     options.algorithm = seed % 3 == 0 ? Algorithm::essdms : (seed % 3 == 1 ? Algorithm::cvms : Algorithm::chms);
-    ASSERT_EQ(check_pair(a, b, options), "") << "seed " << seed << " (dimensions " << a.dimension() << " and "
+    ASSERT_EQ(test::check_set_sum(a, b, options), "") << "seed " << seed << " (dimensions " << a.dimension() << " and "
                                              << b.dimension() << ", " << to_string(options.algorithm) << ")";
   }
 }
@@ -149,7 +115,7 @@ TEST(SetSum, BigPolygonsPlusPolyhedra) {
     const ConvexSet p = seed % 3 == 0   ? ConvexSet(shapes::prism(7 + static_cast<int>(seed % 5), 3))
                         : seed % 3 == 1 ? ConvexSet(shapes::random_hull(seed, 40, 20))
                                         : box(3, 5, 7);
-    ASSERT_EQ(check_pair(polygon, p), "") << "seed " << seed;
+    ASSERT_EQ(test::check_set_sum(polygon, p), "") << "seed " << seed;
   }
 }
 
@@ -158,7 +124,7 @@ TEST(SetSum, ManyOperandsIndependentOfOrder) {
     Rng rng(seed);
     std::vector<ConvexSet> operands;
     const int n = 2 + static_cast<int>(seed % 4);
-    for (int i = 0; i < n; ++i) operands.push_back(random_operand(rng, static_cast<int>(rng() % 4), v3(0, 0, 0)));
+    for (int i = 0; i < n; ++i) operands.push_back(test::random_set(rng, static_cast<int>(rng() % 4), v3(0, 0, 0)));
     ConvexSet oracle = operands[0];
     for (int i = 1; i < n; ++i) {
       const test::SetShape step = test::sum_oracle(oracle, operands[i]);

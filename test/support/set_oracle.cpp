@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "cvms/convex_hull.hpp"
+#include "cvms/set_sum.hpp"
 
 namespace cvms::test {
 
@@ -155,6 +156,17 @@ std::string check_set_invariants(const ConvexSet& s) {
     default:
       return "dimension " + std::to_string(s.dimension());
   }
+}
+
+std::string check_set_sum(const ConvexSet& a, const ConvexSet& b, const Options& options) {
+  const SetShape expected = sum_oracle(a, b);
+  for (int order = 0; order < 2; ++order) {
+    const ConvexSet sum = order == 0 ? minkowski_sum(a, b, options) : minkowski_sum(b, a, options);
+    const std::string which = order == 0 ? "a + b: " : "b + a: ";
+    if (std::string bad = check_set_invariants(sum); !bad.empty()) return which + bad;
+    if (describe_set(sum) != expected) return which + difference(expected, describe_set(sum));
+  }
+  return "";
 }
 
 std::string difference(const SetShape& expected, const SetShape& actual) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cvms/convex_set.hpp"
+#include "cvms/minkowski.hpp"
 #include "support/oracle.hpp"
 
 namespace cvms::test {
@@ -43,6 +44,10 @@ SetShape describe_set(const ConvexSet& s);
 /// convex, counterclockwise from its primitive canonical normal, starting at
 /// its smallest vertex; a polyhedron's invariants (check_invariants).
 std::string check_set_invariants(const ConvexSet& s);
+
+/// "" or what is wrong with minkowski_sum(a, b, options) and (b, a):
+/// check_set_invariants of each, and each against sum_oracle(a, b).
+std::string check_set_sum(const ConvexSet& a, const ConvexSet& b, const Options& options = {});
 
 /// Human-readable difference (for failure messages).
 std::string difference(const SetShape& expected, const SetShape& actual);
