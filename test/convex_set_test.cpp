@@ -4,6 +4,8 @@
 // (exact rank, gift wrapping), and convex_set_from_soup on flat soups.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -108,7 +110,7 @@ TEST(ConvexSet, PolygonErrors) {
 }
 
 TEST(ConvexHullSet, EveryDimension) {
-  EXPECT_EQ(convex_hull_set({}).dimension(), -1);
+  EXPECT_EQ(convex_hull_set(std::vector<Vec3>{}).dimension(), -1);
   const std::vector<Vec3> one{v3(1, 2, 3), v3(1, 2, 3)};
   EXPECT_EQ(convex_hull_set(one).dimension(), 0);
   const std::vector<Vec3> line{v3(1, 1, 1), v3(3, 3, 3), v3(-1, -1, -1), v3(2, 2, 2)};
@@ -119,6 +121,11 @@ TEST(ConvexHullSet, EveryDimension) {
   const ConvexSet q = convex_hull_set(square);
   EXPECT_EQ(q.dimension(), 2);
   EXPECT_EQ(q.num_vertices(), 4u);
+  // Doubles are taken exactly; a NaN is named.
+  const std::vector<std::array<double, 3>> doubles{{0.1, 0, 0}, {0.3, 0, 0}, {0.2, 0, 0}};
+  EXPECT_EQ(convex_hull_set(doubles).vertices(), (std::vector<Vec3>{{Rational(0.1), 0, 0}, {Rational(0.3), 0, 0}}));
+  const std::vector<std::array<double, 3>> nan{{0, 0, 0}, {0, std::nan(""), 0}};
+  expect_error([&] { (void)convex_hull_set(nan); }, ErrorCategory::invalid_argument, "point 1 has a NaN coordinate y");
   const ConvexSet cube = convex_hull_set(shapes::cube().mesh().positions());
   EXPECT_EQ(cube.dimension(), 3);
   EXPECT_EQ(cube.polyhedron().num_facets(), 6u);

@@ -71,6 +71,9 @@ TEST(SetSum, EveryPairOfDimensionsWithAlignments) {
       ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(2, 0, 1), v3(0, 1, 0)}),  // tilted
       ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(1, 1, 0), v3(1, 1, 1), v3(0, 0, 1)}),  // diagonal
       ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(3, 0, 0), v3(3, 1, 0), v3(1, 2, 0)}),
+      ConvexSet::polygon(std::vector<Vec3>{{parse_rational("0.1"), 0, parse_rational("-2.5")},  // decimals
+                                           {parse_rational("1.7"), parse_rational("0.3"), parse_rational("-2.5")},
+                                           {0, parse_rational("1e-3"), parse_rational("-2.5")}}),
       ConvexSet(shapes::cube()),
       ConvexSet(shapes::octahedron()),
       ConvexSet(shapes::prism(5, 2)),

@@ -40,6 +40,13 @@ ConvexPolyhedron convex_hull(std::span<const std::array<double, 3>> points);
 /// Complexity: O(n) predicates to find the dimension, then O(n log n).
 ConvexSet convex_hull_set(std::span<const Vec3> points);
 
+/// The same for points given as doubles, each coordinate taken as the exact
+/// binary number it is.
+/// \throw Error(invalid_argument) if a coordinate is NaN or infinite, naming
+///   the point's index and the coordinate.
+/// Complexity: as above, plus the exact conversion of every point.
+ConvexSet convex_hull_set(std::span<const std::array<double, 3>> points);
+
 /// The convex set a soup describes, for files that may be flat:
 ///  - no faces: the hull of all the points (convex_hull_set), e.g. a
 ///    points-only OFF or an `x y z` list;

@@ -9,11 +9,14 @@
 // chain keeps only strict left turns, so the cycle has no collinear or
 // repeated vertices. Otherwise the 3D quickhull.
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <cstdint>
 #include <numeric>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
+#include "cvms/error.hpp"
 #include "affine_dimension.hpp"
 #include "cvms/predicates.hpp"
 #include "plane_chart.hpp"
@@ -106,6 +109,20 @@ ConvexSet convex_hull_set(std::span<const Vec3> points) {
     default:
       return ConvexSet(convex_hull(points));
   }
+}
+
+ConvexSet convex_hull_set(std::span<const std::array<double, 3>> points) {
+  std::vector<Vec3> exact;
+  exact.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(points[i][k]))
+        throw Error(ErrorCategory::invalid_argument, "convex hull: point " + std::to_string(i) + " has a " +
+                                                         (std::isnan(points[i][k]) ? "NaN" : "infinite") +
+                                                         " coordinate " + std::string(1, "xyz"[k]));
+    exact.push_back({Rational(points[i][0]), Rational(points[i][1]), Rational(points[i][2])});
+  }
+  return convex_hull_set(exact);
 }
 
 }  // namespace cvms
