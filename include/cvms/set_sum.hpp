@@ -22,7 +22,8 @@ namespace cvms {
 /// polyhedron's facets split by the segment's direction and its silhouette,
 /// polygon + polyhedron and polygon + polygon through CVMS on the polygon's
 /// prism, whose sweep is then undone exactly.
-/// \throw Error(invalid_argument) for an unknown option value.
+/// \throw Error(invalid_argument) for an unknown option value when both are
+///   polyhedra (the other cases do not read the options).
 /// Complexity: output-sensitive, no hull of pairwise sums: O(size of the
 ///   operands and the result) predicates (times log of the polygon's size
 ///   for a polygon and a polyhedron); for two polyhedra that of
@@ -34,7 +35,7 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
 /// depend on the order. Points are added as one translation; the others are
 /// summed two at a time, always the two with the fewest vertices, which
 /// keeps intermediate sums small (for n segments: a balanced tree of zonotopes).
-/// \throw Error(invalid_argument) as the sum of two.
+/// \throw Error(invalid_argument) as the sum of two (when two polyhedra meet).
 ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& options = {});
 
 /// The zonotope center + sum of the segments [-g, g] over the generators g
