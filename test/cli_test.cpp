@@ -21,9 +21,12 @@
 #include "cvms/io.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/rational.hpp"
+#include "cvms/set_io.hpp"
+#include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
 #include "support/prism_attack.hpp"
+#include "support/set_oracle.hpp"
 
 namespace cvms {
 namespace {
@@ -318,9 +321,9 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
   expect_bad_input("check dent.off", "dent.off");
   Outcome dent = run("check dent.off");
   EXPECT_NE(dent.err.find("not_convex"), std::string::npos) << dent.err;
-  // Coplanar points cannot make a hull.
-  write_text("flat.xyz", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n");
-  expect_bad_input("hull flat.xyz -o h.off", "flat.xyz");
+  // A non-convex flat face (issue 15: flat input is a set, but a reflex one is not).
+  write_text("bent.off", "OFF\n4 1 0\n0 0 0\n4 0 0\n1 1 0\n0 4 0\n4 0 1 2 3\n");
+  expect_bad_input("check bent.off", "bent.off: face 0: polygon: vertex 2 is a reflex corner");
   // Bad input on stdin is named as such.
   expect_bad_input("check -", "<stdin>", "broken.off");
   // An unwritable output.
@@ -379,6 +382,55 @@ TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
   EXPECT_NE(o.out.find(std::to_string(SumLimits{}.max_output_facets)), std::string::npos) << o.out;
   const std::string memory_line = o.out.substr(o.out.find("--max-memory"));
   EXPECT_NE(memory_line.substr(0, memory_line.find('\n')).find("4G"), std::string::npos) << o.out;
+// ---- convex sets of every dimension (issue 15) --------------------------------
+
+TEST_F(Cli, FlatInputsAndSumsOfMany) {
+  // hull of coplanar points writes the polygon; check reports the dimension.
+  write_text("flat.xyz", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n1/2 1/2 0\n");
+  ASSERT_EQ(run("hull flat.xyz -o square.off").code, 0);
+  Outcome check = run("check square.off");
+  ASSERT_EQ(check.code, 0) << check.err;
+  EXPECT_NE(check.out.find("square.off: convex polygon\ndimension 2, V 4"), std::string::npos) << check.out;
+  // Three axis segments (points-only OFFs) give the box.
+  write_text("x.off", "OFF\n2 0 0\n0 0 0\n1 0 0\n");
+  write_text("y.off", "OFF\n2 0 0\n0 0 0\n0 2 0\n");
+  write_text("z.off", "OFF\n2 0 0\n0 0 0\n0 0 3\n");
+  Outcome sum = run("sum x.off y.off z.off -o box.off");
+  ASSERT_EQ(sum.code, 0) << sum.err;
+  ASSERT_EQ(run("gen box -o expected.off").code, 0);
+  EXPECT_EQ(test::describe(load("box.off")), test::describe(load("expected.off")));
+  // A flat OBJ as a modeller exports it (every z = 0, a 240-gon fanned from
+  // its centre) plus a solid hull, against the oracle.
+  const std::vector<Vec2> circle = shapes::circle_polygon(240);
+  std::string obj = "o profile\nv 0 0 0\n";
+  for (const Vec2& p : circle) obj += "v " + to_string(p.x) + " " + to_string(p.y) + " 0\n";
+  for (std::size_t i = 0; i < circle.size(); ++i)
+    obj += "f 1 " + std::to_string(i + 2) + " " + std::to_string((i + 1) % circle.size() + 2) + "\n";
+  write_text("profile.obj", obj);
+  ASSERT_EQ(run("gen random --seed 3 --points 30 -o solid.off").code, 0);
+  Outcome flat_sum = run("sum profile.obj solid.off -o swept.off --stats");
+  ASSERT_EQ(flat_sum.code, 0) << flat_sum.err;
+  EXPECT_NE(flat_sum.out.find("operand 1: convex polygon, dimension 2, V 240"), std::string::npos) << flat_sum.out;
+  const test::SetShape expected =
+      test::sum_oracle(read_convex_set(file("profile.obj")), ConvexSet(shapes::random_hull(3, 30)));
+  EXPECT_EQ(test::describe_set(read_convex_set(file("swept.off"))), expected);
+  // Two inputs on stdin are a usage error.
+  expect_usage("sum - x.off - -o s.off");
+}
+
+TEST_F(Cli, GenZonotope) {
+  Outcome gen = run("gen zonotope --generators 6 --seed 5 -o z.obj");
+  ASSERT_EQ(gen.code, 0) << gen.err;
+  Outcome check = run("check z.obj");
+  ASSERT_EQ(check.code, 0) << check.err;
+  EXPECT_NE(check.out.find("V 32 E 60 F 30"), std::string::npos) << check.out;  // n^2-n+2, 2n(n-1), n(n-1)
+  std::vector<Vec3> g = shapes::random_points(5, 6);
+  g.resize(6);
+  EXPECT_EQ(test::describe_set(read_convex_set(file("z.obj"))), test::describe_set(zonotope(Vec3{0, 0, 0}, g)));
+  ASSERT_EQ(run("gen zonotope --generators 1 -o seg.off").code, 0);
+  EXPECT_NE(run("check seg.off").out.find("segment"), std::string::npos);
+  expect_usage("gen cube --generators 3");
+  expect_usage("gen zonotope --generators 0");
 }
 
 }  // namespace

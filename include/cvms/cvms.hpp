@@ -21,6 +21,7 @@
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/convex_set.hpp"
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
 #include "cvms/mesh.hpp"
@@ -30,6 +31,8 @@
 #include "cvms/predicates.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/rational.hpp"
+#include "cvms/set_io.hpp"
+#include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "cvms/sign.hpp"
 #include "cvms/vec.hpp"

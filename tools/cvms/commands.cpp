@@ -2,6 +2,7 @@
 // The subcommands of the cvms tool (see commands.hpp).
 #include "commands.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iomanip>
@@ -13,6 +14,7 @@
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "files.hpp"
+#include "set_commands.hpp"
 
 namespace cvms::cli {
 namespace {
@@ -75,8 +77,15 @@ Timed limited_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Su
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
   check_output_directory(args.output);
-  ConvexPolyhedron a = read_polyhedron(args.a);
-  ConvexPolyhedron b = read_polyhedron(args.b);
+  // Flat operands, or more than two: the sum of convex sets.
+  if (std::count(args.more.begin(), args.more.end(), "-") + (args.a == "-") + (args.b == "-") > 1)
+    throw UsageError("only one input can be read from stdin");
+  std::vector<ConvexSet> sets{read_set(args.a), read_set(args.b)};
+  for (const std::string& path : args.more) sets.push_back(read_set(path));
+  if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
+    return run_set_sum(sets, args.algorithm, args.limits, args.output, coordinates_of(args.float_output), args.stats, report);
+  const ConvexPolyhedron& a = sets[0].polyhedron();
+  const ConvexPolyhedron& b = sets[1].polyhedron();
   Timed sum = limited_sum(a, b, args);
   write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output));
   if (args.stats) {
@@ -89,14 +98,8 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 void run_hull(const HullArgs& args) {
   check_output_directory(args.output);
   std::vector<Vec3> points = read_point_cloud(args.input);
-  ConvexPolyhedron hull;
-  try {
-    hull = convex_hull(points);
-  } catch (const Error& e) {
-    // A degenerate cloud is bad input: say which file it came from.
-    throw Error(e.category(), input_name(args.input) + ": " + e.message());
-  }
-  write_polyhedron(args.output, hull, coordinates_of(args.float_output));
+  // Flat, collinear or single-point clouds give the set they span.
+  write_set(args.output, convex_hull_set(points), coordinates_of(args.float_output));
 }
 
 void run_gen(const GenArgs& args) {
@@ -105,10 +108,15 @@ void run_gen(const GenArgs& args) {
   const bool counted = s == "random" || s == "prism";
   if (args.subdivisions_given && !sphere)
     throw UsageError("--subdivisions applies only to sphere and rotated-sphere");
-  if (args.seed_given && s != "random") throw UsageError("--seed applies only to random");
+  if (args.seed_given && s != "random" && s != "zonotope")
+    throw UsageError("--seed applies only to random and zonotope");
+  if (args.generators != 0 && s != "zonotope") throw UsageError("--generators applies only to zonotope");
   if (args.points != 0 && !counted) throw UsageError("--points applies only to random and prism");
 
   check_output_directory(args.output);
+  if (s == "zonotope")  // a set: flat for fewer than 3 generators
+    return write_set(args.output, random_zonotope(args.generators != 0 ? args.generators : 10, args.seed),
+                     coordinates_of(args.float_output));
   ConvexPolyhedron p;
   if (s == "tetrahedron")
     p = shapes::tetrahedron();
@@ -142,10 +150,12 @@ void run_check(const std::string& input, std::ostream& report) {
   PolygonSoup soup = read_soup(input);
   const std::size_t input_points = soup.points.size();
   const std::size_t input_faces = soup.num_faces();
-  ConvexPolyhedron p = to_polyhedron(std::move(soup), input_name(input));
+  const ConvexSet set = set_from_soup(std::move(soup), input_name(input));
+  if (set.dimension() != 3) return report_set(input_name(input), set, report);
+  const ConvexPolyhedron& p = set.polyhedron();
   std::map<std::uint32_t, std::uint32_t> histogram;
   for (FaceId f : p.mesh().faces()) ++histogram[p.mesh().degree(f)];
-  report << input_name(input) << ": convex polyhedron\n" << counts(p) << "\n";
+  report << input_name(input) << ": convex polyhedron\ndimension 3\n" << counts(p) << "\n";
   if (input_points != p.num_vertices() || input_faces != p.num_facets())
     report << "input: V " << input_points << " F " << input_faces
            << " (normalised: coplanar faces merged, non-extreme vertices dropped)\n";

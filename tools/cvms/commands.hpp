@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cvms/minkowski.hpp"
 
@@ -20,12 +21,14 @@ class UsageError : public std::runtime_error {
 
 struct SumArgs {
   std::string a, b, output = "-";
+  std::vector<std::string> more;  ///< operands after B (set_commands.cpp sums them)
   Algorithm algorithm = Options{}.algorithm;
   bool float_output = false;
   bool stats = false;
   SumLimits limits;  ///< --max-facets, --max-memory
 };
-/// A + B written to output; with stats, counts, time and Stats go to report.
+/// A + B (+ C ...) written to output; flat operands and more than two go
+/// through the sum of convex sets (set_commands.hpp); with stats, counts, time and Stats go to report.
 void run_sum(const SumArgs& args, std::ostream& report);
 
 struct HullArgs {
@@ -41,15 +44,17 @@ struct GenArgs {
   std::uint64_t seed = 1;
   bool seed_given = false;
   int points = 0;  ///< 0: the shape's default
+  int generators = 0;  ///< zonotope; 0: the default (10)
   bool float_output = false;
 };
 /// The shape names gen accepts, in the order help lists them.
 inline constexpr const char* gen_shapes[] = {"tetrahedron", "cube",           "octahedron", "truncated-cube",
                                              "sphere",      "rotated-sphere", "box",        "prism",
-                                             "random"};
+                                             "random",      "zonotope"};
 void run_gen(const GenArgs& args);
 
-/// Validates F and prints V E F and the facet degree histogram to report.
+/// Validates F and prints its dimension, V E F and the facet degree histogram
+/// (for a polyhedron; for a flat set its kind, V and plane) to report.
 void run_check(const std::string& input, std::ostream& report);
 
 struct DemoArgs {

@@ -78,9 +78,10 @@ int main(int argc, char** argv) {
   const char* default_algorithm = cvms::to_string(cvms::Options{}.algorithm);
 
   SumArgs sum;
-  CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B");
+  CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
   sum_cmd->add_option("A", sum.a, "first operand")->required()->check(mesh_path);
   sum_cmd->add_option("B", sum.b, "second operand")->required()->check(mesh_path);
+  sum_cmd->add_option("C", sum.more, "further operands")->check(mesh_path);
   sum_cmd->add_option("-o,--output", sum.output, "result file (default -, OFF on stdout)")
       ->check(mesh_path)
       ->default_str("-");
@@ -107,7 +108,9 @@ int main(int argc, char** argv) {
   CLI::Option* subdivisions_opt =
       gen_cmd->add_option("--subdivisions", gen.subdivisions, "K for Sphere_K (1..9)")
           ->check(CLI::Range(1, 9));
-  CLI::Option* seed_opt = gen_cmd->add_option("--seed", gen.seed, "seed of random");
+  CLI::Option* seed_opt = gen_cmd->add_option("--seed", gen.seed, "seed of random and zonotope");
+  gen_cmd->add_option("--generators", gen.generators, "generators of zonotope (default 10)")
+      ->check(CLI::Range(1, 100'000));
   gen_cmd->add_option("--points", gen.points, "points of random (default 100), sides of prism (default 6)")
       ->check(CLI::Range(1, 10'000'000));
   gen_cmd->add_option("-o,--output", gen.output, "result file (default -, OFF on stdout)")
@@ -117,7 +120,7 @@ int main(int argc, char** argv) {
 
   std::string check_input;
   CLI::App* check_cmd =
-      app.add_subcommand("check", "validate a convex polyhedron, print V E F and facet degrees");
+      app.add_subcommand("check", "validate a convex set, print its dimension, V E F and facet degrees");
   check_cmd->add_option("F", check_input, "the file")->required()->check(mesh_path);
 
   DemoArgs demo;

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+/// \file
+/// Convex sets of every dimension in files.
+///
+/// How a set is written (OFF and OBJ, exact unless asked otherwise): a
+/// polyhedron as its facets; a polygon as its vertices and one face,
+/// counterclockwise seen from its normal(); a segment as its two endpoints
+/// and a point as its one point, with no face (an OFF with 0 faces, an OBJ
+/// with only `v` lines); the empty set as an OFF with no points (OBJ cannot
+/// hold it: an OBJ without statements is not read back). STL holds
+/// only triangles: a polygon is written fan-triangulated, a lower-dimensional
+/// set not at all. Every file written this way reads back as the same set.
+#pragma once
+
+#include <filesystem>
+
+#include "cvms/convex_set.hpp"
+#include "cvms/io.hpp"
+
+namespace cvms {
+
+/// Reads the convex set a file describes. .off, .obj and .stl (any case) are
+/// read as meshes (read_file) and taken as convex_set_from_soup takes them: a
+/// closed convex surface is a polyhedron; one face, or coplanar faces tiling
+/// a convex polygon, is that polygon; points without faces go through the
+/// hull. Any other extension is a point list (read_points: one `x y z` per
+/// line, or OFF/OBJ vertices) whose hull is returned. Every error names the file.
+/// \throw Error(io) if the file cannot be opened;
+/// \throw Error(parse), Error(limit) as the readers;
+/// \throw the errors of convex_set_from_soup (topology, not_convex,
+///   degenerate), the message prefixed by "<path>: ".
+ConvexSet read_convex_set(const std::filesystem::path& path, const ReadLimits& limits = {});
+
+/// Writes a set as the file comment says, in the format of the path's extension.
+/// \throw Error(invalid_argument) for an unknown extension, for a set of
+///   dimension below 2 in STL or the empty set in OBJ, and as
+///   write_file(path, soup);
+/// \throw Error(io) naming the file if it cannot be written.
+void write_file(const std::filesystem::path& path, const ConvexSet& set, Coordinates coordinates = Coordinates::exact);
+
+}  // namespace cvms

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Convex sets in files (the conventions are in cvms/set_io.hpp): the mesh
+// readers and writers of lib/io/ plus convex_set_from_soup.
+#include "cvms/set_io.hpp"
+
+#include <fstream>
+#include <string>
+
+#include "cvms/convex_hull.hpp"
+#include "cvms/error.hpp"
+
+namespace cvms {
+
+namespace {
+
+bool is_mesh_extension(const std::filesystem::path& path) {
+  try {
+    (void)format_from_extension(path);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+std::vector<Vec3> read_point_file(const std::filesystem::path& path, const ReadLimits& limits) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in || std::filesystem::is_directory(path))
+    throw Error(ErrorCategory::io, path.string() + ": cannot open the file for reading");
+  return read_points(in, path.string(), limits);
+}
+
+}  // namespace
+
+ConvexSet read_convex_set(const std::filesystem::path& path, const ReadLimits& limits) {
+  if (!is_mesh_extension(path)) return convex_hull_set(read_point_file(path, limits));
+  PolygonSoup soup = read_file(path, limits);
+  try {
+    return convex_set_from_soup(std::move(soup));
+  } catch (const Error& e) {
+    throw Error(e.category(), path.string() + ": " + e.message());
+  }
+}
+
+void write_file(const std::filesystem::path& path, const ConvexSet& set, Coordinates coordinates) {
+  const FileFormat format = format_from_extension(path);
+  if (set.empty() && format == FileFormat::obj)
+    throw Error(ErrorCategory::invalid_argument,
+                path.string() + ": OBJ cannot hold the empty set (an OBJ without statements is not read back; use OFF)");
+  if (set.dimension() < 2 && format == FileFormat::stl)
+    throw Error(ErrorCategory::invalid_argument, path.string() + ": STL cannot hold a set of dimension " +
+                                                     std::to_string(set.dimension()) + " (use OFF or OBJ)");
+  write_file(path, set.to_soup(), coordinates);
+}
+
+}  // namespace cvms
