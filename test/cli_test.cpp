@@ -382,6 +382,8 @@ TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
   EXPECT_NE(o.out.find(std::to_string(SumLimits{}.max_output_facets)), std::string::npos) << o.out;
   const std::string memory_line = o.out.substr(o.out.find("--max-memory"));
   EXPECT_NE(memory_line.substr(0, memory_line.find('\n')).find("4G"), std::string::npos) << o.out;
+}
+
 // ---- convex sets of every dimension (issue 15) --------------------------------
 
 TEST_F(Cli, FlatInputsAndSumsOfMany) {
