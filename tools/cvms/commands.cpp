@@ -52,15 +52,22 @@ void print_stats(std::ostream& report, const Stats& s) {
          << "predicates: filtered " << s.predicate_filtered << ", exact " << s.predicate_exact << "\n";
 }
 
+// Fails before any work if the output cannot be written: an unknown format
+// (a usage error), a missing directory, a directory.
+void check_output(const std::string& path, const std::string& format) {
+  (void)output_format(path, format);
+  check_output_directory(path);
+}
+
 }  // namespace
 
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
-  check_output_directory(args.output);
+  check_output(args.output, args.format);
   ConvexPolyhedron a = read_polyhedron(args.a);
   ConvexPolyhedron b = read_polyhedron(args.b);
   Timed sum = timed_sum(a, b, args.algorithm);
-  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output));
+  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format);
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
@@ -69,7 +76,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 }
 
 void run_hull(const HullArgs& args) {
-  check_output_directory(args.output);
+  check_output(args.output, args.format);
   std::vector<Vec3> points = read_point_cloud(args.input);
   ConvexPolyhedron hull;
   try {
@@ -78,7 +85,7 @@ void run_hull(const HullArgs& args) {
     // A degenerate cloud is bad input: say which file it came from.
     throw Error(e.category(), input_name(args.input) + ": " + e.message());
   }
-  write_polyhedron(args.output, hull, coordinates_of(args.float_output));
+  write_polyhedron(args.output, hull, coordinates_of(args.float_output), args.format);
 }
 
 void run_gen(const GenArgs& args) {
@@ -90,7 +97,7 @@ void run_gen(const GenArgs& args) {
   if (args.seed_given && s != "random") throw UsageError("--seed applies only to random");
   if (args.points != 0 && !counted) throw UsageError("--points applies only to random and prism");
 
-  check_output_directory(args.output);
+  check_output(args.output, args.format);
   ConvexPolyhedron p;
   if (s == "tetrahedron")
     p = shapes::tetrahedron();
@@ -108,7 +115,8 @@ void run_gen(const GenArgs& args) {
     p = shapes::box({Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(2), Rational(3)});
   else if (s == "prism") {
     int n = args.points != 0 ? args.points : 6;
-    if (n < 3) throw UsageError("prism needs --points >= 3");
+    if (n < 3 || n > max_prism_sides)
+      throw UsageError("prism needs --points from 3 to " + std::to_string(max_prism_sides));
     p = shapes::prism(n, Rational(2));
   } else if (s == "random") {
     int n = args.points != 0 ? args.points : 100;
@@ -117,7 +125,7 @@ void run_gen(const GenArgs& args) {
   } else {
     throw UsageError("unknown shape '" + s + "'");
   }
-  write_polyhedron(args.output, p, coordinates_of(args.float_output));
+  write_polyhedron(args.output, p, coordinates_of(args.float_output), args.format);
 }
 
 void run_check(const std::string& input, std::ostream& report) {
@@ -127,7 +135,7 @@ void run_check(const std::string& input, std::ostream& report) {
   ConvexPolyhedron p = to_polyhedron(std::move(soup), input_name(input));
   std::map<std::uint32_t, std::uint32_t> histogram;
   for (FaceId f : p.mesh().faces()) ++histogram[p.mesh().degree(f)];
-  report << input_name(input) << ": convex polyhedron\n" << counts(p) << "\n";
+  report << printable(input_name(input)) << ": convex polyhedron\n" << counts(p) << "\n";
   if (input_points != p.num_vertices() || input_faces != p.num_facets())
     report << "input: V " << input_points << " F " << input_faces
            << " (normalised: coplanar faces merged, non-extreme vertices dropped)\n";
