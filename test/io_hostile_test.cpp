@@ -108,17 +108,7 @@ namespace {
 
 using test::throws_error;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double slow_factor = 8.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double slow_factor = 8.0;
-#else
-constexpr double slow_factor = 1.0;
-#endif
-#else
-constexpr double slow_factor = 1.0;
-#endif
+using test::slow_factor;
 
 constexpr std::size_t MiB = std::size_t{1} << 20;
 constexpr std::size_t hundred_mb = 100 * 1000 * 1000;

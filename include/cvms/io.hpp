@@ -24,7 +24,7 @@
 ///    and the like raise Error(parse) naming the line. Ignored values
 ///    (colors, normals, OBJ w) follow the same rules.
 ///  - Text formats are line based; '\n' and "\r\n" end lines (an error on a
-///    line that holds a '\r' says that '\r' alone does not end a line). A
+///    line that holds a carriage return says that one alone ends no line). A
 ///    NUL byte in a text format is Error(parse) naming its line and byte
 ///    offset, raised as soon as it is read (so /dev/zero ends at once); a
 ///    line longer than ReadLimits::max_line_bytes is Error(limit). Messages name
