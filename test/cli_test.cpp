@@ -426,6 +426,11 @@ TEST_F(Cli, ControlCharactersInFileNamesAreEscaped) {
   EXPECT_EQ(o.code, 1) << o.err;
   EXPECT_EQ(o.err.find('\x1b'), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("evil\\x1b[2J.off"), std::string::npos) << o.err;
+  // Also in usage errors (a wrong extension, reported by the parser).
+  Outcome usage = run("check \"$(printf 'evil\\033[2J.txt')\"");
+  EXPECT_EQ(usage.code, 2) << usage.err;
+  EXPECT_EQ(usage.err.find('\x1b'), std::string::npos) << usage.err;
+  EXPECT_NE(usage.err.find("evil\\x1b[2J.txt"), std::string::npos) << usage.err;
   ASSERT_EQ(run("gen cube -o \"$(printf 'new\\nline.off')\"").code, 0);
   Outcome check = run("check \"$(printf 'new\\nline.off')\"");
   EXPECT_EQ(check.code, 0) << check.err;

@@ -27,11 +27,22 @@
 namespace cvms::io_detail {
 namespace {
 
-std::string reason(int error) { return std::generic_category().message(error); }
-
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& why) {
   throw Error(ErrorCategory::io, "cannot write '" + path.string() + "': " + why);
 }
+
+// A fresh name in the target's directory: ".<name>.cvms-<random>.tmp".
+std::filesystem::path temporary_name(const std::filesystem::path& target) {
+  static constexpr char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+  std::random_device device;
+  std::string suffix;
+  for (int i = 0; i < 12; ++i) suffix += digits[device() % 36];
+  return target.parent_path() / ("." + target.filename().string() + ".cvms-" + suffix + ".tmp");
+}
+
+#ifdef CVMS_POSIX_FILES
+
+std::string reason(int error) { return std::generic_category().message(error); }
 
 // The descriptor a path stands for, for the aliases of this process's own
 // descriptors (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N), or -1.
@@ -53,17 +64,6 @@ int descriptor_alias(const std::filesystem::path& path) {
   }
   return -1;
 }
-
-// A fresh name in the target's directory: ".<name>.cvms-<random>.tmp".
-std::filesystem::path temporary_name(const std::filesystem::path& target) {
-  static constexpr char digits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
-  std::random_device device;
-  std::string suffix;
-  for (int i = 0; i < 12; ++i) suffix += digits[device() % 36];
-  return target.parent_path() / ("." + target.filename().string() + ".cvms-" + suffix + ".tmp");
-}
-
-#ifdef CVMS_POSIX_FILES
 
 // An output stream buffer over a file descriptor that remembers the errno of
 // the first failed write; the caller checks failed() after flushing.
@@ -197,12 +197,15 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
   if (std::filesystem::is_directory(path, ec)) fail(path, "it is a directory");
   const std::filesystem::path temporary = temporary_name(path);
   try {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail(path, "cannot create a temporary file");
-    write(out);
-    out.close();
-    if (!out) fail(path, "write failed");
-    std::filesystem::rename(temporary, path);
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      if (!out) fail(path, "cannot create a temporary file");
+      write(out);  // closed (so removable) when an exception leaves this scope
+      out.close();
+      if (!out) fail(path, "write failed");
+    }
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) fail(path, ec.message());
   } catch (...) {
     std::filesystem::remove(temporary, ec);
     throw;

@@ -159,7 +159,7 @@ std::string check_mesh_path(const std::string& path) {
     (void)format_from_extension(path);
     return {};
   } catch (const Error&) {
-    return "'" + path + "': expected '-' or a file ending in .off, .obj or .stl";
+    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj or .stl";
   }
 }
 
