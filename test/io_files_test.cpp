@@ -150,6 +150,17 @@ TEST_F(WriteFile, AnUnwritableDirectoryLeavesTheFileAlone) {
   EXPECT_EQ(slurp(sub / "x.off"), "old\n");
 }
 
+// A read-only file is refused, as opening it for writing was: the rename
+// alone would need only the directory's permission.
+TEST_F(WriteFile, AReadOnlyFileIsNotReplaced) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root may write anything";
+  put(file("ro.off"), "old\n");
+  ASSERT_EQ(::chmod(file("ro.off").c_str(), 0444), 0);
+  EXPECT_TRUE(throws_error([&] { write_file(file("ro.off"), tetrahedron_at(Rational(1))); }, ErrorCategory::io,
+                           {"cannot write '" + file("ro.off").string() + "': Permission denied"}));
+  EXPECT_EQ(slurp(file("ro.off")), "old\n");
+}
+
 // Targets that are not regular files are written in place, by format.
 TEST_F(WriteFile, DevNullIsWrittenAndDevFullNamesTheReason) {
   EXPECT_NO_THROW(write_file("/dev/null", tetrahedron_at(Rational(1)), FileFormat::off));

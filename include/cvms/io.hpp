@@ -204,7 +204,8 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
 /// only once it is complete and closed; on any failure (a coordinate the
 /// format cannot hold, a full disk) the temporary is removed and an
 /// existing file is left byte-identical. The new file gets the mode of the
-/// file it replaces, or that of any new file (0666 less the umask); through
+/// file it replaces (which must be writable: a read-only file is refused,
+/// not replaced), or that of any new file (0666 less the umask); through
 /// a symlink, the file it names is replaced. A target that is not a regular
 /// file (/dev/null, a FIFO, a terminal) is written in place, and
 /// /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N through the

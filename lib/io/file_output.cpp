@@ -181,6 +181,9 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
   const bool exists = ::stat(path.c_str(), &info) == 0;
   if (exists && S_ISDIR(info.st_mode)) fail(path, "it is a directory");
   if (exists && !S_ISREG(info.st_mode)) return write_in_place(path, -1, write);
+  // A file the caller may not write stays so: renaming over it would need
+  // only the directory's permission.
+  if (exists && ::access(path.c_str(), W_OK) != 0) fail(path, reason(errno));
   // Through a symlink, replace the file it names, not the link.
   std::error_code ec;
   std::filesystem::path target = exists ? std::filesystem::canonical(path, ec) : path;
