@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -433,6 +434,116 @@ TEST_F(Cli, GenZonotope) {
   EXPECT_NE(run("check seg.off").out.find("segment"), std::string::npos);
   expect_usage("gen cube --generators 3");
   expect_usage("gen zonotope --generators 0");
+}
+
+// ---- issue 18: atomic output, readers' limits, messages ------------------------
+
+// Item 6: `cvms sum x.stl x.stl -o x.stl` failed (beyond float) and left
+// x.stl at 0 bytes; `--float` beyond double emptied the output likewise.
+TEST_F(Cli, FailedWriteLeavesTheOldFileByteIdentical) {
+  // A box whose corner is at 2^127 * 1.5: in float range, its double is not.
+  write_text("x.off", "OFF\n4 4 0\n0 0 0\n" + std::string("255211775190703847597530955573826158592") +
+                          " 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  ASSERT_EQ(run("sum x.off x.off -o x.stl").code, 1);  // 2 * 2^127 * 1.5 is beyond float
+  ASSERT_EQ(run("gen cube -o x.stl").code, 0);
+  const std::string before = slurp(file("x.stl"));
+  expect_bad_input("sum x.off x.off -o x.stl", "x.stl: coordinate");
+  EXPECT_EQ(slurp(file("x.stl")), before);
+  // Beyond double with --float.
+  std::string huge = "1" + std::string(400, '0');
+  write_text("huge.off", "OFF\n4 4 0\n0 0 0\n" + huge + " 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  ASSERT_EQ(run("gen cube -o mine.off").code, 0);
+  const std::string mine = slurp(file("mine.off"));
+  expect_bad_input("sum mine.off huge.off --float -o mine.off", "mine.off: ");
+  EXPECT_EQ(slurp(file("mine.off")), mine);
+  // No temporary is left behind.
+  for (const auto& entry : fs::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find(".cvms-"), std::string::npos) << entry.path();
+}
+
+// Item 9: -o /dev/null was refused for want of an extension; --format.
+TEST_F(Cli, OutputFormatFromFormatOptionOrDevice) {
+  EXPECT_EQ(run("gen cube -o /dev/null").code, 0);
+  Outcome to_stdout = run("gen cube -o /dev/stdout");
+  EXPECT_EQ(to_stdout.code, 0) << to_stdout.err;
+  EXPECT_EQ(to_stdout.out.substr(0, 4), "OFF\n");
+  ASSERT_EQ(run("gen cube -o plain --format obj").code, 0);
+  EXPECT_EQ(slurp(file("plain")).substr(0, 2), "v ");
+  Outcome stl = run("gen cube --format stl");
+  EXPECT_EQ(stl.out.size(), 84u + 12 * 50);
+  expect_usage("gen cube -o plain");
+  expect_usage("gen cube -o x.off --format ply");
+}
+
+// Item 9: a failed write to stdout or /dev/full named no file or reason.
+TEST_F(Cli, FailedWritesNameTheFileAndTheReason) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  expect_bad_input("gen cube -o /dev/full", "cannot write '/dev/full': No space left on device");
+#ifdef CVMS_CLI_PATH
+  // run() redirects stdout itself: this one needs stdout on /dev/full.
+  const std::string command =
+      "'" CVMS_CLI_PATH "' gen cube > /dev/full 2> '" + path("full.txt") + "'";
+  const int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+  EXPECT_EQ(slurp(file("full.txt")), "cvms: io: cannot write standard output: No space left on device\n");
+#endif
+  fs::create_directory(file("d.off"));
+  expect_bad_input("gen cube -o d.off", "cannot write 'd.off': it is a directory");
+}
+
+// Item 9: `hull DIR` said "read error after 0 bytes"; an unreadable stdin
+// was "empty input".
+TEST_F(Cli, DirectoriesAndUnreadableStdinAreNamed) {
+  fs::create_directory(file("d.xyz"));
+  expect_bad_input("hull d.xyz", "cannot read 'd.xyz': it is a directory");
+  expect_bad_input("check d.xyz.off", "d.xyz.off");
+  expect_bad_input("check - < /", "cannot read standard input: it is a directory");
+  expect_bad_input("check - <&-", "cannot read standard input: Bad file descriptor");
+  expect_bad_input("hull - 0>/dev/null", "cannot read standard input: it is open for writing only");
+}
+
+// Item 8: /dev/zero as input ends at once; --max-bytes and --max-line-bytes
+// lower the readers' limits (before or after the command name).
+TEST_F(Cli, DevZeroAndTheReadLimitOptions) {
+  expect_bad_input("hull /dev/zero", "/dev/zero:1: a NUL byte at byte 0");
+  ASSERT_EQ(run("gen sphere --subdivisions 2 -o s.off").code, 0);
+  expect_bad_input("--max-bytes 100 check s.off", "input is larger than the limit of 100 bytes");
+  expect_bad_input("check s.off --max-bytes 100", "input is larger than the limit of 100 bytes");
+  expect_bad_input("check s.off --max-line-bytes 8", "s.off:3: line longer than the limit of 8 bytes");
+  EXPECT_EQ(run("check s.off --max-bytes 1000000").code, 0);
+  expect_usage("check s.off --max-bytes -1");
+  expect_usage("check s.off --max-bytes 1e6");
+}
+
+// Item 9: gen prism --points 1000001 passed the CLI range and then exited 1;
+// --seed beyond 2^64-1 or negative was accepted silently.
+TEST_F(Cli, GenCountsAndSeedsOutOfRangeAreUsageErrors) {
+  expect_usage("gen prism --points 1000001");
+  expect_usage("gen random --points 10000001");
+  expect_usage("gen random --seed -1");
+  expect_usage("gen random --seed 18446744073709551616");
+  expect_usage("gen random --seed 1e3");
+  Outcome max_seed = run("gen random --seed 18446744073709551615 --points 5 -o r.off");
+  EXPECT_EQ(max_seed.code, 0) << max_seed.err;
+  EXPECT_EQ(test::describe(load("r.off")),
+            test::describe(shapes::random_hull(std::numeric_limits<std::uint64_t>::max(), 5)));
+}
+
+// Item 9: file names with terminal escape codes were printed raw.
+TEST_F(Cli, ControlCharactersInFileNamesAreEscaped) {
+  Outcome o = run("check \"$(printf 'evil\\033[2J.off')\"");
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_EQ(o.err.find('\x1b'), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("evil\\x1b[2J.off"), std::string::npos) << o.err;
+  // Also in usage errors (a wrong extension, reported by the parser).
+  Outcome usage = run("check \"$(printf 'evil\\033[2J.txt')\"");
+  EXPECT_EQ(usage.code, 2) << usage.err;
+  EXPECT_EQ(usage.err.find('\x1b'), std::string::npos) << usage.err;
+  EXPECT_NE(usage.err.find("evil\\x1b[2J.txt"), std::string::npos) << usage.err;
+  ASSERT_EQ(run("gen cube -o \"$(printf 'new\\nline.off')\"").code, 0);
+  Outcome check = run("check \"$(printf 'new\\nline.off')\"");
+  EXPECT_EQ(check.code, 0) << check.err;
+  EXPECT_NE(check.out.find("new\\x0aline.off: convex polyhedron"), std::string::npos) << check.out;
 }
 
 }  // namespace

@@ -108,17 +108,7 @@ namespace {
 
 using test::throws_error;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double slow_factor = 8.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double slow_factor = 8.0;
-#else
-constexpr double slow_factor = 1.0;
-#endif
-#else
-constexpr double slow_factor = 1.0;
-#endif
+using test::slow_factor;
 
 constexpr std::size_t MiB = std::size_t{1} << 20;
 constexpr std::size_t hundred_mb = 100 * 1000 * 1000;
@@ -356,6 +346,71 @@ TEST(Hostile, MegabytesOfBinaryJunkInEveryReader) {
     }
     std::istringstream in(junk);
     EXPECT_TRUE(throws_error([&] { read_points(in, "junk"); }, ErrorCategory::parse, {"junk:"}));
+  }
+}
+
+// ---- /dev/zero and endless lines (issue 18 item 8) ---------------------------
+
+// /dev/zero peaked at 8.4 GB before the 4 GiB max_bytes error: the line
+// buffer doubled past the limit. A NUL byte now ends a text reader at its
+// first chunk, and the STL reader (which reads whole) reads no more than a
+// binary STL's declared size plus a megabyte.
+TEST(Hostile, DevZeroIsRefusedAtOnceByEveryReader) {
+  for (int reader = 0; reader < 4; ++reader) {
+    SCOPED_TRACE(reader);
+    GeneratedBuffer zeros("", '\0', std::size_t{1} << 40, "");  // a terabyte, never made
+    std::istream in(&zeros);
+    Cost c = measure([&] {
+      EXPECT_TRUE(throws_error(
+          [&] {
+            if (reader == 0) (void)read_off(in, "/dev/zero");
+            if (reader == 1) (void)read_obj(in, "/dev/zero");
+            if (reader == 2) (void)read_points(in, "/dev/zero");
+            if (reader == 3) (void)read_stl(in, "/dev/zero");
+          },
+          ErrorCategory::parse, {"/dev/zero"}));
+    });
+    EXPECT_LT(c.peak, 8 * MiB);
+    EXPECT_LT(c.seconds, 1.0 * slow_factor);
+  }
+  std::ifstream real("/dev/zero", std::ios::binary);
+  if (!real) GTEST_SKIP() << "no /dev/zero";
+  EXPECT_TRUE(throws_error([&] { (void)read_off(real, "/dev/zero"); }, ErrorCategory::parse,
+                           {"/dev/zero:1: a NUL byte at byte 0"}));
+}
+
+// An ASCII STL header followed by zeros: too long to be binary, and a NUL
+// byte is not ASCII, so it ends after the first megabyte.
+TEST(Hostile, SolidFollowedByZerosEndsEarly) {
+  GeneratedBuffer zeros("solid zeros\n", '\0', std::size_t{1} << 40, "");
+  std::istream in(&zeros);
+  Cost c = measure([&] {
+    EXPECT_TRUE(throws_error([&] { (void)read_stl(in, "z.stl"); }, ErrorCategory::parse,
+                             {"z.stl: byte 84:", "a NUL byte in an ASCII STL; not binary either"}));
+  });
+  EXPECT_LT(c.peak, 8 * MiB);
+}
+
+// A line without an end, from a stream: Error(limit) at max_line_bytes, the
+// buffer never past it plus a chunk.
+TEST(Hostile, EndlessLineStopsAtMaxLineBytes) {
+  for (int reader = 0; reader < 3; ++reader) {
+    SCOPED_TRACE(reader);
+    GeneratedBuffer line(reader == 1 ? "v 0 0 0\n#" : "OFF\n", 'a', std::size_t{1} << 40, "");
+    std::istream in(&line);
+    const ReadLimits limits{.max_line_bytes = 4 * MiB};
+    Cost c = measure([&] {
+      EXPECT_TRUE(throws_error(
+          [&] {
+            if (reader == 0) (void)read_off(in, "long", limits);
+            if (reader == 1) (void)read_obj(in, "long", limits);
+            if (reader == 2) (void)read_points(in, "long", limits);
+          },
+          ErrorCategory::limit, {"long:2: line longer than the limit of 4194304 bytes (ReadLimits::max_line_bytes)"}));
+    });
+    // The buffer doubles: the old one and the new, twice the limit, live at once.
+    EXPECT_LT(c.peak, 16 * MiB);
+    EXPECT_LT(c.seconds, 1.0 * slow_factor);
   }
 }
 

@@ -140,7 +140,7 @@ TEST(ReadObjBad, VertexWithFiveValues) {
   EXPECT_TRUE(bad("five_values.obj", ErrorCategory::parse, {"five_values.obj:2:", "vertex 2 has 5 values"}));
 }
 TEST(ReadObjBad, BinaryJunk) {
-  EXPECT_TRUE(bad("binary_junk.obj", ErrorCategory::parse, {"binary_junk.obj:1:", "unknown OBJ statement"}));
+  EXPECT_TRUE(bad("binary_junk.obj", ErrorCategory::parse, {"binary_junk.obj:1:", "a NUL byte at byte 157", "binary data"}));
 }
 
 }  // namespace

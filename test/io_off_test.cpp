@@ -272,7 +272,7 @@ TEST(ReadOffBad, MissingCoordinate) {
 }
 TEST(ReadOffBad, BinaryJunk) {
   EXPECT_TRUE(
-      bad("binary_junk.off", ErrorCategory::parse, {"binary_junk.off:1:", "expected an 'OFF' header"}));
+      bad("binary_junk.off", ErrorCategory::parse, {"binary_junk.off:1:", "a NUL byte at byte 157", "binary data"}));
 }
 
 }  // namespace

@@ -23,7 +23,11 @@
 ///    the line and the token. "nan", "inf", "1.#INF", "-1.#IND", "1.#QNAN"
 ///    and the like raise Error(parse) naming the line. Ignored values
 ///    (colors, normals, OBJ w) follow the same rules.
-///  - Text formats are line based; '\n' and "\r\n" end lines. Messages name
+///  - Text formats are line based; '\n' and "\r\n" end lines (an error on a
+///    line that holds a carriage return says that one alone ends no line). A
+///    NUL byte in a text format is Error(parse) naming its line and byte
+///    offset, raised as soon as it is read (so /dev/zero ends at once); a
+///    line longer than ReadLimits::max_line_bytes is Error(limit). Messages name
 ///    "<source>:<line>: ..." with 1-based lines, OFF vertices/faces 0-based,
 ///    OBJ vertices/faces 1-based (as in the file); binary STL messages name
 ///    "<source>: byte <offset>: ...".
@@ -41,8 +45,9 @@
 ///    the line. Nothing is reserved beyond a small fixed amount before the data
 ///    is actually read.
 ///  - OFF: the header keyword is [ST][C][N]OFF (4OFF, nOFF and "OFF BINARY"
-///    are rejected); the counts "V F [E]" may follow on the same line; E is
-///    ignored. One vertex per line: x y z, followed by exactly the values the
+///    are rejected); the counts "V F [E]" are free-form: on the keyword's
+///    line or on lines of their own (E on F's line, or alone on the next
+///    one); E is ignored. One vertex per line: x y z, followed by exactly the values the
 ///    prefixes announce (ST: 2, C: 3 or 4, N: 3), which are ignored; a plain OFF
 ///    vertex line with a 4th value is rejected (it may be homogeneous). One face
 ///    per line: n i_1 .. i_n, then up to 4 numeric color values (ignored).
@@ -65,8 +70,10 @@
 ///    normals and attribute bytes are ignored. ASCII keywords are matched
 ///    case-insensitively; several solids in one file are concatenated.
 ///  - Memory stays within a small multiple of the input size and of
-///    max_bytes: a line is buffered whole, so a single 100 MB line costs about
-///    100-200 MB (set max_bytes lower to refuse such inputs early). Each number
+///    max_line_bytes: a line is buffered whole, so a single 100 MB line costs
+///    about 100-300 MB (set max_line_bytes lower to refuse such inputs early).
+///    STL, read whole, reads no more than a binary file's declared size plus
+///    1 MiB when the input does not start with "solid". Each number
 ///    costs about 100 bytes however short its text (a GMP rational and two
 ///    heap blocks), so one-digit coordinates cost about 48 times their text;
 ///    the digits of all numbers take at most 32 bytes per input byte
@@ -91,6 +98,13 @@ struct ReadLimits {
   std::uint64_t max_vertices = 50'000'000;           ///< points in a soup (never more than 2^32-1)
   std::uint64_t max_faces = 100'000'000;             ///< faces (STL: triangles) in a soup
   std::uint64_t max_bytes = std::uint64_t{4} << 30;  ///< 4 GiB
+  /// Longest line of a text format (OFF, OBJ, points, ASCII STL), in bytes;
+  /// a longer one raises Error(limit) as soon as it is seen. A line is
+  /// buffered whole, so this bounds the reader's buffer: at most about 3
+  /// times the limit is allocated while the buffer grows (by doubling). A
+  /// 1,000,000-index face needs about 8 MB, three numbers of
+  /// max_number_chars 3 MB.
+  std::uint64_t max_line_bytes = std::uint64_t{256} << 20;
   /// Longest accepted number token (digits of one coordinate). Exact values
   /// of a million digits are far beyond anything an exact computation on
   /// sane inputs produces, and parsing them costs superlinear time.
@@ -136,7 +150,8 @@ PolygonSoup read_obj(std::istream& in, std::string_view source, const ReadLimits
 /// converted exactly; vertices shared between triangles are merged by exact position.
 /// \throw Error(parse) naming the line (ASCII) or byte offset (binary);
 /// \throw Error(limit) beyond `limits` (the input is read whole, up to max_bytes).
-/// Complexity: expected linear in the input size (vertices merged by hashing).
+/// Complexity: O(n log n) in the input size whatever the values (vertices
+/// merged by sorting: binary by float bits, ASCII in a balanced tree).
 PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 /// Dispatches to read_off, read_obj or read_stl; their errors.
 PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits = {});
@@ -184,20 +199,45 @@ void write_stl(std::ostream& out, const PolygonSoup& soup);
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a file in the format of its extension (format_from_extension).
+/// The write is atomic: the bytes go to a new temporary file in the target's
+/// directory (".<name>.cvms-<random>.tmp"), which is renamed over the target
+/// only once it is complete and closed; on any failure (a coordinate the
+/// format cannot hold, a full disk) the temporary is removed and an
+/// existing file is left byte-identical. The new file gets the mode of the
+/// file it replaces (which must be writable: a read-only file is refused,
+/// not replaced), or that of any new file (0666 less the umask); through
+/// a symlink, the file it names is replaced. A target that is not a regular
+/// file (/dev/null, a FIFO, a terminal) is written in place, and
+/// /dev/stdout, /dev/stderr, /dev/fd/N and /proc/self/fd/N through the
+/// descriptor they name (so a redirection's O_APPEND is kept).
 /// \throw Error(invalid_argument) for an unknown extension, and as the writers
 ///   with the message prefixed by "<path>: ";
-/// \throw Error(io) naming the file if it cannot be written.
+/// \throw Error(io) "cannot write '<path>': <reason>" if the target is a
+///   directory, the temporary file cannot be created (an unwritable
+///   directory), or a write, close or rename fails (the reason is the
+///   system's, e.g. "No space left on device").
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup,
                 Coordinates coordinates = Coordinates::exact);
+/// As write_file(path, soup, coordinates), in the given format whatever the
+/// path's extension (for paths without one, such as /dev/stdout).
+/// \throw Error(invalid_argument), Error(io) as write_file.
+void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,
+                Coordinates coordinates = Coordinates::exact);
 /// Writes a polyhedron's vertices and facets (p.to_soup()) to a file in the
-/// format of its extension; with Coordinates::exact and OFF or OBJ,
-/// read_polyhedron gives back the same polyhedron.
+/// format of its extension, atomically (see write_file for soups); with
+/// Coordinates::exact and OFF or OBJ, read_polyhedron gives back the same
+/// polyhedron.
 /// \throw Error(invalid_argument) for an unknown extension, and (naming the
 ///   file) for a coordinate beyond the double range with Coordinates::double_
-///   or beyond the float32 range in STL;
-/// \throw Error(io) naming the file if it cannot be written.
+///   or beyond the float32 range in STL; an existing file is left untouched;
+/// \throw Error(io) naming the file and the reason if it cannot be written.
 /// Complexity: linear in the size of the output.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p,
+                Coordinates coordinates = Coordinates::exact);
+/// As write_file(path, p, coordinates), in the given format whatever the
+/// path's extension.
+/// \throw Error(invalid_argument), Error(io) as write_file.
+void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                 Coordinates coordinates = Coordinates::exact);
 
 /// Reads a file in the format of its extension (read_file) and validates it

@@ -37,5 +37,18 @@ ConvexSet read_convex_set(const std::filesystem::path& path, const ReadLimits& l
 ///   write_file(path, soup);
 /// \throw Error(io) naming the file if it cannot be written.
 void write_file(const std::filesystem::path& path, const ConvexSet& set, Coordinates coordinates = Coordinates::exact);
+/// As write_file(path, set, coordinates), in the given format whatever the
+/// path's extension (for paths without one, such as /dev/stdout); atomic like
+/// write_file of a soup.
+/// \throw Error(invalid_argument) for a set the format cannot hold (as above)
+///   and as write_file(path, soup, format);
+/// \throw Error(io) naming the file if it cannot be written.
+void write_file(const std::filesystem::path& path, const ConvexSet& set, FileFormat format,
+                Coordinates coordinates = Coordinates::exact);
+/// Writes a set to a stream in the given format, by the same conventions.
+/// \throw Error(invalid_argument) for a set the format cannot hold (naming
+///   `name`) and as write(out, soup, format).
+void write(std::ostream& out, const ConvexSet& set, FileFormat format, const std::string& name,
+           Coordinates coordinates = Coordinates::exact);
 
 }  // namespace cvms

@@ -116,6 +116,11 @@ struct Mat3 {
 };
 
 /// Hash of an exact value; equal values hash equal (GMP keeps rationals canonical).
+/// Deterministic and made of invertible mixing steps, so it is not
+/// collision resistant: anyone can make many values with one hash, and a
+/// hash container keyed by untrusted values can be driven quadratic. The
+/// library never keys untrusted input by it (readers and Mesh::from_soup
+/// deduplicate by sorting); sort, or use an ordered container, for such data.
 std::size_t hash_value(const Rational& value) noexcept;
 /// Hash of an exact 2D vector, for unordered containers (see std::hash<Vec2>).
 std::size_t hash_value(const Vec2& v) noexcept;

@@ -7,6 +7,7 @@
 #include <system_error>
 #include <utility>
 
+#include "file_output.hpp"
 #include "io_reader.hpp"
 
 namespace cvms {
@@ -98,29 +99,29 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
   throw Error(ErrorCategory::invalid_argument, "unknown file format");
 }
 
-void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coordinates coordinates) {
-  FileFormat format = format_from_extension(path);
-  errno = 0;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    int error = errno;
-    throw Error(ErrorCategory::io,
-                "cannot write '" + path.string() + "'" +
-                    (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
-  }
+void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,
+                Coordinates coordinates) {
   try {
-    write(out, soup, format, coordinates);
+    io_detail::write_atomically(path, [&](std::ostream& out) { write(out, soup, format, coordinates); });
   } catch (const Error& e) {
-    // The stream writers name a face, index or coordinate, never the file.
-    if (e.category() != ErrorCategory::io) throw Error(e.category(), path.string() + ": " + e.message());
-    throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'");
+    // write_atomically names the file in its io errors; the stream writers
+    // name a face, index or coordinate, never the file.
+    if (e.category() == ErrorCategory::io) throw;
+    throw Error(e.category(), path.string() + ": " + e.message());
   }
-  out.close();
-  if (!out) throw Error(ErrorCategory::io, "cannot write '" + path.string() + "'");
+}
+
+void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coordinates coordinates) {
+  write_file(path, soup, format_from_extension(path), coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, Coordinates coordinates) {
-  write_file(path, p.to_soup(), coordinates);
+  write_file(path, p.to_soup(), format_from_extension(path), coordinates);
+}
+
+void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
+                Coordinates coordinates) {
+  write_file(path, p.to_soup(), format, coordinates);
 }
 
 ConvexPolyhedron to_polyhedron(PolygonSoup soup, std::string_view source) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // OFF reader and writer. The reader is line based: the header keyword
-// ([ST][C][N]OFF), the counts "V F [E]" (on the header line or the next
-// one), one vertex per line, one face "n i_1 ... i_n [color]" per line; '#'
+// ([ST][C][N]OFF), the counts "V F [E]" (free-form: on the header line or
+// the lines after it), one vertex per line, one face "n i_1 ... i_n [color]" per line; '#'
 // starts a comment anywhere and blank lines are skipped. Counts are checked
 // against ReadLimits but never used to allocate more than a small fixed
 // reserve, so a header that lies costs nothing.
@@ -74,6 +74,48 @@ const char* extra_value_name(const OffHeader& h) {
   return h.color ? "color value" : h.normal ? "normal component" : "texture coordinate";
 }
 
+struct OffCounts {
+  std::uint64_t vertices = 0;
+  std::uint64_t faces = 0;
+};
+
+// The next count token: the rest of the current line, else the next content line.
+std::string_view next_count_token(LineReader& reader, Tokenizer& tokens, const char* expected) {
+  std::string_view token = tokens.next();
+  if (token.empty() && !next_content_line(reader, tokens, token))
+    fail_end(reader, std::string("expected the ") + expected);
+  return token;
+}
+
+// The counts "V F [E]" after the keyword (`token` is the first token after
+// it, or empty). The format is free-form: V and F may each be on the header
+// line or on lines of their own; E is taken from F's line, or from a line
+// holding nothing else right after a line that held F alone (a vertex line
+// has at least 3 values, so that line cannot be one).
+OffCounts parse_off_counts(LineReader& reader, Tokenizer& tokens, std::string_view token) {
+  if (token.empty() && !next_content_line(reader, tokens, token))
+    fail_end(reader, "expected the counts 'V F E'");
+  OffCounts counts;
+  counts.vertices = parse_count(reader, token, "vertex");
+  const std::uint64_t line_of_vertices = reader.line_number();
+  counts.faces = parse_count(reader, next_count_token(reader, tokens, "face count"), "face");
+  if (std::string_view edges = tokens.next(); !edges.empty()) {
+    parse_count(reader, edges, "edge");
+  } else if (reader.line_number() != line_of_vertices) {
+    // F stood alone on its line: E may stand alone on the next one.
+    std::string_view first;
+    if (next_content_line(reader, tokens, first)) {
+      if (tokens.at_end() && parse_unsigned(first))
+        parse_count(reader, first, "edge");
+      else
+        reader.unread();
+    }
+    return counts;
+  }
+  if (!tokens.at_end()) reader.fail("unexpected " + quote(tokens.next()) + " after the counts 'V F E'");
+  return counts;
+}
+
 }  // namespace
 
 bool is_off_keyword(std::string_view token) { return parse_off_keyword(token).has_value(); }
@@ -89,16 +131,11 @@ PolygonSoup parse_off(LineReader& reader) {
   // replaces (found by fuzzing: a heap use-after-free in a later message).
   const std::string keyword(first);
 
-  // Counts follow on the header line or on the next content line.
   std::string_view token = tokens.next();
   if (token == "BINARY") reader.fail("binary OFF is not supported");
-  if (token.empty()) {
-    if (!next_content_line(reader, tokens, token)) fail_end(reader, "expected the counts 'V F E'");
-  }
-  std::uint64_t num_vertices = parse_count(reader, token, "vertex");
-  std::uint64_t num_faces = parse_count(reader, tokens.next(), "face");
-  if (std::string_view edges = tokens.next(); !edges.empty()) parse_count(reader, edges, "edge");
-  if (!tokens.at_end()) reader.fail("unexpected " + quote(tokens.next()) + " after the counts 'V F E'");
+  const OffCounts counts = parse_off_counts(reader, tokens, token);
+  const std::uint64_t num_vertices = counts.vertices;
+  const std::uint64_t num_faces = counts.faces;
   check_vertex_limit(reader, num_vertices);
   check_face_limit(reader, num_faces, 0);
 

@@ -146,22 +146,53 @@ bool LineReader::next(std::string_view& line) {
       scanned_ -= begin_;
       begin_ = 0;
     }
-    if (buffer_.size() - end_ < chunk_size) buffer_.resize(std::max(buffer_.size() * 2, end_ + chunk_size));
+    if (end_ > limits_.max_line_bytes) fail_long_line();
+    if (buffer_.size() - end_ < chunk_size) {
+      // Doubling, but never beyond the longest line allowed plus a chunk.
+      const std::uint64_t most = std::min(limits_.max_line_bytes, limits_.max_bytes) + chunk_size + 1;
+      buffer_.resize(static_cast<std::size_t>(
+          std::max<std::uint64_t>(std::min<std::uint64_t>(buffer_.size() * 2, most), end_ + chunk_size)));
+    }
     std::size_t got = bytes_ ? bytes_->read(buffer_.data() + end_, buffer_.size() - end_) : 0;
     if (got == 0) eof_ = true;
+    if (const void* nul = std::memchr(buffer_.data() + end_, '\0', got); nul != nullptr)
+      fail_binary(static_cast<std::size_t>(static_cast<const char*>(nul) - buffer_.data()));
     end_ += got;
   }
+  if (line.size() > limits_.max_line_bytes) fail_long_line();
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   if (line_number_ == 0 && line.substr(0, 3) == "\xEF\xBB\xBF")
     line.remove_prefix(3);  // UTF-8 byte order mark
   ++line_number_;
   last_ = line;
+  carriage_return_inside_ = line.find('\r') != std::string_view::npos;
   return true;
 }
 
+void LineReader::fail_long_line() const {
+  throw Error(ErrorCategory::limit, std::string(source()) + ":" + std::to_string(line_number_ + 1) +
+                                        ": line longer than the limit of " +
+                                        std::to_string(limits_.max_line_bytes) +
+                                        " bytes (ReadLimits::max_line_bytes)");
+}
+
+void LineReader::fail_binary(std::size_t at) const {
+  const auto begin = buffer_.begin() + static_cast<std::ptrdiff_t>(begin_);
+  const auto line = line_number_ + 1 +
+                    static_cast<std::uint64_t>(std::count(begin, buffer_.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+  throw Error(ErrorCategory::parse, std::string(source()) + ":" + std::to_string(line) + ": a NUL byte at byte " +
+                                        std::to_string(buffer_offset_ + at) +
+                                        ": binary data where text is expected");
+}
+
 void LineReader::fail(std::string_view message, ErrorCategory category) const {
-  throw Error(category,
-              std::string(source()) + ":" + std::to_string(line_number_) + ": " + std::string(message));
+  std::string text = std::string(source()) + ":" + std::to_string(line_number_) + ": " + std::string(message);
+  // A '\r' inside a line (line ends are stripped of theirs) means the file
+  // ends its lines with '\r' alone (classic Mac OS), so the whole file is one
+  // line and the error above seems unrelated: say why.
+  if (carriage_return_inside_)
+    text += " (the line holds a carriage return: lines must end in '\\n' or \"\\r\\n\", not '\\r' alone)";
+  throw Error(category, text);
 }
 
 bool LineReader::add_number_bits(std::uint64_t bits) noexcept {

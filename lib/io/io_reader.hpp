@@ -55,7 +55,8 @@ class ByteSource {
 /// Splits the input into lines ('\n' or "\r\n"). A line is returned as a view
 /// into an internal buffer that stays valid until the next call to next().
 /// The buffer only grows to hold the longest line, so memory is bounded by
-/// the input size and by limits.max_bytes.
+/// the input size and by limits.max_line_bytes (a longer line is
+/// Error(limit)). Input read from a stream must hold no NUL byte.
 class LineReader {
  public:
   LineReader(std::istream& in, std::string_view source, const ReadLimits& limits)
@@ -75,6 +76,12 @@ class LineReader {
 
   /// Error(category) with "<source>:<line>: <message>".
   [[noreturn]] void fail(std::string_view message, ErrorCategory category = ErrorCategory::parse) const;
+  /// Error(limit): the line being read is longer than limits().max_line_bytes.
+  [[noreturn]] void fail_long_line() const;
+  /// Error(parse) naming the line and byte offset of the NUL byte at
+  /// buffer_[at] (text formats hold none; binary junk such as /dev/zero is
+  /// refused at its first chunk).
+  [[noreturn]] void fail_binary(std::size_t at) const;
 
   /// Bytes of input up to the end of the line last returned by next().
   [[nodiscard]] std::uint64_t bytes_through_line() const noexcept { return line_end_; }
@@ -102,6 +109,7 @@ class LineReader {
   Rational scratch_;
   bool eof_ = false;
   bool replay_ = false;
+  bool carriage_return_inside_ = false;  // in the last line (kept: last_ may dangle at the end)
   std::string_view last_;
   std::uint64_t line_number_ = 0;
 };

@@ -4,7 +4,8 @@
 // needs the size: a binary file is exactly 84 + 50 n bytes for the n its
 // header declares, and that test wins even when the 80-byte header starts
 // with "solid" (many exporters write such headers). Vertices are merged by
-// exact position, in order of first appearance.
+// exact position, in order of first appearance, by sorting (never by
+// hashing: an input could choose colliding keys).
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -12,10 +13,13 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <unordered_map>
+#include <map>
+#include <optional>
+#include <vector>
 
 #include "io_reader.hpp"
 #include "io_writer.hpp"
+#include "representation_order.hpp"
 
 namespace cvms {
 namespace io_detail {
@@ -54,19 +58,62 @@ bool starts_with_solid(const std::string& data) {
   throw Error(category, std::string(source) + ": byte " + std::to_string(offset) + ": " + message);
 }
 
-struct FloatKey {
-  std::uint32_t bits[3];
-  friend bool operator==(const FloatKey& a, const FloatKey& b) {
-    return a.bits[0] == b.bits[0] && a.bits[1] == b.bits[1] && a.bits[2] == b.bits[2];
-  }
+// A corner's position as float bit patterns (-0 as +0), with the corner's
+// number in file order.
+struct Corner {
+  std::array<std::uint32_t, 3> bits;
+  std::uint32_t index;
 };
-struct FloatKeyHash {
-  std::size_t operator()(const FloatKey& k) const noexcept {
-    std::uint64_t h = 0x9e3779b97f4a7c15ull;
-    for (std::uint32_t b : k.bits) h = (h ^ b) * 0x100000001b3ull + (h >> 29);
-    return static_cast<std::size_t>(h);
-  }
+
+// The corners' float bits in file order, checked finite; `first_bad` is the
+// first corner with a non-finite coordinate (or `corners.size()`), so that
+// errors still come in file order.
+struct BinaryCorners {
+  std::vector<Corner> corners;
+  std::size_t first_bad;
+  std::size_t bad_at = 0;  // byte offset of the first non-finite coordinate
+  bool bad_is_nan = false;
 };
+
+// The bits of a float coordinate as a position: -0 and +0 are the same.
+std::uint32_t position_bits(std::uint32_t bits) { return bits == 0x80000000u ? 0 : bits; }
+
+// Byte offset of corner c (3 per triangle).
+std::size_t corner_offset(std::size_t c) { return header_size + record_size * (c / 3) + 12 + 12 * (c % 3); }
+
+BinaryCorners load_corners(const std::string& data, std::uint32_t count) {
+  BinaryCorners out{std::vector<Corner>(std::size_t{count} * 3), std::size_t{count} * 3};
+  for (std::size_t c = 0; c < out.corners.size(); ++c) {
+    const std::size_t at = corner_offset(c);
+    Corner& corner = out.corners[c];
+    corner.index = static_cast<std::uint32_t>(c);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t bits = load_u32_le(data, at + 4 * k);
+      const float value = std::bit_cast<float>(bits);
+      if (!std::isfinite(value) && out.first_bad == out.corners.size()) {
+        out.first_bad = c;
+        out.bad_at = at + 4 * k;
+        out.bad_is_nan = std::isnan(value);
+      }
+      corner.bits[k] = position_bits(bits);
+    }
+  }
+  return out;
+}
+
+// For each corner, the first corner (in file order) at the same position:
+// corners sorted by (bits, index), so O(n log n) whatever the values (an
+// unordered_map went quadratic on keys colliding in its buckets, issue 18).
+std::vector<std::uint32_t> first_corner_at_same_position(std::vector<Corner> corners) {
+  std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
+    return a.bits != b.bits ? a.bits < b.bits : a.index < b.index;
+  });
+  std::vector<std::uint32_t> first(corners.size());
+  for (std::size_t k = 0; k < corners.size(); ++k)
+    first[corners[k].index] =
+        k > 0 && corners[k - 1].bits == corners[k].bits ? first[corners[k - 1].index] : corners[k].index;
+  return first;
+}
 
 PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::string_view source,
                          const ReadLimits& limits) {
@@ -78,40 +125,36 @@ PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::stri
     fail_at(source, 80, "more than 2^32-1 face indices in total", ErrorCategory::limit);
   const std::uint64_t max_vertices =
       std::min<std::uint64_t>(limits.max_vertices, std::numeric_limits<std::uint32_t>::max());
+  // The size check of the caller proved that the input holds `count` triangles.
+  BinaryCorners loaded = load_corners(data, count);
+  const std::size_t num_corners = loaded.corners.size();
+  const std::vector<std::uint32_t> first = first_corner_at_same_position(std::move(loaded.corners));
   PolygonSoup soup;
-  // The size check above proved that the input holds `count` triangles.
-  soup.face_offsets.reserve(std::size_t{count} + 1);
-  soup.face_indices.reserve(std::size_t{count} * 3);
-  std::unordered_map<FloatKey, std::uint32_t, FloatKeyHash> index_of;
+  soup.face_indices.resize(num_corners);
   PointBuffer points;
-  for (std::uint32_t t = 0; t < count; ++t) {
-    const std::size_t record = header_size + record_size * t;
-    for (std::size_t k = 0; k < 3; ++k) {
-      FloatKey key{};
-      for (std::size_t c = 0; c < 3; ++c) {
-        const std::size_t at = record + 12 + 12 * k + 4 * c;
-        std::uint32_t bits = load_u32_le(data, at);
-        if (!std::isfinite(std::bit_cast<float>(bits)))
-          fail_at(source, at,
-                  "triangle " + std::to_string(t) + " vertex " + std::to_string(k) +
-                      " has a non-finite coordinate (" +
-                      (std::isnan(std::bit_cast<float>(bits)) ? "nan" : "inf") + ")");
-        if (bits == 0x80000000u) bits = 0;  // -0 and +0 are the same position
-        key.bits[c] = bits;
-      }
-      auto [it, inserted] = index_of.try_emplace(key, static_cast<std::uint32_t>(points.size()));
-      if (inserted) {
-        if (points.size() + 1 > max_vertices)
-          fail_at(source, record + 12 + 12 * k,
-                  "more than " + std::to_string(max_vertices) + " distinct vertices (the limit)",
-                  ErrorCategory::limit);
-        Vec3& p = points.append();
-        for (int c = 0; c < 3; ++c) p[c] = rational_from_float(std::bit_cast<float>(key.bits[c]));
-      }
-      soup.face_indices.push_back(it->second);
+  for (std::size_t c = 0; c < num_corners; ++c) {
+    const std::size_t t = c / 3;
+    if (c == loaded.first_bad)
+      fail_at(source, loaded.bad_at,
+              "triangle " + std::to_string(t) + " vertex " + std::to_string(c % 3) +
+                  " has a non-finite coordinate (" + (loaded.bad_is_nan ? "nan" : "inf") + ")");
+    if (first[c] != c) {
+      soup.face_indices[c] = soup.face_indices[first[c]];
+      continue;
     }
-    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
+    if (points.size() + 1 > max_vertices)
+      fail_at(source, corner_offset(c),
+              "more than " + std::to_string(max_vertices) + " distinct vertices (the limit)",
+              ErrorCategory::limit);
+    soup.face_indices[c] = static_cast<std::uint32_t>(points.size());
+    Vec3& p = points.append();
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t bits = load_u32_le(data, corner_offset(c) + 4 * static_cast<std::size_t>(k));
+      p[k] = rational_from_float(std::bit_cast<float>(position_bits(bits)));
+    }
   }
+  soup.face_offsets.resize(std::size_t{count} + 1);
+  for (std::size_t t = 0; t <= count; ++t) soup.face_offsets[t] = static_cast<std::uint32_t>(3 * t);
   soup.points = points.take();
   return soup;
 }
@@ -148,7 +191,10 @@ class TokenStream {
 PolygonSoup parse_ascii(LineReader& reader) {
   TokenStream tokens(reader);
   PolygonSoup soup;
-  std::unordered_map<Vec3, std::uint32_t> index_of;
+  // A balanced tree of the distinct points (which never move in the
+  // PointBuffer) in an exact order: O(log n) per vertex whatever the values,
+  // where a hash map went quadratic on points sharing one hash (issue 18).
+  std::map<const Vec3*, std::uint32_t, detail::RepresentationLess> index_of;
   PointBuffer points;
   Vec3 p;
   tokens.expect("solid", [] { return std::string("at the start of an ASCII STL"); });
@@ -188,8 +234,10 @@ PolygonSoup parse_ascii(LineReader& reader) {
       auto it = index_of.find(p);
       if (it == index_of.end()) {
         check_vertex_limit(reader, points.size() + 1);
-        it = index_of.emplace(p, static_cast<std::uint32_t>(points.size())).first;
-        points.append() = std::move(p);
+        const auto index = static_cast<std::uint32_t>(points.size());
+        Vec3& stored = points.append();
+        stored = std::move(p);
+        it = index_of.emplace(&stored, index).first;
       }
       soup.face_indices.push_back(it->second);
     }
@@ -244,31 +292,104 @@ std::array<float, 3> unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
 }  // namespace
 }  // namespace io_detail
 
+namespace io_detail {
+namespace {
+
+// Appends up to n bytes of `bytes` to data; false if fewer were left.
+bool read_more(ByteSource& bytes, std::string& data, std::uint64_t n) {
+  constexpr std::size_t chunk = std::size_t{1} << 16;
+  while (n > 0) {
+    const auto want = static_cast<std::size_t>(std::min<std::uint64_t>(n, chunk));
+    const std::size_t old = data.size();
+    data.resize(old + want);
+    const std::size_t got = bytes.read(data.data() + old, want);
+    data.resize(old + got);
+    if (got == 0) return false;
+    n -= got;
+  }
+  return true;
+}
+
+// Bytes left in `bytes`, counted (not kept) up to `cap`; nullopt beyond it.
+std::optional<std::uint64_t> count_rest(ByteSource& bytes, std::uint64_t cap) {
+  std::string sink(std::size_t{1} << 16, '\0');
+  std::uint64_t total = 0;
+  while (total <= cap) {
+    const std::size_t got = bytes.read(sink.data(), sink.size());
+    if (got == 0) return total;
+    total += got;
+  }
+  return std::nullopt;
+}
+
+bool all_blank(std::string_view text) {
+  return text.find_first_not_of(" \t\r\n\xEF\xBB\xBF") == std::string_view::npos;
+}
+
+std::string count_mismatch(std::uint32_t count, std::uint64_t expected, const std::string& size) {
+  return "the binary STL header declares " + std::to_string(count) + " triangles, which need " +
+         std::to_string(expected) + " bytes, but the input has " + size;
+}
+
+// An input that does not start with "solid" can only be binary: read no more
+// than its declared size and a bounded look past it (so /dev/zero, whose
+// header declares 0 triangles, ends after a megabyte).
+PolygonSoup read_binary_only(ByteSource& bytes, std::string data, std::string_view source,
+                             const ReadLimits& limits) {
+  const std::uint32_t count = load_u32_le(data, 80);
+  const std::uint64_t expected = header_size + record_size * std::uint64_t{count};
+  const bool longer = read_more(bytes, data, expected + 1 - data.size()) && data.size() > expected;
+  if (!longer && data.size() == expected) return parse_binary(data, count, source, limits);
+  if (data.size() < expected) {
+    const std::uint64_t complete = (data.size() - header_size) / record_size;
+    fail_at(source, header_size + complete * record_size,
+            count_mismatch(count, expected, std::to_string(data.size())) + " (truncated in triangle " +
+                std::to_string(complete) + ")");
+  }
+  constexpr std::uint64_t look_past = std::uint64_t{1} << 20;
+  const std::optional<std::uint64_t> rest = count_rest(bytes, look_past);
+  if (!rest)
+    fail_at(source, expected,
+            count_mismatch(count, expected, "more than " + std::to_string(expected + look_past)) +
+                " (extra bytes after the last triangle)");
+  const std::uint64_t size = data.size() + *rest;
+  fail_at(source, expected,
+          count_mismatch(count, expected, std::to_string(size)) + " (" + std::to_string(size - expected) +
+              " bytes after the last triangle)");
+}
+
+}  // namespace
+}  // namespace io_detail
+
 PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits) {
   using namespace io_detail;
   ByteSource bytes(in, source, limits.max_bytes);
-  std::string data = bytes.read_all();
+  std::string data;
+  read_more(bytes, data, header_size);
   if (data.empty()) throw Error(ErrorCategory::parse, std::string(source) + ": empty input");
+  if (data.size() == header_size && !starts_with_solid(data) && !all_blank(data))
+    return read_binary_only(bytes, std::move(data), source, limits);
+  // ASCII, or binary with a header that starts with "solid": read whole, but
+  // once it is too long to be binary, a NUL byte rules out ASCII too.
+  std::optional<std::uint64_t> expected;
+  if (data.size() == header_size) expected = header_size + record_size * std::uint64_t{load_u32_le(data, 80)};
+  std::size_t checked = data.size();
+  while (read_more(bytes, data, std::uint64_t{1} << 20)) {
+    if (!expected || data.size() <= *expected) continue;
+    if (const void* nul = std::memchr(data.data() + checked, '\0', data.size() - checked); nul != nullptr)
+      fail_at(source, static_cast<std::uint64_t>(static_cast<const char*>(nul) - data.data()),
+              "a NUL byte in an ASCII STL; not binary either: " +
+                  count_mismatch(load_u32_le(data, 80), *expected, "more than " + std::to_string(*expected)));
+    checked = data.size();
+  }
   const bool solid = starts_with_solid(data);
   std::string binary_hint;
   if (data.size() >= header_size) {
     const std::uint32_t count = load_u32_le(data, 80);
-    const std::uint64_t expected = header_size + record_size * std::uint64_t{count};
-    if (expected == data.size()) return parse_binary(data, count, source, limits);
-    std::string mismatch = "the binary STL header declares " + std::to_string(count) +
-                           " triangles, which need " + std::to_string(expected) +
-                           " bytes, but the input has " + std::to_string(data.size());
-    if (!solid) {
-      if (expected > data.size()) {
-        std::uint64_t complete = (data.size() - header_size) / record_size;
-        fail_at(source, header_size + complete * record_size,
-                mismatch + " (truncated in triangle " + std::to_string(complete) + ")");
-      }
-      fail_at(source, expected,
-              mismatch + " (" + std::to_string(data.size() - expected) + " bytes after the last triangle)");
-    }
-    if (std::memchr(data.data(), '\0', data.size()) != nullptr)
-      binary_hint = "; not binary either: " + mismatch;
+    if (*expected == data.size()) return parse_binary(data, count, source, limits);
+    const std::string mismatch = count_mismatch(count, *expected, std::to_string(data.size()));
+    if (!solid) fail_at(source, std::min<std::uint64_t>(*expected, data.size()), mismatch);
+    if (std::memchr(data.data(), '\0', data.size()) != nullptr) binary_hint = "; not binary either: " + mismatch;
   } else if (!solid) {
     fail_at(source, 0,
             "input of " + std::to_string(data.size()) +

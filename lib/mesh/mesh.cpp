@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <string>
-#include <unordered_set>
 #include <utility>
 
 #include "cvms/error.hpp"
 #include "element_names.hpp"
 #include "no_index.hpp"
+#include "representation_order.hpp"
 
 namespace cvms {
 namespace {
@@ -74,18 +74,33 @@ void canonicalize_points(std::vector<Vec3>& points) {
     for (int i = 0; i < 3; ++i) p[i].canonicalize();
 }
 
-// Duplicate points: a hash set of indices keyed by exact position.
+// Duplicate points: indices sorted by exact position (ties by index), so the
+// cost is O(n log n) whatever the values (a hash set went quadratic on
+// points that share one hash, issue 18). Reports the same pair a scan in
+// index order would find first: the earliest second occurrence of any
+// position, with the first occurrence of that position.
 // \pre the coordinates are canonical.
 void check_distinct_points(const std::vector<Vec3>& pts) {
   const auto n = static_cast<std::uint32_t>(pts.size());
-  auto hash = [&pts](std::uint32_t i) { return hash_value(pts[i]); };
-  auto equal = [&pts](std::uint32_t a, std::uint32_t b) { return pts[a] == pts[b]; };
-  std::unordered_set<std::uint32_t, decltype(hash), decltype(equal)> seen(n, hash, equal);
-  for (std::uint32_t v = 0; v < n; ++v) {
-    auto [it, inserted] = seen.insert(v);
-    if (!inserted)
-      fail("vertices " + str(*it) + " and " + str(v) + " are at the same point (duplicate point)");
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t v = 0; v < n; ++v) order[v] = v;
+  const detail::RepresentationLess less;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    if (less(pts[a], pts[b])) return true;
+    return !less(pts[b], pts[a]) && a < b;
+  });
+  std::uint32_t first = no_index, second = no_index;
+  for (std::uint32_t k = 0; k + 1 < n; ++k) {
+    const std::uint32_t a = order[k], b = order[k + 1];
+    // Within a run of equal points, a is the first occurrence exactly when
+    // the run starts at k; b, its successor, is the run's second occurrence.
+    if (b < second && pts[a] == pts[b] && (k == 0 || !(pts[order[k - 1]] == pts[a]))) {
+      first = a;
+      second = b;
+    }
   }
+  if (second != no_index)
+    fail("vertices " + str(first) + " and " + str(second) + " are at the same point (duplicate point)");
 }
 
 // Corners: the directed edge of corner c runs from indices[c] to

@@ -29,6 +29,17 @@ std::vector<Vec3> read_point_file(const std::filesystem::path& path, const ReadL
   return read_points(in, path.string(), limits);
 }
 
+// OBJ cannot hold the empty set, STL nothing below a polygon: refused before
+// anything is written.
+void check_format_holds(const ConvexSet& set, FileFormat format, const std::string& name) {
+  if (set.empty() && format == FileFormat::obj)
+    throw Error(ErrorCategory::invalid_argument,
+                name + ": OBJ cannot hold the empty set (an OBJ without statements is not read back; use OFF)");
+  if (set.dimension() < 2 && format == FileFormat::stl)
+    throw Error(ErrorCategory::invalid_argument,
+                name + ": STL cannot hold a set of dimension " + std::to_string(set.dimension()) + " (use OFF or OBJ)");
+}
+
 }  // namespace
 
 ConvexSet read_convex_set(const std::filesystem::path& path, const ReadLimits& limits) {
@@ -42,14 +53,18 @@ ConvexSet read_convex_set(const std::filesystem::path& path, const ReadLimits& l
 }
 
 void write_file(const std::filesystem::path& path, const ConvexSet& set, Coordinates coordinates) {
-  const FileFormat format = format_from_extension(path);
-  if (set.empty() && format == FileFormat::obj)
-    throw Error(ErrorCategory::invalid_argument,
-                path.string() + ": OBJ cannot hold the empty set (an OBJ without statements is not read back; use OFF)");
-  if (set.dimension() < 2 && format == FileFormat::stl)
-    throw Error(ErrorCategory::invalid_argument, path.string() + ": STL cannot hold a set of dimension " +
-                                                     std::to_string(set.dimension()) + " (use OFF or OBJ)");
-  write_file(path, set.to_soup(), coordinates);
+  write_file(path, set, format_from_extension(path), coordinates);
+}
+
+void write_file(const std::filesystem::path& path, const ConvexSet& set, FileFormat format, Coordinates coordinates) {
+  check_format_holds(set, format, path.string());
+  write_file(path, set.to_soup(), format, coordinates);
+}
+
+void write(std::ostream& out, const ConvexSet& set, FileFormat format, const std::string& name,
+           Coordinates coordinates) {
+  check_format_holds(set, format, name);
+  write(out, set.to_soup(), format, coordinates);
 }
 
 }  // namespace cvms

@@ -27,6 +27,20 @@ inline void PrintTo(const Vec3& v, std::ostream* os) {
 
 namespace cvms::test {
 
+/// How much slower than a plain build the time bounds of the hostile-input
+/// tests allow (AddressSanitizer builds run several times slower).
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr double slow_factor = 8.0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr double slow_factor = 8.0;
+#else
+inline constexpr double slow_factor = 1.0;
+#endif
+#else
+inline constexpr double slow_factor = 1.0;
+#endif
+
 inline std::filesystem::path data_path(std::string_view name) {
   return std::filesystem::path(CVMS_TEST_DATA_DIR) / std::filesystem::path(name);
 }

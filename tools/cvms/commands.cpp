@@ -72,22 +72,29 @@ Timed limited_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Su
   }
 }
 
+// Fails before any work if the output cannot be written: an unknown format
+// (a usage error), a missing directory, a directory.
+void check_output(const std::string& path, const std::string& format) {
+  (void)output_format(path, format);
+  check_output_directory(path);
+}
+
 }  // namespace
 
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
-  check_output_directory(args.output);
+  check_output(args.output, args.format);
   // Flat operands, or more than two: the sum of convex sets.
   if (std::count(args.more.begin(), args.more.end(), "-") + (args.a == "-") + (args.b == "-") > 1)
     throw UsageError("only one input can be read from stdin");
   std::vector<ConvexSet> sets{read_set(args.a), read_set(args.b)};
   for (const std::string& path : args.more) sets.push_back(read_set(path));
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
-    return run_set_sum(sets, args.algorithm, args.limits, args.output, coordinates_of(args.float_output), args.stats, report);
+    return run_set_sum(sets, args.algorithm, args.limits, args.output, args.format, coordinates_of(args.float_output), args.stats, report);
   const ConvexPolyhedron& a = sets[0].polyhedron();
   const ConvexPolyhedron& b = sets[1].polyhedron();
   Timed sum = limited_sum(a, b, args);
-  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output));
+  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format);
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
@@ -96,10 +103,10 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 }
 
 void run_hull(const HullArgs& args) {
-  check_output_directory(args.output);
+  check_output(args.output, args.format);
   std::vector<Vec3> points = read_point_cloud(args.input);
   // Flat, collinear or single-point clouds give the set they span.
-  write_set(args.output, convex_hull_set(points), coordinates_of(args.float_output));
+  write_set(args.output, convex_hull_set(points), coordinates_of(args.float_output), args.format);
 }
 
 void run_gen(const GenArgs& args) {
@@ -113,10 +120,10 @@ void run_gen(const GenArgs& args) {
   if (args.generators != 0 && s != "zonotope") throw UsageError("--generators applies only to zonotope");
   if (args.points != 0 && !counted) throw UsageError("--points applies only to random and prism");
 
-  check_output_directory(args.output);
+  check_output(args.output, args.format);
   if (s == "zonotope")  // a set: flat for fewer than 3 generators
     return write_set(args.output, random_zonotope(args.generators != 0 ? args.generators : 10, args.seed),
-                     coordinates_of(args.float_output));
+                     coordinates_of(args.float_output), args.format);
   ConvexPolyhedron p;
   if (s == "tetrahedron")
     p = shapes::tetrahedron();
@@ -134,7 +141,8 @@ void run_gen(const GenArgs& args) {
     p = shapes::box({Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(2), Rational(3)});
   else if (s == "prism") {
     int n = args.points != 0 ? args.points : 6;
-    if (n < 3) throw UsageError("prism needs --points >= 3");
+    if (n < 3 || n > max_prism_sides)
+      throw UsageError("prism needs --points from 3 to " + std::to_string(max_prism_sides));
     p = shapes::prism(n, Rational(2));
   } else if (s == "random") {
     int n = args.points != 0 ? args.points : 100;
@@ -143,7 +151,7 @@ void run_gen(const GenArgs& args) {
   } else {
     throw UsageError("unknown shape '" + s + "'");
   }
-  write_polyhedron(args.output, p, coordinates_of(args.float_output));
+  write_polyhedron(args.output, p, coordinates_of(args.float_output), args.format);
 }
 
 void run_check(const std::string& input, std::ostream& report) {
@@ -155,7 +163,7 @@ void run_check(const std::string& input, std::ostream& report) {
   const ConvexPolyhedron& p = set.polyhedron();
   std::map<std::uint32_t, std::uint32_t> histogram;
   for (FaceId f : p.mesh().faces()) ++histogram[p.mesh().degree(f)];
-  report << input_name(input) << ": convex polyhedron\ndimension 3\n" << counts(p) << "\n";
+  report << printable(input_name(input)) << ": convex polyhedron\ndimension 3\n" << counts(p) << "\n";
   if (input_points != p.num_vertices() || input_faces != p.num_facets())
     report << "input: V " << input_points << " F " << input_faces
            << " (normalised: coplanar faces merged, non-extreme vertices dropped)\n";

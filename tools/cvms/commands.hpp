@@ -22,6 +22,7 @@ class UsageError : public std::runtime_error {
 struct SumArgs {
   std::string a, b, output = "-";
   std::vector<std::string> more;  ///< operands after B (set_commands.cpp sums them)
+  std::string format;  ///< --format, empty: from the output path
   Algorithm algorithm = Options{}.algorithm;
   bool float_output = false;
   bool stats = false;
@@ -33,12 +34,14 @@ void run_sum(const SumArgs& args, std::ostream& report);
 
 struct HullArgs {
   std::string input, output = "-";
+  std::string format;  ///< --format, empty: from the output path
   bool float_output = false;
 };
 void run_hull(const HullArgs& args);
 
 struct GenArgs {
   std::string shape, output = "-";
+  std::string format;  ///< --format, empty: from the output path
   int subdivisions = 1;
   bool subdivisions_given = false;
   std::uint64_t seed = 1;
@@ -47,6 +50,10 @@ struct GenArgs {
   int generators = 0;  ///< zonotope; 0: the default (10)
   bool float_output = false;
 };
+/// The most sides `gen prism` takes (shapes::prism's limit).
+inline constexpr int max_prism_sides = 1'000'000;
+/// The most points `gen random` takes (shapes::random_hull's limit).
+inline constexpr int max_random_points = 10'000'000;
 /// The shape names gen accepts, in the order help lists them.
 inline constexpr const char* gen_shapes[] = {"tetrahedron", "cube",           "octahedron", "truncated-cube",
                                              "sphere",      "rotated-sphere", "box",        "prism",

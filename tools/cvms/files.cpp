@@ -2,65 +2,157 @@
 // File access for the cvms tool (see files.hpp).
 #include "files.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
+#include "commands.hpp"
 #include "cvms/error.hpp"
 
 namespace cvms::cli {
 namespace {
 
-bool is_std_stream(const std::string& path) { return path == "-"; }
+
+std::string reason(int error) { return error != 0 ? std::string(": ") + std::strerror(error) : ""; }
 
 std::ifstream open_input(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(ErrorCategory::io, "cannot read '" + path + "': it is a directory");
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     int error = errno;
-    throw Error(ErrorCategory::io,
-                "cannot open '" + path + "'" + (error != 0 ? std::string(": ") + std::strerror(error) : ""));
+    throw Error(ErrorCategory::io, "cannot open '" + path + "'" + reason(error));
   }
   return in;
 }
 
+// Standard input must be open for reading and not a directory; otherwise a
+// read fails at once and would look like an empty input.
+void check_stdin() {
+  struct stat info {};
+  if (::fstat(0, &info) != 0) throw Error(ErrorCategory::io, "cannot read standard input" + reason(errno));
+  if (S_ISDIR(info.st_mode)) throw Error(ErrorCategory::io, "cannot read standard input: it is a directory");
+  const int flags = ::fcntl(0, F_GETFL);
+  if (flags >= 0 && (flags & O_ACCMODE) == O_WRONLY)
+    throw Error(ErrorCategory::io, "cannot read standard input: it is open for writing only");
+}
+
+// Reads from stdin with `read`; a read error of the stream (not its end) is
+// Error(io) with the reason, whatever the reader made of the short input.
+template <class Read>
+auto read_stdin(Read&& read) {
+  check_stdin();
+  errno = 0;
+  try {
+    return read();
+  } catch (const Error&) {
+    const int error = errno;
+    if (std::ferror(stdin)) throw Error(ErrorCategory::io, "cannot read standard input" + reason(error));
+    throw;
+  }
+}
+
+// /dev/null, /dev/stdout, /dev/full, ...: devices have no extension.
+bool is_device_path(const std::string& path) {
+  return path.rfind("/dev/", 0) == 0 && std::filesystem::path(path).extension().empty();
+}
+
 }  // namespace
+
+bool is_std_stream(const std::string& path) { return path == "-"; }
 
 std::string input_name(const std::string& path) { return is_std_stream(path) ? "<stdin>" : path; }
 
+ReadLimits& read_limits() {
+  static ReadLimits limits;
+  return limits;
+}
+
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out += c;
+    } else {
+      constexpr const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[byte >> 4];
+      out += hex[byte & 15];
+    }
+  }
+  return out;
+}
+
+FileFormat output_format(const std::string& path, const std::string& format) {
+  if (format == "off") return FileFormat::off;
+  if (format == "obj") return FileFormat::obj;
+  if (format == "stl") return FileFormat::stl;
+  if (!format.empty()) throw UsageError("--format must be off, obj or stl, not '" + format + "'");
+  if (is_std_stream(path) || is_device_path(path)) return FileFormat::off;
+  try {
+    return format_from_extension(path);
+  } catch (const Error&) {
+    throw UsageError("cannot tell the format of '" + path +
+                     "' from its extension (.off, .obj or .stl): give --format off|obj|stl");
+  }
+}
+
 PolygonSoup read_soup(const std::string& path) {
-  if (is_std_stream(path)) return read_off(std::cin, input_name(path));
-  return read_file(path);
+  if (is_std_stream(path)) return read_stdin([&] { return read_off(std::cin, input_name(path), read_limits()); });
+  return read_file(path, read_limits());
 }
 
 ConvexPolyhedron read_polyhedron(const std::string& path) {
   if (is_std_stream(path)) return to_polyhedron(read_soup(path), input_name(path));
-  return cvms::read_polyhedron(path);
+  return cvms::read_polyhedron(path, read_limits());
 }
 
 std::vector<Vec3> read_point_cloud(const std::string& path) {
-  if (is_std_stream(path)) return read_points(std::cin, input_name(path));
+  if (is_std_stream(path))
+    return read_stdin([&] { return read_points(std::cin, input_name(path), read_limits()); });
   std::ifstream in = open_input(path);
   std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".stl") return read_stl(in, path).points;
-  return read_points(in, path);
+  if (ext == ".stl") return read_stl(in, path, read_limits()).points;
+  return read_points(in, path, read_limits());
 }
 
-void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates) {
-  if (!is_std_stream(path)) return write_file(path, p, coordinates);
-  write_off(std::cout, p.to_soup(), coordinates);
-  std::cout.flush();
-  if (!std::cout) throw Error(ErrorCategory::io, "<stdout>: write failed");
+void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
+                      const std::string& format) {
+  const FileFormat chosen = output_format(path, format);
+  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates);
+  write_stdout([&](std::ostream& out) { write(out, p.to_soup(), chosen, coordinates); });
+}
+
+void write_stdout(const std::function<void(std::ostream&)>& write) {
+  errno = 0;
+  try {
+    write(std::cout);
+    std::cout.flush();
+  } catch (const Error& e) {
+    if (e.category() != ErrorCategory::io) throw;
+  }
+  const int error = errno;
+  if (!std::cout) throw Error(ErrorCategory::io, "cannot write standard output" + reason(error));
 }
 
 void check_output_directory(const std::string& path) {
   if (is_std_stream(path)) return;
-  std::filesystem::path dir = std::filesystem::path(path).parent_path();
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(ErrorCategory::io, "cannot write '" + path + "': it is a directory");
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
     throw Error(ErrorCategory::io, "cannot write '" + path + "': no directory '" + dir.string() + "'");
 }
@@ -71,7 +163,7 @@ std::string check_mesh_path(const std::string& path) {
     (void)format_from_extension(path);
     return {};
   } catch (const Error&) {
-    return "'" + path + "': expected '-' or a file ending in .off, .obj or .stl";
+    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj or .stl";
   }
 }
 

@@ -3,7 +3,10 @@
 // or "-" for OFF on stdin/stdout. Errors name the file.
 #pragma once
 
+#include <functional>
+#include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
@@ -16,6 +19,20 @@ namespace cvms::cli {
 /// The name used for a path in messages ("<stdin>" / "<stdout>" for "-").
 std::string input_name(const std::string& path);
 
+/// The limits every input is read with; --max-bytes and --max-line-bytes
+/// change them before a command runs.
+ReadLimits& read_limits();
+
+/// `text` with every control byte (escape sequences of a terminal, '\n',
+/// '\r', DEL) shown as \xNN, so a file name cannot drive the terminal or
+/// break the one-line message.
+std::string printable(std::string_view text);
+
+/// The format an output path is written in: `format` ("off", "obj", "stl")
+/// if given, else OFF for "-" and for devices without an extension
+/// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them tells.
+FileFormat output_format(const std::string& path, const std::string& format);
+
 /// Reads a polygon mesh. \throw Error naming the file.
 PolygonSoup read_soup(const std::string& path);
 
@@ -26,11 +43,21 @@ ConvexPolyhedron read_polyhedron(const std::string& path);
 /// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle corners.
 std::vector<Vec3> read_point_cloud(const std::string& path);
 
-/// cvms::write_file, or OFF on stdout for "-". \throw Error naming the file.
-void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates);
+/// cvms::write_file (atomic: a failed write leaves an existing file as it
+/// was), or stdout for "-", in output_format(path, format).
+/// \throw Error naming the file ("standard output" for "-") and the reason.
+void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
+                      const std::string& format = {});
+
+/// True for "-" (stdin or stdout).
+bool is_std_stream(const std::string& path);
+
+/// Runs `write` on std::cout and flushes it.
+/// \throw Error(io) "cannot write standard output: <reason>" if that fails.
+void write_stdout(const std::function<void(std::ostream&)>& write);
 
 /// Fails early, before a long computation, if the output's directory does
-/// not exist. \throw Error(io) naming the file.
+/// not exist or the output is a directory. \throw Error(io) naming the file.
 void check_output_directory(const std::string& path);
 
 /// Empty if path is "-" or ends in .off/.obj/.stl (any case), else a message;

@@ -8,6 +8,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands.hpp"
@@ -21,14 +22,47 @@ namespace {
 constexpr int exit_bad_input = 1;
 constexpr int exit_usage = 2;
 
-// One line, whatever the message holds.
-std::string one_line(std::string text) {
-  for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
-  return text;
-}
+// One line, whatever the message holds, and no control bytes: a file name
+// with terminal escape codes is shown as \x1b[..., never run.
+std::string one_line(const std::string& text) { return cvms::cli::printable(text); }
 
 const CLI::Validator mesh_path{cvms::cli::check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
+
+// A decimal integer from 0 to 2^64-1, digits only (no sign, no exponent):
+// CLI11 alone would wrap "-1" and saturate 2^64 silently.
+std::string check_unsigned_64(const std::string& text) {
+  constexpr std::string_view max = "18446744073709551615";
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  std::string_view value = text;
+  while (value.size() > 1 && value.front() == '0') value.remove_prefix(1);
+  if (!digits || value.size() > max.size() || (value.size() == max.size() && value > max))
+    return "'" + text + "' is not an integer from 0 to 18446744073709551615";
+  return {};
+}
+const CLI::Validator unsigned_64{check_unsigned_64, "UINT64", "unsigned 64-bit integer"};
+
+// -o, --format and --float of a command that writes a polyhedron. The
+// output is checked when the command runs (its format may come from
+// --format), before any work.
+void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output) {
+  command.add_option("-o,--output", output, "result file (default -, OFF on stdout)")->default_str("-");
+  command
+      .add_option("--format", format,
+                  "off, obj or stl (default: the output's extension; OFF for - and /dev/null, /dev/stdout, ...)")
+      ->check(CLI::IsMember({"off", "obj", "stl"}, CLI::ignore_case));
+  command.add_flag("--float", float_output, "round output coordinates to the nearest double");
+}
+
+// Options of every command that reads (before or after the command name).
+void add_read_limit_options(CLI::App& app) {
+  cvms::ReadLimits& limits = cvms::cli::read_limits();
+  app.add_option("--max-bytes", limits.max_bytes, "largest input read, in bytes")
+      ->check(unsigned_64)
+      ->default_str(std::to_string(limits.max_bytes));
+  app.add_option("--max-line-bytes", limits.max_line_bytes, "longest line of a text input, in bytes")
+      ->check(unsigned_64)
+      ->default_str(std::to_string(limits.max_line_bytes));
+}
 
 constexpr cvms::Algorithm algorithms[] = {cvms::Algorithm::cvms, cvms::Algorithm::essdms,
                                           cvms::Algorithm::chms};
@@ -75,6 +109,8 @@ int main(int argc, char** argv) {
   using namespace cvms::cli;
   CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL; '-' is OFF on stdin/stdout)"};
   app.require_subcommand(1);
+  app.fallthrough();  // the read limits may follow the command name too
+  add_read_limit_options(app);
   const char* default_algorithm = cvms::to_string(cvms::Options{}.algorithm);
 
   SumArgs sum;
@@ -82,21 +118,15 @@ int main(int argc, char** argv) {
   sum_cmd->add_option("A", sum.a, "first operand")->required()->check(mesh_path);
   sum_cmd->add_option("B", sum.b, "second operand")->required()->check(mesh_path);
   sum_cmd->add_option("C", sum.more, "further operands")->check(mesh_path);
-  sum_cmd->add_option("-o,--output", sum.output, "result file (default -, OFF on stdout)")
-      ->check(mesh_path)
-      ->default_str("-");
+  add_output_options(*sum_cmd, sum.output, sum.format, sum.float_output);
   add_algorithm_option(*sum_cmd, sum.algorithm, default_algorithm);
-  sum_cmd->add_flag("--float", sum.float_output, "round output coordinates to the nearest double");
   sum_cmd->add_flag("--stats", sum.stats, "print counts, time and algorithm statistics");
   add_sum_limit_options(*sum_cmd, sum.limits);
 
   HullArgs hull;
   CLI::App* hull_cmd = app.add_subcommand("hull", "exact convex hull of points");
   hull_cmd->add_option("POINTS", hull.input, "OFF/OBJ/STL vertices or one 'x y z' per line")->required();
-  hull_cmd->add_option("-o,--output", hull.output, "result file (default -, OFF on stdout)")
-      ->check(mesh_path)
-      ->default_str("-");
-  hull_cmd->add_flag("--float", hull.float_output, "round output coordinates to the nearest double");
+  add_output_options(*hull_cmd, hull.output, hull.format, hull.float_output);
 
   GenArgs gen;
   std::string shape_list;
@@ -108,15 +138,16 @@ int main(int argc, char** argv) {
   CLI::Option* subdivisions_opt =
       gen_cmd->add_option("--subdivisions", gen.subdivisions, "K for Sphere_K (1..9)")
           ->check(CLI::Range(1, 9));
-  CLI::Option* seed_opt = gen_cmd->add_option("--seed", gen.seed, "seed of random and zonotope");
+  CLI::Option* seed_opt =
+      gen_cmd->add_option("--seed", gen.seed, "seed of random and zonotope (0 to 2^64-1)")->check(unsigned_64);
+  gen_cmd
+      ->add_option("--points", gen.points,
+                   "points of random (4.." + std::to_string(max_random_points) + ", default 100), sides of prism (3.." +
+                       std::to_string(max_prism_sides) + ", default 6)")
+      ->check(CLI::Range(1, max_random_points));
   gen_cmd->add_option("--generators", gen.generators, "generators of zonotope (default 10)")
       ->check(CLI::Range(1, 100'000));
-  gen_cmd->add_option("--points", gen.points, "points of random (default 100), sides of prism (default 6)")
-      ->check(CLI::Range(1, 10'000'000));
-  gen_cmd->add_option("-o,--output", gen.output, "result file (default -, OFF on stdout)")
-      ->check(mesh_path)
-      ->default_str("-");
-  gen_cmd->add_flag("--float", gen.float_output, "round output coordinates to the nearest double");
+  add_output_options(*gen_cmd, gen.output, gen.format, gen.float_output);
 
   std::string check_input;
   CLI::App* check_cmd =

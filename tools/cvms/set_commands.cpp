@@ -41,27 +41,25 @@ ConvexSet set_from_soup(PolygonSoup soup, const std::string& source) {
 }
 
 ConvexSet read_set(const std::string& path) {
-  if (path != "-") return read_convex_set(path);
+  if (!is_std_stream(path)) return read_convex_set(path, read_limits());
   return set_from_soup(read_soup(path), input_name(path));
 }
 
-void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates) {
-  if (path != "-") return write_file(path, set, coordinates);
-  write_off(std::cout, set.to_soup(), coordinates);
-  std::cout.flush();
-  if (!std::cout) throw Error(ErrorCategory::io, "<stdout>: write failed");
+void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates, const std::string& format) {
+  const FileFormat chosen = output_format(path, format);
+  if (!is_std_stream(path)) return write_file(path, set, chosen, coordinates);
+  write_stdout([&](std::ostream& out) { write(out, set, chosen, "standard output", coordinates); });
 }
 
 void run_set_sum(const std::vector<ConvexSet>& operands, Algorithm algorithm, const SumLimits& limits,
-                 const std::string& output,
-                 Coordinates coordinates, bool stats, std::ostream& report) {
+                 const std::string& output, const std::string& format, Coordinates coordinates, bool stats, std::ostream& report) {
   Options options;
   options.algorithm = algorithm;
   options.limits = limits;
   const auto start = std::chrono::steady_clock::now();
   const ConvexSet sum = minkowski_sum(operands, options);
   const std::chrono::duration<double, std::milli> time = std::chrono::steady_clock::now() - start;
-  write_set(output, sum, coordinates);
+  write_set(output, sum, coordinates, format);
   if (!stats) return;
   for (std::size_t i = 0; i < operands.size(); ++i)
     report << "operand " << i + 1 << ": " << kind(operands[i]) << ", " << size_text(operands[i]) << "\n";

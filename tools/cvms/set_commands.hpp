@@ -23,13 +23,12 @@ ConvexSet read_set(const std::string& path);
 ConvexSet set_from_soup(PolygonSoup soup, const std::string& source);
 
 /// write_file(path, set), or OFF on stdout for "-".
-void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates);
+void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates, const std::string& format = {});
 
 /// The sum of the sets, written to output; with stats, the operands' and
 /// the result's sizes and the time go to report.
 void run_set_sum(const std::vector<ConvexSet>& operands, Algorithm algorithm, const SumLimits& limits,
-                 const std::string& output,
-                 Coordinates coordinates, bool stats, std::ostream& report);
+                 const std::string& output, const std::string& format, Coordinates coordinates, bool stats, std::ostream& report);
 
 /// "point", "segment", "polygon" ... and its vertex count, for check.
 void report_set(const std::string& name, const ConvexSet& set, std::ostream& report);
