@@ -127,6 +127,12 @@ TEST(ProximitySupport, BadArguments) {
   Placement nan;
   nan.translation[1] = std::nan("");
   EXPECT_THROW(PlacedPolyhedron(c, nan), Error);
+  // Review finding: a singular placement that maps u to zero made every
+  // vertex tie and reported a facet that does not exist.
+  Placement flat;
+  flat.rotation = {{{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 0.0}}};
+  EXPECT_THROW((void)support(PlacedPolyhedron(c, flat), v3(0, 0, 1), VertexId(0), true), Error);
+  EXPECT_EQ(support(PlacedPolyhedron(c, flat), v3(1, 0, 0)).value, Rational(1));
   try {
     (void)support(c, v3(0, 0, 0));
   } catch (const Error& e) {
@@ -320,6 +326,18 @@ TEST(ProximityNearestDoubleSqrt, CorrectlyRounded) {
   EXPECT_EQ(nearest_double_sqrt(parse_rational("1e-18")), 1e-9);
   EXPECT_EQ(nearest_double_sqrt(parse_rational("1e600")), 1e300);  // beyond the double range squared
   EXPECT_EQ(nearest_double_sqrt(parse_rational("1e-600")), 1e-300);
+  // Review finding: subnormal roots were rounded twice (at 53 bits, then by
+  // the scaling back). u is the smallest subnormal; tiny nudges decide.
+  const Rational u = Rational(std::ldexp(1.0, -1074));
+  const Rational nudge(mpz_class(1), mpz_class(1) << 1200);  // 2^-1200: no double
+  const auto square = [](const Rational& x) { return x * x; };
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(5, 2) * u + nudge)), std::ldexp(3.0, -1074));
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(3, 2) * u - nudge)), std::ldexp(1.0, -1074));
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(5, 2) * u)), std::ldexp(2.0, -1074));  // tie: even
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(7, 2) * u)), std::ldexp(4.0, -1074));
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(1, 4) * u)), 0.0);
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(std::ldexp(1.0, -1022)))), std::ldexp(1.0, -1022));
+  EXPECT_EQ(nearest_double_sqrt(square(Rational(std::ldexp(1.0, -1022)) - nudge)), std::ldexp(1.0, -1022));
   std::mt19937_64 rng(99);
   for (int i = 0; i < 2000; ++i) {
     // For a double q, IEEE sqrt is the correctly rounded root: an independent oracle.

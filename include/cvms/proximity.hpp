@@ -114,7 +114,8 @@ struct SupportResult {
 /// Ties among maximising vertices are broken by the walk (deterministic for
 /// the same inputs); the face, when asked, lists all of them.
 /// \throw Error(invalid_argument) if P is empty (default-constructed), u is
-///   zero, or start is not a vertex of P.
+///   zero, or start is not a vertex of P, or P's placement maps u to zero
+///   (a singular linear part).
 /// Complexity: O(length of the climb times the vertex degrees) filtered
 /// predicates, plus O(face) when the face is asked for.
 SupportResult support(const PlacedPolyhedron& p, const Vec3& u, VertexId start = VertexId(0),
@@ -190,7 +191,9 @@ struct PenetrationResult {
 /// numbering. The witnesses come from an exact GJK of A against B moved by
 /// the translation (they touch there).
 /// \throw Error(invalid_argument) for an empty operand or, when they
-///   intersect, a placed operand with a singular linear part.
+///   intersect, a placed operand with a singular linear part;
+/// \throw Error(limit) when they intersect and A + (-B) is beyond the
+///   default SumLimits (see minkowski_sum).
 /// Complexity: the distance query when apart; when they intersect, one
 /// Minkowski sum (see minkowski_sum) plus O(F) exact comparisons.
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b);

@@ -20,8 +20,10 @@ namespace cvms {
 /// polygons in parallel planes by the planar convolution in the plane's
 /// exact chart, segment + polygon as a prism, segment + polyhedron from the
 /// polyhedron's facets split by the segment's direction and its silhouette,
-/// polygon + polyhedron and polygon + polygon through CVMS on the polygon's
-/// prism, whose sweep is then undone exactly.
+/// polygon + polyhedron directly from the two Gaussian maps (the polygon's
+/// is its two normals and one meridian per edge), and polygon + polygon in
+/// non-parallel planes as polygon + (the other's prism), whose sweep is then
+/// undone exactly.
 /// \throw Error(invalid_argument) for an unknown option value when both are
 ///   polyhedra (the other cases do not read the options).
 /// Complexity: output-sensitive, no hull of pairwise sums: O(size of the

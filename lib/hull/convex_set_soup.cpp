@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "affine_dimension.hpp"
+#include "convex_polygon.hpp"
 #include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
@@ -66,9 +67,7 @@ ConvexSet face_polygon(const PolygonSoup& soup, std::size_t f) {
 
 // Sign of the face's area vector along n: its orientation seen from n.
 Sign orientation(const std::vector<Vec3>& points, const Vec3& n) {
-  Vec3 area{0, 0, 0};
-  for (std::size_t i = 0; i < points.size(); ++i) area += cross(points[i], points[(i + 1) % points.size()]);
-  return sign_dot(area, n);
+  return sign_dot(detail::area_vector(points.size(), [&points](std::size_t i) -> const Vec3& { return points[i]; }), n);
 }
 
 ConvexSet tiled_polygon(const PolygonSoup& soup) {

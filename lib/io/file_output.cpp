@@ -148,6 +148,16 @@ struct TemporaryFile {
   }
 };
 
+// Makes the rename durable; best effort (some file systems refuse to sync a
+// directory, and the new content is already safe on disk).
+void sync_directory(const std::filesystem::path& target) {
+  const std::filesystem::path dir = target.parent_path().empty() ? "." : target.parent_path();
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  (void)::fsync(fd);
+  ::close(fd);
+}
+
 void replace_atomically(const std::filesystem::path& target, const struct stat* existing,
                         const std::function<void(std::ostream&)>& write) {
   int fd = -1;
@@ -168,9 +178,17 @@ void replace_atomically(const std::filesystem::path& target, const struct stat* 
     ::close(fd);
     throw;
   }
+  // On disk before the rename: otherwise a crash just after it could leave
+  // the target empty, the very loss the temporary is there to prevent.
+  if (::fsync(fd) != 0 && errno != EINVAL) {
+    const int error = errno;
+    ::close(fd);
+    fail(target, reason(error));
+  }
   close_or_fail(fd, target);
   if (::rename(temporary.path.c_str(), target.c_str()) != 0) fail(target, reason(errno));
   temporary.owned = false;
+  sync_directory(target);
 }
 
 }  // namespace

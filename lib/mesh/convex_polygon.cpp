@@ -6,6 +6,7 @@
 #include "convex_polygon.hpp"
 
 #include "angular_order.hpp"
+#include "dyadic.hpp"
 #include "element_names.hpp"
 
 namespace cvms::detail {
@@ -73,5 +74,38 @@ std::string describe_fault(const PolygonCheck& c, const std::vector<std::uint32_
   }
   return "";
 }
+
+// The area vector (twice the vector area) of a polygon, the sum of the
+// cross products of its fan from p[0], added in a balanced tree of
+// unreduced fractions: the terms' denominators differ, and a running sum
+// would grow by each of them in turn (quadratic in the degree).
+Vec3 area_vector(std::size_t m, const std::function<const Vec3&(std::size_t)>& point) {
+  using Fraction = std::pair<mpz_class, mpz_class>;  // numerator, denominator > 0
+  std::vector<Fraction> terms[3];
+  for (std::size_t i = 1; i + 1 < m; ++i) {
+    const Vec3 t = cross(subtract(point(i), point(0)), subtract(point(i + 1), point(0)));
+    for (int c = 0; c < 3; ++c) terms[c].emplace_back(t[c].get_num(), t[c].get_den());
+  }
+  Vec3 n{0, 0, 0};
+  for (int c = 0; c < 3; ++c) {
+    std::vector<Fraction>& level = terms[c];
+    while (level.size() > 1) {
+      std::size_t out = 0;
+      for (std::size_t i = 0; i + 1 < level.size(); i += 2, ++out) {
+        const auto& [a, b] = level[i];
+        const auto& [x, y] = level[i + 1];
+        level[out] = {a * y + x * b, b * y};
+      }
+      if (level.size() % 2 == 1) level[out++] = std::move(level.back());
+      level.resize(out);
+    }
+    if (!level.empty()) {
+      n[c] = Rational(level[0].first, level[0].second);
+      n[c].canonicalize();
+    }
+  }
+  return n;
+}
+
 
 }  // namespace cvms::detail

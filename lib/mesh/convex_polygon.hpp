@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,5 +36,10 @@ PolygonCheck check_convex_polygon(const std::vector<Vec3Ref>& p, Vec3Ref n);
 /// What the fault says about the polygon whose positions are vertex_ids
 /// ("has a reflex corner at vertex 7", ...); empty for none.
 std::string describe_fault(const PolygonCheck& c, const std::vector<std::uint32_t>& vertex_ids);
+
+/// The area vector (twice the vector area) of the closed polygon point(0),
+/// ..., point(m - 1): exact, in time O(m log m) multiplications of fractions
+/// whatever the denominators (see the definition).
+Vec3 area_vector(std::size_t m, const std::function<const Vec3&(std::size_t)>& point);
 
 }  // namespace cvms::detail

@@ -105,38 +105,6 @@ FacePlane plane_of(Vec3 normal) {
   return {std::move(normal), approx};
 }
 
-// The area vector (twice the vector area) of a polygon, the sum of the
-// cross products of its fan from p[0], added in a balanced tree of
-// unreduced fractions: the terms' denominators differ, and a running sum
-// would grow by each of them in turn (quadratic in the degree).
-Vec3 area_vector(const std::vector<Vec3Ref>& p) {
-  using Fraction = std::pair<mpz_class, mpz_class>;  // numerator, denominator > 0
-  std::vector<Fraction> terms[3];
-  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-    const Vec3 t = cross(detail::subtract(p[i].exact, p[0].exact), detail::subtract(p[i + 1].exact, p[0].exact));
-    for (int c = 0; c < 3; ++c) terms[c].emplace_back(t[c].get_num(), t[c].get_den());
-  }
-  Vec3 n{0, 0, 0};
-  for (int c = 0; c < 3; ++c) {
-    std::vector<Fraction>& level = terms[c];
-    while (level.size() > 1) {
-      std::size_t out = 0;
-      for (std::size_t i = 0; i + 1 < level.size(); i += 2, ++out) {
-        const auto& [a, b] = level[i];
-        const auto& [x, y] = level[i + 1];
-        level[out] = {a * y + x * b, b * y};
-      }
-      if (level.size() % 2 == 1) level[out++] = std::move(level.back());
-      level.resize(out);
-    }
-    if (!level.empty()) {
-      n[c] = Rational(level[0].first, level[0].second);
-      n[c].canonicalize();
-    }
-  }
-  return n;
-}
-
 using detail::PolygonCheck;
 using detail::PolygonFault;
 using detail::check_convex_polygon;
@@ -247,7 +215,7 @@ FaceVerdict fast_face_plane(const FaceCorners& face, FacePlane& plane, std::vect
 [[noreturn]] void report_face_fault(const FaceCorners& face, const FacePlane* normal) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::string name = "face " + str(face.f.index());
-  const Vec3 n = area_vector(pts);
+  const Vec3 n = detail::area_vector(pts.size(), [&pts](std::size_t i) -> const Vec3& { return pts[i].exact; });
   if (is_zero(n)) {
     bool collinear_face = true;
     for (std::size_t i = 2; i < pts.size() && collinear_face; ++i)

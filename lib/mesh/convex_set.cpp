@@ -18,6 +18,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "convex_polygon.hpp"
 #include "plane_chart.hpp"
 
 namespace cvms {
@@ -123,10 +124,15 @@ ConvexSet ConvexSet::polygon(std::span<const Vec3> cycle) {
                 "polygon: " + std::to_string(corners.size()) + " distinct vertices (at least 3 are needed)");
   // The area vector of the cycle: nonzero for any polygon that will pass,
   // and pointing to the side from which the input is counterclockwise.
-  Vec3 area{0, 0, 0};
-  for (std::size_t i = 0; i < corners.size(); ++i)
-    area += cross(corners[i].point, corners[(i + 1) % corners.size()].point);
-  if (is_zero(area)) throw Error(ErrorCategory::degenerate, "polygon: the vertices enclose no area (collinear?)");
+  const Vec3 area = detail::area_vector(corners.size(), [&corners](std::size_t i) -> const Vec3& { return corners[i].point; });
+  if (is_zero(area)) {
+    // Zero area: collinear points are a degenerate polygon, anything else
+    // (a bow tie) is not convex, as ConvexPolyhedron::from_mesh says.
+    for (std::size_t i = 2; i < corners.size(); ++i)
+      if (!is_parallel(corners[1].point - corners[0].point, corners[i].point - corners[0].point))
+        throw Error(ErrorCategory::not_convex, "polygon: zero signed area (it is not a convex polygon)");
+    throw Error(ErrorCategory::degenerate, "polygon: the vertices enclose no area (they are collinear)");
+  }
   const Vec3 n = detail::canonical_normal(area);
   const Rational offset = dot(n, corners[0].point);
   for (const Corner& c : corners)

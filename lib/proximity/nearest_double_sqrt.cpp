@@ -5,7 +5,11 @@
 // square root of r's nearest double (within a few ulps of sqrt(r)) and move
 // to a neighbour while it is nearer: for doubles x < y, sqrt(r) is nearer to
 // y iff r > ((x + y) / 2)^2, an exact rational comparison. Then scale back by
-// 2^k (exact unless the result is subnormal or overflows).
+// 2^k, exact unless the result is below 2^-1022: there the doubles are the
+// multiples of 2^-1074, and scaling back would round a second time, so the
+// answer is found directly as the integer j nearest to sqrt(q 2^2148):
+// j0 = isqrt(floor(m)) = floor(sqrt(m)) for m = q 2^2148, and sqrt(m) is
+// nearer to j0 + 1 iff m > (j0 + 1/2)^2 (ties to even j).
 #include <cmath>
 
 #include "cvms/error.hpp"
@@ -33,6 +37,21 @@ bool is_even(double x) {
   return std::fmod(std::ldexp(m, 53), 2.0) == 0.0;
 }
 
+// The nearest multiple of 2^-1074 to sqrt(q), for q below 2^-2042 (every
+// multiple below 2^-1021 is a double).
+double nearest_small_sqrt(const Rational& q) {
+  mpz_class num = q.get_num();
+  mpz_mul_2exp(num.get_mpz_t(), num.get_mpz_t(), 2148);
+  mpz_class j = num / q.get_den();  // floor(m), m >= 0
+  mpz_sqrt(j.get_mpz_t(), j.get_mpz_t());
+  // 4m against 4 (j + 1/2)^2 = 4j^2 + 4j + 1, over the denominator.
+  const mpz_class four_m = 4 * num;
+  const mpz_class midpoint = (4 * j * j + 4 * j + 1) * q.get_den();
+  const int c = cmp(four_m, midpoint);
+  if (c > 0 || (c == 0 && mpz_odd_p(j.get_mpz_t()) != 0)) ++j;
+  return std::ldexp(j.get_d(), -1074);  // j < 2^53: exact
+}
+
 }  // namespace
 
 double nearest_double_sqrt(const Rational& q) {
@@ -56,7 +75,8 @@ double nearest_double_sqrt(const Rational& q) {
     }
     break;
   }
-  return std::ldexp(d, static_cast<int>(k));
+  const double scaled = std::ldexp(d, static_cast<int>(k));
+  return scaled >= 0x1p-1022 ? scaled : nearest_small_sqrt(q);
 }
 
 }  // namespace cvms

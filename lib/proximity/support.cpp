@@ -73,6 +73,11 @@ SupportResult support(const PlacedPolyhedron& p, const Vec3& u, VertexId start, 
                 "support: start vertex " + std::to_string(start.index()) + " is not a vertex (the polyhedron has " +
                     std::to_string(poly.num_vertices()) + ")");
   const Vec3 local = p.is_placed() ? p.linear_transposed() * u : u;
+  // A singular placement may map u to zero: then every point maximises and
+  // there is no face to name.
+  if (is_zero(local))
+    throw Error(ErrorCategory::invalid_argument,
+                "support: the placement's linear part maps the direction to zero (it is singular)");
   const ApproxVec3 approx = ApproxVec3::of(local);
   const Vec3Ref dir{local, approx};
   const detail::PolyhedronGraph graph{poly};
