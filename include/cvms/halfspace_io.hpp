@@ -74,4 +74,8 @@ std::vector<Vec3> read_cdd_points(std::istream& in, std::string_view source = "<
 /// `integer` or `rational`); the empty set gives `0 4` rows.
 void write_cdd_points(std::ostream& out, const ConvexSet& set);
 
+/// write_cdd_points to a file, atomically (see write_file in cvms/io.hpp).
+/// \throw Error(io) naming the path if it cannot be written.
+void write_cdd_points_file(const std::filesystem::path& path, const ConvexSet& set);
+
 }  // namespace cvms

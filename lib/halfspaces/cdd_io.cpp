@@ -252,4 +252,8 @@ void write_cdd_points(std::ostream& out, const ConvexSet& set) {
   out << "end\n";
 }
 
+void write_cdd_points_file(const std::filesystem::path& path, const ConvexSet& set) {
+  io_detail::write_atomically(path, [&](std::ostream& out) { write_cdd_points(out, set); });
+}
+
 }  // namespace cvms
