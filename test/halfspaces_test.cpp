@@ -93,18 +93,23 @@ TEST(FromHalfspaces, EmptySystems) {
   EXPECT_TRUE(from_halfspaces(rows).empty());
 }
 
+template <class Call>
+void expect_invalid_argument(Call&& call, const std::string& fragment) {
+  try {
+    call();
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
 void expect_unbounded(const std::vector<HalfspaceRow>& rows) {
   const HalfspaceIntersection r = intersect_halfspaces(rows);
   ASSERT_TRUE(r.unbounded_direction.has_value());
   EXPECT_FALSE(is_zero(*r.unbounded_direction));
   for (const HalfspaceRow& h : rows) EXPECT_LE(dot(h.normal, *r.unbounded_direction), 0);
-  try {
-    (void)from_halfspaces(rows);
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
-    EXPECT_NE(std::string(e.what()).find("unbounded in direction"), std::string::npos) << e.what();
-  }
+  expect_invalid_argument([&] { (void)from_halfspaces(rows); }, "unbounded in direction");
 }
 
 TEST(FromHalfspaces, UnboundedSystemsNameADirection) {
@@ -128,13 +133,7 @@ TEST(FromHalfspaces, DoublesAndIntegers) {
   EXPECT_EQ(describe_set(from_halfspaces(i)), describe_set(cube_set(-1, 1)));
   std::vector<std::array<double, 4>> bad = d;
   bad[3][1] = std::numeric_limits<double>::quiet_NaN();
-  try {
-    (void)from_halfspaces(bad);
-    ADD_FAILURE() << "no error";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
-    EXPECT_NE(std::string(e.what()).find("row 3"), std::string::npos) << e.what();
-  }
+  expect_invalid_argument([&] { (void)from_halfspaces(bad); }, "row 3");
 }
 
 TEST(ToHalfspaces, ShapesRoundTripWithPrimitiveRows) {
