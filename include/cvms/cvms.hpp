@@ -23,6 +23,8 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/convex_set.hpp"
 #include "cvms/error.hpp"
+#include "cvms/halfspace_io.hpp"
+#include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"
 #include "cvms/mesh.hpp"
 #include "cvms/minkowski.hpp"

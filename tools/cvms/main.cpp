@@ -15,6 +15,7 @@
 #include "cvms/error.hpp"
 #include "files.hpp"
 #include "sizes.hpp"
+#include "halfspace_commands.hpp"
 #include "proximity_commands.hpp"
 
 namespace {
@@ -125,7 +126,8 @@ int main(int argc, char** argv) {
 
   HullArgs hull;
   CLI::App* hull_cmd = app.add_subcommand("hull", "exact convex hull of points");
-  hull_cmd->add_option("POINTS", hull.input, "OFF/OBJ/STL vertices or one 'x y z' per line")->required();
+  CLI::Option* hull_points =
+      hull_cmd->add_option("POINTS", hull.input, "OFF/OBJ/STL vertices or one 'x y z' per line")->required();
   add_output_options(*hull_cmd, hull.output, hull.format, hull.float_output);
 
   GenArgs gen;
@@ -161,6 +163,9 @@ int main(int argc, char** argv) {
   ProximityArgs proximity;
   add_proximity_commands(app, proximity, mesh_path);
 
+  HalfspaceArgs halfspace;
+  add_halfspace_commands(app, *hull_cmd, *hull_points, hull, halfspace, mesh_path);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -170,6 +175,7 @@ int main(int argc, char** argv) {
 
   try {
     if (run_proximity_command(proximity, std::cout)) return 0;
+    if (run_halfspace_command(halfspace, std::cout)) return 0;
     if (*sum_cmd)
       run_sum(sum, sum.output == "-" ? std::cerr : std::cout);
     else if (*hull_cmd)

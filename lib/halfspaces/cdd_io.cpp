@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// cdd's H- and V-representation files and the plain half-space text form
+// (cvms/halfspace_io.hpp), on the bounded line reader of the io layer.
+#include <algorithm>
+#include <cerrno>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <system_error>
+
+#include "cvms/halfspace_io.hpp"
+#include "file_output.hpp"
+#include "io_reader.hpp"
+
+namespace cvms {
+
+namespace {
+
+using io_detail::LineReader;
+using io_detail::Tokenizer;
+
+// The numbers of one cdd row (or plain row): exactly four.
+std::array<Rational, 4> read_row(LineReader& reader, std::string_view line, std::uint64_t index, const char* element) {
+  Tokenizer tokens(line, false);
+  std::array<Rational, 4> row;
+  static constexpr const char* names[4] = {"first number", "second number", "third number", "fourth number"};
+  for (int k = 0; k < 4; ++k) {
+    const std::string_view token = tokens.next();
+    if (token.empty()) reader.fail(std::string(element) + " " + std::to_string(index) + " has fewer than 4 numbers");
+    io_detail::parse_number(reader, token, {names[k], element, index}, row[static_cast<std::size_t>(k)]);
+  }
+  if (!tokens.at_end()) reader.fail(std::string(element) + " " + std::to_string(index) + " has more than 4 numbers");
+  return row;
+}
+
+bool is_comment_or_blank(std::string_view line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  return first == std::string_view::npos || line[first] == '*';
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
+}
+
+// The rows of a cdd file and its linearity indices (1-based, checked).
+struct CddBody {
+  std::vector<std::array<Rational, 4>> rows;
+  std::vector<std::uint64_t> linearity;
+};
+
+void read_linearity(LineReader& reader, Tokenizer& tokens, CddBody& body) {
+  const auto count = io_detail::parse_unsigned(tokens.next());
+  if (!count) reader.fail("linearity: expected the number of indices");
+  for (std::uint64_t i = 0; i < *count; ++i) {
+    const auto index = io_detail::parse_unsigned(tokens.next());
+    if (!index) reader.fail("linearity: expected " + std::to_string(*count) + " row indices");
+    body.linearity.push_back(*index);
+  }
+  if (!tokens.at_end()) reader.fail("linearity: more indices than the " + std::to_string(*count) + " announced");
+}
+
+CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std::uint64_t max_rows,
+                 const char* element) {
+  CddBody body;
+  std::string_view line;
+  bool begun = false;
+  while (reader.next(line)) {
+    if (is_comment_or_blank(line)) continue;
+    Tokenizer tokens(line, false);
+    const std::string word = lower(tokens.next());
+    if (word == "begin") {
+      begun = true;
+      break;
+    }
+    if (word == lower(other)) reader.fail(std::string("this is a ") + other + ", expected a " + wanted);
+    if (word == "linearity") read_linearity(reader, tokens, body);
+    // Anything else before begin is a name or a cdd option: ignored.
+  }
+  if (!begun) reader.fail("no 'begin' line");
+  std::uint64_t declared = 0;
+  for (;;) {
+    if (!reader.next(line)) reader.fail("end of input before the 'm n type' line");
+    if (is_comment_or_blank(line)) continue;
+    Tokenizer tokens(line, false);
+    const std::string_view m = tokens.next(), n = tokens.next();
+    const std::string type = lower(tokens.next());
+    const auto rows = io_detail::parse_unsigned(m);
+    if (!rows || n != "4" || (type != "integer" && type != "rational" && type != "real") || !tokens.at_end()) {
+      reader.fail("expected 'm 4 integer|rational|real' (3D: 4 columns), got '" + io_detail::quote(line) + "'");
+    }
+    if (*rows > max_rows) reader.fail("header announces " + io_detail::typed(m) + " rows, beyond the limit", ErrorCategory::limit);
+    declared = *rows;
+    break;
+  }
+  body.rows.reserve(io_detail::safe_reserve(declared));
+  bool ended = false;
+  while (reader.next(line)) {
+    if (is_comment_or_blank(line)) continue;
+    if (lower(Tokenizer(line, false).next()) == "end") {
+      ended = true;
+      break;
+    }
+    if (body.rows.size() == declared) reader.fail("more rows than the " + std::to_string(declared) + " of the header");
+    body.rows.push_back(read_row(reader, line, body.rows.size() + 1, element));
+  }
+  if (!ended) reader.fail("no 'end' line");
+  if (body.rows.size() != declared) {
+    reader.fail(std::to_string(body.rows.size()) + " rows before 'end', the header says " + std::to_string(declared));
+  }
+  while (reader.next(line)) {
+    if (is_comment_or_blank(line)) continue;
+    Tokenizer tokens(line, false);
+    if (lower(tokens.next()) == "linearity") read_linearity(reader, tokens, body);
+  }
+  for (const std::uint64_t i : body.linearity) {
+    if (i == 0 || i > declared) reader.fail("linearity index " + std::to_string(i) + " is not a row (1 to " + std::to_string(declared) + ")");
+  }
+  return body;
+}
+
+HalfspaceSystem read_cdd_halfspaces(LineReader& reader) {
+  CddBody body = read_cdd(reader, "H-representation", "V-representation", reader.limits().max_faces, "row");
+  std::vector<bool> equality(body.rows.size(), false);
+  for (const std::uint64_t i : body.linearity) equality[i - 1] = true;
+  HalfspaceSystem system;
+  for (std::size_t i = 0; i < body.rows.size(); ++i) {
+    auto& r = body.rows[i];
+    HalfspaceRow row{Vec3{-r[1], -r[2], -r[3]}, std::move(r[0])};
+    (equality[i] ? system.equalities : system.inequalities).push_back(std::move(row));
+  }
+  return system;
+}
+
+HalfspaceSystem read_plain_halfspaces(LineReader& reader) {
+  HalfspaceSystem system;
+  std::string_view line;
+  while (reader.next(line)) {
+    if (Tokenizer(line).at_end()) continue;
+    if (system.inequalities.size() >= reader.limits().max_faces) reader.fail("more rows than the limit", ErrorCategory::limit);
+    const auto end = line.find('#');
+    auto r = read_row(reader, line.substr(0, end), system.inequalities.size() + 1, "row");
+    system.inequalities.push_back({Vec3{std::move(r[0]), std::move(r[1]), std::move(r[2])}, std::move(r[3])});
+  }
+  return system;
+}
+
+std::ifstream open_for_reading(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw Error(ErrorCategory::io, "cannot read '" + path.string() + "': it is a directory");
+  }
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const int error = errno;
+    throw Error(ErrorCategory::io, "cannot open '" + path.string() + "'" +
+                                       (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
+  }
+  return in;
+}
+
+bool all_integers(const HalfspaceSystem& system) {
+  const auto integer = [](const HalfspaceRow& r) {
+    return r.normal.x.get_den() == 1 && r.normal.y.get_den() == 1 && r.normal.z.get_den() == 1 && r.offset.get_den() == 1;
+  };
+  return std::all_of(system.equalities.begin(), system.equalities.end(), integer) &&
+         std::all_of(system.inequalities.begin(), system.inequalities.end(), integer);
+}
+
+void write_cdd_row(std::ostream& out, const HalfspaceRow& r) {
+  out << to_string(r.offset) << ' ' << to_string(-r.normal.x) << ' ' << to_string(-r.normal.y) << ' '
+      << to_string(-r.normal.z) << '\n';
+}
+
+void write_plain_row(std::ostream& out, const Vec3& a, const Rational& b) {
+  out << to_string(a.x) << ' ' << to_string(a.y) << ' ' << to_string(a.z) << ' ' << to_string(b) << '\n';
+}
+
+}  // namespace
+
+HalfspaceFormat halfspace_format_from_extension(const std::filesystem::path& path) {
+  return lower(path.extension().string()) == ".ine" ? HalfspaceFormat::cdd : HalfspaceFormat::plain;
+}
+
+HalfspaceSystem read_halfspaces(std::istream& in, HalfspaceFormat format, std::string_view source,
+                                const ReadLimits& limits) {
+  LineReader reader(in, source, limits);
+  return format == HalfspaceFormat::cdd ? read_cdd_halfspaces(reader) : read_plain_halfspaces(reader);
+}
+
+HalfspaceSystem read_halfspace_file(const std::filesystem::path& path, const ReadLimits& limits) {
+  std::ifstream in = open_for_reading(path);
+  return read_halfspaces(in, halfspace_format_from_extension(path), path.string(), limits);
+}
+
+void write_halfspaces(std::ostream& out, const HalfspaceSystem& system, HalfspaceFormat format) {
+  if (format == HalfspaceFormat::plain) {
+    out << "# a b c d: a*x + b*y + c*z <= d\n";
+    for (const HalfspaceRow& r : system.equalities) {
+      write_plain_row(out, r.normal, r.offset);
+      write_plain_row(out, -r.normal, -r.offset);
+    }
+    for (const HalfspaceRow& r : system.inequalities) write_plain_row(out, r.normal, r.offset);
+    return;
+  }
+  out << "H-representation\n";
+  if (!system.equalities.empty()) {
+    out << "linearity " << system.equalities.size();
+    for (std::size_t i = 1; i <= system.equalities.size(); ++i) out << ' ' << i;
+    out << '\n';
+  }
+  out << "begin\n"
+      << system.equalities.size() + system.inequalities.size() << " 4 "
+      << (all_integers(system) ? "integer" : "rational") << '\n';
+  for (const HalfspaceRow& r : system.equalities) write_cdd_row(out, r);
+  for (const HalfspaceRow& r : system.inequalities) write_cdd_row(out, r);
+  out << "end\n";
+}
+
+void write_halfspace_file(const std::filesystem::path& path, const HalfspaceSystem& system) {
+  const HalfspaceFormat format = halfspace_format_from_extension(path);
+  io_detail::write_atomically(path, [&](std::ostream& out) { write_halfspaces(out, system, format); });
+}
+
+std::vector<Vec3> read_cdd_points(std::istream& in, std::string_view source, const ReadLimits& limits) {
+  LineReader reader(in, source, limits);
+  const CddBody body = read_cdd(reader, "V-representation", "H-representation", limits.max_vertices, "vertex");
+  if (!body.linearity.empty()) reader.fail("linearity in a V-representation describes lines: unbounded sets are not supported");
+  std::vector<Vec3> points;
+  points.reserve(body.rows.size());
+  for (std::size_t i = 0; i < body.rows.size(); ++i) {
+    const auto& r = body.rows[i];
+    if (r[0] != 1) {
+      throw Error(ErrorCategory::parse, std::string(source) + ": vertex " + std::to_string(i + 1) +
+                                            (r[0] == 0 ? " is a ray (first number 0): unbounded sets are not supported"
+                                                       : " does not start with 1"));
+    }
+    points.push_back(Vec3{r[1], r[2], r[3]});
+  }
+  return points;
+}
+
+void write_cdd_points(std::ostream& out, const ConvexSet& set) {
+  const std::vector<Vec3> v = set.vertices();
+  const bool integer = std::all_of(v.begin(), v.end(), [](const Vec3& p) {
+    return p.x.get_den() == 1 && p.y.get_den() == 1 && p.z.get_den() == 1;
+  });
+  out << "V-representation\nbegin\n" << v.size() << " 4 " << (integer ? "integer" : "rational") << '\n';
+  for (const Vec3& p : v) out << "1 " << to_string(p.x) << ' ' << to_string(p.y) << ' ' << to_string(p.z) << '\n';
+  out << "end\n";
+}
+
+void write_cdd_points_file(const std::filesystem::path& path, const ConvexSet& set) {
+  io_detail::write_atomically(path, [&](std::ostream& out) { write_cdd_points(out, set); });
+}
+
+}  // namespace cvms

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: MIT
+// Half-spaces in and out and the Pontryagin difference (issue 16), against
+// independent oracles: the brute-force vertex enumeration over all triples
+// of rows (support/halfspace_oracle.hpp), the brute-force hull of
+// support/set_oracle.hpp, and hand-checked sets. Seeded random cases print
+// their seed on failure.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cvms/convex_hull.hpp"
+#include "cvms/error.hpp"
+#include "cvms/halfspaces.hpp"
+#include "cvms/set_sum.hpp"
+#include "cvms/shapes.hpp"
+#include "support/halfspace_oracle.hpp"
+#include "support/hand_solids.hpp"
+#include "support/random_numbers.hpp"
+#include "support/random_sets.hpp"
+#include "support/set_oracle.hpp"
+
+namespace cvms {
+namespace {
+
+using test::describe_set;
+using test::v3;
+using Rng = std::mt19937_64;
+
+HalfspaceRow row(long x, long y, long z, const Rational& b) { return {v3(x, y, z), b}; }
+
+std::vector<HalfspaceRow> box_rows(long lo, long hi) {
+  return {row(1, 0, 0, hi), row(-1, 0, 0, -lo), row(0, 1, 0, hi),
+          row(0, -1, 0, -lo), row(0, 0, 1, hi), row(0, 0, -1, -lo)};
+}
+
+ConvexSet cube_set(long lo, long hi) { return ConvexSet(shapes::box(v3(lo, lo, lo), v3(hi, hi, hi))); }
+
+bool is_primitive_integer(const HalfspaceRow& r) {
+  mpz_class g = 0;
+  for (const Rational* p : {&r.normal.x, &r.normal.y, &r.normal.z, &r.offset}) {
+    if (p->get_den() != 1) return false;
+    mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p->get_num_mpz_t());
+  }
+  return g == 1;
+}
+
+TEST(FromHalfspaces, CubeWithRedundantDuplicatedAndScaledRows) {
+  std::vector<HalfspaceRow> rows = box_rows(-1, 1);
+  rows.push_back(row(1, 1, 1, 3));      // touches a vertex only
+  rows.push_back(row(1, 1, 0, 5));      // far away
+  rows.push_back(row(3, 0, 0, 3));      // x <= 1 scaled
+  rows.push_back(rows[0]);              // duplicated
+  rows.push_back(row(0, 0, 0, 0));      // zero row that holds
+  EXPECT_EQ(describe_set(from_halfspaces(rows)), describe_set(cube_set(-1, 1)));
+}
+
+TEST(FromHalfspaces, ImpliedEqualitiesGiveLowerDimensions) {
+  std::vector<HalfspaceRow> square = {row(1, 0, 0, 1), row(-1, 0, 0, 1), row(0, 1, 0, 1),
+                                      row(0, -1, 0, 1), row(0, 0, 1, 0), row(0, 0, -1, 0)};
+  const ConvexSet s = from_halfspaces(square);
+  EXPECT_EQ(describe_set(s),
+            describe_set(ConvexSet::polygon(std::vector<Vec3>{v3(-1, -1, 0), v3(1, -1, 0), v3(1, 1, 0), v3(-1, 1, 0)})));
+  // An equality implied only by a combination: x + y <= 0, x >= 0, y >= 0.
+  std::vector<HalfspaceRow> corner = {row(1, 1, 0, 0), row(-1, 0, 0, 0), row(0, -1, 0, 0), row(0, 0, 1, 2),
+                                      row(0, 0, -1, 3)};
+  EXPECT_EQ(describe_set(from_halfspaces(corner)), describe_set(ConvexSet::segment(v3(0, 0, -3), v3(0, 0, 2))));
+  std::vector<HalfspaceRow> point = {row(1, 1, 1, 0), row(-1, 0, 0, 0), row(0, -1, 0, 0), row(0, 0, -1, 0)};
+  EXPECT_EQ(describe_set(from_halfspaces(point)), describe_set(ConvexSet::point(v3(0, 0, 0))));
+  // A tilted plane through rational points, as an equality of a system.
+  HalfspaceSystem tilted{{row(1, 2, 3, Rational(1, 3))}, box_rows(-2, 2)};
+  const ConvexSet t = from_halfspaces(tilted);
+  EXPECT_EQ(t.dimension(), 2);
+  EXPECT_EQ(describe_set(t), test::brute_force_intersection(
+                                 [&] {
+                                   std::vector<HalfspaceRow> r = tilted.inequalities;
+                                   r.push_back(tilted.equalities[0]);
+                                   r.push_back({-tilted.equalities[0].normal, -tilted.equalities[0].offset});
+                                   return r;
+                                 }()));
+}
+
+TEST(FromHalfspaces, EmptySystems) {
+  EXPECT_TRUE(from_halfspaces(std::vector<HalfspaceRow>{row(1, 0, 0, 0), row(-1, 0, 0, -1)}).empty());
+  EXPECT_TRUE(from_halfspaces(std::vector<HalfspaceRow>{row(0, 0, 0, -1)}).empty());
+  // Empty only within an implied plane.
+  std::vector<HalfspaceRow> rows = box_rows(-1, 1);
+  rows.push_back(row(0, 0, 1, -1));  // z == -1 implied
+  rows.push_back(row(1, 1, 0, -3));  // x + y <= -3 misses the face
+  EXPECT_TRUE(from_halfspaces(rows).empty());
+}
+
+template <class Call>
+void expect_invalid_argument(Call&& call, const std::string& fragment) {
+  try {
+    call();
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+void expect_unbounded(const std::vector<HalfspaceRow>& rows) {
+  const HalfspaceIntersection r = intersect_halfspaces(rows);
+  ASSERT_TRUE(r.unbounded_direction.has_value());
+  EXPECT_FALSE(is_zero(*r.unbounded_direction));
+  for (const HalfspaceRow& h : rows) EXPECT_LE(dot(h.normal, *r.unbounded_direction), 0);
+  expect_invalid_argument([&] { (void)from_halfspaces(rows); }, "unbounded in direction");
+}
+
+TEST(FromHalfspaces, UnboundedSystemsNameADirection) {
+  expect_unbounded({row(1, 0, 0, 0)});
+  expect_unbounded({});
+  expect_unbounded({row(1, 0, 0, 1), row(-1, 0, 0, 1), row(0, 1, 0, 1), row(0, -1, 0, 1)});  // a prism
+  expect_unbounded({row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, 0, 1, 1), row(1, -1, 0, 0)});  // a cone
+  expect_unbounded({row(0, 0, 1, 0), row(0, 0, -1, 0), row(1, 0, 0, 1), row(0, 1, 0, 1)});  // a flat quadrant
+  expect_unbounded({row(0, 0, 1, 0), row(0, 0, -1, 0), row(0, 1, 0, 0), row(0, -1, 0, 0), row(1, 0, 0, 5)});  // a ray
+  expect_unbounded({row(1, 1, 0, 1), row(-1, -1, 0, 1), row(0, 0, 1, 1), row(0, 0, -1, 1)});  // a slab strip
+}
+
+TEST(FromHalfspaces, DoublesAndIntegers) {
+  const std::vector<std::array<double, 4>> d = {{1, 0, 0, 0.5}, {-1, 0, 0, 0.5}, {0, 1, 0, 0.5},
+                                                {0, -1, 0, 0.5}, {0, 0, 1, 0.5}, {0, 0, -1, 0.5}};
+  EXPECT_EQ(describe_set(from_halfspaces(d)),
+            describe_set(ConvexSet(shapes::box(Vec3{Rational(-1, 2), Rational(-1, 2), Rational(-1, 2)},
+                                       Vec3{Rational(1, 2), Rational(1, 2), Rational(1, 2)}))));
+  const std::vector<std::array<long long, 4>> i = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1},
+                                                   {0, -1, 0, 1}, {0, 0, 1, 1}, {0, 0, -1, 1}};
+  EXPECT_EQ(describe_set(from_halfspaces(i)), describe_set(cube_set(-1, 1)));
+  std::vector<std::array<double, 4>> bad = d;
+  bad[3][1] = std::numeric_limits<double>::quiet_NaN();
+  expect_invalid_argument([&] { (void)from_halfspaces(bad); }, "row 3");
+}
+
+TEST(ToHalfspaces, ShapesRoundTripWithPrimitiveRows) {
+  for (const ConvexPolyhedron& p : {shapes::tetrahedron(), shapes::cube(), shapes::octahedron(), shapes::truncated_cube(), shapes::geodesic_sphere(2)}) {
+    const ConvexSet s(p);
+    const HalfspaceSystem rows = to_halfspaces(s);
+    EXPECT_TRUE(rows.equalities.empty());
+    EXPECT_EQ(rows.inequalities.size(), p.num_facets());
+    for (const HalfspaceRow& r : rows.inequalities) EXPECT_TRUE(is_primitive_integer(r));
+    EXPECT_EQ(describe_set(from_halfspaces(rows)), describe_set(s));
+  }
+  EXPECT_TRUE(from_halfspaces(to_halfspaces(ConvexSet())).empty());
+}
+
+TEST(ToHalfspaces, RandomSetsOfEveryDimensionRoundTrip) {
+  for (std::uint64_t seed = 0; seed < 600; ++seed) {
+    Rng rng(seed);
+    const int dim = static_cast<int>(seed % 4);
+    const ConvexSet s = test::random_set(rng, dim, Vec3{Rational(1, 3), Rational(-2), Rational(5, 2)});
+    const HalfspaceSystem rows = to_halfspaces(s);
+    EXPECT_EQ(rows.equalities.size(), static_cast<std::size_t>(3 - dim)) << "seed " << seed;
+    for (const auto* list : {&rows.equalities, &rows.inequalities}) {
+      for (const HalfspaceRow& r : *list) EXPECT_TRUE(is_primitive_integer(r)) << "seed " << seed;
+    }
+    EXPECT_EQ(describe_set(from_halfspaces(rows)), describe_set(s)) << "seed " << seed;
+  }
+}
+
+// Random normals on a small grid with offsets so that the origin region is
+// kept, plus a box: many redundant and near-degenerate rows.
+std::vector<HalfspaceRow> random_system(Rng& rng) {
+  std::uniform_int_distribution<int> small(-2, 2);
+  std::vector<HalfspaceRow> rows = box_rows(-3, 3);
+  const int n = 3 + static_cast<int>(rng() % 10);
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a = v3(small(rng), small(rng), small(rng));
+    rows.push_back({a, test::fraction(small(rng), 1 + static_cast<long>(rng() % 2))});
+  }
+  std::shuffle(rows.begin(), rows.end(), rng);
+  return rows;
+}
+
+TEST(FromHalfspaces, RandomSystemsMatchTheBruteForceEnumeration) {
+  for (std::uint64_t seed = 0; seed < 500; ++seed) {
+    Rng rng(seed);
+    const std::vector<HalfspaceRow> rows = random_system(rng);
+    const ConvexSet s = from_halfspaces(rows);
+    EXPECT_EQ(test::check_set_invariants(s), "") << "seed " << seed;
+    const test::SetShape expected = test::brute_force_intersection(rows);
+    EXPECT_EQ(describe_set(s), expected) << "seed " << seed << test::difference(expected, describe_set(s));
+  }
+}
+
+TEST(PontryaginDifference, HandCheckedSets) {
+  const ConvexSet cube = cube_set(-1, 1);
+  const Rational h(1, 2);
+  const ConvexSet rectangle = ConvexSet::polygon(std::vector<Vec3>{
+      Vec3{-1, -h, 0}, Vec3{1, -h, 0}, Vec3{1, h, 0}, Vec3{-1, h, 0}});
+  // {x : x + R ⊆ [-1,1]^3} = {0} × [-1/2, 1/2] × [-1, 1].
+  const ConvexSet expected = ConvexSet::polygon(std::vector<Vec3>{
+      Vec3{0, -h, -1}, Vec3{0, h, -1}, Vec3{0, h, 1}, Vec3{0, -h, 1}});
+  EXPECT_EQ(describe_set(pontryagin_difference(cube, rectangle)), describe_set(expected));
+  EXPECT_EQ(describe_set(pontryagin_difference(cube, cube)), describe_set(ConvexSet::point(v3(0, 0, 0))));
+  EXPECT_TRUE(pontryagin_difference(cube, cube_set(-2, 1)).empty());
+  EXPECT_TRUE(pontryagin_difference(ConvexSet(), cube).empty());
+  EXPECT_THROW((void)pontryagin_difference(cube, ConvexSet()), Error);
+  // A flat A: the difference lies in A's plane, or is empty for a solid B.
+  EXPECT_EQ(describe_set(pontryagin_difference(rectangle, ConvexSet::segment(v3(-1, 0, 0), v3(1, 0, 0)))),
+            describe_set(ConvexSet::segment(Vec3{0, -h, 0}, Vec3{0, h, 0})));
+  EXPECT_TRUE(pontryagin_difference(rectangle, cube_set(0, 1)).empty());
+  // The difference moves with B: A ⊖ (B + t) == (A ⊖ B) − t.
+  EXPECT_EQ(describe_set(pontryagin_difference(cube, ConvexSet::point(v3(1, 2, 3)))),
+            describe_set(cube.translated(v3(-1, -2, -3))));
+}
+
+TEST(PontryaginDifference, SelfDifferenceIsTheOrigin) {
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    Rng rng(seed);
+    const ConvexSet p = test::random_set(rng, static_cast<int>(seed % 4), v3(1, -1, 2));
+    EXPECT_EQ(describe_set(pontryagin_difference(p, p)), describe_set(ConvexSet::point(v3(0, 0, 0)))) << "seed " << seed;
+  }
+}
+
+TEST(PontryaginDifference, RandomPairsMatchTheBruteForceOracle) {
+  for (std::uint64_t seed = 0; seed < 500; ++seed) {
+    Rng rng(seed);
+    const ConvexSet a = test::random_set(rng, static_cast<int>(seed % 4) == 0 ? 3 : static_cast<int>(seed % 4), v3(0, 0, 0), 3);
+    const ConvexSet b = test::random_set(rng, static_cast<int>((seed / 4) % 4), v3(0, 0, 0), 1, 4);
+    const ConvexSet d = pontryagin_difference(a, b);
+    EXPECT_EQ(test::check_set_invariants(d), "") << "seed " << seed;
+    EXPECT_EQ(describe_set(d), test::brute_force_difference(a, b)) << "seed " << seed;
+    if (!d.empty()) {
+      EXPECT_TRUE(test::contained(minkowski_sum(d, b), a)) << "seed " << seed;
+    }
+  }
+}
+
+TEST(PontryaginDifference, SumThenDifferenceGivesBackTheOperand) {
+  for (std::uint64_t seed = 0; seed < 400; ++seed) {
+    Rng rng(seed);
+    const ConvexSet a = test::random_set(rng, static_cast<int>(seed % 4), v3(1, 0, -1));
+    const ConvexSet b = test::random_set(rng, static_cast<int>((seed / 4) % 4), v3(0, 2, 0));
+    EXPECT_EQ(describe_set(pontryagin_difference(minkowski_sum(a, b), b)), describe_set(a)) << "seed " << seed;
+  }
+}
+
+TEST(MinkowskiDifference, IsTheSumWithTheReflection) {
+  const ConvexSet a = cube_set(0, 2);
+  const ConvexSet b = ConvexSet::segment(v3(0, 0, 0), v3(1, 1, 0));
+  EXPECT_EQ(describe_set(minkowski_difference(a, b)), test::sum_oracle(a, ConvexSet::segment(v3(0, 0, 0), v3(-1, -1, 0))));
+}
+
+}  // namespace
+}  // namespace cvms
