@@ -24,10 +24,12 @@
 // (polyhedron_builder.hpp) only checks the topology.
 // Cost: O(size of P) predicates plus the planar sums and the check.
 #include <cstdint>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "cvms/predicates.hpp"
+#include "output_budget.hpp"
 #include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
 
@@ -67,10 +69,20 @@ void add_stretched_facet(SweptSoup& soup, const ConvexPolyhedron& p, FaceId f, c
 
 }  // namespace
 
-ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const ConvexPolyhedron& p) {
+ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const ConvexPolyhedron& p,
+                                 const OutputBudget& budget) {
   const Mesh& m = p.mesh();
   std::vector<Sign> side(m.num_faces());
   for (FaceId f : m.faces()) side[f.index()] = sign_dot(p.normal(f), direction);
+  const auto on_silhouette = [&](HalfedgeId h) {
+    return side[m.face(h).index()] == Sign::negative && side[m.face(Mesh::twin(h)).index()] == Sign::positive;
+  };
+  // Counted before the output is made (issue 18, item 5): one facet per
+  // facet of P and per silhouette edge, fewer once coplanar ones merge.
+  std::uint64_t facets = m.num_faces();
+  for (HalfedgeId h : m.halfedges()) facets += on_silhouette(h) ? 1 : 0;
+  budget.check_count(facets, "minkowski_sum (segment + polyhedron): the sum has up to " + std::to_string(facets) +
+                                 " facets");
   SweptSoup soup(p, start, direction);
   for (FaceId f : m.faces()) {
     const Sign s = side[f.index()];
@@ -86,7 +98,7 @@ ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const
   std::vector<std::vector<Vec3>> silhouette_at(m.num_vertices());
   bool coplanar_neighbours = false;
   for (HalfedgeId h : m.halfedges()) {
-    if (side[m.face(h).index()] != Sign::negative || side[m.face(Mesh::twin(h)).index()] != Sign::positive) continue;
+    if (!on_silhouette(h)) continue;
     // h runs u -> w in the facet kept in place; the parallelogram runs the
     // other way along it, then up d, back, and down.
     const VertexId u = m.from(h), w = m.to(h);
