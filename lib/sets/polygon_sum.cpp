@@ -43,14 +43,16 @@
 // Cost: O((F + E) log |Q| + V) predicates plus the output and its check.
 #include <algorithm>
 #include <cstdint>
+#include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "cvms/planar_sum.hpp"
 #include "cvms/predicates.hpp"
+#include "first_use.hpp"
 #include "output_budget.hpp"
 #include "plane_chart.hpp"
 #include "polyhedron_builder.hpp"
@@ -108,25 +110,39 @@ class Meridians {
   std::vector<Vec2> o_;
 };
 
-// The soup of Q + P: vertex (j, v) is q_j + p_v, made on first use.
+// The soup of Q + P: vertex (j, v) is q_j + p_v. Faces are kept as keys
+// j |P| + v and numbered by first use at the end, by sorting (first_use.hpp:
+// hashed, the keys of one v collide when |P| is a multiple of the bucket
+// count).
 class SumSoup {
  public:
   SumSoup(const Meridians& q, const ConvexPolyhedron& p) : q_(q), p_(p) {}
 
-  std::uint32_t vertex(std::size_t j, VertexId v) {
-    const std::uint64_t key = std::uint64_t{j % q_.size()} * p_.num_vertices() + v.index();
-    const auto [it, fresh] = index_of_.emplace(key, static_cast<std::uint32_t>(soup_.points.size()));
-    if (fresh) soup_.points.push_back(q_.vertex(j) + p_.vertex(v));
-    return it->second;
+  [[nodiscard]] std::uint64_t vertex(std::size_t j, VertexId v) const {
+    return std::uint64_t{j % q_.size()} * p_.num_vertices() + v.index();
   }
-  void add_face(const std::vector<std::uint32_t>& face) { soup_.add_face(face); }
-  PolygonSoup take() { return std::move(soup_); }
+  void add_face(std::initializer_list<std::uint64_t> face) { add_face(std::vector<std::uint64_t>(face)); }
+  void add_face(const std::vector<std::uint64_t>& face) {
+    keys_.insert(keys_.end(), face.begin(), face.end());
+    offsets_.push_back(static_cast<std::uint32_t>(keys_.size()));
+  }
+  PolygonSoup take() {
+    FirstUse numbered = first_use(keys_, std::less<>{});
+    PolygonSoup soup;
+    soup.points.reserve(numbered.first.size());
+    const std::uint64_t n = p_.num_vertices();
+    for (std::size_t i : numbered.first)
+      soup.points.push_back(q_.vertex(keys_[i] / n) + p_.vertex(VertexId(static_cast<std::uint32_t>(keys_[i] % n))));
+    soup.face_offsets = std::move(offsets_);
+    soup.face_indices = std::move(numbered.index);
+    return soup;
+  }
 
  private:
   const Meridians& q_;
   const ConvexPolyhedron& p_;
-  std::unordered_map<std::uint64_t, std::uint32_t> index_of_;
-  PolygonSoup soup_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> offsets_{0};
 };
 
 std::vector<Vec2> charted(const std::vector<Vec3>& points, const PlaneChart& chart) {
@@ -161,7 +177,7 @@ void add_pole_facet(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p
   for (VertexId v : face) face_points.push_back(p.vertex(v));
   if (reversed) std::reverse(cycle.begin(), cycle.end());
   const PlaneChart chart(pole);
-  std::vector<std::uint32_t> out;
+  std::vector<std::uint64_t> out;
   for (const auto& [i, j] : planar_sum_indices(charted(cycle, chart), charted(face_points, chart)))
     out.push_back(soup.vertex(reversed ? q.size() - 1 - i : i, face[j]));
   soup.add_face(out);
@@ -172,7 +188,7 @@ void add_facet(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p, Fac
   const Mesh& m = p.mesh();
   const std::size_t last = q.first_after(longitude) - 1;  // the last meridian at or before n_f
   const bool on_meridian = sign_cross2(q.meridian(last), longitude) == Sign::zero;
-  std::vector<std::uint32_t> out;
+  std::vector<std::uint64_t> out;
   if (!on_meridian) {
     for (HalfedgeId h : m.face_halfedges(f)) out.push_back(soup.vertex(last + 1, m.from(h)));
   } else {  // stretched along the edge e_last

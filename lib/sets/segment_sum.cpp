@@ -25,7 +25,6 @@
 // Cost: O(size of P) predicates plus the planar sums and the check.
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "cvms/predicates.hpp"
@@ -38,17 +37,20 @@ namespace cvms::detail {
 namespace {
 
 // The soup of S + P under construction: vertex (v, endpoint) is point
-// index_of[2 v + endpoint], made on first use.
+// index_of[2 v + endpoint], made on first use (an array, not a hash map:
+// issue 18, item 1).
 class SweptSoup {
  public:
   SweptSoup(const ConvexPolyhedron& p, const Vec3& start, const Vec3& direction)
-      : p_(p), start_(start), end_(start + direction) {}
+      : p_(p), start_(start), end_(start + direction), index_of_(2 * std::size_t{p.num_vertices()}, unused) {}
 
   std::uint32_t vertex(VertexId v, int endpoint) {
-    const std::uint32_t key = 2 * v.index() + static_cast<std::uint32_t>(endpoint);
-    const auto [it, fresh] = index_of_.emplace(key, static_cast<std::uint32_t>(soup_.points.size()));
-    if (fresh) soup_.points.push_back(p_.vertex(v) + (endpoint == 0 ? start_ : end_));
-    return it->second;
+    std::uint32_t& index = index_of_[2 * std::size_t{v.index()} + static_cast<std::size_t>(endpoint)];
+    if (index == unused) {
+      index = static_cast<std::uint32_t>(soup_.points.size());
+      soup_.points.push_back(p_.vertex(v) + (endpoint == 0 ? start_ : end_));
+    }
+    return index;
   }
 
   void add_face(const std::vector<std::uint32_t>& face) { soup_.add_face(face); }
@@ -57,7 +59,8 @@ class SweptSoup {
  private:
   const ConvexPolyhedron& p_;
   Vec3 start_, end_;
-  std::unordered_map<std::uint32_t, std::uint32_t> index_of_;
+  static constexpr std::uint32_t unused = ~std::uint32_t{0};
+  std::vector<std::uint32_t> index_of_;
   PolygonSoup soup_;
 };
 
