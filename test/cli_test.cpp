@@ -436,6 +436,40 @@ TEST_F(Cli, GenZonotope) {
   expect_usage("gen zonotope --generators 0");
 }
 
+// Issue 18, item 5, for the sums of sets: a polygon plus a polyhedron (and
+// sums of many) are counted before they are built and refused with the
+// same limit error and hint as two polyhedra; a huge zonotope is refused
+// at once.
+TEST_F(Cli, SetSumLimitsRefuseBigSums) {
+  std::string polygon = "OFF\n60 1 0\n";
+  for (int k = 0; k < 60; ++k) polygon += std::to_string(k) + " 0 " + std::to_string(k * k) + "\n";
+  polygon += "60";
+  for (int k = 0; k < 60; ++k) polygon += " " + std::to_string(k);
+  write_text("parabola.off", polygon + "\n");
+  ASSERT_EQ(run("gen prism --points 40 -o prism.off").code, 0);
+  Outcome ok = run("sum parabola.off prism.off -o s.off --stats");
+  ASSERT_EQ(ok.code, 0) << ok.err;
+  const std::uint64_t facets = read_convex_set(file("s.off")).polyhedron().num_facets();
+  ASSERT_GT(facets, 500u);
+  fs::remove(file("s.off"));
+  expect_bad_input("sum parabola.off prism.off --max-facets " + std::to_string(facets - 1) + " -o s.off",
+                   "--max-facets");
+  Outcome o = run("sum parabola.off prism.off --max-facets 500 -o s.off");
+  EXPECT_NE(o.err.find("cvms: limit: "), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("(polygon + polyhedron): the sum has " + std::to_string(facets) + " facets"),
+            std::string::npos)
+      << o.err;
+  EXPECT_NE(o.err.find("; raise it with --max-facets"), std::string::npos) << o.err;
+  expect_bad_input("sum parabola.off prism.off prism.off --max-memory 64K -o s.off", "--max-memory");
+  EXPECT_FALSE(fs::exists(file("s.off")));
+  EXPECT_EQ(run("sum parabola.off prism.off --max-facets " + std::to_string(facets) + " -o s.off").code, 0);
+  // The CLI's largest zonotope: 10^10 facets, refused, nothing written.
+  o = run("gen zonotope --generators 100000 -o z.off");
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_NE(o.err.find("SumLimits::max_memory_bytes"), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(file("z.off")));
+}
+
 // ---- issue 18: atomic output, readers' limits, messages ------------------------
 
 // Item 6: `cvms sum x.stl x.stl -o x.stl` failed (beyond float) and left

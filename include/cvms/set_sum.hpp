@@ -25,7 +25,13 @@ namespace cvms {
 /// non-parallel planes as polygon + (the other's prism), whose sweep is then
 /// undone exactly.
 /// \throw Error(invalid_argument) for an unknown option value when both are
-///   polyhedra (the other cases do not read the options).
+///   polyhedra (the other cases read only options.limits).
+/// \throw Error(limit) if the sum is beyond options.limits (SumLimits:
+///   max_output_facets, max_memory_bytes), decided before the output is
+///   built: the direct constructions count their output facets first
+///   (exactly for polygon + polyhedron; for segment + polyhedron before
+///   coplanar facets merge; polygon + polygon counts polygon + the other's
+///   prism, which has at most the polygons' vertex counts more).
 /// Complexity: output-sensitive, no hull of pairwise sums: O(size of the
 ///   operands and the result) predicates (times log of the polygon's size
 ///   for a polygon and a polyhedron); for two polyhedra that of
@@ -38,6 +44,11 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
 /// summed two at a time, always the two with the fewest vertices, which
 /// keeps intermediate sums small (for n segments: a balanced tree of zonotopes).
 /// \throw Error(invalid_argument) as the sum of two (when two polyhedra meet).
+/// \throw Error(limit) if a sum of two on the way is beyond options.limits
+///   (then so is the whole: a sum has at least the facets of a partial
+///   sum); when all operands are segments and points, also if the bound of
+///   the zonotope, d (d - 1) facets for d distinct directions, is, before
+///   any sum is made.
 ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& options = {});
 
 /// The zonotope center + sum of the segments [-g, g] over the generators g
@@ -46,6 +57,9 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
 /// generators merge into one zone; coplanar ones give a polygon (a zonogon),
 /// collinear ones a segment, none the point `center`.
 /// Complexity: as minkowski_sum of the segments.
-ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators);
+/// \throw Error(limit) if n (n - 1), for n distinct generator directions, is
+///   beyond `limits` (checked first: the CLI's 100,000 generators are
+///   refused at once).
+ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators, const SumLimits& limits = {});
 
 }  // namespace cvms

@@ -28,10 +28,15 @@ OutputBudget::OutputBudget(const SumLimits& limits, const char* algorithm)
 void OutputBudget::check(std::uint64_t translated, std::uint64_t corner, std::uint64_t edge) const {
   const std::uint64_t facets = saturating_sum(saturating_sum(translated, corner), edge);
   if (facets <= max_facets_) return;
-  std::string message = std::string("minkowski_sum (") + algorithm_ + "): the sum has at least " +
-                        std::to_string(facets) + " facets (" + std::to_string(translated) + " translated, " +
-                        std::to_string(corner) + " corner and " + std::to_string(edge) +
-                        " edge facets counted when the search stopped), ";
+  check_count(facets, std::string("minkowski_sum (") + algorithm_ + "): the sum has at least " +
+                          std::to_string(facets) + " facets (" + std::to_string(translated) + " translated, " +
+                          std::to_string(corner) + " corner and " + std::to_string(edge) +
+                          " edge facets counted when the search stopped)");
+}
+
+void OutputBudget::check_count(std::uint64_t facets, const std::string& what) const {
+  if (facets <= max_facets_) return;
+  std::string message = what + ", ";
   // Name the limit that binds: the facet count, or the memory it implies.
   if (limits_.max_output_facets <= limits_.max_memory_bytes / SumLimits::bytes_per_output_facet) {
     message += "beyond the limit of " + std::to_string(limits_.max_output_facets) +

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "cvms/minkowski.hpp"
 
@@ -29,6 +30,12 @@ class OutputBudget {
   ///   max_facets(). The counts are those found so far: the message says
   ///   the sum has at least their total.
   void check(std::uint64_t translated, std::uint64_t corner, std::uint64_t edge) const;
+
+  /// \throw Error(limit) if `facets` exceed max_facets(), with the message
+  ///   `what` (which states the count) followed by the limit that binds and
+  ///   the SumLimits field to raise. For the sums of convex sets, which
+  ///   count their output facets their own way (lib/sets/).
+  void check_count(std::uint64_t facets, const std::string& what) const;
 
  private:
   SumLimits limits_;

@@ -38,14 +38,22 @@
 // the planes; re-verifying convexity (ConvexPolyhedron::from_soup) would
 // cost four times the construction on a 1,000-gon + Sphere6. The tests
 // compare every result with the exact hull of the pairwise vertex sums.
+// The output facets are counted first, from the same binary searches
+// (count_edge_facets), and checked against SumLimits before any is made.
 // Cost: O((F + E) log |Q| + V) predicates plus the output and its check.
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "cvms/planar_sum.hpp"
 #include "cvms/predicates.hpp"
+#include "first_use.hpp"
+#include "output_budget.hpp"
 #include "plane_chart.hpp"
 #include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
@@ -102,25 +110,39 @@ class Meridians {
   std::vector<Vec2> o_;
 };
 
-// The soup of Q + P: vertex (j, v) is q_j + p_v, made on first use.
+// The soup of Q + P: vertex (j, v) is q_j + p_v. Faces are kept as keys
+// j |P| + v and numbered by first use at the end, by sorting (first_use.hpp:
+// hashed, the keys of one v collide when |P| is a multiple of the bucket
+// count).
 class SumSoup {
  public:
   SumSoup(const Meridians& q, const ConvexPolyhedron& p) : q_(q), p_(p) {}
 
-  std::uint32_t vertex(std::size_t j, VertexId v) {
-    const std::uint64_t key = std::uint64_t{j % q_.size()} * p_.num_vertices() + v.index();
-    const auto [it, fresh] = index_of_.emplace(key, static_cast<std::uint32_t>(soup_.points.size()));
-    if (fresh) soup_.points.push_back(q_.vertex(j) + p_.vertex(v));
-    return it->second;
+  [[nodiscard]] std::uint64_t vertex(std::size_t j, VertexId v) const {
+    return std::uint64_t{j % q_.size()} * p_.num_vertices() + v.index();
   }
-  void add_face(const std::vector<std::uint32_t>& face) { soup_.add_face(face); }
-  PolygonSoup take() { return std::move(soup_); }
+  void add_face(std::initializer_list<std::uint64_t> face) { add_face(std::vector<std::uint64_t>(face)); }
+  void add_face(const std::vector<std::uint64_t>& face) {
+    keys_.insert(keys_.end(), face.begin(), face.end());
+    offsets_.push_back(static_cast<std::uint32_t>(keys_.size()));
+  }
+  PolygonSoup take() {
+    FirstUse numbered = first_use(keys_, std::less<>{});
+    PolygonSoup soup;
+    soup.points.reserve(numbered.first.size());
+    const std::uint64_t n = p_.num_vertices();
+    for (std::size_t i : numbered.first)
+      soup.points.push_back(q_.vertex(keys_[i] / n) + p_.vertex(VertexId(static_cast<std::uint32_t>(keys_[i] % n))));
+    soup.face_offsets = std::move(offsets_);
+    soup.face_indices = std::move(numbered.index);
+    return soup;
+  }
 
  private:
   const Meridians& q_;
   const ConvexPolyhedron& p_;
-  std::unordered_map<std::uint64_t, std::uint32_t> index_of_;
-  PolygonSoup soup_;
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> offsets_{0};
 };
 
 std::vector<Vec2> charted(const std::vector<Vec3>& points, const PlaneChart& chart) {
@@ -155,7 +177,7 @@ void add_pole_facet(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p
   for (VertexId v : face) face_points.push_back(p.vertex(v));
   if (reversed) std::reverse(cycle.begin(), cycle.end());
   const PlaneChart chart(pole);
-  std::vector<std::uint32_t> out;
+  std::vector<std::uint64_t> out;
   for (const auto& [i, j] : planar_sum_indices(charted(cycle, chart), charted(face_points, chart)))
     out.push_back(soup.vertex(reversed ? q.size() - 1 - i : i, face[j]));
   soup.add_face(out);
@@ -166,7 +188,7 @@ void add_facet(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p, Fac
   const Mesh& m = p.mesh();
   const std::size_t last = q.first_after(longitude) - 1;  // the last meridian at or before n_f
   const bool on_meridian = sign_cross2(q.meridian(last), longitude) == Sign::zero;
-  std::vector<std::uint32_t> out;
+  std::vector<std::uint64_t> out;
   if (!on_meridian) {
     for (HalfedgeId h : m.face_halfedges(f)) out.push_back(soup.vertex(last + 1, m.from(h)));
   } else {  // stretched along the edge e_last
@@ -176,15 +198,25 @@ void add_facet(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p, Fac
   soup.add_face(out);
 }
 
+// The longitudes of the ends of e's arc, counterclockwise; none if the arc
+// turns by zero (through a pole, along a meridian, or a pole at an end).
+std::optional<std::pair<Vec2, Vec2>> ccw_arc(const Mesh& m, EdgeId e, const std::vector<Vec2>& longitudes) {
+  const HalfedgeId h0 = Mesh::halfedge(e);
+  const Vec2& a = longitudes[m.face(h0).index()];
+  const Vec2& b = longitudes[m.face(Mesh::twin(h0)).index()];
+  const Sign turn = sign_cross2(a, b);
+  if (turn == Sign::zero) return std::nullopt;
+  return turn == Sign::positive ? std::pair{a, b} : std::pair{b, a};
+}
+
 // The parallelograms g + e_i for the meridians the arc of g's edge crosses.
 void add_edge_facets(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& p, EdgeId e,
                      const std::vector<Vec2>& longitudes) {
   const Mesh& m = p.mesh();
+  const auto arc = ccw_arc(m, e, longitudes);
+  if (!arc) return;
+  const auto& [a, b] = *arc;
   const HalfedgeId h0 = Mesh::halfedge(e);
-  Vec2 a = longitudes[m.face(h0).index()], b = longitudes[m.face(Mesh::twin(h0)).index()];
-  const Sign turn = sign_cross2(a, b);  // zero: through a pole, along a meridian, or a pole at an end
-  if (turn == Sign::zero) return;
-  if (turn == Sign::negative) std::swap(a, b);
   for (std::size_t i = q.first_after(a), steps = 0; steps < q.size(); ++i, ++steps) {
     if (!ccw_in_between(q.meridian(i), a, b)) break;
     // h runs u -> w in the facet on the side of q_i (dot(n, e_i) < 0).
@@ -194,20 +226,42 @@ void add_edge_facets(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& 
   }
 }
 
+// How many parallelograms add_edge_facets makes for e, without making them
+// (issue 18, item 5: the output is counted before it is built): the
+// meridians strictly inside the arc's longitude interval (a, b) are the
+// cyclic run from the first after a to the last at or before b, less the
+// last if it is at b. Two binary searches.
+std::uint64_t count_edge_facets(const Meridians& q, const Mesh& m, EdgeId e, const std::vector<Vec2>& longitudes) {
+  const auto arc = ccw_arc(m, e, longitudes);
+  if (!arc) return 0;
+  const auto& [a, b] = *arc;
+  const std::size_t n = q.size(), first = q.first_after(a), end = q.first_after(b);
+  std::size_t count = (end % n + n - first % n) % n;  // meridians in (a, b]
+  if (count > 0 && sign_cross2(q.meridian(end - 1), b) == Sign::zero) --count;
+  return count;
+}
+
 }  // namespace
 
-ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p) {
+ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
+                                 const std::string& what) {
   const Meridians q(polygon);
   const Mesh& m = p.mesh();
-  SumSoup soup(q, p);
-  add_pole_facet(soup, q, p, polygon.normal(), false);
-  add_pole_facet(soup, q, p, -polygon.normal(), true);
   std::vector<Vec2> longitudes;
   longitudes.reserve(m.num_faces());
   for (FaceId f : m.faces()) longitudes.push_back(q.longitude(p.normal(f)));
+  const auto is_pole = [&](FaceId f) { return sgn(longitudes[f.index()].x) == 0 && sgn(longitudes[f.index()].y) == 0; };
+  // The facets, counted before any is made: the two poles, P's facets that
+  // are not poles, and the parallelograms.
+  std::uint64_t facets = 2;
+  for (FaceId f : m.faces()) facets += is_pole(f) ? 0 : 1;
+  for (EdgeId e : m.edges()) facets = saturating_sum(facets, count_edge_facets(q, m, e, longitudes));
+  budget.check_count(facets, "minkowski_sum (" + what + "): the sum has " + std::to_string(facets) + " facets");
+  SumSoup soup(q, p);
+  add_pole_facet(soup, q, p, polygon.normal(), false);
+  add_pole_facet(soup, q, p, -polygon.normal(), true);
   for (FaceId f : m.faces())
-    if (sgn(longitudes[f.index()].x) != 0 || sgn(longitudes[f.index()].y) != 0)  // not a pole
-      add_facet(soup, q, p, f, longitudes[f.index()]);
+    if (!is_pole(f)) add_facet(soup, q, p, f, longitudes[f.index()]);
   for (EdgeId e : m.edges()) add_edge_facets(soup, q, p, e, longitudes);
   return ConvexSet(detail::trusted_polyhedron(soup.take()));
 }

@@ -24,10 +24,11 @@
 // (polyhedron_builder.hpp) only checks the topology.
 // Cost: O(size of P) predicates plus the planar sums and the check.
 #include <cstdint>
-#include <unordered_map>
+#include <string>
 #include <vector>
 
 #include "cvms/predicates.hpp"
+#include "output_budget.hpp"
 #include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
 
@@ -36,17 +37,20 @@ namespace cvms::detail {
 namespace {
 
 // The soup of S + P under construction: vertex (v, endpoint) is point
-// index_of[2 v + endpoint], made on first use.
+// index_of[2 v + endpoint], made on first use (an array, not a hash map:
+// issue 18, item 1).
 class SweptSoup {
  public:
   SweptSoup(const ConvexPolyhedron& p, const Vec3& start, const Vec3& direction)
-      : p_(p), start_(start), end_(start + direction) {}
+      : p_(p), start_(start), end_(start + direction), index_of_(2 * std::size_t{p.num_vertices()}, unused) {}
 
   std::uint32_t vertex(VertexId v, int endpoint) {
-    const std::uint32_t key = 2 * v.index() + static_cast<std::uint32_t>(endpoint);
-    const auto [it, fresh] = index_of_.emplace(key, static_cast<std::uint32_t>(soup_.points.size()));
-    if (fresh) soup_.points.push_back(p_.vertex(v) + (endpoint == 0 ? start_ : end_));
-    return it->second;
+    std::uint32_t& index = index_of_[2 * std::size_t{v.index()} + static_cast<std::size_t>(endpoint)];
+    if (index == unused) {
+      index = static_cast<std::uint32_t>(soup_.points.size());
+      soup_.points.push_back(p_.vertex(v) + (endpoint == 0 ? start_ : end_));
+    }
+    return index;
   }
 
   void add_face(const std::vector<std::uint32_t>& face) { soup_.add_face(face); }
@@ -55,7 +59,8 @@ class SweptSoup {
  private:
   const ConvexPolyhedron& p_;
   Vec3 start_, end_;
-  std::unordered_map<std::uint32_t, std::uint32_t> index_of_;
+  static constexpr std::uint32_t unused = ~std::uint32_t{0};
+  std::vector<std::uint32_t> index_of_;
   PolygonSoup soup_;
 };
 
@@ -67,10 +72,20 @@ void add_stretched_facet(SweptSoup& soup, const ConvexPolyhedron& p, FaceId f, c
 
 }  // namespace
 
-ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const ConvexPolyhedron& p) {
+ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const ConvexPolyhedron& p,
+                                 const OutputBudget& budget) {
   const Mesh& m = p.mesh();
   std::vector<Sign> side(m.num_faces());
   for (FaceId f : m.faces()) side[f.index()] = sign_dot(p.normal(f), direction);
+  const auto on_silhouette = [&](HalfedgeId h) {
+    return side[m.face(h).index()] == Sign::negative && side[m.face(Mesh::twin(h)).index()] == Sign::positive;
+  };
+  // Counted before the output is made (issue 18, item 5): one facet per
+  // facet of P and per silhouette edge, fewer once coplanar ones merge.
+  std::uint64_t facets = m.num_faces();
+  for (HalfedgeId h : m.halfedges()) facets += on_silhouette(h) ? 1 : 0;
+  budget.check_count(facets, "minkowski_sum (segment + polyhedron): the sum has up to " + std::to_string(facets) +
+                                 " facets");
   SweptSoup soup(p, start, direction);
   for (FaceId f : m.faces()) {
     const Sign s = side[f.index()];
@@ -86,7 +101,7 @@ ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const
   std::vector<std::vector<Vec3>> silhouette_at(m.num_vertices());
   bool coplanar_neighbours = false;
   for (HalfedgeId h : m.halfedges()) {
-    if (side[m.face(h).index()] != Sign::negative || side[m.face(Mesh::twin(h)).index()] != Sign::positive) continue;
+    if (!on_silhouette(h)) continue;
     // h runs u -> w in the facet kept in place; the parallelogram runs the
     // other way along it, then up d, back, and down.
     const VertexId u = m.from(h), w = m.to(h);

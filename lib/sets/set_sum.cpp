@@ -11,11 +11,15 @@
 // segment at a time).
 #include "cvms/set_sum.hpp"
 
+#include <algorithm>
 #include <queue>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "cvms/predicates.hpp"
+#include "output_budget.hpp"
+#include "representation_order.hpp"
 #include "set_sum_parts.hpp"
 
 namespace cvms {
@@ -30,17 +34,49 @@ ConvexSet segment_segment_sum(const std::vector<Vec3>& a, const std::vector<Vec3
   return ConvexSet::segment(a[0] + (b_along ? b[0] : b[1]), a[1] + (b_along ? b[1] : b[0]));
 }
 
-ConvexSet segment_polygon_sum(const std::vector<Vec3>& s, const ConvexSet& q) {
+ConvexSet segment_polygon_sum(const std::vector<Vec3>& s, const ConvexSet& q, const detail::OutputBudget& budget) {
   const Vec3 d = s[1] - s[0];
   if (sign_dot(d, q.normal()) == Sign::zero) return detail::coplanar_sum(s, q.vertices(), q.normal());
+  const std::uint64_t facets = q.num_vertices() + 2;
+  budget.check_count(facets, "minkowski_sum (segment + polygon): the sum has " + std::to_string(facets) + " facets");
   return ConvexSet(detail::prism(q, s[0], d));
 }
 
-ConvexSet polygon_polygon_sum(const ConvexSet& a, const ConvexSet& b) {
+ConvexSet polygon_polygon_sum(const ConvexSet& a, const ConvexSet& b, const detail::OutputBudget& budget) {
   if (a.normal() == b.normal()) return detail::coplanar_sum(a.vertices(), b.vertices(), a.normal());
-  // Not parallel: a + b = (a + prism of b) less b's sweep.
+  // Not parallel: a + b = (a + prism of b) less b's sweep. The limit is
+  // checked on the facets of a + prism, which has those of a + b and its
+  // silhouette along the sweep (at most |a| + |b| more).
   const ConvexPolyhedron swept = detail::prism(b, Vec3{0, 0, 0}, b.normal());
-  return detail::unswept(detail::polygon_polyhedron_sum(a, swept).polyhedron(), b.normal());
+  return detail::unswept(
+      detail::polygon_polyhedron_sum(a, swept, budget, "polygon + polygon, through the second one's prism").polyhedron(),
+      b.normal());
+}
+
+// The zonotope of the segments `operands` has at most d (d - 1) facets for
+// d distinct directions (exactly that many when no three are coplanar):
+// each facet is spanned by two directions and comes with its opposite.
+// Checked before any sum is made, so that a zonotope of 100,000 generators
+// (10^10 facets) is refused at once, not after its first levels of sums
+// (O(d log d): the directions are deduplicated by sorting, never hashed).
+void check_zonotope(const std::vector<const ConvexSet*>& operands, const detail::OutputBudget& budget) {
+  std::vector<Vec3> directions;
+  directions.reserve(operands.size());
+  for (const ConvexSet* s : operands) {
+    Vec3 d = primitive_direction(s->vertices()[1] - s->vertices()[0]);
+    // One direction up to sign: the first nonzero coordinate positive.
+    const Rational& first = sgn(d.x) != 0 ? d.x : (sgn(d.y) != 0 ? d.y : d.z);
+    if (sgn(first) < 0) d = -d;
+    directions.push_back(std::move(d));
+  }
+  std::sort(directions.begin(), directions.end(), detail::RepresentationLess{});
+  const auto distinct = static_cast<std::uint64_t>(
+      std::unique(directions.begin(), directions.end()) - directions.begin());
+  if (distinct < 3) return;  // a segment or a polygon
+  const std::uint64_t facets = detail::saturating_product(distinct, distinct - 1);
+  budget.check_count(facets, "minkowski_sum (zonotope of " + std::to_string(operands.size()) + " segments in " +
+                                 std::to_string(distinct) + " directions): the sum has up to " +
+                                 std::to_string(facets) + " facets");
 }
 
 }  // namespace
@@ -49,16 +85,17 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
   if (a.empty() || b.empty()) return {};
   if (a.dimension() > b.dimension()) return minkowski_sum(b, a, options);
   const std::vector<Vec3> low = a.dimension() < 3 ? a.vertices() : std::vector<Vec3>{};
+  const detail::OutputBudget budget(options.limits, "sets");
   switch (a.dimension()) {
     case 0:
       return b.translated(low[0]);
     case 1:
       if (b.dimension() == 1) return segment_segment_sum(low, b.vertices());
-      if (b.dimension() == 2) return segment_polygon_sum(low, b);
-      return detail::segment_polyhedron_sum(low[0], low[1] - low[0], b.polyhedron());
+      if (b.dimension() == 2) return segment_polygon_sum(low, b, budget);
+      return detail::segment_polyhedron_sum(low[0], low[1] - low[0], b.polyhedron(), budget);
     case 2:
-      if (b.dimension() == 2) return polygon_polygon_sum(a, b);
-      return detail::polygon_polyhedron_sum(a, b.polyhedron());
+      if (b.dimension() == 2) return polygon_polygon_sum(a, b, budget);
+      return detail::polygon_polyhedron_sum(a, b.polyhedron(), budget, "polygon + polyhedron");
     default:
       return ConvexSet(minkowski_sum(a.polyhedron(), b.polyhedron(), options).polyhedron);
   }
@@ -71,13 +108,24 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
   auto larger = [](const Entry& x, const Entry& y) { return x.first > y.first; };
   std::priority_queue<Entry, std::vector<Entry>, decltype(larger)> queue(larger);
   std::size_t position = 0;
+  std::vector<const ConvexSet*> segments;
+  bool only_segments = true;
   for (const ConvexSet& s : operands) {
     if (s.empty()) return {};
-    if (s.dimension() == 0)
+    if (s.dimension() == 0) {
       offset += s.vertices()[0];
-    else
-      queue.push({{s.num_vertices(), position++}, s});
+      continue;
+    }
+    if (s.dimension() == 1) segments.push_back(&s);
+    only_segments = only_segments && s.dimension() == 1;
   }
+  // Each sum of two checks its own output; a zonotope is also bounded as a
+  // whole first (check_zonotope). Other sums of many are checked step by
+  // step: a sum has at least the facets of each partial sum, so a step
+  // beyond the limits means the whole is too.
+  if (only_segments) check_zonotope(segments, detail::OutputBudget(options.limits, "sets"));
+  for (const ConvexSet& s : operands)
+    if (s.dimension() > 0) queue.push({{s.num_vertices(), position++}, s});
   if (queue.empty()) return ConvexSet::point(offset);
   while (queue.size() > 1) {
     ConvexSet x = queue.top().second;
@@ -90,11 +138,13 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
   return queue.top().second.translated(offset);
 }
 
-ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators) {
+ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators, const SumLimits& limits) {
   std::vector<ConvexSet> segments{ConvexSet::point(center)};
   for (const Vec3& g : generators)
     if (!is_zero(g)) segments.push_back(ConvexSet::segment(-g, g));
-  return minkowski_sum(segments);
+  Options options;
+  options.limits = limits;
+  return minkowski_sum(segments, options);
 }
 
 }  // namespace cvms

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "cvms/convex_set.hpp"
+#include "output_budget.hpp"
 
 namespace cvms::detail {
 
@@ -24,7 +26,9 @@ std::vector<std::pair<VertexId, std::uint32_t>> stretched_facet(const ConvexPoly
 
 /// [start, start + direction] + P, from P's facets split by the sign of
 /// dot(normal, direction) and its silhouette edges. \pre direction != 0.
-ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const ConvexPolyhedron& p);
+/// \throw Error(limit) if its facets, counted first, exceed `budget`.
+ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const ConvexPolyhedron& p,
+                                 const OutputBudget& budget);
 
 /// [start, start + direction] + Q for a polygon Q and a direction not in its
 /// plane: the prism. \pre dot(direction, Q.normal()) != 0.
@@ -35,6 +39,9 @@ ConvexPolyhedron prism(const ConvexSet& polygon, const Vec3& start, const Vec3& 
 ConvexSet unswept(const ConvexPolyhedron& r, const Vec3& sweep);
 
 /// Q + P for a polygon Q and a polyhedron P, from the Gaussian maps (polygon_sum.cpp).
-ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p);
+/// \throw Error(limit) if its facets, counted first, exceed `budget`; the
+///   message names the sum as `what` ("polygon + polyhedron").
+ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
+                                 const std::string& what);
 
 }  // namespace cvms::detail

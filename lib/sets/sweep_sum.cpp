@@ -18,13 +18,14 @@
 // facet of X with dot(n, s) = 0 is the side facet F + S less the sweep. When
 // X is flat (one lower and one upper facet, all sides collapse), it is the
 // lower facet. ConvexPolyhedron's checked construction merges and verifies.
-// Cost: O(size of R).
-#include <unordered_map>
+// Cost: O(size of R) plus sorting its vertices.
 #include <utility>
 #include <vector>
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "first_use.hpp"
+#include "representation_order.hpp"
 #include "set_sum_parts.hpp"
 
 namespace cvms::detail {
@@ -51,15 +52,15 @@ ConvexSet unswept(const ConvexPolyhedron& r, const Vec3& sweep) {
     if (side[f.index()] == Sign::positive)
       for (HalfedgeId h : m.face_halfedges(f)) moved[m.from(h).index()] = true;
   }
+  // Moved back, vertices may coincide (the ends of sides parallel to the
+  // sweep): merged by sorting, never hashing (first_use.hpp).
+  std::vector<Vec3> points;
+  points.reserve(m.num_vertices());
+  for (VertexId v : m.vertices()) points.push_back(moved[v.index()] ? r.vertex(v) - sweep : r.vertex(v));
+  const FirstUse merged = first_use(points, RepresentationLess{});
   PolygonSoup soup;
-  std::unordered_map<Vec3, std::uint32_t> index_of;
-  std::vector<std::uint32_t> vertex_index(m.num_vertices());
-  for (VertexId v : m.vertices()) {
-    Vec3 x = moved[v.index()] ? r.vertex(v) - sweep : r.vertex(v);
-    const auto [it, fresh] = index_of.emplace(x, static_cast<std::uint32_t>(soup.points.size()));
-    if (fresh) soup.points.push_back(std::move(x));
-    vertex_index[v.index()] = it->second;
-  }
+  for (std::size_t i : merged.first) soup.points.push_back(std::move(points[i]));
+  const std::vector<std::uint32_t>& vertex_index = merged.index;
   std::size_t lower = 0, upper = 0, sides = 0;
   std::vector<std::uint32_t> lower_face;
   for (FaceId f : m.faces()) {

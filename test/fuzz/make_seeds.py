@@ -104,6 +104,36 @@ def main():
           bytes(rng.randrange(256) for _ in range(90)))
     pts = [(rng.randint(-3, 3), rng.randint(-3, 3), rng.choice([-1, 0, 1])) for _ in range(12)]
     write("minkowski", "flat_ish_prisms.bin", bytes([0, 8]) + cloud(pts) + bytes([8]) + cloud(pts[::-1]))
+    sets_seeds()
+
+
+def grid(points):
+    """Grid points (coordinates -2..2) as decode_point(grid=True) reads them."""
+    return bytes(c + 2 for p in points for c in p)
+
+
+def sets_seeds():
+    """sets: two sets, each [mode, count - 1, points, flattening bytes]; mode
+    bits 0-1: solid, plane z = (p x + q y) / 2 + r, line o + x d, point; bit 2:
+    rational coordinates (coord) instead of the grid."""
+    os.makedirs(os.path.join(HERE, "sets"), exist_ok=True)
+    square = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+    tri = [(-2, 0, 0), (2, -1, 0), (0, 2, 0)]
+    def solid(points): return bytes([0, len(points) - 1]) + grid(points)
+    def plane(points, p, q, r): return bytes([1, len(points) - 1]) + grid(points) + bytes([p + 2, q + 2, coord(r)])
+    def line(points, d): return bytes([2, len(points) - 1]) + grid(points) + grid([d])
+    def point(p): return bytes([3, 0]) + grid([p])
+    write("sets", "cube_square.bin", solid(CUBE) + plane(square, 0, 0, 0))
+    write("sets", "cube_tilted_triangle.bin", solid(CUBE) + plane(tri, 1, -1, 1))
+    write("sets", "square_parallel_square.bin", plane(square, 0, 0, 0) + plane(tri, 0, 0, 2))
+    write("sets", "polygons_skew.bin", plane(square, 2, 0, 0) + plane(tri, 0, -2, 1))
+    write("sets", "segment_cube.bin", line([(0, 0, 0), (2, 0, 0)], (1, 1, 0)) + solid(CUBE))
+    write("sets", "segment_along_edge.bin", line([(0, 0, 0), (1, 0, 0)], (1, 0, 0)) + solid(CUBE))
+    write("sets", "segments_skew.bin", line([(0, 0, 0), (1, 0, 0)], (1, 2, 0)) + line([(0, 0, 0), (1, 0, 0)], (0, 1, 2)))
+    write("sets", "segment_in_polygon_plane.bin", line([(0, 0, 0), (2, 0, 0)], (1, -1, 0)) + plane(tri, 0, 0, 0))
+    write("sets", "point_tetra.bin", point((1, -1, 2)) + solid(TETRA))
+    write("sets", "octa_rational_plane.bin", solid(OCTA) + bytes([5, 3]) + cloud([(1, 0, 0), (0, (1, 3), 0), (-1, 0, 0), (0, -1, 0)]) +
+          bytes([3, 1, coord(1, 2)]))
 
 
 if __name__ == "__main__":

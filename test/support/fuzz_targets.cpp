@@ -15,6 +15,8 @@
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/set_sum.hpp"
+#include "support/set_oracle.hpp"
 
 namespace cvms::fuzz {
 namespace {
@@ -574,6 +576,61 @@ void minkowski_target(std::span<const std::uint8_t> data) {
   expect_same(canonical(essdms), expected, "essdms(A, B) differs from chms(A, B)");
 }
 
+namespace {
+
+// One small convex set of any dimension: a cloud (bits 0-1 of the mode
+// byte: kept, flattened onto a plane z = (p x + q y) / 2 + r, onto a line
+// o + x d, or to its first point; bit 2: rational coordinates instead of the
+// grid); the set is the hull in the dimension it spans.
+ConvexSet decode_set(ByteStream& in) {
+  const std::uint8_t mode = in.next();
+  const bool grid = (mode & 4) == 0;
+  std::vector<Vec3> points = decode_cloud(in, 1 + in.next() % 12, grid);
+  if (points.empty()) points.push_back(Vec3{0, 0, 0});
+  switch (mode & 3) {
+    case 1: {  // a plane
+      const Rational p = fraction(static_cast<long>(in.next() % 5) - 2, 2);
+      const Rational q = fraction(static_cast<long>(in.next() % 5) - 2, 2);
+      const Rational r = decode_coordinate(in.next());
+      for (Vec3& x : points) x.z = p * x.x + q * x.y + r;
+      break;
+    }
+    case 2: {  // a line
+      const Vec3 d = decode_point(in, true);
+      const Vec3 o = points[0];
+      for (Vec3& x : points) x = o + x.x * d;
+      break;
+    }
+    case 3:  // a point
+      points.resize(1);
+      break;
+    default:
+      break;
+  }
+  return convex_hull_set(points);
+}
+
+}  // namespace
+
+void sets_target(std::span<const std::uint8_t> data) {
+  ByteStream in(data);
+  const ConvexSet a = decode_set(in);
+  const ConvexSet b = decode_set(in);
+  for (Algorithm algorithm : {Algorithm::cvms, Algorithm::essdms, Algorithm::chms}) {
+    // check_set_sum: both orders, the representation's invariants, and the
+    // hull of the pairwise vertex sums (support/set_oracle.hpp), exactly.
+    std::string bad;
+    try {
+      bad = test::check_set_sum(a, b, with(algorithm));
+    } catch (const Error& e) {  // no input of this size may be refused
+      bad = std::string("threw ") + e.what();
+    }
+    if (!bad.empty())
+      finding("minkowski_sum of sets (dimensions " + std::to_string(a.dimension()) + ", " +
+              std::to_string(b.dimension()) + ", " + to_string(algorithm) + "): " + bad);
+  }
+}
+
 Target target_by_name(const std::string& name) {
   if (name == "read_off") return &read_off_target;
   if (name == "read_obj") return &read_obj_target;
@@ -581,11 +638,12 @@ Target target_by_name(const std::string& name) {
   if (name == "read_points") return &read_points_target;
   if (name == "from_soup") return &from_soup_target;
   if (name == "minkowski") return &minkowski_target;
+  if (name == "sets") return &sets_target;
   return nullptr;
 }
 
 std::vector<std::string> target_names() {
-  return {"read_off", "read_obj", "read_stl", "read_points", "from_soup", "minkowski"};
+  return {"read_off", "read_obj", "read_stl", "read_points", "from_soup", "minkowski", "sets"};
 }
 
 }  // namespace cvms::fuzz

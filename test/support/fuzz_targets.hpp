@@ -52,8 +52,14 @@ void from_soup_target(std::span<const std::uint8_t> data);
 /// give identical polyhedra (vertex sets and facets: normal, offset, vertices).
 void minkowski_target(std::span<const std::uint8_t> data);
 
+/// Convex sets of every dimension: two small sets decoded from the bytes
+/// (grid points, optionally flattened onto a plane, a line or a point);
+/// minkowski_sum of the two with every algorithm, in both orders, must be
+/// exactly the hull of the pairwise vertex sums (support/set_oracle.hpp).
+void sets_target(std::span<const std::uint8_t> data);
+
 /// A target by name ("read_off", "read_obj", "read_stl", "read_points",
-/// "from_soup", "minkowski"); nullptr for an unknown name.
+/// "from_soup", "minkowski", "sets"); nullptr for an unknown name.
 using Target = void (*)(std::span<const std::uint8_t>);
 Target target_by_name(const std::string& name);
 /// All target names, in a fixed order.

@@ -15,6 +15,7 @@
 #include "cvms/shapes.hpp"
 #include "files.hpp"
 #include "set_commands.hpp"
+#include "sizes.hpp"
 
 namespace cvms::cli {
 namespace {
@@ -56,19 +57,12 @@ void print_stats(std::ostream& report, const Stats& s) {
          << "predicates: filtered " << s.predicate_filtered << ", exact " << s.predicate_exact << "\n";
 }
 
-// The library names the SumLimits field that stopped a sum; the tool adds
-// the option that raises it.
+// A limit error names the option that raises it (sizes.hpp).
 Timed limited_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args) {
   try {
     return timed_sum(a, b, args.algorithm, args.limits);
   } catch (const Error& e) {
-    const std::string_view message = e.message();
-    if (e.category() != ErrorCategory::limit) throw;
-    if (message.find("max_output_facets") != std::string_view::npos)
-      throw Error(e.category(), std::string(message) + "; raise it with --max-facets");
-    if (message.find("max_memory_bytes") != std::string_view::npos)
-      throw Error(e.category(), std::string(message) + "; raise it with --max-memory");
-    throw;
+    rethrow_with_limit_hint(e);
   }
 }
 

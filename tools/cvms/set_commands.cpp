@@ -13,6 +13,7 @@
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "files.hpp"
+#include "sizes.hpp"
 
 namespace cvms::cli {
 
@@ -57,7 +58,13 @@ void run_set_sum(const std::vector<ConvexSet>& operands, Algorithm algorithm, co
   options.algorithm = algorithm;
   options.limits = limits;
   const auto start = std::chrono::steady_clock::now();
-  const ConvexSet sum = minkowski_sum(operands, options);
+  const ConvexSet sum = [&] {
+    try {
+      return minkowski_sum(operands, options);
+    } catch (const Error& e) {
+      rethrow_with_limit_hint(e);  // as for two polyhedra: the option to raise
+    }
+  }();
   const std::chrono::duration<double, std::milli> time = std::chrono::steady_clock::now() - start;
   write_set(output, sum, coordinates, format);
   if (!stats) return;

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <limits>
 #include <stdexcept>
+#include <string_view>
 
 namespace cvms::cli {
 
@@ -53,6 +54,19 @@ std::string format_byte_size(std::uint64_t bytes) {
     suffix = next;
   }
   return std::to_string(bytes) + suffix;
+}
+
+// The library names the SumLimits field that stopped a sum; the tool adds
+// the option that raises it.
+void rethrow_with_limit_hint(const Error& e) {
+  const std::string_view message = e.message();
+  if (e.category() == ErrorCategory::limit) {
+    if (message.find("max_output_facets") != std::string_view::npos)
+      throw Error(e.category(), std::string(message) + "; raise it with --max-facets");
+    if (message.find("max_memory_bytes") != std::string_view::npos)
+      throw Error(e.category(), std::string(message) + "; raise it with --max-memory");
+  }
+  throw e;
 }
 
 }  // namespace cvms::cli

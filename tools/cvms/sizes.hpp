@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include "cvms/error.hpp"
+
 namespace cvms::cli {
 
 /// The number of bytes `text` spells.
@@ -16,5 +18,10 @@ std::uint64_t parse_byte_size(const std::string& text);
 /// `bytes` in the shortest spelling parse_byte_size reads back exactly
 /// ("4G" for 4 GiB, "1000" for 1000).
 std::string format_byte_size(std::uint64_t bytes);
+
+/// Rethrows `e`; an Error(limit) naming SumLimits::max_output_facets or
+/// max_memory_bytes (as the library's sums do) gets the option that raises
+/// it appended ("; raise it with --max-facets"). For every `cvms sum` path.
+[[noreturn]] void rethrow_with_limit_hint(const Error& e);
 
 }  // namespace cvms::cli
