@@ -501,5 +501,74 @@ TEST(RationalText, FractionWithBothPartsOverTheCapNamesEither) {
   EXPECT_EQ(r.bits, 67u);
 }
 
+// The fast path (short decimals and exact expansions of doubles, built from
+// machine words) against the independent construction M x 10^e, on the shapes
+// it takes and the edges around it: 18/19/20 digits, leading and trailing
+// zeros, a bare '.', signs, "-0", scales near its limit of 350 and caps at
+// the exact size of the value.
+std::string with_point(const std::string& digits, std::size_t places) {
+  std::string s = digits;
+  if (s.size() <= places) s.insert(0, places + 1 - s.size(), '0');
+  s.insert(s.size() - places, 1, '.');
+  return s;
+}
+
+TEST(RationalText, FastPathAgreesWithTheConstructionOnItsShapes) {
+  test::Rng rng(1414);
+  const int digit_counts[] = {1, 2, 6, 9, 17, 18, 19, 20, 21, 37, 38, 39, 40, 55, 100, 299, 300, 301, 320};
+  for (int i = 0; i < 40000; ++i) {
+    const int count = digit_counts[rng() % std::size(digit_counts)];
+    std::string digits;
+    for (int d = 0; d < count; ++d) digits += static_cast<char>('0' + rng() % 10);
+    if (rng() % 3 == 0) digits.append(rng() % 5, '0');           // trailing zeros
+    if (rng() % 4 == 0) digits.insert(0, rng() % 4, '0');        // leading zeros
+    const std::size_t places = rng() % (digits.size() + 3);
+    const long exponent = rng() % 3 == 0 ? 0 : static_cast<long>(rng() % 761) - 380;
+    const bool point = rng() % 5 != 0;
+    std::string text = point ? with_point(digits, places) : digits;
+    if (text.size() > 2 && text.front() == '0' && text[1] == '.' && rng() % 2 == 0) text.erase(0, 1);  // ".5"
+    if (rng() % 7 == 0 && text.find('.') == std::string::npos) text += '.';                        // "1."
+    const long scale = exponent - (point ? static_cast<long>(places) : 0);
+    if (exponent != 0 || rng() % 2 == 0) text += (rng() % 2 ? "e" : "E") + std::to_string(exponent);
+    const bool negative = rng() % 2 == 0;
+    if (negative) text.insert(0, "-");
+    else if (rng() % 4 == 0) text.insert(0, "+");
+    SCOPED_TRACE(text);
+    Rational expected = Rational(mpz_class(digits, 10)) * power_of_ten(scale);
+    if (negative) expected = -expected;
+    const std::uint64_t exact = std::max(num_bits(expected), den_bits(expected));
+    const std::uint64_t caps[] = {detail::gmp_max_bits, 4096, exact, exact > 1 ? exact - 1 : 1, exact + 1};
+    const std::uint64_t cap = caps[rng() % std::size(caps)];
+    Rational out = 12345;  // not zero: the parser must set both parts
+    NumberTextResult r = capped(text, cap, out);
+    const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
+    ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
+    if (fits) {
+      ASSERT_EQ(out, expected);
+      ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
+      ASSERT_GT(out.get_den(), 0);
+    }
+  }
+}
+
+TEST(RationalText, FastPathReadsExactExpansionsOfDoubles) {
+  test::Rng rng(1415);
+  for (int i = 0; i < 20000; ++i) {
+    const double d = i % 2 == 0 ? test::random_magnitude(rng, -60, 60) : test::random_double_bits(rng);
+    const Rational exact(d);
+    const std::string text = to_string(exact);
+    SCOPED_TRACE(text.substr(0, 80));
+    Rational out = 7;
+    ASSERT_EQ(capped(text, detail::gmp_max_bits, out).status, NumberTextStatus::ok);
+    ASSERT_EQ(out, exact);
+    ASSERT_EQ(out.get_den(), exact.get_den());
+  }
+  for (const char* zero : {"0", "-0", "+0", "0.000", "-.0", "0e-300", "000.000e5"}) {
+    Rational out = 3;
+    ASSERT_EQ(capped(zero, 64, out).status, NumberTextStatus::ok) << zero;
+    EXPECT_EQ(out, 0) << zero;
+  }
+}
+
 }  // namespace
 }  // namespace cvms

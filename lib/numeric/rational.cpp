@@ -6,6 +6,7 @@
 #include "cvms/rational.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -54,6 +55,162 @@ void set_digits(mpz_ptr z, std::string_view digits) {
 
 // The bit length of a number of `count` significant decimal digits, from below.
 std::uint64_t bits_of_digits_at_least(std::uint64_t count) { return times_log2_10_floor(count - 1) + 1; }
+
+// ---- The fast path: decimals of at most a few hundred digits ----------------
+// The usual OBJ/STL/OFF content is a short decimal ("0.123456") or the exact
+// expansion of a double (about 17 to 60 digits, always dyadic); both are built
+// here from machine words: the digits into limbs 19 at a time, the factors 2
+// and 5 of 10^k cancelled by counting them (M is not a multiple of 10, so at
+// most one of them cancels), never a general gcd, a digit string or a power
+// of ten. It takes only values whose parts are within max_bits by an upper
+// bound read off the text, so it never refuses what the general path would
+// accept and never builds more than the caps: its results are those of the
+// general path (test/rational_test.cpp compares them).
+
+static_assert(GMP_NUMB_BITS == 64, "the fast path assumes 64-bit limbs");
+
+constexpr std::size_t small_limbs = 16;          // 1024 bits: about 308 digits
+constexpr std::uint64_t small_max_digits = 300;  // fits small_limbs with room
+constexpr std::uint64_t small_max_scale = 350;   // |10^scale| of at most 1163 bits
+
+constexpr unsigned max_pow5_in_limb = 27;  // 5^27 < 2^63, 5^28 > 2^64
+constexpr auto pow5_table = [] {
+  std::array<std::uint64_t, max_pow5_in_limb + 1> table{};
+  table[0] = 1;
+  for (std::size_t i = 1; i < table.size(); ++i) table[i] = table[i - 1] * 5;
+  return table;
+}();
+std::uint64_t pow5(unsigned n) { return pow5_table[n]; }
+constexpr mp_limb_t ten_to_19 = 10000000000000000000u;  // < 2^64
+
+// Bits of a number of `count` decimal digits, from above (log2(10) < 3.33).
+std::uint64_t bits_of_digits_at_most(std::uint64_t count) { return count * 333 / 100 + 1; }
+
+// A non-negative integer of at most small_limbs limbs, least significant first.
+struct SmallNatural {
+  mp_limb_t limbs[small_limbs];
+  mp_size_t size = 0;  // no high zero limbs; 0 for zero
+
+  void multiply_add(mp_limb_t factor, mp_limb_t addend) {
+    mp_limb_t carry = size == 0 ? addend : mpn_mul_1(limbs, limbs, size, factor);
+    if (size == 0) {
+      if (addend != 0) limbs[size++] = addend;
+      return;
+    }
+    carry += mpn_add_1(limbs, limbs, size, addend);  // cannot both carry out
+    if (carry != 0) limbs[size++] = carry;
+  }
+  // Divides by d when it divides exactly; returns whether it did.
+  bool divide_if_exact(mp_limb_t d) {
+    mp_limb_t quotient[small_limbs];
+    if (mpn_divrem_1(quotient, 0, limbs, size, d) != 0) return false;
+    std::copy(quotient, quotient + size, limbs);
+    if (limbs[size - 1] == 0) --size;
+    return true;
+  }
+  std::uint64_t trailing_zero_bits() const {
+    std::uint64_t bits = 0;
+    mp_size_t i = 0;
+    while (limbs[i] == 0) ++i, bits += 64;
+    return bits + static_cast<std::uint64_t>(std::countr_zero(limbs[i]));
+  }
+  void shift_right(std::uint64_t bits) {
+    const auto whole = static_cast<mp_size_t>(bits / 64);
+    std::copy(limbs + whole, limbs + size, limbs);
+    size -= whole;
+    if (const auto rest = static_cast<unsigned>(bits % 64); rest != 0) mpn_rshift(limbs, limbs, size, rest);
+    if (limbs[size - 1] == 0) --size;
+  }
+  void store(mpz_ptr z, bool negative) const {
+    mp_limb_t* out = mpz_limbs_write(z, size);
+    std::copy(limbs, limbs + size, out);
+    mpz_limbs_finish(z, negative ? -size : size);
+  }
+};
+
+// The significant digits (one '.' may sit among them) as an integer.
+void set_small_digits(SmallNatural& m, std::string_view digits) {
+  mp_limb_t chunk = 0;
+  mp_limb_t chunk_scale = 1;
+  for (char c : digits) {
+    if (c == '.') continue;
+    chunk = chunk * 10 + static_cast<mp_limb_t>(c - '0');
+    chunk_scale *= 10;
+    if (chunk_scale == ten_to_19) {
+      m.multiply_add(chunk_scale, chunk);
+      chunk = 0;
+      chunk_scale = 1;
+    }
+  }
+  if (chunk_scale != 1) m.multiply_add(chunk_scale, chunk);
+}
+
+// Cancels the factors 5 of m, at most `cap` of them; returns how many.
+std::uint64_t remove_fives(SmallNatural& m, std::uint64_t cap) {
+  std::uint64_t removed = 0;
+  while (cap - removed >= max_pow5_in_limb && m.divide_if_exact(pow5(max_pow5_in_limb)))
+    removed += max_pow5_in_limb;
+  // Fewer than 27 remain (or may be taken): take them by binary descent.
+  for (unsigned step = 16; step > 0; step /= 2)
+    if (cap - removed >= step && m.divide_if_exact(pow5(step))) removed += step;
+  return removed;
+}
+
+void set_u128(mpz_ptr z, Uint128 value) {
+  const auto low = static_cast<mp_limb_t>(value);
+  const auto high = static_cast<mp_limb_t>(value >> 64);
+  mp_limb_t* out = mpz_limbs_write(z, 2);
+  out[0] = low;
+  out[1] = high;
+  mpz_limbs_finish(z, high != 0 ? 2 : (low != 0 ? 1 : 0));
+}
+
+// 2^twos 5^fives.
+void set_power_2_5(mpz_ptr z, std::uint64_t twos, std::uint64_t fives) {
+  if (fives <= max_pow5_in_limb && twos + 64 <= 128) {
+    set_u128(z, Uint128{pow5(static_cast<unsigned>(fives))} << twos);
+    return;
+  }
+  mpz_ui_pow_ui(z, 5, fives);
+  mpz_mul_2exp(z, z, twos);
+}
+
+// Builds M x 10^scale in lowest terms when both parts are surely within the
+// caps and small; returns false (out untouched) to leave it to the general path.
+bool set_small_decimal(std::string_view significant, std::uint64_t digits, Int128 scale, bool negative,
+                       const NumberTextLimits& limits, Rational& out) {
+  if (digits > small_max_digits || scale > Int128{small_max_scale} || scale < -Int128{small_max_scale})
+    return false;
+  const std::uint64_t magnitude = static_cast<std::uint64_t>(scale < 0 ? -scale : scale);
+  const std::uint64_t num_bits_at_most = bits_of_digits_at_most(digits + (scale > 0 ? magnitude : 0));
+  const std::uint64_t den_bits_at_most = scale < 0 ? bits_of_digits_at_most(magnitude + 1) : 1;
+  if (num_bits_at_most > limits.max_bits || den_bits_at_most > limits.max_bits) return false;
+  mpz_ptr num = out.get_num_mpz_t();
+  mpz_ptr den = out.get_den_mpz_t();
+  SmallNatural m;
+  set_small_digits(m, significant);
+  if (scale >= 0) {
+    if (num_bits_at_most > small_limbs * 64) return false;
+    for (std::uint64_t s = magnitude; s > 0;) {
+      const unsigned step = s >= 19 ? 19u : static_cast<unsigned>(s);
+      m.multiply_add(pow5(step) << step, 0);  // 10^step
+      s -= step;
+    }
+    m.store(num, negative);
+    mpz_set_ui(den, 1);
+    return true;
+  }
+  const std::uint64_t k = magnitude;
+  const std::uint64_t twos = std::min(m.trailing_zero_bits(), k);
+  std::uint64_t fives = 0;
+  if (twos > 0)
+    m.shift_right(twos);
+  else
+    fives = remove_fives(m, k);
+  m.store(num, negative);
+  set_power_2_5(den, k - twos, k - fives);
+  return true;
+}
 
 NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, const NumberTextLimits& limits,
                                      Rational& out) {
@@ -165,6 +322,8 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
   if (dot != std::string_view::npos && dot > last) --trailing;
   // value = M * 10^scale, M the significant digits as an integer.
   const Int128 scale = Int128{exponent} - static_cast<Int128>(frac_len) + static_cast<Int128>(trailing);
+
+  if (set_small_decimal(significant, digits, scale, negative, limits, out)) return {};
 
   mpz_ptr num = out.get_num_mpz_t();
   mpz_ptr den = out.get_den_mpz_t();
