@@ -570,5 +570,37 @@ TEST(RationalText, FastPathReadsExactExpansionsOfDoubles) {
   }
 }
 
+// The fast printer against the general route, byte for byte: integers,
+// dyadics (sums of doubles), decimals, p/q, huge and tiny, negative, zero.
+TEST(RationalText, FastPrinterMatchesTheGeneralText) {
+  test::Rng rng(1416);
+  auto check = [](const Rational& q) {
+    std::string fast = "prefix ";
+    detail::append_exact_text(fast, q);
+    ASSERT_EQ(fast, "prefix " + detail::exact_text_general(q)) << q.get_str().substr(0, 80);
+    ASSERT_EQ(to_string(q), detail::exact_text_general(q));
+  };
+  for (const Rational& q : {Rational(0), Rational(1), Rational(-1), Rational(1, 2), Rational(-1, 1024),
+                            Rational(1, 3), Rational(7, 10), Rational(-1, 100000), Rational(5), Rational(1, 5)})
+    check(q);
+  for (int i = 0; i < 30000; ++i) {
+    Rational q;
+    switch (i % 6) {
+      case 0: q = Rational(test::random_double_bits(rng)); break;             // every exponent
+      case 1: q = Rational(test::random_magnitude(rng, -80, 80)) +
+                  Rational(test::random_magnitude(rng, -80, 80)); break;       // a sum of doubles
+      case 2: q = Rational(test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 3000))); break;
+      case 3: q = Rational(test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 200))) *
+                  power_of_ten(static_cast<long>(rng() % 120) - 60) *
+                  power_of_two(static_cast<long>(rng() % 200) - 100); break;  // decimals, 2^a 5^b
+      case 4: q = test::random_rational(rng); break;
+      default: q = Rational(test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 64))) /
+                   power_of_two(static_cast<long>(rng() % 2200)); break;       // up to the stack's size and beyond
+    }
+    q.canonicalize();
+    check(q);
+  }
+}
+
 }  // namespace
 }  // namespace cvms

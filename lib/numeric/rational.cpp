@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "cvms/error.hpp"
@@ -249,7 +250,105 @@ NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, c
   return {};
 }
 
+// ---- Exact text, fast: integers and decimals of a few hundred digits -------
+// value = p / (2^a 5^b) is printed as the integer |p| 2^(n-a) 5^(n-b), n =
+// max(a, b), with a point n digits from its end. The integer is built in
+// limbs on the stack and its digits come from mpn_get_str straight into the
+// output: no mpz temporaries, no division, no intermediate strings. Other
+// values (p/q, or more limbs than the stack takes) go to exact_text_general,
+// whose text this matches byte for byte (test/rational_test.cpp).
+
+constexpr std::size_t print_limbs = 40;  // 2560 bits, about 770 digits
+
+// Appends the decimal digits of {limbs, size} (size > 0, top limb nonzero;
+// destroyed), with at least min_digits digits (zero-padded on the left).
+void append_digits(std::string& out, mp_limb_t* limbs, mp_size_t size, std::size_t min_digits) {
+  unsigned char raw[print_limbs * 20 + 1];
+  std::size_t count = mpn_get_str(raw, 10, limbs, size);
+  std::size_t skip = 0;
+  while (skip + 1 < count && raw[skip] == 0) ++skip;
+  count -= skip;
+  if (count < min_digits) out.append(min_digits - count, '0');
+  const std::size_t at = out.size();
+  out.resize(at + count);
+  for (std::size_t i = 0; i < count; ++i) out[at + i] = static_cast<char>('0' + raw[skip + i]);
+}
+
+// The b of den = 2^a 5^b, when the odd part fits a limb and is a power of 5.
+std::optional<unsigned> fives_of(mpz_srcptr den, std::uint64_t twos) {
+  if (mpz_sizeinbase(den, 2) - twos > 64) return std::nullopt;
+  mp_limb_t rest = mpz_getlimbn(den, static_cast<mp_size_t>(twos / 64)) >> (twos % 64);
+  if (twos % 64 != 0 && twos / 64 + 1 < mpz_size(den))
+    rest |= mpz_getlimbn(den, static_cast<mp_size_t>(twos / 64) + 1) << (64 - twos % 64);
+  for (unsigned b = 0; b <= max_pow5_in_limb; ++b)
+    if (pow5(b) == rest) return b;
+  return std::nullopt;
+}
+
+bool append_exact_text_fast(std::string& out, const Rational& value) {
+  mpz_srcptr num = value.get_num_mpz_t();
+  mpz_srcptr den = value.get_den_mpz_t();
+  if (mpz_sgn(num) == 0) {
+    out += '0';
+    return true;
+  }
+  const std::uint64_t twos = mpz_scan1(den, 0);
+  const std::optional<unsigned> fives = fives_of(den, twos);
+  if (!fives) return false;
+  const std::uint64_t places = std::max<std::uint64_t>(twos, *fives);
+  const std::uint64_t extra_twos = places - twos;
+  const std::uint64_t extra_fives = places - *fives;
+  // Bits of |p| 2^extra_twos 5^extra_fives, from above (log2(5) < 2.33).
+  const std::uint64_t bits = mpz_sizeinbase(num, 2) + extra_twos + extra_fives * 233 / 100 + 1;
+  if (bits > (print_limbs - 1) * 64) return false;
+  mp_limb_t limbs[print_limbs];
+  auto size = static_cast<mp_size_t>(mpz_size(num));
+  std::copy(mpz_limbs_read(num), mpz_limbs_read(num) + size, limbs);
+  for (std::uint64_t left = extra_fives; left > 0;) {
+    const auto step = static_cast<unsigned>(std::min<std::uint64_t>(left, max_pow5_in_limb));
+    if (mp_limb_t carry = mpn_mul_1(limbs, limbs, size, pow5(step)); carry != 0) limbs[size++] = carry;
+    left -= step;
+  }
+  if (extra_twos > 0) {
+    const auto whole = static_cast<mp_size_t>(extra_twos / 64);
+    std::copy_backward(limbs, limbs + size, limbs + size + whole);
+    std::fill(limbs, limbs + whole, mp_limb_t{0});
+    size += whole;
+    if (const auto rest = static_cast<unsigned>(extra_twos % 64); rest != 0)
+      if (mp_limb_t carry = mpn_lshift(limbs, limbs, size, rest); carry != 0) limbs[size++] = carry;
+  }
+  if (mpz_sgn(num) < 0) out += '-';
+  append_digits(out, limbs, size, places + 1);
+  if (places > 0) out.insert(out.end() - static_cast<std::ptrdiff_t>(places), '.');
+  return true;
+}
+
 }  // namespace
+
+std::string exact_text_general(const Rational& value) {
+  const mpz_class& den = value.get_den();
+  // Strip factors 2 and 5 from the denominator; a finite decimal exists iff nothing else remains.
+  mpz_class rest = den;
+  unsigned long twos = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(2).get_mpz_t());
+  unsigned long fives = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(5).get_mpz_t());
+  if (rest != 1) return value.get_str();
+  unsigned long places = twos > fives ? twos : fives;
+  if (places == 0) return value.get_num().get_str();
+  // value * 10^places is an integer: num * (10^places / den).
+  mpz_class scale;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, places);
+  mpz_class scaled = value.get_num() * (scale / den);
+  bool negative = scaled < 0;
+  if (negative) scaled = -scaled;
+  std::string digits = scaled.get_str();
+  if (digits.size() <= places) digits.insert(0, places + 1 - digits.size(), '0');
+  digits.insert(digits.size() - places, 1, '.');
+  return negative ? "-" + digits : digits;
+}
+
+void append_exact_text(std::string& out, const Rational& value) {
+  if (!append_exact_text_fast(out, value)) out += exact_text_general(value);
+}
 
 NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimits& requested,
                                      Rational& out) {
@@ -404,24 +503,9 @@ Rational rational_from_double(double value) {
 Rational rational_from_float(float value) { return rational_from_double(static_cast<double>(value)); }
 
 std::string to_string(const Rational& value) {
-  const mpz_class& den = value.get_den();
-  // Strip factors 2 and 5 from the denominator; a finite decimal exists iff nothing else remains.
-  mpz_class rest = den;
-  unsigned long twos = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(2).get_mpz_t());
-  unsigned long fives = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(5).get_mpz_t());
-  if (rest != 1) return value.get_str();
-  unsigned long places = twos > fives ? twos : fives;
-  if (places == 0) return value.get_num().get_str();
-  // value * 10^places is an integer: num * (10^places / den).
-  mpz_class scale;
-  mpz_ui_pow_ui(scale.get_mpz_t(), 10, places);
-  mpz_class scaled = value.get_num() * (scale / den);
-  bool negative = scaled < 0;
-  if (negative) scaled = -scaled;
-  std::string digits = scaled.get_str();
-  if (digits.size() <= places) digits.insert(0, places + 1 - digits.size(), '0');
-  digits.insert(digits.size() - places, 1, '.');
-  return negative ? "-" + digits : digits;
+  std::string text;
+  detail::append_exact_text(text, value);
+  return text;
 }
 
 double to_double_nearest(const Rational& value) {
