@@ -451,6 +451,21 @@ TEST(RationalText, CapsAreOnTheValueInLowestTerms) {
   }
 }
 
+// Parses text under cap and checks it against the exact value: refused
+// exactly when a part is beyond the cap, else that value in lowest terms.
+void expect_capped_parse(const std::string& text, const Rational& expected, std::uint64_t cap,
+                         NumberTextResult& r) {
+  Rational out = 12345;  // not zero: the parser must set both parts
+  r = capped(text, cap, out);
+  const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
+  ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
+  if (fits) {
+    ASSERT_EQ(out, expected);
+    ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
+    ASSERT_GT(out.get_den(), 0);
+  }
+}
+
 // Against an independent construction: the value is that of the uncapped
 // parser, in lowest terms, and it is refused exactly when a part exceeds the cap.
 TEST(RationalText, AgreesWithTheExactSizesOnRandomDecimals) {
@@ -468,15 +483,9 @@ TEST(RationalText, AgreesWithTheExactSizesOnRandomDecimals) {
     SCOPED_TRACE(text);
     Rational expected = Rational(m) * power_of_ten(exponent - places);
     const std::uint64_t cap = 1 + rng() % 3000;
-    Rational out;
-    NumberTextResult r = capped(text, cap, out);
-    const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
-    ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
-    if (fits) {
-      ASSERT_EQ(out, expected);
-      ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
-      ASSERT_GT(out.get_den(), 0);
-    } else {
+    NumberTextResult r;
+    ASSERT_NO_FATAL_FAILURE(expect_capped_parse(text, expected, cap, r));
+    if (r.status != NumberTextStatus::ok) {
       const bool numerator = r.status == NumberTextStatus::numerator_too_large;
       ASSERT_TRUE(numerator || r.status == NumberTextStatus::denominator_too_large);
       // The reported size is a true lower bound of the part refused.
@@ -538,16 +547,8 @@ TEST(RationalText, FastPathAgreesWithTheConstructionOnItsShapes) {
     if (negative) expected = -expected;
     const std::uint64_t exact = std::max(num_bits(expected), den_bits(expected));
     const std::uint64_t caps[] = {detail::gmp_max_bits, 4096, exact, exact > 1 ? exact - 1 : 1, exact + 1};
-    const std::uint64_t cap = caps[rng() % std::size(caps)];
-    Rational out = 12345;  // not zero: the parser must set both parts
-    NumberTextResult r = capped(text, cap, out);
-    const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
-    ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
-    if (fits) {
-      ASSERT_EQ(out, expected);
-      ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
-      ASSERT_GT(out.get_den(), 0);
-    }
+    NumberTextResult r;
+    ASSERT_NO_FATAL_FAILURE(expect_capped_parse(text, expected, caps[rng() % std::size(caps)], r));
   }
 }
 
@@ -583,6 +584,15 @@ TEST(RationalText, FastPrinterMatchesTheGeneralText) {
   for (const Rational& q : {Rational(0), Rational(1), Rational(-1), Rational(1, 2), Rational(-1, 1024),
                             Rational(1, 3), Rational(7, 10), Rational(-1, 100000), Rational(5), Rational(1, 5)})
     check(q);
+  // Around the stack buffer's limits: places near 800, digits near 770.
+  mpz_class five_27;
+  mpz_ui_pow_ui(five_27.get_mpz_t(), 5, 27);
+  for (long k = 760; k <= 840; ++k) {
+    check(Rational(1) / power_of_two(k));
+    check(Rational(-3) / (power_of_two(k) * Rational(five_27)));
+    check(Rational(test::random_integer(rng, 2400)) / power_of_two(k));
+    check(Rational(test::random_integer(rng, 64)) / (power_of_two(k) * Rational(five_27 * 5)));  // 5^28: p/q route
+  }
   for (int i = 0; i < 30000; ++i) {
     Rational q;
     switch (i % 6) {

@@ -261,17 +261,23 @@ NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, c
 constexpr std::size_t print_limbs = 40;  // 2560 bits, about 770 digits
 
 // Appends the decimal digits of {limbs, size} (size > 0, top limb nonzero;
-// destroyed), with at least min_digits digits (zero-padded on the left).
-void append_digits(std::string& out, mp_limb_t* limbs, mp_size_t size, std::size_t min_digits) {
+// destroyed) with a point `places` digits from the end, zero-padded to at
+// least one digit before the point.
+void append_digits(std::string& out, mp_limb_t* limbs, mp_size_t size, std::size_t places) {
   unsigned char raw[print_limbs * 20 + 1];
   std::size_t count = mpn_get_str(raw, 10, limbs, size);
   std::size_t skip = 0;
   while (skip + 1 < count && raw[skip] == 0) ++skip;
   count -= skip;
-  if (count < min_digits) out.append(min_digits - count, '0');
-  const std::size_t at = out.size();
-  out.resize(at + count);
-  for (std::size_t i = 0; i < count; ++i) out[at + i] = static_cast<char>('0' + raw[skip + i]);
+  const std::size_t pad = count < places + 1 ? places + 1 - count : 0;
+  char text[print_limbs * 20 + 2];  // the caller keeps places below print_limbs * 20
+  const std::size_t total = pad + count;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < total; ++i) {
+    if (i == total - places && places > 0) text[n++] = '.';
+    text[n++] = i < pad ? '0' : static_cast<char>('0' + raw[skip + i - pad]);
+  }
+  out.append(text, n);
 }
 
 // The b of den = 2^a 5^b, when the odd part fits a limb and is a power of 5.
@@ -300,7 +306,7 @@ bool append_exact_text_fast(std::string& out, const Rational& value) {
   const std::uint64_t extra_fives = places - *fives;
   // Bits of |p| 2^extra_twos 5^extra_fives, from above (log2(5) < 2.33).
   const std::uint64_t bits = mpz_sizeinbase(num, 2) + extra_twos + extra_fives * 233 / 100 + 1;
-  if (bits > (print_limbs - 1) * 64) return false;
+  if (bits > (print_limbs - 1) * 64 || places >= print_limbs * 20) return false;
   mp_limb_t limbs[print_limbs];
   auto size = static_cast<mp_size_t>(mpz_size(num));
   std::copy(mpz_limbs_read(num), mpz_limbs_read(num) + size, limbs);
@@ -318,8 +324,7 @@ bool append_exact_text_fast(std::string& out, const Rational& value) {
       if (mp_limb_t carry = mpn_lshift(limbs, limbs, size, rest); carry != 0) limbs[size++] = carry;
   }
   if (mpz_sgn(num) < 0) out += '-';
-  append_digits(out, limbs, size, places + 1);
-  if (places > 0) out.insert(out.end() - static_cast<std::ptrdiff_t>(places), '.');
+  append_digits(out, limbs, size, places);
   return true;
 }
 
