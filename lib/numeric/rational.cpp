@@ -262,22 +262,26 @@ constexpr std::size_t print_limbs = 40;  // 2560 bits, about 770 digits
 
 // Appends the decimal digits of {limbs, size} (size > 0, top limb nonzero;
 // destroyed) with a point `places` digits from the end, zero-padded to at
-// least one digit before the point.
+// least one digit before the point; a few appends, no per-digit branches.
 void append_digits(std::string& out, mp_limb_t* limbs, mp_size_t size, std::size_t places) {
   unsigned char raw[print_limbs * 20 + 1];
   std::size_t count = mpn_get_str(raw, 10, limbs, size);
   std::size_t skip = 0;
   while (skip + 1 < count && raw[skip] == 0) ++skip;
   count -= skip;
-  const std::size_t pad = count < places + 1 ? places + 1 - count : 0;
-  char text[print_limbs * 20 + 2];  // the caller keeps places below print_limbs * 20
-  const std::size_t total = pad + count;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < total; ++i) {
-    if (i == total - places && places > 0) text[n++] = '.';
-    text[n++] = i < pad ? '0' : static_cast<char>('0' + raw[skip + i - pad]);
+  char* digits = reinterpret_cast<char*>(raw + skip);
+  for (std::size_t i = 0; i < count; ++i) digits[i] = static_cast<char>('0' + raw[skip + i]);
+  if (places == 0) {
+    out.append(digits, count);
+  } else if (count <= places) {  // 0.000ddd
+    out += "0.";
+    out.append(places - count, '0');
+    out.append(digits, count);
+  } else {
+    out.append(digits, count - places);
+    out += '.';
+    out.append(digits + count - places, places);
   }
-  out.append(text, n);
 }
 
 // The b of den = 2^a 5^b, when the odd part fits a limb and is a power of 5.
