@@ -451,6 +451,21 @@ TEST(RationalText, CapsAreOnTheValueInLowestTerms) {
   }
 }
 
+// Parses text under cap and checks it against the exact value: refused
+// exactly when a part is beyond the cap, else that value in lowest terms.
+void expect_capped_parse(const std::string& text, const Rational& expected, std::uint64_t cap,
+                         NumberTextResult& r) {
+  Rational out = 12345;  // not zero: the parser must set both parts
+  r = capped(text, cap, out);
+  const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
+  ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
+  if (fits) {
+    ASSERT_EQ(out, expected);
+    ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
+    ASSERT_GT(out.get_den(), 0);
+  }
+}
+
 // Against an independent construction: the value is that of the uncapped
 // parser, in lowest terms, and it is refused exactly when a part exceeds the cap.
 TEST(RationalText, AgreesWithTheExactSizesOnRandomDecimals) {
@@ -468,15 +483,9 @@ TEST(RationalText, AgreesWithTheExactSizesOnRandomDecimals) {
     SCOPED_TRACE(text);
     Rational expected = Rational(m) * power_of_ten(exponent - places);
     const std::uint64_t cap = 1 + rng() % 3000;
-    Rational out;
-    NumberTextResult r = capped(text, cap, out);
-    const bool fits = num_bits(expected) <= cap && den_bits(expected) <= cap;
-    ASSERT_EQ(r.status == NumberTextStatus::ok, fits) << "cap " << cap;
-    if (fits) {
-      ASSERT_EQ(out, expected);
-      ASSERT_EQ(gcd(out.get_num(), out.get_den()), 1);
-      ASSERT_GT(out.get_den(), 0);
-    } else {
+    NumberTextResult r;
+    ASSERT_NO_FATAL_FAILURE(expect_capped_parse(text, expected, cap, r));
+    if (r.status != NumberTextStatus::ok) {
       const bool numerator = r.status == NumberTextStatus::numerator_too_large;
       ASSERT_TRUE(numerator || r.status == NumberTextStatus::denominator_too_large);
       // The reported size is a true lower bound of the part refused.
@@ -499,6 +508,108 @@ TEST(RationalText, FractionWithBothPartsOverTheCapNamesEither) {
   r = capped("99999999999999999991/3", 64, out);
   EXPECT_EQ(r.status, NumberTextStatus::numerator_too_large);
   EXPECT_EQ(r.bits, 67u);
+}
+
+// The fast path (short decimals and exact expansions of doubles, built from
+// machine words) against the independent construction M x 10^e, on the shapes
+// it takes and the edges around it: 18/19/20 digits, leading and trailing
+// zeros, a bare '.', signs, "-0", scales near its limit of 350 and caps at
+// the exact size of the value.
+std::string with_point(const std::string& digits, std::size_t places) {
+  std::string s = digits;
+  if (s.size() <= places) s.insert(0, places + 1 - s.size(), '0');
+  s.insert(s.size() - places, 1, '.');
+  return s;
+}
+
+TEST(RationalText, FastPathAgreesWithTheConstructionOnItsShapes) {
+  test::Rng rng(1414);
+  const int digit_counts[] = {1, 2, 6, 9, 17, 18, 19, 20, 21, 37, 38, 39, 40, 55, 100, 299, 300, 301, 320};
+  for (int i = 0; i < 40000; ++i) {
+    const int count = digit_counts[rng() % std::size(digit_counts)];
+    std::string digits;
+    for (int d = 0; d < count; ++d) digits += static_cast<char>('0' + rng() % 10);
+    if (rng() % 3 == 0) digits.append(rng() % 5, '0');           // trailing zeros
+    if (rng() % 4 == 0) digits.insert(0, rng() % 4, '0');        // leading zeros
+    const std::size_t places = rng() % (digits.size() + 3);
+    const long exponent = rng() % 3 == 0 ? 0 : static_cast<long>(rng() % 761) - 380;
+    const bool point = rng() % 5 != 0;
+    std::string text = point ? with_point(digits, places) : digits;
+    if (text.size() > 2 && text.front() == '0' && text[1] == '.' && rng() % 2 == 0) text.erase(0, 1);  // ".5"
+    if (rng() % 7 == 0 && text.find('.') == std::string::npos) text += '.';                        // "1."
+    const long scale = exponent - (point ? static_cast<long>(places) : 0);
+    if (exponent != 0 || rng() % 2 == 0) text += (rng() % 2 ? "e" : "E") + std::to_string(exponent);
+    const bool negative = rng() % 2 == 0;
+    if (negative) text.insert(0, "-");
+    else if (rng() % 4 == 0) text.insert(0, "+");
+    SCOPED_TRACE(text);
+    Rational expected = Rational(mpz_class(digits, 10)) * power_of_ten(scale);
+    if (negative) expected = -expected;
+    const std::uint64_t exact = std::max(num_bits(expected), den_bits(expected));
+    const std::uint64_t caps[] = {detail::gmp_max_bits, 4096, exact, exact > 1 ? exact - 1 : 1, exact + 1};
+    NumberTextResult r;
+    ASSERT_NO_FATAL_FAILURE(expect_capped_parse(text, expected, caps[rng() % std::size(caps)], r));
+  }
+}
+
+TEST(RationalText, FastPathReadsExactExpansionsOfDoubles) {
+  test::Rng rng(1415);
+  for (int i = 0; i < 20000; ++i) {
+    const double d = i % 2 == 0 ? test::random_magnitude(rng, -60, 60) : test::random_double_bits(rng);
+    const Rational exact(d);
+    const std::string text = to_string(exact);
+    SCOPED_TRACE(text.substr(0, 80));
+    Rational out = 7;
+    ASSERT_EQ(capped(text, detail::gmp_max_bits, out).status, NumberTextStatus::ok);
+    ASSERT_EQ(out, exact);
+    ASSERT_EQ(out.get_den(), exact.get_den());
+  }
+  for (const char* zero : {"0", "-0", "+0", "0.000", "-.0", "0e-300", "000.000e5"}) {
+    Rational out = 3;
+    ASSERT_EQ(capped(zero, 64, out).status, NumberTextStatus::ok) << zero;
+    EXPECT_EQ(out, 0) << zero;
+  }
+}
+
+// The fast printer against the general route, byte for byte: integers,
+// dyadics (sums of doubles), decimals, p/q, huge and tiny, negative, zero.
+TEST(RationalText, FastPrinterMatchesTheGeneralText) {
+  test::Rng rng(1416);
+  auto check = [](const Rational& q) {
+    std::string fast = "prefix ";
+    detail::append_exact_text(fast, q);
+    ASSERT_EQ(fast, "prefix " + detail::exact_text_general(q)) << q.get_str().substr(0, 80);
+    ASSERT_EQ(to_string(q), detail::exact_text_general(q));
+  };
+  for (const Rational& q : {Rational(0), Rational(1), Rational(-1), Rational(1, 2), Rational(-1, 1024),
+                            Rational(1, 3), Rational(7, 10), Rational(-1, 100000), Rational(5), Rational(1, 5)})
+    check(q);
+  // Around the stack buffer's limits: places near 800, digits near 770.
+  mpz_class five_27;
+  mpz_ui_pow_ui(five_27.get_mpz_t(), 5, 27);
+  for (long k = 760; k <= 840; ++k) {
+    check(Rational(1) / power_of_two(k));
+    check(Rational(-3) / (power_of_two(k) * Rational(five_27)));
+    check(Rational(test::random_integer(rng, 2400)) / power_of_two(k));
+    check(Rational(test::random_integer(rng, 64)) / (power_of_two(k) * Rational(five_27 * 5)));  // 5^28: p/q route
+  }
+  for (int i = 0; i < 30000; ++i) {
+    Rational q;
+    switch (i % 6) {
+      case 0: q = Rational(test::random_double_bits(rng)); break;             // every exponent
+      case 1: q = Rational(test::random_magnitude(rng, -80, 80)) +
+                  Rational(test::random_magnitude(rng, -80, 80)); break;       // a sum of doubles
+      case 2: q = Rational(test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 3000))); break;
+      case 3: q = Rational(test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 200))) *
+                  power_of_ten(static_cast<long>(rng() % 120) - 60) *
+                  power_of_two(static_cast<long>(rng() % 200) - 100); break;  // decimals, 2^a 5^b
+      case 4: q = test::random_rational(rng); break;
+      default: q = Rational(test::random_integer(rng, 1 + static_cast<unsigned>(rng() % 64))) /
+                   power_of_two(static_cast<long>(rng() % 2200)); break;       // up to the stack's size and beyond
+    }
+    q.canonicalize();
+    check(q);
+  }
 }
 
 }  // namespace

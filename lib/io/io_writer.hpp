@@ -15,6 +15,7 @@
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
 #include "cvms/rational.hpp"
+#include "rational_text.hpp"
 
 namespace cvms::io_detail {
 
@@ -48,7 +49,11 @@ class TextWriter {
   /// that reads back to the same double. \throw Error(invalid_argument) when the
   /// value is beyond the double range.
   TextWriter& coordinate(const Rational& value, Coordinates mode) {
-    if (mode == Coordinates::exact) return text(to_string(value));
+    if (mode == Coordinates::exact) {
+      detail::append_exact_text(buffer_, value);  // no string per coordinate
+      if (buffer_.size() >= flush_at) flush();
+      return *this;
+    }
     double d = to_double_nearest(value);
     if (!std::isfinite(d))
       throw Error(ErrorCategory::invalid_argument,

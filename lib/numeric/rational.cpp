@@ -6,10 +6,12 @@
 #include "cvms/rational.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "cvms/error.hpp"
@@ -55,6 +57,162 @@ void set_digits(mpz_ptr z, std::string_view digits) {
 // The bit length of a number of `count` significant decimal digits, from below.
 std::uint64_t bits_of_digits_at_least(std::uint64_t count) { return times_log2_10_floor(count - 1) + 1; }
 
+// ---- The fast path: decimals of at most a few hundred digits ----------------
+// The usual OBJ/STL/OFF content is a short decimal ("0.123456") or the exact
+// expansion of a double (about 17 to 60 digits, always dyadic); both are built
+// here from machine words: the digits into limbs 19 at a time, the factors 2
+// and 5 of 10^k cancelled by counting them (M is not a multiple of 10, so at
+// most one of them cancels), never a general gcd, a digit string or a power
+// of ten. It takes only values whose parts are within max_bits by an upper
+// bound read off the text, so it never refuses what the general path would
+// accept and never builds more than the caps: its results are those of the
+// general path (test/rational_test.cpp compares them).
+
+static_assert(GMP_NUMB_BITS == 64, "the fast path assumes 64-bit limbs");
+
+constexpr std::size_t small_limbs = 16;          // 1024 bits: about 308 digits
+constexpr std::uint64_t small_max_digits = 300;  // fits small_limbs with room
+constexpr std::uint64_t small_max_scale = 350;   // |10^scale| of at most 1163 bits
+
+constexpr unsigned max_pow5_in_limb = 27;  // 5^27 < 2^63, 5^28 > 2^64
+constexpr auto pow5_table = [] {
+  std::array<std::uint64_t, max_pow5_in_limb + 1> table{};
+  table[0] = 1;
+  for (std::size_t i = 1; i < table.size(); ++i) table[i] = table[i - 1] * 5;
+  return table;
+}();
+std::uint64_t pow5(unsigned n) { return pow5_table[n]; }
+constexpr mp_limb_t ten_to_19 = 10000000000000000000u;  // < 2^64
+
+// Bits of a number of `count` decimal digits, from above (log2(10) < 3.33).
+std::uint64_t bits_of_digits_at_most(std::uint64_t count) { return count * 333 / 100 + 1; }
+
+// A non-negative integer of at most small_limbs limbs, least significant first.
+struct SmallNatural {
+  mp_limb_t limbs[small_limbs];
+  mp_size_t size = 0;  // no high zero limbs; 0 for zero
+
+  void multiply_add(mp_limb_t factor, mp_limb_t addend) {
+    mp_limb_t carry = size == 0 ? addend : mpn_mul_1(limbs, limbs, size, factor);
+    if (size == 0) {
+      if (addend != 0) limbs[size++] = addend;
+      return;
+    }
+    carry += mpn_add_1(limbs, limbs, size, addend);  // cannot both carry out
+    if (carry != 0) limbs[size++] = carry;
+  }
+  // Divides by d when it divides exactly; returns whether it did.
+  bool divide_if_exact(mp_limb_t d) {
+    mp_limb_t quotient[small_limbs];
+    if (mpn_divrem_1(quotient, 0, limbs, size, d) != 0) return false;
+    std::copy(quotient, quotient + size, limbs);
+    if (limbs[size - 1] == 0) --size;
+    return true;
+  }
+  std::uint64_t trailing_zero_bits() const {
+    std::uint64_t bits = 0;
+    mp_size_t i = 0;
+    while (limbs[i] == 0) ++i, bits += 64;
+    return bits + static_cast<std::uint64_t>(std::countr_zero(limbs[i]));
+  }
+  void shift_right(std::uint64_t bits) {
+    const auto whole = static_cast<mp_size_t>(bits / 64);
+    std::copy(limbs + whole, limbs + size, limbs);
+    size -= whole;
+    if (const auto rest = static_cast<unsigned>(bits % 64); rest != 0) mpn_rshift(limbs, limbs, size, rest);
+    if (limbs[size - 1] == 0) --size;
+  }
+  void store(mpz_ptr z, bool negative) const {
+    mp_limb_t* out = mpz_limbs_write(z, size);
+    std::copy(limbs, limbs + size, out);
+    mpz_limbs_finish(z, negative ? -size : size);
+  }
+};
+
+// The significant digits (one '.' may sit among them) as an integer.
+void set_small_digits(SmallNatural& m, std::string_view digits) {
+  mp_limb_t chunk = 0;
+  mp_limb_t chunk_scale = 1;
+  for (char c : digits) {
+    if (c == '.') continue;
+    chunk = chunk * 10 + static_cast<mp_limb_t>(c - '0');
+    chunk_scale *= 10;
+    if (chunk_scale == ten_to_19) {
+      m.multiply_add(chunk_scale, chunk);
+      chunk = 0;
+      chunk_scale = 1;
+    }
+  }
+  if (chunk_scale != 1) m.multiply_add(chunk_scale, chunk);
+}
+
+// Cancels the factors 5 of m, at most `cap` of them; returns how many.
+std::uint64_t remove_fives(SmallNatural& m, std::uint64_t cap) {
+  std::uint64_t removed = 0;
+  while (cap - removed >= max_pow5_in_limb && m.divide_if_exact(pow5(max_pow5_in_limb)))
+    removed += max_pow5_in_limb;
+  // Fewer than 27 remain (or may be taken): take them by binary descent.
+  for (unsigned step = 16; step > 0; step /= 2)
+    if (cap - removed >= step && m.divide_if_exact(pow5(step))) removed += step;
+  return removed;
+}
+
+void set_u128(mpz_ptr z, Uint128 value) {
+  const auto low = static_cast<mp_limb_t>(value);
+  const auto high = static_cast<mp_limb_t>(value >> 64);
+  mp_limb_t* out = mpz_limbs_write(z, 2);
+  out[0] = low;
+  out[1] = high;
+  mpz_limbs_finish(z, high != 0 ? 2 : (low != 0 ? 1 : 0));
+}
+
+// 2^twos 5^fives.
+void set_power_2_5(mpz_ptr z, std::uint64_t twos, std::uint64_t fives) {
+  if (fives <= max_pow5_in_limb && twos + 64 <= 128) {
+    set_u128(z, Uint128{pow5(static_cast<unsigned>(fives))} << twos);
+    return;
+  }
+  mpz_ui_pow_ui(z, 5, fives);
+  mpz_mul_2exp(z, z, twos);
+}
+
+// Builds M x 10^scale in lowest terms when both parts are surely within the
+// caps and small; returns false (out untouched) to leave it to the general path.
+bool set_small_decimal(std::string_view significant, std::uint64_t digits, Int128 scale, bool negative,
+                       const NumberTextLimits& limits, Rational& out) {
+  if (digits > small_max_digits || scale > Int128{small_max_scale} || scale < -Int128{small_max_scale})
+    return false;
+  const std::uint64_t magnitude = static_cast<std::uint64_t>(scale < 0 ? -scale : scale);
+  const std::uint64_t num_bits_at_most = bits_of_digits_at_most(digits + (scale > 0 ? magnitude : 0));
+  const std::uint64_t den_bits_at_most = scale < 0 ? bits_of_digits_at_most(magnitude + 1) : 1;
+  if (num_bits_at_most > limits.max_bits || den_bits_at_most > limits.max_bits) return false;
+  mpz_ptr num = out.get_num_mpz_t();
+  mpz_ptr den = out.get_den_mpz_t();
+  SmallNatural m;
+  set_small_digits(m, significant);
+  if (scale >= 0) {
+    if (num_bits_at_most > small_limbs * 64) return false;
+    for (std::uint64_t s = magnitude; s > 0;) {
+      const unsigned step = s >= 19 ? 19u : static_cast<unsigned>(s);
+      m.multiply_add(pow5(step) << step, 0);  // 10^step
+      s -= step;
+    }
+    m.store(num, negative);
+    mpz_set_ui(den, 1);
+    return true;
+  }
+  const std::uint64_t k = magnitude;
+  const std::uint64_t twos = std::min(m.trailing_zero_bits(), k);
+  std::uint64_t fives = 0;
+  if (twos > 0)
+    m.shift_right(twos);
+  else
+    fives = remove_fives(m, k);
+  m.store(num, negative);
+  set_power_2_5(den, k - twos, k - fives);
+  return true;
+}
+
 NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, const NumberTextLimits& limits,
                                      Rational& out) {
   std::string_view num = text.substr(0, slash);
@@ -92,7 +250,114 @@ NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, c
   return {};
 }
 
+// ---- Exact text, fast: integers and decimals of a few hundred digits -------
+// value = p / (2^a 5^b) is printed as the integer |p| 2^(n-a) 5^(n-b), n =
+// max(a, b), with a point n digits from its end. The integer is built in
+// limbs on the stack and its digits come from mpn_get_str straight into the
+// output: no mpz temporaries, no division, no intermediate strings. Other
+// values (p/q, or more limbs than the stack takes) go to exact_text_general,
+// whose text this matches byte for byte (test/rational_test.cpp).
+
+constexpr std::size_t print_limbs = 40;  // 2560 bits, about 770 digits
+
+// Appends the decimal digits of {limbs, size} (size > 0, top limb nonzero;
+// destroyed) with a point `places` digits from the end, zero-padded to at
+// least one digit before the point; a few appends, no per-digit branches.
+void append_digits(std::string& out, mp_limb_t* limbs, mp_size_t size, std::size_t places) {
+  unsigned char raw[print_limbs * 20 + 1];
+  std::size_t count = mpn_get_str(raw, 10, limbs, size);
+  std::size_t skip = 0;
+  while (skip + 1 < count && raw[skip] == 0) ++skip;
+  count -= skip;
+  char* digits = reinterpret_cast<char*>(raw + skip);
+  for (std::size_t i = 0; i < count; ++i) digits[i] = static_cast<char>('0' + raw[skip + i]);
+  if (places == 0) {
+    out.append(digits, count);
+  } else if (count <= places) {  // 0.000ddd
+    out += "0.";
+    out.append(places - count, '0');
+    out.append(digits, count);
+  } else {
+    out.append(digits, count - places);
+    out += '.';
+    out.append(digits + count - places, places);
+  }
+}
+
+// The b of den = 2^a 5^b, when the odd part fits a limb and is a power of 5.
+std::optional<unsigned> fives_of(mpz_srcptr den, std::uint64_t twos) {
+  if (mpz_sizeinbase(den, 2) - twos > 64) return std::nullopt;
+  mp_limb_t rest = mpz_getlimbn(den, static_cast<mp_size_t>(twos / 64)) >> (twos % 64);
+  if (twos % 64 != 0 && twos / 64 + 1 < mpz_size(den))
+    rest |= mpz_getlimbn(den, static_cast<mp_size_t>(twos / 64) + 1) << (64 - twos % 64);
+  for (unsigned b = 0; b <= max_pow5_in_limb; ++b)
+    if (pow5(b) == rest) return b;
+  return std::nullopt;
+}
+
+bool append_exact_text_fast(std::string& out, const Rational& value) {
+  mpz_srcptr num = value.get_num_mpz_t();
+  mpz_srcptr den = value.get_den_mpz_t();
+  if (mpz_sgn(num) == 0) {
+    out += '0';
+    return true;
+  }
+  const std::uint64_t twos = mpz_scan1(den, 0);
+  const std::optional<unsigned> fives = fives_of(den, twos);
+  if (!fives) return false;
+  const std::uint64_t places = std::max<std::uint64_t>(twos, *fives);
+  const std::uint64_t extra_twos = places - twos;
+  const std::uint64_t extra_fives = places - *fives;
+  // Bits of |p| 2^extra_twos 5^extra_fives, from above (log2(5) < 2.33).
+  const std::uint64_t bits = mpz_sizeinbase(num, 2) + extra_twos + extra_fives * 233 / 100 + 1;
+  if (bits > (print_limbs - 1) * 64 || places >= print_limbs * 20) return false;
+  mp_limb_t limbs[print_limbs];
+  auto size = static_cast<mp_size_t>(mpz_size(num));
+  std::copy(mpz_limbs_read(num), mpz_limbs_read(num) + size, limbs);
+  for (std::uint64_t left = extra_fives; left > 0;) {
+    const auto step = static_cast<unsigned>(std::min<std::uint64_t>(left, max_pow5_in_limb));
+    if (mp_limb_t carry = mpn_mul_1(limbs, limbs, size, pow5(step)); carry != 0) limbs[size++] = carry;
+    left -= step;
+  }
+  if (extra_twos > 0) {
+    const auto whole = static_cast<mp_size_t>(extra_twos / 64);
+    std::copy_backward(limbs, limbs + size, limbs + size + whole);
+    std::fill(limbs, limbs + whole, mp_limb_t{0});
+    size += whole;
+    if (const auto rest = static_cast<unsigned>(extra_twos % 64); rest != 0)
+      if (mp_limb_t carry = mpn_lshift(limbs, limbs, size, rest); carry != 0) limbs[size++] = carry;
+  }
+  if (mpz_sgn(num) < 0) out += '-';
+  append_digits(out, limbs, size, places);
+  return true;
+}
+
 }  // namespace
+
+std::string exact_text_general(const Rational& value) {
+  const mpz_class& den = value.get_den();
+  // Strip factors 2 and 5 from the denominator; a finite decimal exists iff nothing else remains.
+  mpz_class rest = den;
+  unsigned long twos = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(2).get_mpz_t());
+  unsigned long fives = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(5).get_mpz_t());
+  if (rest != 1) return value.get_str();
+  unsigned long places = twos > fives ? twos : fives;
+  if (places == 0) return value.get_num().get_str();
+  // value * 10^places is an integer: num * (10^places / den).
+  mpz_class scale;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, places);
+  mpz_class scaled = value.get_num() * (scale / den);
+  bool negative = scaled < 0;
+  if (negative) scaled = -scaled;
+  std::string digits = scaled.get_str();
+  if (digits.size() <= places) digits.insert(0, places + 1 - digits.size(), '0');
+  digits.insert(digits.size() - places, 1, '.');
+  return negative ? "-" + digits : digits;
+}
+
+void append_exact_text(std::string& out, const Rational& value) {
+  if (!append_exact_text_fast(out, value)) out += exact_text_general(value);
+}
 
 NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimits& requested,
                                      Rational& out) {
@@ -165,6 +430,8 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
   if (dot != std::string_view::npos && dot > last) --trailing;
   // value = M * 10^scale, M the significant digits as an integer.
   const Int128 scale = Int128{exponent} - static_cast<Int128>(frac_len) + static_cast<Int128>(trailing);
+
+  if (set_small_decimal(significant, digits, scale, negative, limits, out)) return {};
 
   mpz_ptr num = out.get_num_mpz_t();
   mpz_ptr den = out.get_den_mpz_t();
@@ -245,24 +512,9 @@ Rational rational_from_double(double value) {
 Rational rational_from_float(float value) { return rational_from_double(static_cast<double>(value)); }
 
 std::string to_string(const Rational& value) {
-  const mpz_class& den = value.get_den();
-  // Strip factors 2 and 5 from the denominator; a finite decimal exists iff nothing else remains.
-  mpz_class rest = den;
-  unsigned long twos = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(2).get_mpz_t());
-  unsigned long fives = mpz_remove(rest.get_mpz_t(), rest.get_mpz_t(), mpz_class(5).get_mpz_t());
-  if (rest != 1) return value.get_str();
-  unsigned long places = twos > fives ? twos : fives;
-  if (places == 0) return value.get_num().get_str();
-  // value * 10^places is an integer: num * (10^places / den).
-  mpz_class scale;
-  mpz_ui_pow_ui(scale.get_mpz_t(), 10, places);
-  mpz_class scaled = value.get_num() * (scale / den);
-  bool negative = scaled < 0;
-  if (negative) scaled = -scaled;
-  std::string digits = scaled.get_str();
-  if (digits.size() <= places) digits.insert(0, places + 1 - digits.size(), '0');
-  digits.insert(digits.size() - places, 1, '.');
-  return negative ? "-" + digits : digits;
+  std::string text;
+  detail::append_exact_text(text, value);
+  return text;
 }
 
 double to_double_nearest(const Rational& value) {

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "cvms/rational.hpp"
@@ -60,5 +61,15 @@ struct NumberTextResult {
 /// Complexity: linear in the text for the syntax; the number built has at
 /// most max(max_bits + 4, 4 x the text length) bits.
 NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimits& limits, Rational& out);
+
+/// Appends the text of to_string(value) to `out`: integers and decimals of up
+/// to about 770 digits straight from machine words, others through
+/// exact_text_general.
+void append_exact_text(std::string& out, const Rational& value);
+
+/// to_string's text by the general route (strip 2s and 5s from the
+/// denominator, scale by a power of ten, print): the reference the fast
+/// printer is tested against.
+std::string exact_text_general(const Rational& value);
 
 }  // namespace cvms::detail
