@@ -24,8 +24,6 @@ namespace cvms {
 
 namespace {
 
-constexpr std::uint32_t unused = static_cast<std::uint32_t>(-1);
-
 // The index of the first point at each position, so that repeated points of
 // a soup (one copy per triangle, as in STL) are one vertex.
 std::vector<std::uint32_t> first_copies(const PolygonSoup& soup) {
