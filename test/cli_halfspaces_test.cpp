@@ -22,8 +22,9 @@ std::string cube_off(int lo, int hi) {
   return s.str();
 }
 
-class CliHalfspaces : public ::testing::Test {
+class CliHalfspaces : public cvms::test::CliTest {
  protected:
+  CliHalfspaces() : CliTest("cli_halfspaces_") {}
   void SetUp() override {
 #ifndef CVMS_CLI_PATH
     GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
@@ -33,25 +34,12 @@ class CliHalfspaces : public ::testing::Test {
     dir_.write("open.txt", "1 0 0 1\n");
     dir_.write("bad.ine", "begin\n2 4 integer\n1 0 0 0\nend\n");
   }
-  void TearDown() override {
-    if (HasFailure()) dir_.keep();
-  }
-  [[nodiscard]] cvms::test::CliOutcome run(const std::string& args) const {
-#ifdef CVMS_CLI_PATH
-    return cvms::test::run_cli(dir_.path(), CVMS_CLI_PATH, args);
-#else
-    (void)args;
-    return {};
-#endif
-  }
   [[nodiscard]] std::string read(const std::string& name) const {
     std::ifstream in(dir_.path() / name);
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
   }
-  cvms::test::ScratchDirectory dir_{std::string("cli_halfspaces_") +
-                                    ::testing::UnitTest::GetInstance()->current_test_info()->name()};
 };
 
 TEST_F(CliHalfspaces, DiffPrintsTheDimensionAndCounts) {

@@ -20,8 +20,9 @@ std::string cube_off(const std::string& x0, const std::string& x1) {
   return s.str();
 }
 
-class CliProximity : public ::testing::Test {
+class CliProximity : public cvms::test::CliTest {
  protected:
+  CliProximity() : CliTest("cli_proximity_") {}
   void SetUp() override {
 #ifndef CVMS_CLI_PATH
     GTEST_SKIP() << "the cvms tool is not built (CVMS_BUILD_TOOLS=OFF)";
@@ -30,19 +31,6 @@ class CliProximity : public ::testing::Test {
     dir_.write("apart.off", cube_off("4/3", "7/3"));
     dir_.write("over.off", cube_off("0.9", "1.9"));
   }
-  void TearDown() override {
-    if (HasFailure()) dir_.keep();
-  }
-  [[nodiscard]] cvms::test::CliOutcome run(const std::string& args) const {
-#ifdef CVMS_CLI_PATH
-    return cvms::test::run_cli(dir_.path(), CVMS_CLI_PATH, args);
-#else
-    (void)args;
-    return {};
-#endif
-  }
-  cvms::test::ScratchDirectory dir_{std::string("cli_proximity_") +
-                                    ::testing::UnitTest::GetInstance()->current_test_info()->name()};
 };
 
 TEST_F(CliProximity, DistanceOfCubesOneThirdApart) {

@@ -4,6 +4,8 @@
 // stderr. (The program's path comes from the test target: CVMS_CLI_PATH.)
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 
@@ -38,5 +40,27 @@ class ScratchDirectory {
 
 /// Runs `program args` with the directory as working directory.
 CliOutcome run_cli(const std::filesystem::path& dir, const std::string& program, const std::string& args);
+
+/// A fixture for the tool's test suites: a scratch directory named after
+/// `prefix` and the test, kept when the test fails, and run() of the tool
+/// there. Derived fixtures skip in SetUp when the tool is not built.
+class CliTest : public ::testing::Test {
+ protected:
+  explicit CliTest(const std::string& prefix)
+      : dir_(prefix + ::testing::UnitTest::GetInstance()->current_test_info()->name()) {}
+  void TearDown() override {
+    if (HasFailure()) dir_.keep();
+  }
+  /// `cvms args` in the scratch directory (CVMS_CLI_PATH of the test target).
+  [[nodiscard]] CliOutcome run(const std::string& args) const {
+#ifdef CVMS_CLI_PATH
+    return run_cli(dir_.path(), CVMS_CLI_PATH, args);
+#else
+    (void)args;
+    return {};
+#endif
+  }
+  ScratchDirectory dir_;
+};
 
 }  // namespace cvms::test
