@@ -53,28 +53,27 @@ ConvexSet polygon_polygon_sum(const ConvexSet& a, const ConvexSet& b, const deta
       b.normal());
 }
 
-// The zonotope of the segments `operands` has at most d (d - 1) facets for
-// d distinct directions (exactly that many when no three are coplanar):
-// each facet is spanned by two directions and comes with its opposite.
-// Checked before any sum is made, so that a zonotope of 100,000 generators
-// (10^10 facets) is refused at once, not after its first levels of sums
-// (O(d log d): the directions are deduplicated by sorting, never hashed).
-void check_zonotope(const std::vector<const ConvexSet*>& operands, const detail::OutputBudget& budget) {
-  std::vector<Vec3> directions;
-  directions.reserve(operands.size());
-  for (const ConvexSet* s : operands) {
-    Vec3 d = primitive_direction(s->vertices()[1] - s->vertices()[0]);
+// The zonotope of segments along `directions` (nonzero) has at most
+// d (d - 1) facets for d distinct directions up to sign (exactly that many
+// when no three are coplanar): each facet is spanned by two directions and
+// comes with its opposite. Checked before any sum is made, and by zonotope()
+// before any segment is built, so that a zonotope of 100,000 generators
+// (10^10 facets) is refused at once (O(d log d): the directions are
+// deduplicated by sorting, never hashed).
+void check_zonotope(std::vector<Vec3> directions, const detail::OutputBudget& budget) {
+  const std::size_t segments = directions.size();
+  for (Vec3& d : directions) {
+    d = primitive_direction(d);
     // One direction up to sign: the first nonzero coordinate positive.
     const Rational& first = sgn(d.x) != 0 ? d.x : (sgn(d.y) != 0 ? d.y : d.z);
     if (sgn(first) < 0) d = -d;
-    directions.push_back(std::move(d));
   }
   std::sort(directions.begin(), directions.end(), detail::RepresentationLess{});
   const auto distinct = static_cast<std::uint64_t>(
       std::unique(directions.begin(), directions.end()) - directions.begin());
   if (distinct < 3) return;  // a segment or a polygon
   const std::uint64_t facets = detail::saturating_product(distinct, distinct - 1);
-  budget.check_count(facets, "minkowski_sum (zonotope of " + std::to_string(operands.size()) + " segments in " +
+  budget.check_count(facets, "minkowski_sum (zonotope of " + std::to_string(segments) + " segments in " +
                                  std::to_string(distinct) + " directions): the sum has up to " +
                                  std::to_string(facets) + " facets");
 }
@@ -108,7 +107,7 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
   auto larger = [](const Entry& x, const Entry& y) { return x.first > y.first; };
   std::priority_queue<Entry, std::vector<Entry>, decltype(larger)> queue(larger);
   std::size_t position = 0;
-  std::vector<const ConvexSet*> segments;
+  std::vector<Vec3> segment_directions;
   bool only_segments = true;
   for (const ConvexSet& s : operands) {
     if (s.empty()) return {};
@@ -116,14 +115,14 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
       offset += s.vertices()[0];
       continue;
     }
-    if (s.dimension() == 1) segments.push_back(&s);
+    if (s.dimension() == 1) segment_directions.push_back(s.vertices()[1] - s.vertices()[0]);
     only_segments = only_segments && s.dimension() == 1;
   }
   // Each sum of two checks its own output; a zonotope is also bounded as a
   // whole first (check_zonotope). Other sums of many are checked step by
   // step: a sum has at least the facets of each partial sum, so a step
   // beyond the limits means the whole is too.
-  if (only_segments) check_zonotope(segments, detail::OutputBudget(options.limits, "sets"));
+  if (only_segments) check_zonotope(std::move(segment_directions), detail::OutputBudget(options.limits, "sets"));
   for (const ConvexSet& s : operands)
     if (s.dimension() > 0) queue.push({{s.num_vertices(), position++}, s});
   if (queue.empty()) return ConvexSet::point(offset);
@@ -139,9 +138,15 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
 }
 
 ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators, const SumLimits& limits) {
-  std::vector<ConvexSet> segments{ConvexSet::point(center)};
+  std::vector<Vec3> directions;
+  directions.reserve(generators.size());
   for (const Vec3& g : generators)
-    if (!is_zero(g)) segments.push_back(ConvexSet::segment(-g, g));
+    if (!is_zero(g)) directions.push_back(g);
+  check_zonotope(directions, detail::OutputBudget(limits, "sets"));
+  std::vector<ConvexSet> segments;
+  segments.reserve(directions.size() + 1);
+  segments.push_back(ConvexSet::point(center));
+  for (const Vec3& g : directions) segments.push_back(ConvexSet::segment(-g, g));
   Options options;
   options.limits = limits;
   return minkowski_sum(segments, options);
