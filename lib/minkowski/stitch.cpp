@@ -7,12 +7,13 @@
 #include <atomic>
 #include <cmath>
 #include <latch>
-#include <unordered_map>
+#include <functional>
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
 #include "dyadic.hpp"
 #include "error_bounds.hpp"
+#include "first_use.hpp"
 #include "polyhedron_builder.hpp"
 #include "small_direction.hpp"
 #include "worker.hpp"
@@ -241,15 +242,14 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
       soup.face_indices[i] = slot;
     }
   } else {
-    std::unordered_map<std::uint64_t, std::uint32_t> index;
-    // Each vertex of a convex polyhedron is in at least three facets.
-    index.reserve(pairs_.size() / 3 + 1);
-    for (std::size_t i = 0; i < pairs_.size(); ++i) {
-      const std::uint64_t key = pairs_[i].a * nb + pairs_[i].b;
-      auto [it, inserted] = index.try_emplace(key, 0u);
-      if (inserted) it->second = new_vertex(pairs_[i]);
-      soup.face_indices[i] = it->second;
-    }
+    // Sparse: numbered by sorting, not hashing (std::hash of an integer is
+    // the identity, so keys j * nb + v that an input lines up modulo the
+    // bucket count would make a hash map quadratic; issue 18, item 1).
+    std::vector<std::uint64_t> keys(pairs_.size());
+    for (std::size_t i = 0; i < pairs_.size(); ++i) keys[i] = pairs_[i].a * nb + pairs_[i].b;
+    const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
+    for (const std::size_t first : numbered.first) new_vertex(pairs_[first]);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) soup.face_indices[i] = numbered.index[i];
   }
   return soup;
 }
