@@ -80,4 +80,29 @@ TEST_F(CliProximity, BadInputAndUsage) {
   EXPECT_EQ(o.code, 2);
 }
 
+// A flat operand (an OBJ with one face: the square [0,1]^2 at height 4/3)
+// and a segment (an OBJ with only `v` lines) against the unit cube.
+TEST_F(CliProximity, FlatObjOperands) {
+  dir_.write("square.obj", "v 0 0 4/3\nv 1 0 4/3\nv 1 1 4/3\nv 0 1 4/3\nf 1 2 3 4\n");
+  dir_.write("segment.obj", "v 0.5 0.5 -1\nv 0.5 0.5 2\n");
+  dir_.write("empty.off", "OFF\n0 0 0\n");
+  cvms::test::CliOutcome o = run("distance a.off square.obj");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("squared_distance 1/9\ndistance 0.3333333333333333\n", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("intersect no\n"), std::string::npos) << o.out;
+  // The segment pierces the cube: A + (-B) = [-1/2, 1/2]^2 x [-2, 2].
+  o = run("penetration a.off segment.obj");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("squared_depth 0.25\ndepth 0.5\ndirection -1 0 0\n", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("intersect yes\n"), std::string::npos) << o.out;
+  // Two flat operands in one plane: A + (-B) has no interior, depth 0.
+  o = run("penetration square.obj square.obj");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("squared_depth 0\ndepth 0\ndirection 0 0 1\n", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find("intersect yes\n"), std::string::npos) << o.out;
+  o = run("distance empty.off a.off");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_NE(o.err.find("empty.off"), std::string::npos) << o.err;
+}
+
 }  // namespace
