@@ -204,7 +204,8 @@ struct PenetrationResult {
   Rational squared_depth;
   /// When they intersect, the primitive integer outward normal of the facet
   /// of A + (-B) nearest to the origin: translating B by depth along it
-  /// (translation()) makes them touch. Zero when they are apart.
+  /// (translation()) makes them touch. Zero when they are apart. (For convex
+  /// sets whose A + (-B) is flat, see penetration(const ConvexSet&, ...).)
   Vec3 direction;
   /// When they intersect, the plane offset of that facet:
   /// dot(direction, x) = offset on it, offset >= 0.
