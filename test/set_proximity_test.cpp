@@ -71,6 +71,9 @@ TEST(SetProximitySupport, SquareVertexEdgeAndWholeFace) {
   EXPECT_EQ(support(ConvexSet::segment(v3(0, 0, 0), v3(2, 1, 0)), v3(-1, 0, 0)).point, v3(0, 0, 0));
   EXPECT_EQ(support(ConvexSet::point(v3(3, 4, 5)), v3(0, 1, 0)).value, 4);
   EXPECT_EQ(support(unit_cube(), v3(1, 1, 1)).point, v3(1, 1, 1));
+  const SupportResult top = support(unit_cube(), v3(0, 0, 3), VertexId(0), true);
+  EXPECT_EQ(top.face.dimension, 2);
+  EXPECT_TRUE(top.face.facet.is_valid());  // a polyhedron's facet, as its own overload names it
 }
 
 TEST(SetProximitySupport, BadArguments) {

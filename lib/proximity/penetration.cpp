@@ -36,8 +36,8 @@
 #include <optional>
 
 #include "cvms/minkowski.hpp"
-#include "cvms/set_sum.hpp"
 #include "cvms/proximity.hpp"
+#include "cvms/set_sum.hpp"
 #include "gjk.hpp"
 #include "query_operands.hpp"
 #include "reflection.hpp"
@@ -136,4 +136,3 @@ PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b) {
 }
 
 }  // namespace cvms
-
