@@ -31,6 +31,14 @@ class CliProximity : public cvms::test::CliTest {
     dir_.write("apart.off", cube_off("4/3", "7/3"));
     dir_.write("over.off", cube_off("0.9", "1.9"));
   }
+  // Runs the command and checks that it succeeds, prints `head` first and
+  // says whether the operands intersect.
+  void expect_run(const std::string& command, const std::string& head, bool intersect) {
+    const cvms::test::CliOutcome o = run(command);
+    ASSERT_EQ(o.code, 0) << command << ": " << o.err;
+    EXPECT_EQ(o.out.rfind(head, 0), 0u) << command << ": " << o.out;
+    EXPECT_NE(o.out.find(intersect ? "intersect yes\n" : "intersect no\n"), std::string::npos) << command << ": " << o.out;
+  }
 };
 
 TEST_F(CliProximity, DistanceOfCubesOneThirdApart) {
@@ -58,14 +66,8 @@ TEST_F(CliProximity, PenetrationOfCubesOverlappingByOneTenth) {
 }
 
 TEST_F(CliProximity, PenetrationOfSeparatedAndDistanceOfOverlapping) {
-  cvms::test::CliOutcome o = run("penetration a.off apart.off");
-  ASSERT_EQ(o.code, 0) << o.err;
-  EXPECT_EQ(o.out.rfind("squared_depth 0\ndepth 0\ndirection 0 0 0\n", 0), 0u) << o.out;
-  EXPECT_NE(o.out.find("intersect no\n"), std::string::npos) << o.out;
-  o = run("distance a.off over.off");
-  ASSERT_EQ(o.code, 0) << o.err;
-  EXPECT_EQ(o.out.rfind("squared_distance 0\ndistance 0\n", 0), 0u) << o.out;
-  EXPECT_NE(o.out.find("intersect yes\n"), std::string::npos) << o.out;
+  expect_run("penetration a.off apart.off", "squared_depth 0\ndepth 0\ndirection 0 0 0\n", false);
+  expect_run("distance a.off over.off", "squared_distance 0\ndistance 0\n", true);
 }
 
 TEST_F(CliProximity, BadInputAndUsage) {
@@ -78,6 +80,22 @@ TEST_F(CliProximity, BadInputAndUsage) {
   EXPECT_EQ(o.code, 2);
   o = run("distance a.off b.txt");
   EXPECT_EQ(o.code, 2);
+}
+
+// A flat operand (an OBJ with one face: the square [0,1]^2 at height 4/3)
+// and a segment (an OBJ with only `v` lines) against the unit cube.
+TEST_F(CliProximity, FlatObjOperands) {
+  dir_.write("square.obj", "v 0 0 4/3\nv 1 0 4/3\nv 1 1 4/3\nv 0 1 4/3\nf 1 2 3 4\n");
+  dir_.write("segment.obj", "v 0.5 0.5 -1\nv 0.5 0.5 2\n");
+  dir_.write("empty.off", "OFF\n0 0 0\n");
+  expect_run("distance a.off square.obj", "squared_distance 1/9\ndistance 0.3333333333333333\n", false);
+  // The segment pierces the cube: A + (-B) = [-1/2, 1/2]^2 x [-2, 2].
+  expect_run("penetration a.off segment.obj", "squared_depth 0.25\ndepth 0.5\ndirection -1 0 0\n", true);
+  // Two flat operands in one plane: A + (-B) has no interior, depth 0.
+  expect_run("penetration square.obj square.obj", "squared_depth 0\ndepth 0\ndirection 0 0 1\n", true);
+  const cvms::test::CliOutcome o = run("distance empty.off a.off");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_NE(o.err.find("empty.off"), std::string::npos) << o.err;
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// \file
-/// Exact proximity queries on convex polyhedra: support, intersection test,
-/// separation distance and penetration depth. Everything is exact: inputs are
+/// Exact proximity queries on convex polyhedra and on convex sets of any
+/// dimension (ConvexSet: a point, a segment, a polygon or a polyhedron):
+/// support, intersection test, separation distance and penetration depth. Everything is exact: inputs are
 /// rational, answers are rational (the squared distance of two polytopes with
 /// rational vertices is rational, and so is the squared depth), every sign
 /// decision goes through the filtered predicates.
@@ -16,6 +17,12 @@
 /// double is an exact rational, so the moved operand is the exact image
 /// R P + t; distance queries apply it lazily (to the search directions and to
 /// the few vertices they touch), never re-validating or copying the operand.
+/// (Placements are for polyhedra; a ConvexSet operand is taken as it is.)
+///
+/// Overloads: each query takes two PlacedPolyhedron, two ConvexPolyhedron
+/// (the same, unmoved) or two ConvexSet. A polyhedron passed where a
+/// ConvexSet is expected (mixing it with a flat operand) is converted, which
+/// copies it; convert once (ConvexSet(p)) to query it many times.
 ///
 /// \code
 /// cvms::ConvexPolyhedron a = cvms::shapes::cube(), b = ...;
@@ -30,6 +37,7 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/convex_set.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms {
@@ -121,11 +129,37 @@ struct SupportResult {
 SupportResult support(const PlacedPolyhedron& p, const Vec3& u, VertexId start = VertexId(0),
                       bool want_face = false);
 
+/// support(p, u, start, want_face) on the unmoved polyhedron (this overload
+/// makes the call with a ConvexPolyhedron unambiguous).
+SupportResult support(const ConvexPolyhedron& p, const Vec3& u, VertexId start = VertexId(0), bool want_face = false);
+
+/// The support of a convex set of any dimension, as above; vertex indices
+/// (SupportResult::vertex, `start`, the face's vertices) index s.vertices().
+/// A polyhedron walks its mesh; a polygon walks its cycle (a linear function
+/// on a convex polygon has no local maximum that is not global either), a
+/// segment or a point has nothing to walk. The face, when asked, is a
+/// vertex, an edge or, for a polygon orthogonal to u, the whole polygon
+/// (dimension 2; SupportFace::facet is then invalid: a polygon has no facet
+/// ids) or, for a polyhedron, one of its facets.
+/// \throw Error(invalid_argument) if s is the empty set, u is zero or start
+///   is not a vertex index of s.
+/// Complexity: O(length of the climb) filtered predicates, plus O(n) to copy
+/// a lower-dimensional set's n vertices with their approximations.
+SupportResult support(const ConvexSet& s, const Vec3& u, VertexId start = VertexId(0), bool want_face = false);
+
 /// True iff A and B have a common point (touching counts: closed sets).
 /// Exact GJK on support walks that stops at the first separating direction
 /// (see squared_distance); sign decisions only, filtered.
 /// \throw Error(invalid_argument) for an empty operand.
 bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
+
+/// intersects() on the unmoved polyhedra.
+bool intersects(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
+/// intersects() on convex sets of any dimension: the same exact GJK (it only
+/// needs support points, and a point, a segment or a polygon has them).
+/// \throw Error(invalid_argument) naming the operand (A or B) if one is the
+///   empty set.
+bool intersects(const ConvexSet& a, const ConvexSet& b);
 
 /// The distance between two operands and where it is reached.
 struct DistanceResult {
@@ -154,6 +188,13 @@ struct DistanceResult {
 /// \throw Error(invalid_argument) for an empty operand.
 DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
 
+/// squared_distance() on the unmoved polyhedra.
+DistanceResult squared_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
+/// squared_distance() on convex sets of any dimension (the same exact GJK).
+/// \throw Error(invalid_argument) naming the operand (A or B) if one is the
+///   empty set.
+DistanceResult squared_distance(const ConvexSet& a, const ConvexSet& b);
+
 /// The penetration of two operands: how far B must be translated to separate.
 struct PenetrationResult {
   /// True iff they intersect (touching counts).
@@ -163,7 +204,8 @@ struct PenetrationResult {
   Rational squared_depth;
   /// When they intersect, the primitive integer outward normal of the facet
   /// of A + (-B) nearest to the origin: translating B by depth along it
-  /// (translation()) makes them touch. Zero when they are apart.
+  /// (translation()) makes them touch. Zero when they are apart. (For convex
+  /// sets whose A + (-B) is flat, see penetration(const ConvexSet&, ...).)
   Vec3 direction;
   /// When they intersect, the plane offset of that facet:
   /// dot(direction, x) = offset on it, offset >= 0.
@@ -197,6 +239,26 @@ struct PenetrationResult {
 /// Complexity: the distance query when apart; when they intersect, one
 /// Minkowski sum (see minkowski_sum) plus O(F) exact comparisons.
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
+
+/// penetration() on the unmoved polyhedra.
+PenetrationResult penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b);
+
+/// The penetration of convex sets of any dimension. When they intersect and
+/// M = A + (-B) is solid (dimension 3: at least one operand is, or two flat
+/// ones span space together), as for polyhedra: the nearest facet of M
+/// (M from minkowski_sum of ConvexSets, cvms/set_sum.hpp). When M is flat
+/// (both operands in parallel planes, or on parallel lines, or points...),
+/// M has no interior: the origin is on its boundary whenever it is in M, so
+/// an intersecting pair has squared_depth 0 and translation() zero (any
+/// small move off M's affine hull separates them). Then offset is 0 and
+/// direction is M's canonical plane normal (ConvexSet::normal()) when M is a
+/// polygon, zero when it is a segment or a point (no single normal); the
+/// witnesses are a common point.
+/// \throw Error(invalid_argument) naming the operand (A or B) if one is the
+///   empty set;
+/// \throw Error(limit) when they intersect and A + (-B) is beyond the
+///   default SumLimits.
+PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b);
 
 /// The double nearest to the square root of q (ties to even), for printing a
 /// distance or a depth next to its exact square: decided by exact

@@ -4,22 +4,34 @@
 // point of A + (-B) (weights positive, sum 1), a = sum w_i a_i is in A and
 // b = sum w_i b_i is in B (convex combinations of their vertices), and
 // a - b = v: so |a - b|^2 = |v|^2 is the distance, and a = b when they
-// intersect.
+// intersect. The same for polyhedra and for convex sets of any dimension:
+// both are SupportOperands.
 #include "cvms/proximity.hpp"
 #include "gjk.hpp"
 #include "nearest_on_simplex.hpp"
-#include "placed_support.hpp"
+#include "query_operands.hpp"
 
 namespace cvms {
 
 bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
   detail::check_operands(a, b, "intersects");
-  return detail::exact_gjk(a, b, detail::GjkGoal::intersection).intersect;
+  return detail::exact_gjk(detail::SupportOperand(a), detail::SupportOperand(b), detail::GjkGoal::intersection)
+      .intersect;
+}
+
+bool intersects(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  return intersects(PlacedPolyhedron(a), PlacedPolyhedron(b));
+}
+
+bool intersects(const ConvexSet& a, const ConvexSet& b) {
+  detail::check_operands(a, b, "intersects");
+  return detail::exact_gjk(detail::SupportOperand(a), detail::SupportOperand(b), detail::GjkGoal::intersection)
+      .intersect;
 }
 
 namespace detail {
 
-DistanceResult distance_with_offset(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset) {
+DistanceResult distance_with_offset(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset) {
   GjkOutcome g = exact_gjk(a, b, GjkGoal::distance, b_offset);
   DistanceResult r;
   r.squared_distance = g.squared_norm;
@@ -40,7 +52,16 @@ DistanceResult distance_with_offset(const PlacedPolyhedron& a, const PlacedPolyh
 
 DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
   detail::check_operands(a, b, "squared_distance");
-  return detail::distance_with_offset(a, b, nullptr);
+  return detail::distance_with_offset(detail::SupportOperand(a), detail::SupportOperand(b), nullptr);
+}
+
+DistanceResult squared_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  return squared_distance(PlacedPolyhedron(a), PlacedPolyhedron(b));
+}
+
+DistanceResult squared_distance(const ConvexSet& a, const ConvexSet& b) {
+  detail::check_operands(a, b, "squared_distance");
+  return detail::distance_with_offset(detail::SupportOperand(a), detail::SupportOperand(b), nullptr);
 }
 
 }  // namespace cvms

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Exact GJK (Gilbert, Johnson and Keerthi 1988) on support walks, in exact
-// rationals: the point of C = A + (-B) nearest to the origin.
+// rationals: the point of C = A + (-B) nearest to the origin. Nothing below
+// uses more of A and B than support points, so they may be convex sets of
+// any dimension (SupportOperand): then C is too, and every step holds as
+// written (the affine independence argument does not need C to be solid).
 //
 // The loop. Keep a set W of points of C (each a_i - b_j for a vertex a_i of
 // A and b_j of B) and v, the point of conv(W) nearest to the origin. Take the
@@ -39,12 +42,11 @@
 
 #include "filtered_predicates.hpp"
 #include "nearest_on_simplex.hpp"
-#include "placed_support.hpp"
 
 namespace cvms::detail {
 namespace {
 
-GjkPoint point_of(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const Vec3* b_offset, VertexId va,
+GjkPoint point_of(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset, VertexId va,
                   VertexId vb) {
   GjkPoint p{va, vb, a.position(va), b.position(vb), {}};
   if (b_offset != nullptr) p.b += *b_offset;
@@ -72,7 +74,7 @@ void add_and_reduce(GjkOutcome& out, GjkPoint w) {
 
 }  // namespace
 
-GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal, const Vec3* b_offset) {
+GjkOutcome exact_gjk(const SupportOperand& a, const SupportOperand& b, GjkGoal goal, const Vec3* b_offset) {
   GjkOutcome out;
   VertexId hint_a(0);
   VertexId hint_b(0);
@@ -86,8 +88,8 @@ GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGo
     ++out.iterations;
     const ApproxVec3 v_approx = ApproxVec3::of(out.nearest);
     const Vec3Ref v{out.nearest, v_approx};
-    hint_a = support_vertex(a, v, Sign::negative, hint_a);  // maximises <x, -v> on A
-    hint_b = support_vertex(b, v, Sign::positive, hint_b);
+    hint_a = a.support(v, Sign::negative, hint_a);  // maximises <x, -v> on A
+    hint_b = b.support(v, Sign::positive, hint_b);
     GjkPoint w = point_of(a, b, b_offset, hint_a, hint_b);
     const ApproxVec3 w_approx = ApproxVec3::of(w.c);
     const Vec3Ref wr{w.c, w_approx};

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The exact GJK of this layer: the point of C = A + (-B) nearest to the
 // origin, from support walks on A and B (gjk.cpp has the algorithm and the
-// termination proof).
+// termination proof); A and B are any SupportOperand (a placed polyhedron or
+// a convex set of any dimension).
 #pragma once
 
 #include <array>
 
 #include "cvms/proximity.hpp"
+#include "support_operand.hpp"
 
 namespace cvms::detail {
 
@@ -38,7 +40,7 @@ enum class GjkGoal {
 
 /// \pre both operands non-empty. With b_offset, B is moved further by that
 /// exact vector (the simplex's b points include it).
-GjkOutcome exact_gjk(const PlacedPolyhedron& a, const PlacedPolyhedron& b, GjkGoal goal,
+GjkOutcome exact_gjk(const SupportOperand& a, const SupportOperand& b, GjkGoal goal,
                      const Vec3* b_offset = nullptr);
 
 }  // namespace cvms::detail

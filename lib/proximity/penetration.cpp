@@ -24,12 +24,22 @@
 // The witnesses: after moving B by p the operands touch, and the exact GJK
 // of A against the moved B returns a common point x; then x is in A,
 // x - p is in B, and their difference is p.
+//
+// Convex sets of any dimension: M = A + (-B) from the sets layer. If M is
+// solid the claim applies unchanged. If M is flat (dimension <= 2), its
+// interior in space is empty, so every point of M is a boundary point: when
+// the origin is in M the distance to the boundary is 0, and any translation
+// of B off M's affine hull, however small, separates the operands. There is
+// no depth to find; the direction reported is M's canonical plane normal for
+// a polygon (one of the two that leave its plane) and zero for a segment or a
+// point (a whole circle or sphere of directions would do).
 #include <optional>
 
 #include "cvms/minkowski.hpp"
 #include "cvms/proximity.hpp"
+#include "cvms/set_sum.hpp"
 #include "gjk.hpp"
-#include "placed_support.hpp"
+#include "query_operands.hpp"
 #include "reflection.hpp"
 
 namespace cvms {
@@ -57,6 +67,35 @@ FaceId nearest_facet(const ConvexPolyhedron& m) {
   return best;
 }
 
+// The answer when they are apart (closest points) or, provisionally, when
+// they intersect (a common point, depth 0, no direction yet).
+PenetrationResult from_distance(const DistanceResult& d) {
+  PenetrationResult r;
+  r.intersect = d.intersect;
+  r.direction = Vec3{0, 0, 0};
+  r.witness_a = d.witness_a;
+  r.witness_b = d.witness_b;
+  return r;
+}
+
+// The depth from a solid M = A + (-B) with the origin inside, and the
+// witnesses of the contact after moving B by it.
+void depth_from_sum(const ConvexPolyhedron& m, const detail::SupportOperand& a, const detail::SupportOperand& b,
+                    PenetrationResult& r) {
+  const FaceId f = nearest_facet(m);
+  r.direction = m.normal(f);
+  r.offset = m.plane_offset(f);
+  r.squared_depth = r.offset * r.offset / dot(r.direction, r.direction);
+  const Vec3 t = r.translation();
+  const DistanceResult contact = detail::distance_with_offset(a, b, &t);
+  r.witness_a = contact.witness_a;
+  r.witness_b = contact.witness_b - t;
+}
+
+ConvexSet reflected(const ConvexSet& s) {
+  return s.dimension() == 3 ? ConvexSet(detail::reflection(s.polyhedron())) : s.reflected();
+}
+
 }  // namespace
 
 Vec3 PenetrationResult::translation() const {
@@ -66,29 +105,33 @@ Vec3 PenetrationResult::translation() const {
 
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
   detail::check_operands(a, b, "penetration");
-  PenetrationResult r;
-  const DistanceResult apart = squared_distance(a, b);
-  r.intersect = apart.intersect;
-  r.direction = Vec3{0, 0, 0};
-  if (!r.intersect) {
-    r.witness_a = apart.witness_a;
-    r.witness_b = apart.witness_b;
-    return r;
-  }
+  PenetrationResult r = from_distance(squared_distance(a, b));
+  if (!r.intersect) return r;
   // The moved operands, built only when a placement asks for it.
   std::optional<ConvexPolyhedron> moved_a;
   std::optional<ConvexPolyhedron> moved_b;
   const ConvexPolyhedron& pa = a.is_placed() ? moved_a.emplace(a.materialized()) : a.polyhedron();
   const ConvexPolyhedron& pb = b.is_placed() ? moved_b.emplace(b.materialized()) : b.polyhedron();
   const ConvexPolyhedron m = minkowski_sum(pa, detail::reflection(pb)).polyhedron;
-  const FaceId f = nearest_facet(m);
-  r.direction = m.normal(f);
-  r.offset = m.plane_offset(f);
-  r.squared_depth = r.offset * r.offset / dot(r.direction, r.direction);
-  const Vec3 t = r.translation();
-  const DistanceResult contact = detail::distance_with_offset(pa, pb, &t);
-  r.witness_a = contact.witness_a;
-  r.witness_b = contact.witness_b - t;
+  depth_from_sum(m, detail::SupportOperand(PlacedPolyhedron(pa)), detail::SupportOperand(PlacedPolyhedron(pb)), r);
+  return r;
+}
+
+PenetrationResult penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  return penetration(PlacedPolyhedron(a), PlacedPolyhedron(b));
+}
+
+PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b) {
+  detail::check_operands(a, b, "penetration");
+  const detail::SupportOperand sa(a);
+  const detail::SupportOperand sb(b);
+  PenetrationResult r = from_distance(detail::distance_with_offset(sa, sb, nullptr));
+  if (!r.intersect) return r;
+  const ConvexSet m = minkowski_sum(a, reflected(b));
+  if (m.dimension() == 3)
+    depth_from_sum(m.polyhedron(), sa, sb, r);
+  else if (m.dimension() == 2)
+    r.direction = m.normal();  // flat M: depth and offset stay 0 (the file comment)
   return r;
 }
 

@@ -7,10 +7,11 @@
 // itself with the direction R^T u.
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "cvms/error.hpp"
 #include "cvms/proximity.hpp"
-#include "placed_support.hpp"
+#include "query_operands.hpp"
 #include "support_walk.hpp"
 
 namespace cvms {
@@ -49,17 +50,14 @@ ConvexPolyhedron PlacedPolyhedron::materialized() const {
 
 namespace detail {
 
-VertexId support_vertex(const PlacedPolyhedron& p, Vec3Ref u, Sign sense, VertexId start) {
-  const PolyhedronGraph graph{p.polyhedron()};
-  if (!p.is_placed()) return climb_to_maximum(graph, u, start, sense);
-  const Vec3 local = p.linear_transposed() * u.exact;
-  const ApproxVec3 approx = ApproxVec3::of(local);
-  return climb_to_maximum(graph, Vec3Ref{local, approx}, start, sense);
-}
-
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who) {
   check_operand(a.polyhedron(), who);
   check_operand(b.polyhedron(), who);
+}
+
+void check_operands(const ConvexSet& a, const ConvexSet& b, const char* who) {
+  for (const auto& [set, name] : {std::pair{&a, "A"}, std::pair{&b, "B"}})
+    if (set->empty()) throw Error(ErrorCategory::invalid_argument, std::string(who) + ": operand " + name + " is the empty set");
 }
 
 }  // namespace detail

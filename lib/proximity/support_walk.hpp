@@ -18,6 +18,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 #include "filtered_predicates.hpp"
@@ -35,6 +36,24 @@ struct PolyhedronGraph {
   void for_each_neighbour(VertexId v, F&& f) const {
     const Mesh& m = p.mesh();
     for (HalfedgeId h : m.outgoing_halfedges(v)) f(m.to(h));
+  }
+};
+
+// The graph of a lower-dimensional set: a point (no edge), a segment (its
+// two ends joined) or a polygon (its cycle, each vertex joined to the next
+// and the previous). The climb's argument holds within the set's affine
+// hull: the set minus a vertex lies in the cone of that vertex's one or two
+// edges. `approx` approximates `points`, entry by entry.
+struct CycleGraph {
+  const std::vector<Vec3>& points;
+  const std::vector<ApproxVec3>& approx;
+  [[nodiscard]] Vec3Ref ref(VertexId v) const noexcept { return {points[v.index()], approx[v.index()]}; }
+  template <class F>
+  void for_each_neighbour(VertexId v, F&& f) const {
+    const auto n = static_cast<std::uint32_t>(points.size());
+    if (n < 2) return;
+    f(VertexId((v.index() + 1) % n));
+    if (n > 2) f(VertexId((v.index() + n - 1) % n));
   }
 };
 

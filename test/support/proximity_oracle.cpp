@@ -39,16 +39,15 @@ std::optional<Rational> facet_candidate(const ConvexPolyhedron& m, FaceId f) {
   return norm2(p);
 }
 
-// The squared distance from the origin to the closed segment [u, w].
-Rational segment_distance2(const Vec3& u, const Vec3& w) {
+}  // namespace
+
+Rational origin_segment_distance2(const Vec3& u, const Vec3& w) {
   const Vec3 e = w - u;
   const Rational t = -dot(u, e) / norm2(e);
   if (t <= 0) return norm2(u);
   if (t >= 1) return norm2(w);
   return norm2(u + t * e);
 }
-
-}  // namespace
 
 OriginAndPolytope origin_versus(const ConvexPolyhedron& m) {
   OriginAndPolytope out;
@@ -60,7 +59,7 @@ OriginAndPolytope origin_versus(const ConvexPolyhedron& m) {
     if (auto c = facet_candidate(m, f)) keep_min(best, *c);
   for (EdgeId e : m.mesh().edges()) {
     const HalfedgeId h = Mesh::halfedge(e);
-    keep_min(best, segment_distance2(m.mesh().position(m.mesh().from(h)), m.mesh().position(m.mesh().to(h))));
+    keep_min(best, origin_segment_distance2(m.mesh().position(m.mesh().from(h)), m.mesh().position(m.mesh().to(h))));
   }
   for (VertexId v : m.mesh().vertices()) keep_min(best, norm2(m.vertex(v)));
   out.boundary_distance2 = *best;
@@ -84,21 +83,21 @@ bool contains(const ConvexPolyhedron& p, const Vec3& x) {
   return true;
 }
 
-std::string check_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const DistanceResult& d,
-                           const OriginAndPolytope& oracle) {
+std::string check_distance_by(const Membership& in_a, const Membership& in_b, const DistanceResult& d,
+                              const OriginAndPolytope& oracle) {
   const Rational expected = oracle.inside ? Rational(0) : oracle.boundary_distance2;
   if (d.squared_distance != expected)
     return "squared_distance " + to_string(d.squared_distance) + ", expected " + to_string(expected);
   if (d.intersect != oracle.inside) return std::string("intersect ") + (d.intersect ? "yes" : "no") + ", expected the opposite";
-  if (!contains(a, d.witness_a)) return "witness_a " + to_text(d.witness_a) + " is not in A";
-  if (!contains(b, d.witness_b)) return "witness_b " + to_text(d.witness_b) + " is not in B";
+  if (!in_a(d.witness_a)) return "witness_a " + to_text(d.witness_a) + " is not in A";
+  if (!in_b(d.witness_b)) return "witness_b " + to_text(d.witness_b) + " is not in B";
   if (norm2(d.witness_a - d.witness_b) != d.squared_distance)
     return "the witnesses are at squared distance " + to_string(norm2(d.witness_a - d.witness_b));
   return "";
 }
 
-std::string check_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const PenetrationResult& p,
-                              const OriginAndPolytope& oracle) {
+std::string check_penetration_by(const Membership& in_a, const Membership& in_b, const PenetrationResult& p,
+                                 const OriginAndPolytope& oracle) {
   if (p.intersect != oracle.inside) return std::string("intersect ") + (p.intersect ? "yes" : "no") + ", expected the opposite";
   if (!oracle.inside) {
     if (sgn(p.squared_depth) != 0 || !is_zero(p.direction)) return "apart, but a depth or direction is reported";
@@ -110,10 +109,28 @@ std::string check_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron&
     return "direction " + to_text(p.direction) + " is not the smallest nearest facet normal";
   const Vec3 t = p.translation();
   if (norm2(t) != p.squared_depth) return "|translation|^2 differs from squared_depth";
-  if (!contains(a, p.witness_a)) return "witness_a " + to_text(p.witness_a) + " is not in A";
-  if (!contains(b, p.witness_b)) return "witness_b " + to_text(p.witness_b) + " is not in B";
+  if (!in_a(p.witness_a)) return "witness_a " + to_text(p.witness_a) + " is not in A";
+  if (!in_b(p.witness_b)) return "witness_b " + to_text(p.witness_b) + " is not in B";
   if (p.witness_a - p.witness_b != t) return "witness_a - witness_b is not the translation";
   return "";
+}
+
+namespace {
+
+Membership membership(const ConvexPolyhedron& p) {
+  return [&p](const Vec3& x) { return contains(p, x); };
+}
+
+}  // namespace
+
+std::string check_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const DistanceResult& d,
+                           const OriginAndPolytope& oracle) {
+  return check_distance_by(membership(a), membership(b), d, oracle);
+}
+
+std::string check_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const PenetrationResult& p,
+                              const OriginAndPolytope& oracle) {
+  return check_penetration_by(membership(a), membership(b), p, oracle);
 }
 
 namespace {

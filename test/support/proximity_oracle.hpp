@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,21 @@ OriginAndPolytope proximity_oracle(const ConvexPolyhedron& a, const ConvexPolyhe
 
 /// True iff x satisfies every facet inequality of p (exactly).
 bool contains(const ConvexPolyhedron& p, const Vec3& x);
+
+/// The squared distance from the origin to the closed segment [u, w], u != w.
+Rational origin_segment_distance2(const Vec3& u, const Vec3& w);
+
+/// An exact membership test of an operand (for the witnesses).
+using Membership = std::function<bool(const Vec3&)>;
+
+/// check_distance with the operands given by their membership tests.
+std::string check_distance_by(const Membership& in_a, const Membership& in_b, const DistanceResult& d,
+                              const OriginAndPolytope& oracle);
+
+/// check_penetration with the operands given by their membership tests
+/// (M = A + (-B) solid).
+std::string check_penetration_by(const Membership& in_a, const Membership& in_b, const PenetrationResult& p,
+                                 const OriginAndPolytope& oracle);
 
 /// "" if the distance answer agrees with the oracle and its witnesses are
 /// valid (in A, in B, at the right distance), else what is wrong.

@@ -3,15 +3,20 @@
 // The exact numbers come first, printed as the writers print coordinates
 // (cvms::to_string: a decimal when finite, else p/q); the rounded distance is
 // the double nearest to the exact square root, printed in the shortest form
-// that reads back to it.
+// that reads back to it. The operands are read as convex sets of any
+// dimension (as `cvms sum` reads them), so a flat OBJ, a segment or a point
+// is a valid operand; proximity.hpp says what a flat A + (-B) means for the
+// penetration.
 #include "proximity_commands.hpp"
 
 #include <charconv>
 #include <ostream>
 
+#include "cvms/error.hpp"
 #include "cvms/proximity.hpp"
 #include "files.hpp"
 #include "commands.hpp"
+#include "set_commands.hpp"
 
 namespace cvms::cli {
 namespace {
@@ -28,7 +33,7 @@ void print_point(std::ostream& out, const char* name, const Vec3& p) {
 
 void print_intersect(std::ostream& out, bool intersect) { out << "intersect " << (intersect ? "yes" : "no") << '\n'; }
 
-void run_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b, std::ostream& out) {
+void run_distance(const ConvexSet& a, const ConvexSet& b, std::ostream& out) {
   const DistanceResult d = squared_distance(a, b);
   out << "squared_distance " << to_string(d.squared_distance) << '\n'
       << "distance " << shortest(nearest_double_sqrt(d.squared_distance)) << '\n';
@@ -37,7 +42,7 @@ void run_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b, std::ost
   print_intersect(out, d.intersect);
 }
 
-void run_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b, std::ostream& out) {
+void run_penetration(const ConvexSet& a, const ConvexSet& b, std::ostream& out) {
   const PenetrationResult p = penetration(a, b);
   out << "squared_depth " << to_string(p.squared_depth) << '\n'
       << "depth " << shortest(nearest_double_sqrt(p.squared_depth)) << '\n'
@@ -46,6 +51,14 @@ void run_penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b, std::
   print_point(out, "witness_a", p.witness_a);
   print_point(out, "witness_b", p.witness_b);
   print_intersect(out, p.intersect);
+}
+
+// An operand; the empty set (an OFF with no points) is named by its file
+// here, as the library can only call it A or B.
+ConvexSet read_operand(const std::string& path) {
+  ConvexSet s = read_set(path);
+  if (s.empty()) throw Error(ErrorCategory::invalid_argument, input_name(path) + ": the empty set has no distance or depth");
+  return s;
 }
 
 }  // namespace
@@ -65,8 +78,8 @@ bool run_proximity_command(const ProximityArgs& args, std::ostream& out) {
   const bool penetration = args.penetration != nullptr && *args.penetration;
   if (!distance && !penetration) return false;
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
-  const ConvexPolyhedron a = read_polyhedron(args.a);
-  const ConvexPolyhedron b = read_polyhedron(args.b);
+  const ConvexSet a = read_operand(args.a);
+  const ConvexSet b = read_operand(args.b);
   if (distance)
     run_distance(a, b, out);
   else

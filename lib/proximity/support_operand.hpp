@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// The operand of the exact GJK as it sees it: a finite set of points (the
+// vertices of a convex set) and a support walk on them. GJK needs nothing
+// else (gjk.cpp), so one loop serves a placed polyhedron and a convex set of
+// any dimension: the polyhedron walks its mesh (support.cpp applies the
+// placement to the direction), a point, a segment or a polygon walks its
+// cycle (support_walk.hpp, CycleGraph).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "approx.hpp"
+#include "cvms/convex_set.hpp"
+#include "cvms/proximity.hpp"
+#include "cvms/sign.hpp"
+#include "support_walk.hpp"
+
+namespace cvms::detail {
+
+/// The vertices of a point, a segment or a polygon with the approximations
+/// the filters need (ConvexSet keeps none), and their graph.
+struct VertexCycle {
+  std::vector<Vec3> points;
+  std::vector<ApproxVec3> approx;
+  VertexCycle() = default;
+  explicit VertexCycle(const ConvexSet& s);
+  [[nodiscard]] CycleGraph graph() const noexcept { return {points, approx}; }
+};
+
+class SupportOperand {
+ public:
+  /// A view of p (which must outlive the operand).
+  explicit SupportOperand(const PlacedPolyhedron& p) : polyhedron_(p) {}
+  /// A set of dimension 3 is viewed (it must outlive the operand); a lower
+  /// one has its few vertices and their approximations copied, because
+  /// ConvexSet keeps no approximations for the filters.
+  /// \pre s is not empty.
+  explicit SupportOperand(const ConvexSet& s);
+
+  /// A vertex maximising <x, u> (sense positive) or minimising it (sense
+  /// negative) over the (moved) set, climbing from `start`, a valid vertex.
+  [[nodiscard]] VertexId support(Vec3Ref u, Sign sense, VertexId start) const;
+  /// The (moved) position of vertex v.
+  [[nodiscard]] Vec3 position(VertexId v) const;
+
+ private:
+  std::optional<PlacedPolyhedron> polyhedron_;
+  VertexCycle cycle_;  // when not a polyhedron
+};
+
+}  // namespace cvms::detail
