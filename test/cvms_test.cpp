@@ -9,7 +9,9 @@
 // compared with the same oracle, so all agree exactly on every case; on top
 // of that, every CVMS case also checks that the two CVMS modes build the
 // identical polyhedron (same vertices, same facets, same numbering, same
-// facet counts).
+// facet counts). The pairs of this suite are also listed in
+// support/differential_pairs.cpp, where other operations are checked on
+// them (halfspaces_test): add a new pair there too.
 #include "research_options.hpp"
 
 #include <gtest/gtest.h>
@@ -18,7 +20,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <map>
 #include <ostream>
 #include <string>
 #include <thread>
@@ -29,6 +30,7 @@
 #include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
+#include "support/differential_pairs.hpp"
 #include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"
 #include "support/oracle.hpp"
@@ -125,18 +127,12 @@ std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& 
   return why;
 }
 
-Mat3 scaling(const Rational& s) {
-  Mat3 m;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m.m[i][j] = i == j ? s : Rational(0);
-  return m;
-}
-
 Vec3 v3(const Rational& x, const Rational& y, const Rational& z) { return {x, y, z}; }
 
-ConvexPolyhedron scaled(const ConvexPolyhedron& p, const Rational& s) {
-  return p.transformed(scaling(s), {});
-}
+using test::flat_bipyramid;
+using test::rotation_z_3_4_5;
+using test::scaled;
+using test::triangulated_cube;
 
 ConvexPolyhedron hull(const std::vector<Vec3>& pts) { return convex_hull(pts); }
 
@@ -406,13 +402,8 @@ TEST_P(Cvms, ExactRationalRotations) {
 }
 
 TEST_P(Cvms, ThinSlabsAndNeedles) {
-  const Rational thin(1, 1000);
-  const auto slab = shapes::box(v3(0, 0, 0), v3(1000, 1000, thin));
-  const auto slab_y = shapes::box(v3(0, 0, 0), v3(1000, thin, 1000));
-  const auto needle = shapes::box(v3(0, 0, 0), v3(thin, thin, 1000));
-  const auto r = shapes::rational_rotation(1, 1, 2, 0);
-  const auto slab_r = slab.transformed(r, {});
-  const auto needle_r = needle.transformed(r, {});
+  const test::ThinOperands t = test::thin_operands();
+  const auto& [slab, slab_y, needle, slab_r, needle_r, tetra_needle] = t;
   const auto s = shapes::geodesic_sphere(1);
   EXPECT_SUM(slab, slab_y, brute_force_sum(slab, slab_y));
   EXPECT_SUM(slab, needle, brute_force_sum(slab, needle));
@@ -420,48 +411,7 @@ TEST_P(Cvms, ThinSlabsAndNeedles) {
   EXPECT_SUM(slab, slab_r, brute_force_sum(slab, slab_r));
   EXPECT_SUM(slab_r, s, test::chms_shape(slab_r, s));
   EXPECT_SUM(needle_r, s, test::chms_shape(needle_r, s));
-  const auto tetra_needle = hull({v3(0, 0, 0), v3(thin, 0, 0), v3(0, thin, 0), v3(1, 1, 1000)});
   EXPECT_SUM(tetra_needle, needle_r, brute_force_sum(tetra_needle, needle_r));
-}
-
-// The cube [-k, k]^3 given as a soup of 6 * 2 * k^2 coplanar triangles.
-PolygonSoup triangulated_cube(int k) {
-  PolygonSoup soup;
-  std::map<Vec3, std::uint32_t> index;
-  auto id = [&](const Vec3& p) {
-    auto [it, inserted] = index.try_emplace(p, static_cast<std::uint32_t>(soup.points.size()));
-    if (inserted) soup.points.push_back(p);
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int side : {-1, 1}) {
-      const int u = (axis + 1) % 3;
-      const int w = (axis + 2) % 3;
-      for (int i = -k; i < k; ++i) {
-        for (int j = -k; j < k; ++j) {
-          Vec3 p[4];
-          const int du[4] = {0, 1, 1, 0};
-          const int dw[4] = {0, 0, 1, 1};
-          for (int c = 0; c < 4; ++c) {
-            p[c][axis] = side * k;
-            p[c][u] = i + du[c];
-            p[c][w] = j + dw[c];
-          }
-          // (u, w, axis) is right-handed: counterclockwise about +axis.
-          std::uint32_t q[4];
-          for (int c = 0; c < 4; ++c) q[c] = id(p[c]);
-          if (side > 0) {
-            soup.add_face({q[0], q[1], q[2]});
-            soup.add_face({q[0], q[2], q[3]});
-          } else {
-            soup.add_face({q[0], q[2], q[1]});
-            soup.add_face({q[0], q[3], q[2]});
-          }
-        }
-      }
-    }
-  }
-  return soup;
 }
 
 TEST_P(Cvms, InputTriangulatedWithManyCoplanarTriangles) {
@@ -494,25 +444,6 @@ TEST(Conventions, GaussianArcRunsCounterclockwiseAboutTheEdge) {
 // Arc geometry: configurations of Gaussian arcs that stress the slope-diagram
 // merge of ESSDMS (paper Section 5.2); every algorithm must agree on them.
 
-// The rotation about z by the angle with cosine 3/5 and sine 4/5 (exact).
-Mat3 rotation_z_3_4_5() {
-  Mat3 m;
-  m.m[0][0] = Rational(3, 5);
-  m.m[0][1] = Rational(-4, 5);
-  m.m[1][0] = Rational(4, 5);
-  m.m[1][1] = Rational(3, 5);
-  m.m[2][2] = 1;
-  return m;
-}
-
-// A bipyramid over an integer hexagon in z = 0 with apexes (0, 0, +-h): for
-// small h its facet normals crowd the poles and the arcs of its six equator
-// edges run almost from pole to pole (nearly antipodal ends).
-ConvexPolyhedron flat_bipyramid(const Rational& h) {
-  return hull({v3(2, 0, 0), v3(1, 2, 0), v3(-1, 2, 0), v3(-2, 0, 0), v3(-1, -2, 0), v3(1, -2, 0), v3(0, 0, h),
-               v3(0, 0, -h)});
-}
-
 TEST_P(Cvms, ArcsOverlappingOnOneGreatCircle) {
   // The arcs of the vertical edges of a cube lie on the equator. Against a
   // box they coincide; against an octagonal prism (normals (+-1, 0, 0),
@@ -520,10 +451,7 @@ TEST_P(Cvms, ArcsOverlappingOnOneGreatCircle) {
   // rotated cube they overlap partly, each arc having one end strictly
   // inside an arc of the other. Parallel edges: no edge facet from them.
   const auto c = shapes::cube();
-  const auto octagonal_prism =
-      hull({v3(2, 1, 1), v3(1, 2, 1), v3(-1, 2, 1), v3(-2, 1, 1), v3(-2, -1, 1), v3(-1, -2, 1), v3(1, -2, 1),
-            v3(2, -1, 1), v3(2, 1, -1), v3(1, 2, -1), v3(-1, 2, -1), v3(-2, 1, -1), v3(-2, -1, -1),
-            v3(-1, -2, -1), v3(1, -2, -1), v3(2, -1, -1)});
+  const auto octagonal_prism = test::octagonal_prism();
   ASSERT_EQ(octagonal_prism.num_facets(), 10u);
   const auto rotated = c.transformed(rotation_z_3_4_5(), {});
   const auto box = shapes::box(v3(0, 0, 0), v3(3, 1, Rational(1, 2)));

@@ -119,8 +119,9 @@ HalfspaceRow primitive_row(const HalfspaceRow& row);
 /// sets of any dimension: the rows n·x <= d − h_B(n) for each row (n, d) of
 /// to_halfspaces(A) (each equality as two opposite inequalities), with h_B
 /// the support function of B (for a polyhedron by the hill-climbing walk of
-/// cvms/proximity.hpp, warm-started from the previous answer; for lower
-/// dimensions over B's at most polygon-many vertices), then from_halfspaces.
+/// cvms/proximity.hpp, for a polygon, segment or point by the climb along
+/// its vertex cycle; both warm-started from the previous answer), then
+/// from_halfspaces.
 /// A lower-dimensional A gives a set within its affine hull; the result may
 /// be empty (a value, not an error). P ⊖ P == {0} for every non-empty P.
 /// \throw Error(invalid_argument) if B is empty (the difference would be all

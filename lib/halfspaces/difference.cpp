@@ -3,25 +3,28 @@
 // row n·y <= d of A holds on x + B, i.e. n·x + h_B(n) <= d with h_B the
 // support function of B; an equality of A is two opposite rows. So A ⊖ B is
 // the intersection of the shifted rows of A (halfspaces.hpp).
-#include <algorithm>
+#include <optional>
 #include <utility>
 
 #include "cvms/error.hpp"
 #include "cvms/halfspaces.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/set_sum.hpp"
+#include "cycle_support.hpp"
 
 namespace cvms {
 
 namespace {
 
-// h_B by the walk on a polyhedron, warm-started at the last answer (the
-// rows of a facet list come in no particular order, but a start anywhere is
-// correct; a good one only shortens the climb).
+// h_B by a walk, warm-started at the last answer: on a polyhedron the
+// proximity layer's hill-climb over its edges, on a polygon, segment or
+// point the climb along its vertex cycle (cycle_support.hpp). The rows of a
+// facet list come in no particular order, so a start anywhere must be (and
+// is) correct; a good one only shortens the climb.
 class SupportFunction {
  public:
   explicit SupportFunction(const ConvexSet& b) : b_(b) {
-    if (b.dimension() < 3) vertices_ = b.vertices();
+    if (b.dimension() < 3) cycle_.emplace(b.vertices());
   }
   Rational operator()(const Vec3& n) {
     if (b_.dimension() == 3) {
@@ -29,14 +32,12 @@ class SupportFunction {
       start_ = r.vertex;
       return std::move(r.value);
     }
-    Rational best = dot(n, vertices_.front());
-    for (std::size_t i = 1; i < vertices_.size(); ++i) best = std::max(best, dot(n, vertices_[i]));
-    return best;
+    return dot(n, cycle_->cycle()[cycle_->maximiser(n)]);
   }
 
  private:
   const ConvexSet& b_;
-  std::vector<Vec3> vertices_;
+  std::optional<detail::CycleSupport> cycle_;
   VertexId start_ = VertexId(0);
 };
 
