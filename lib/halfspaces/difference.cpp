@@ -3,41 +3,36 @@
 // row n·y <= d of A holds on x + B, i.e. n·x + h_B(n) <= d with h_B the
 // support function of B; an equality of A is two opposite rows. So A ⊖ B is
 // the intersection of the shifted rows of A (halfspaces.hpp).
-#include <optional>
 #include <utility>
 
 #include "cvms/error.hpp"
 #include "cvms/halfspaces.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/set_sum.hpp"
-#include "cycle_support.hpp"
+#include "support_operand.hpp"
 
 namespace cvms {
 
 namespace {
 
-// h_B by a walk, warm-started at the last answer: on a polyhedron the
-// proximity layer's hill-climb over its edges, on a polygon, segment or
-// point the climb along its vertex cycle (cycle_support.hpp). The rows of a
-// facet list come in no particular order, so a start anywhere must be (and
-// is) correct; a good one only shortens the climb.
+// h_B by a walk, warm-started at the last answer: the proximity layer's
+// support operand, a hill-climb over a polyhedron's edges or along a
+// polygon's (segment's, point's) vertex cycle. The rows of a facet list come
+// in no particular order, so a start anywhere must be (and is) correct; a
+// good one only shortens the climb, and neighbouring normals have
+// neighbouring maximisers, so a sweep costs O(vertices + rows) steps, not a
+// scan of B per row.
 class SupportFunction {
  public:
-  explicit SupportFunction(const ConvexSet& b) : b_(b) {
-    if (b.dimension() < 3) cycle_.emplace(b.vertices());
-  }
+  explicit SupportFunction(const ConvexSet& b) : operand_(b) {}
   Rational operator()(const Vec3& n) {
-    if (b_.dimension() == 3) {
-      SupportResult r = support(b_.polyhedron(), n, start_);
-      start_ = r.vertex;
-      return std::move(r.value);
-    }
-    return dot(n, cycle_->cycle()[cycle_->maximiser(n)]);
+    const ApproxVec3 n_approx = ApproxVec3::of(n);
+    start_ = operand_.support(Vec3Ref{n, n_approx}, Sign::positive, start_);
+    return dot(n, operand_.position(start_));
   }
 
  private:
-  const ConvexSet& b_;
-  std::optional<detail::CycleSupport> cycle_;
+  detail::SupportOperand operand_;
   VertexId start_ = VertexId(0);
 };
 
