@@ -237,6 +237,14 @@ TEST(ConvexSetFromSoup, FlatErrors) {
       ErrorCategory::topology, "one cycle");
   expect_error([] { (void)convex_set_from_soup(test::make_soup({v3(0, 0, 0), v3(1, 1, 1), v3(2, 2, 2)}, {{0, 1, 2}})); },
                ErrorCategory::degenerate, "no area");
+  // One face that is not planar is named as such, with a vertex off its plane.
+  expect_error(
+      [] {
+        (void)convex_set_from_soup(
+            test::make_soup({v3(0, 0, 0), v3(0, 0, 0), v3(1, 0, 0), v3(2, 0, 0), v3(1, 1, 0), v3(1, 1, 1), v3(0, 1, 0)},
+                            {{0, 1, 2, 3, 4, 5, 6}}));
+      },
+      ErrorCategory::not_convex, "face 0 is not planar (vertex 5 is off the plane of vertices 0, 2 and 4)");
   // An open non-flat surface keeps the polyhedron's errors.
   PolygonSoup open = test::cube_quads();
   open.face_offsets.pop_back();

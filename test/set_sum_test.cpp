@@ -180,6 +180,38 @@ TEST(Zonotope, CountsInGeneralPosition) {
   }
 }
 
+// The symmetric four-generator zonotope is the rhombic dodecahedron, checked
+// by hand: the sums of +-(1,1,1), +-(1,1,-1), +-(1,-1,1), +-(-1,1,1) reach
+// the 8 cube corners (+-2,+-2,+-2) (three generators agree with the corner's
+// signs, the fourth cancels one) and the 6 points 4 e_i (two of each sign
+// pattern add up along one axis); its 12 rhombi lie on |x_i| + |x_j| = 4.
+TEST(Zonotope, SymmetricFourGeneratorsAreTheRhombicDodecahedron) {
+  const std::vector<Vec3> g{v3(1, 1, 1), v3(1, 1, -1), v3(1, -1, 1), v3(-1, 1, 1)};
+  test::SetShape expected;
+  expected.dimension = 3;
+  for (int sx : {-2, 2})
+    for (int sy : {-2, 2})
+      for (int sz : {-2, 2}) expected.vertices.insert(v3(sx, sy, sz));
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {-4, 4}) {
+      Vec3 p{0, 0, 0};
+      p[axis] = sign;
+      expected.vertices.insert(p);
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      for (int si : {-1, 1})
+        for (int sj : {-1, 1}) {
+          Vec3 n{0, 0, 0};
+          n[i] = si;
+          n[j] = sj;
+          expected.planes.insert({n, Rational(4)});
+        }
+  const ConvexSet z = zonotope(v3(0, 0, 0), g);
+  EXPECT_EQ(test::describe_set(z), expected);
+  EXPECT_EQ(z.polyhedron().num_edges(), 24u);
+}
+
 // The vertices and facet planes of small zonotopes against the hull of all
 // 2^n sign combinations; parallel generators merge; flat ones give zonogons.
 TEST(Zonotope, AgainstAllSignCombinations) {

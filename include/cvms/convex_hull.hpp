@@ -59,7 +59,8 @@ ConvexSet convex_hull_set(std::span<const std::array<double, 3>> points);
 ///    must be a convex polygon, and every face planar, convex and oriented as
 ///    that cycle. Points used by no face are ignored.
 /// \throw Error(not_convex) naming the face for a non-convex or wrongly
-///   oriented face or boundary, Error(topology) for a repeated directed edge
+///   oriented face or boundary, or for a single face that is not planar
+///   (naming a vertex off its plane), Error(topology) for a repeated directed edge
 ///   or a boundary that is not one cycle, Error(degenerate) for faces of zero
 ///   area, and the errors of ConvexPolyhedron::from_soup for solids.
 ConvexSet convex_set_from_soup(PolygonSoup soup);

@@ -10,6 +10,7 @@
 // winding number as C (1) and nothing outside, so the union of the faces is
 // exactly the convex polygon bounded by C: the polygon returned.
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -119,11 +120,29 @@ ConvexSet tiled_polygon(const PolygonSoup& soup) {
   }
 }
 
+// A single face whose points span space: named as a non-planar face (the
+// mistake it is), with the first vertex off the plane of its first three
+// non-collinear ones, rather than as the open surface it also is.
+[[noreturn]] void throw_not_planar_face(const PolygonSoup& soup) {
+  const std::span<const std::uint32_t> ids = soup.face(0);
+  const Vec3& p0 = soup.points[ids[0]];
+  std::size_t j = 1;
+  while (soup.points[ids[j]] == p0) ++j;
+  std::size_t k = j + 1;
+  while (is_parallel(soup.points[ids[j]] - p0, soup.points[ids[k]] - p0)) ++k;
+  std::size_t off = k + 1;
+  while (orient3d(p0, soup.points[ids[j]], soup.points[ids[k]], soup.points[ids[off]]) == Sign::zero) ++off;
+  throw Error(ErrorCategory::not_convex, "face 0 is not planar (vertex " + std::to_string(ids[off]) +
+                                             " is off the plane of vertices " + std::to_string(ids[0]) + ", " +
+                                             std::to_string(ids[j]) + " and " + std::to_string(ids[k]) + ")");
+}
+
 }  // namespace
 
 ConvexSet convex_set_from_soup(PolygonSoup soup) {
   if (soup.num_faces() == 0) return convex_hull_set(soup.points);
   const int dimension = detail::affine_span(used_points(soup)).dimension;
+  if (dimension == 3 && soup.num_faces() == 1) throw_not_planar_face(soup);
   if (dimension == 3) return ConvexSet(ConvexPolyhedron::from_soup(std::move(soup)));
   if (dimension < 2)
     throw Error(ErrorCategory::degenerate, "the faces enclose no area (all their points are " +
