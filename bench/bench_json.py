@@ -26,3 +26,19 @@ def runs(path, time_field):
             continue
         field = "real_time" if wall else time_field
         yield parts[0], int(parts[1]), b[field] * _UNIT_MS[b["time_unit"]], b
+
+
+def load(path):
+    """Every successful entry of the file (medians only, when repetitions
+    were aggregated), whatever its name's shape."""
+    return [
+        b
+        for b in json.load(open(path))["benchmarks"]
+        if not b.get("error_occurred")
+        and (b.get("run_type") != "aggregate" or b.get("aggregate_name") == "median")
+    ]
+
+
+def milliseconds(entry, time_field):
+    """The entry's time_field ("real_time" or "cpu_time") in milliseconds."""
+    return entry[time_field] * _UNIT_MS[entry["time_unit"]]

@@ -5,7 +5,10 @@
 // against output size gives the log-log slope), and the n-ary sum of 10
 // random hulls. The peer row for zonotopes folds one generator at a time by
 // the exact hull of the pairwise vertex sums (what one does without a
-// segment sum), on the small n it can reach.
+// segment sum), on the small n it can reach; qhull's floating-point hull of
+// the pairwise vertex sums is the peer of the polygon and segment rows
+// (set_peers.cpp, with CVMS_BENCH_PEERS). bench/zonotope_slope.py fits the
+// log-log slope of the zonotope rows' time against their facet count.
 #include <benchmark/benchmark.h>
 
 #include <vector>
@@ -13,25 +16,15 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
+#include "set_operands.hpp"
 
 namespace {
 
 using cvms::ConvexSet;
-using cvms::Rational;
 using cvms::Vec3;
 
-const ConvexSet& sphere6() {
-  static const ConvexSet s(cvms::shapes::geodesic_sphere(6));
-  return s;
-}
-
-// circle_polygon(n) in the tilted plane spanned by (1, 0, 1) and (0, 1, 2).
-ConvexSet tilted_polygon(int n) {
-  std::vector<Vec3> cycle;
-  for (const cvms::Vec2& p : cvms::shapes::circle_polygon(n))
-    cycle.push_back(Vec3{p.x, p.y, p.x + Rational(2) * p.y});
-  return ConvexSet::polygon(cycle);
-}
+using cvms_bench::sphere6_set;
+using cvms_bench::tilted_polygon;
 
 void report(benchmark::State& state, const ConvexSet& sum) {
   state.counters["V"] = static_cast<double>(sum.num_vertices());
@@ -41,15 +34,15 @@ void report(benchmark::State& state, const ConvexSet& sum) {
 void BM_PolygonPlusSphere6(benchmark::State& state) {
   const ConvexSet polygon = tilted_polygon(static_cast<int>(state.range(0)));
   ConvexSet sum;
-  for (auto _ : state) benchmark::DoNotOptimize(sum = cvms::minkowski_sum(polygon, sphere6()));
+  for (auto _ : state) benchmark::DoNotOptimize(sum = cvms::minkowski_sum(polygon, sphere6_set()));
   report(state, sum);
 }
-BENCHMARK(BM_PolygonPlusSphere6)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PolygonPlusSphere6)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 void BM_SegmentPlusSphere6(benchmark::State& state) {
-  const ConvexSet segment = ConvexSet::segment(Vec3{0, 0, 0}, Vec3{Rational(1, 3), Rational(2, 7), 1});
+  const ConvexSet segment = cvms_bench::bench_segment();
   ConvexSet sum;
-  for (auto _ : state) benchmark::DoNotOptimize(sum = cvms::minkowski_sum(segment, sphere6()));
+  for (auto _ : state) benchmark::DoNotOptimize(sum = cvms::minkowski_sum(segment, sphere6_set()));
   report(state, sum);
 }
 BENCHMARK(BM_SegmentPlusSphere6)->Unit(benchmark::kMillisecond);
