@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""What a user of the command-line tool waits for (issue 14): wall time and
+peak memory of whole `cvms` runs, from file to file, next to the time of the
+sum alone inside the same run (`cvms sum --stats` prints it), so that the
+ratio end-to-end / in-process comes from one process and one machine state.
+
+Rows: `cvms sum cube.off sphere6.off -o out.off`, `cvms sum sphere6.off
+sphere6_rotated.off -o out.off` and `cvms check sphere6.off`. Inputs are made
+by `cvms gen` in a scratch directory first. Each row is run --rounds times;
+the minimum wall time is reported (the machine is shared), with the peak
+resident memory of that process (from wait4, per child).
+
+usage: bench/end_to_end.py [--cvms build/release/tools/cvms] [--rounds 5] [--json out.json]
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import tempfile
+import time
+
+
+def run_measured(argv):
+    """(wall seconds, the child's own peak RSS in bytes, stdout) of one run of
+    argv; wait4 reaps the child itself, so its rusage is its own."""
+    start = time.perf_counter()
+    child = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    out = child.stdout.read().decode()
+    err = child.stderr.read().decode()
+    _, status, usage = os.wait4(child.pid, 0)
+    wall = time.perf_counter() - start
+    child.returncode = os.waitstatus_to_exitcode(status)
+    if child.returncode != 0:
+        raise SystemExit(f"{' '.join(argv)} failed: {err.strip()}")
+    return wall, usage.ru_maxrss * 1024, out
+
+
+def in_process_ms(stats):
+    m = re.search(r"^time: ([0-9.]+) ms", stats, re.MULTILINE)
+    return float(m.group(1)) if m else None
+
+
+def measure(argv, rounds):
+    best = None
+    for _ in range(rounds):
+        wall, rss, out = run_measured(argv)
+        if best is None or wall < best["wall_ms"] / 1e3:
+            best = {"wall_ms": wall * 1e3, "peak_rss_bytes": rss, "sum_ms": in_process_ms(out)}
+    return best
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--cvms", default="build/release/tools/cvms")
+    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--json")
+    args = parser.parse_args()
+    cvms = os.path.abspath(args.cvms)
+    with tempfile.TemporaryDirectory() as scratch:
+        def path(name):
+            return os.path.join(scratch, name)
+
+        run_measured([cvms, "gen", "cube", "-o", path("cube.off")])
+        run_measured([cvms, "gen", "sphere", "--subdivisions", "6", "-o", path("sphere6.off")])
+        run_measured([cvms, "gen", "rotated-sphere", "--subdivisions", "6", "-o", path("sphere6_rotated.off")])
+        rows = {
+            "sum cube.off sphere6.off -o out.off": [cvms, "sum", path("cube.off"), path("sphere6.off"), "-o",
+                                                    path("out.off"), "--stats"],
+            "sum sphere6.off sphere6_rotated.off -o out.off": [cvms, "sum", path("sphere6.off"),
+                                                               path("sphere6_rotated.off"), "-o", path("out.off"),
+                                                               "--stats"],
+            "check sphere6.off": [cvms, "check", path("sphere6.off")],
+        }
+        results = {name: measure(argv, args.rounds) for name, argv in rows.items()}
+    print("| command | wall (ms) | sum in process (ms) | wall / sum | peak RSS (MiB) |")
+    print("|---|---:|---:|---:|---:|")
+    for name, r in results.items():
+        sum_ms = f"{r['sum_ms']:.1f}" if r["sum_ms"] else "—"
+        ratio = f"{r['wall_ms'] / r['sum_ms']:.1f}×" if r["sum_ms"] else "—"
+        print(f"| `cvms {name}` | {r['wall_ms']:.1f} | {sum_ms} | {ratio} | {r['peak_rss_bytes'] / 2**20:.1f} |")
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(results, f, indent=2)
+
+
+if __name__ == "__main__":
+    main()
