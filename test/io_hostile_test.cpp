@@ -12,7 +12,6 @@
 #include <atomic>
 #include <cfloat>
 #include <charconv>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -24,6 +23,7 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/io.hpp"
+#include "support/cpu_time.hpp"
 #include "support/io_expect.hpp"
 
 // ---- allocation accounting --------------------------------------------------
@@ -113,7 +113,7 @@ using test::slow_factor;
 constexpr std::size_t MiB = std::size_t{1} << 20;
 constexpr std::size_t hundred_mb = 100 * 1000 * 1000;
 
-// Peak bytes allocated through operator new and seconds elapsed while f runs.
+// Peak bytes allocated through operator new and CPU seconds used while f runs.
 struct Cost {
   std::size_t peak = 0;
   double seconds = 0;
@@ -122,10 +122,10 @@ template <class F>
 Cost measure(F&& f) {
   std::size_t base = current_bytes.load();
   peak_bytes.store(base);
-  auto start = std::chrono::steady_clock::now();
+  auto start = test::cpu_seconds();
   f();
-  std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  Cost cost{peak_bytes.load() - base, elapsed.count()};
+  const double elapsed = test::cpu_seconds() - start;
+  Cost cost{peak_bytes.load() - base, elapsed};
   std::printf("    peak %zu bytes, %.3f s\n", cost.peak, cost.seconds);
   return cost;
 }
