@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// The beneath-beyond step of the exact EPA: conv(P + {x}) for a convex
+// polytope P, triangulated, and a point x outside it.
+//
+// A face is visible from x iff x is strictly beyond its plane (orient3d,
+// filtered). Coplanar triangles of one facet of P share its plane, so
+// visibility is decided per facet, and the facets visible from a point
+// outside a convex polytope form a topological disc whose boundary (the
+// horizon) is one cycle of edges. The boundary of conv(P + {x}) is the
+// union of the faces not visible (x is beneath or on their planes, so they
+// still support the new polytope) and the triangles joining x to the
+// horizon edges. A horizon edge (u, v) bounds a visible face, whose plane
+// holds u and v and has x strictly beyond it, so x is not on the line uv:
+// each new triangle is proper. Orienting it (u, v, x), with (u, v) in the
+// order of the visible face it replaces, keeps it counterclockwise from
+// outside. A face with x on its plane stays: its new neighbour may be
+// coplanar with it, which P allows (its faces are triangles, not facets).
+//
+// Everything is exact: the planes are rational, each visibility a filtered
+// sign; the squared distance of a plane from the origin is kept as a
+// rational for the exact comparisons of the EPA loop.
+#include "expanding_polytope.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "filtered_predicates.hpp"
+
+namespace cvms::detail {
+namespace {
+
+Vec3Ref ref(const PolytopePoint& p) { return {p.c, p.approx}; }
+
+}  // namespace
+
+ExpandingPolytope::ExpandingPolytope(std::array<PolytopePoint, 4> points) {
+  points_.assign(std::make_move_iterator(points.begin()), std::make_move_iterator(points.end()));
+  // Each triangle is oriented away from the fourth point.
+  const bool positive = orient3d(ref(points_[0]), ref(points_[1]), ref(points_[2]), ref(points_[3])) == Sign::positive;
+  const std::uint32_t a = positive ? 1 : 2;
+  const std::uint32_t b = positive ? 2 : 1;
+  add_face(0, b, a);
+  add_face(0, 3, b);
+  add_face(0, a, 3);
+  add_face(a, b, 3);
+}
+
+void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  PolytopeFace f;
+  f.v = {i, j, k};
+  const Vec3& p = points_[i].c;
+  f.normal = cross(points_[j].c - p, points_[k].c - p);
+  f.normal_approx = ApproxVec3::of(f.normal);
+  f.offset = dot(f.normal, p);
+  f.squared_distance = f.offset * f.offset / dot(f.normal, f.normal);
+  faces_.push_back(std::move(f));
+}
+
+bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) const {
+  return orient3d(ref(points_[f.v[0]]), ref(points_[f.v[1]]), ref(points_[f.v[2]]), ref(x)) == Sign::positive;
+}
+
+void ExpandingPolytope::add(PolytopePoint x) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges;
+  std::vector<PolytopeFace> kept;
+  kept.reserve(faces_.size() + 8);
+  for (PolytopeFace& f : faces_) {
+    if (!sees(f, x)) {
+      kept.push_back(std::move(f));
+      continue;
+    }
+    for (int e = 0; e < 3; ++e) visible_edges.emplace_back(f.v[e], f.v[(e + 1) % 3]);
+  }
+  faces_ = std::move(kept);
+  const auto n = static_cast<std::uint32_t>(points_.size());
+  points_.push_back(std::move(x));
+  // A visible edge is on the horizon iff its twin is not visible too.
+  for (const auto& [u, v] : visible_edges)
+    if (std::find(visible_edges.begin(), visible_edges.end(), std::pair{v, u}) == visible_edges.end())
+      add_face(u, v, n);
+}
+
+}  // namespace cvms::detail
