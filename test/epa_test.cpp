@@ -18,13 +18,15 @@
 #include "support/oracle.hpp"
 #include "support/proximity_oracle.hpp"
 #include "support/random_sets.hpp"
+#include "support/set_proximity_oracle.hpp"
 
 namespace cvms {
 namespace {
 
 using test::v3;
 
-// "" iff both answers are the same, witnesses included.
+// "" iff both answers are the same but for the witnesses (a contact is
+// rarely unique; the oracle checks them).
 std::string differences(const PenetrationResult& epa, const PenetrationResult& sum) {
   if (epa.intersect != sum.intersect) return "intersect differs";
   if (epa.squared_depth != sum.squared_depth)
@@ -32,7 +34,6 @@ std::string differences(const PenetrationResult& epa, const PenetrationResult& s
   if (epa.direction != sum.direction)
     return "direction " + test::to_text(epa.direction) + ", the sum gives " + test::to_text(sum.direction);
   if (epa.offset != sum.offset) return "offset differs";
-  if (epa.witness_a != sum.witness_a || epa.witness_b != sum.witness_b) return "witnesses differ";
   return "";
 }
 
@@ -124,6 +125,11 @@ TEST(Epa, ConvexSetsAsTheSum) {
     const ConvexSet b = test::random_set(rng, db, v3(static_cast<long>(rng() % 3) - 1, 0, 0));
     const PenetrationResult p = penetration(a, b);
     EXPECT_EQ(differences(p, detail::penetration_by_sum(a, b)), "");
+    EXPECT_TRUE(test::set_contains(a, p.witness_a));
+    EXPECT_TRUE(test::set_contains(b, p.witness_b));
+    if (p.intersect) {
+      EXPECT_EQ(p.witness_a - p.witness_b, p.translation());
+    }
     deep += sgn(p.squared_depth) > 0 ? 1 : 0;
   }
   EXPECT_GT(deep, 60);

@@ -52,14 +52,28 @@
 // them off P; the plane offset of the chosen direction N is <N, x> for any
 // vertex x of such a face.
 //
+// The witnesses. Let N be the chosen direction and q = offset / |N|^2 N the
+// translation. If d > 0, q is the foot point of the facet of direction N,
+// on a face of P with that direction (above); if d = 0, q = 0 is in P and on
+// the plane, and P's intersection with a plane supporting it is the union of
+// its faces on that plane. Either way q is in a triangle of P on N's plane:
+// with its barycentric weights l_i (exact), a = sum l_i a_i is in A, b =
+// sum l_i b_i is in B, and a - b = q.
+//
 // Exactness and cost. Signs are filtered predicates (orient3d against the
 // face's vertices for "beyond"); the planes and squared distances are
-// rationals, since they are values the loop compares. Coplanar faces of a
+// rationals, since they are values the loop compares; each also keeps a
+// double interval of its squared distance, so that finding the nearest
+// faces compares rationals only between faces the intervals cannot order
+// (the nearest_faces filter). Coplanar faces of a
 // verified plane are marked with it, so one support query verifies a facet
 // however P triangulates it. Each walk starts at the vertices of the face it
 // queries from, a short climb when P is already close to M there.
 #include "epa.hpp"
 
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
@@ -108,30 +122,36 @@ bool extend(const SupportOperand& a, const SupportOperand& b, std::vector<Polyto
   return false;
 }
 
-const Rational& least_distance(const std::vector<PolytopeFace>& faces) {
-  const Rational* least = &faces.front().squared_distance;
-  for (const PolytopeFace& f : faces)
-    if (f.squared_distance < *least) least = &f.squared_distance;
-  return *least;
+// The faces at the least distance. The filter keeps the faces whose
+// interval [value - error, value + error] can hold the least distance (its
+// low end is at most every interval's high end); exact comparisons decide
+// among those, usually one. A NaN or infinite bound keeps the face.
+std::vector<PolytopeFace*> nearest_faces(std::vector<PolytopeFace>& faces) {
+  double least_high = std::numeric_limits<double>::infinity();
+  for (const PolytopeFace& f : faces) least_high = std::min(least_high, f.distance_approx.value + f.distance_approx.error);
+  std::vector<PolytopeFace*> out;
+  for (PolytopeFace& f : faces) {
+    if (f.distance_approx.value - f.distance_approx.error > least_high) continue;
+    const int order = out.empty() ? 0 : cmp(f.squared_distance, out.front()->squared_distance);
+    if (order < 0) out.clear();
+    if (order <= 0) out.push_back(&f);
+  }
+  return out;
 }
 
-// A face at the least distance not yet verified, or null.
-PolytopeFace* unverified_nearest(std::vector<PolytopeFace>& faces) {
-  const Rational d = least_distance(faces);
-  for (PolytopeFace& f : faces)
-    if (!f.verified && f.squared_distance == d) return &f;
+PolytopeFace* first_unverified(const std::vector<PolytopeFace*>& faces) {
+  for (PolytopeFace* f : faces)
+    if (!f->verified) return f;
   return nullptr;
 }
 
-bool same_plane(const PolytopeFace& f, const PolytopeFace& g) {
+// f's coplanar faces: the same distance and the same outward direction.
+void mark_verified(const std::vector<PolytopeFace*>& nearest, const PolytopeFace& f) {
   const Vec3Ref nf{f.normal, f.normal_approx};
-  const Vec3Ref ng{g.normal, g.normal_approx};
-  return f.squared_distance == g.squared_distance && sign_dot(nf, ng) == Sign::positive && is_parallel(nf, ng);
-}
-
-void mark_verified(std::vector<PolytopeFace>& faces, const PolytopeFace& f) {
-  for (PolytopeFace& g : faces)
-    if (!g.verified && same_plane(f, g)) g.verified = true;
+  for (PolytopeFace* g : nearest) {
+    const Vec3Ref ng{g->normal, g->normal_approx};
+    if (!g->verified && sign_dot(nf, ng) == Sign::positive && is_parallel(nf, ng)) g->verified = true;
+  }
 }
 
 bool beyond(const ExpandingPolytope& p, const PolytopeFace& f, const PolytopePoint& w) {
@@ -140,20 +160,53 @@ bool beyond(const ExpandingPolytope& p, const PolytopeFace& f, const PolytopePoi
   return orient3d(r(f.v[0]), r(f.v[1]), r(f.v[2]), {w.c, w.approx}) == Sign::positive;
 }
 
+// The barycentric weights of q, a point of f's plane, in f's triangle
+// (numerators over |normal|^2), or nothing if q is outside the triangle.
+std::optional<std::array<Rational, 3>> weights_in(const ExpandingPolytope& p, const PolytopeFace& f, const Vec3& q) {
+  std::array<Rational, 3> w;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& u = p.points()[f.v[(i + 1) % 3]].c;
+    const Vec3& v = p.points()[f.v[(i + 2) % 3]].c;
+    w[i] = dot(cross(u - q, v - q), f.normal);
+    if (sgn(w[i]) < 0) return std::nullopt;
+  }
+  return w;
+}
+
+// The witnesses of the contact: q = offset / |N|^2 N, the translation, is a
+// point of P on the chosen plane (the header), so in one of P's triangles
+// on it; with its weights l_i, sum l_i a_i is in A, sum l_i b_i in B, and
+// their difference is q.
+void set_witnesses(const SupportOperand& a, const ExpandingPolytope& p,
+                   const std::vector<PolytopeFace*>& nearest, NearestFacet& out) {
+  const Vec3 q = (out.offset / dot(out.direction, out.direction)) * out.direction;
+  const ApproxVec3 approx = ApproxVec3::of(out.direction);
+  const Vec3Ref n{out.direction, approx};
+  for (const PolytopeFace* f : nearest) {
+    if (sign_dot(n, {f->normal, f->normal_approx}) != Sign::positive || !is_parallel(n, {f->normal, f->normal_approx}))
+      continue;
+    const std::optional<std::array<Rational, 3>> w = weights_in(p, *f, q);
+    if (!w) continue;
+    const Rational total = (*w)[0] + (*w)[1] + (*w)[2];
+    out.witness_a = Vec3{0, 0, 0};
+    for (int i = 0; i < 3; ++i) out.witness_a += ((*w)[i] / total) * a.position(p.points()[f->v[i]].vertex_a);
+    out.witness_b = out.witness_a - q;
+    return;
+  }
+}
+
 // The tie rule on the (verified) faces at the least distance.
-NearestFacet smallest_nearest(const ExpandingPolytope& p) {
-  const Rational d = least_distance(p.faces());
+NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<PolytopeFace*>& nearest) {
   const PolytopeFace* best = nullptr;
   Vec3 best_direction;
-  for (const PolytopeFace& f : p.faces()) {
-    if (f.squared_distance != d) continue;
-    Vec3 n = primitive_direction(f.normal);
+  for (const PolytopeFace* f : nearest) {
+    Vec3 n = primitive_direction(f->normal);
     if (best == nullptr || n < best_direction) {
-      best = &f;
+      best = f;
       best_direction = std::move(n);
     }
   }
-  NearestFacet out{std::move(best_direction), {}};
+  NearestFacet out{std::move(best_direction), {}, {}, {}};
   out.offset = dot(out.direction, p.points()[best->v[0]].c);
   return out;
 }
@@ -167,14 +220,20 @@ std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const Sup
   while (s.size() < 4)
     if (!extend(a, b, s)) return std::nullopt;
   ExpandingPolytope p({std::move(s[0]), std::move(s[1]), std::move(s[2]), std::move(s[3])});
-  while (PolytopeFace* f = unverified_nearest(p.faces())) {
+  for (;;) {
+    const std::vector<PolytopeFace*> nearest = nearest_faces(p.faces());
+    PolytopeFace* f = first_unverified(nearest);
+    if (f == nullptr) {
+      NearestFacet out = smallest_nearest(p, nearest);
+      set_witnesses(a, p, nearest, out);
+      return out;
+    }
     PolytopePoint w = support_point(a, b, f->normal, p.points()[f->v[0]]);
     if (beyond(p, *f, w))
       p.add(std::move(w));
     else
-      mark_verified(p.faces(), *f);
+      mark_verified(nearest, *f);
   }
-  return smallest_nearest(p);
 }
 
 }  // namespace cvms::detail

@@ -15,6 +15,9 @@ namespace cvms::detail {
 struct NearestFacet {
   Vec3 direction;  ///< primitive integer outward normal; ties: the smallest
   Rational offset;  ///< >= 0
+  /// A point of A and a point of B with witness_a - witness_b the
+  /// translation offset / |direction|^2 direction (a contact after it).
+  Vec3 witness_a, witness_b;
 };
 
 /// \pre gjk is an exact_gjk outcome on a and b (no offset) with intersect set.

@@ -53,6 +53,7 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
   f.normal_approx = ApproxVec3::of(f.normal);
   f.offset = dot(f.normal, p);
   f.squared_distance = f.offset * f.offset / dot(f.normal, f.normal);
+  f.distance_approx = Approx::of(f.squared_distance);
   faces_.push_back(std::move(f));
 }
 

@@ -31,6 +31,7 @@ struct PolytopeFace {
   ApproxVec3 normal_approx;
   Rational offset;
   Rational squared_distance;  ///< offset^2 / |normal|^2
+  Approx distance_approx;     ///< of squared_distance, for the filter
   bool verified = false;      ///< the plane is known to be a facet plane of M
 };
 

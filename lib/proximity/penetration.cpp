@@ -6,7 +6,10 @@
 // answers are those of the whole-sum scan it replaced (penetration_by_sum.cpp,
 // the tests' reference), tie rule included: the smallest primitive normal
 // among the tied facets, so the answer does not depend on how either method
-// numbers facets. Convex sets whose M is flat have no facet: the EPA says so
+// numbers facets. The witnesses come from the EPA's polytope too (epa.cpp),
+// so they may differ from the whole-sum version's (a contact is rarely
+// unique); both are a point of A and a point of B whose difference is the
+// translation. Convex sets whose M is flat have no facet: the EPA says so
 // and the whole-sum version gives its answer, which needs only the flat sum.
 #include <optional>
 #include <utility>
@@ -34,9 +37,10 @@ Start start(const detail::SupportOperand& a, const detail::SupportOperand& b) {
   return s;
 }
 
-void finish(PenetrationResult& r, detail::NearestFacet f, const detail::SupportOperand& a,
-            const detail::SupportOperand& b) {
-  detail::set_nearest_facet(r, std::move(f.direction), std::move(f.offset), a, b);
+void finish(PenetrationResult& r, detail::NearestFacet f) {
+  detail::set_depth(r, std::move(f.direction), std::move(f.offset));
+  r.witness_a = std::move(f.witness_a);
+  r.witness_b = std::move(f.witness_b);
 }
 
 // The moved operand is a polyhedron, as the answer assumes (and as the
@@ -57,7 +61,7 @@ PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron&
   check_invertible(a);
   check_invertible(b);
   // Both solid, so M is: the EPA answers.
-  finish(s.r, *detail::epa_nearest_facet(sa, sb, s.gjk), sa, sb);
+  finish(s.r, *detail::epa_nearest_facet(sa, sb, s.gjk));
   return s.r;
 }
 
@@ -73,7 +77,7 @@ PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b) {
   if (!s.r.intersect) return s.r;
   std::optional<detail::NearestFacet> f = detail::epa_nearest_facet(sa, sb, s.gjk);
   if (!f) return detail::penetration_by_sum(a, b);  // flat M
-  finish(s.r, *std::move(f), sa, sb);
+  finish(s.r, *std::move(f));
   return s.r;
 }
 

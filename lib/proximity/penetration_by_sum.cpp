@@ -22,7 +22,9 @@
 // its interior iff t is outside the interior of M, and p is the shortest such
 // t. Ties go to the smallest normal in Vec3's lexicographic order, which is
 // independent of how the sum numbers its facets.
-// The witnesses: penetration_result.cpp.
+// The witnesses: after moving B by the translation p the operands touch,
+// and the exact GJK of A against the moved B returns a common point x; then
+// x is in A, x - p is in B, and their difference is p.
 //
 // Convex sets of any dimension: M = A + (-B) from the sets layer. If M is
 // solid the claim applies unchanged. If M is flat (dimension <= 2), its
@@ -70,7 +72,11 @@ FaceId nearest_facet(const ConvexPolyhedron& m) {
 // The depth from a solid M = A + (-B) with the origin inside.
 void depth_from_sum(const ConvexPolyhedron& m, const SupportOperand& a, const SupportOperand& b, PenetrationResult& r) {
   const FaceId f = nearest_facet(m);
-  set_nearest_facet(r, m.normal(f), m.plane_offset(f), a, b);
+  set_depth(r, m.normal(f), m.plane_offset(f));
+  const Vec3 t = r.translation();
+  const DistanceResult contact = distance_with_offset(a, b, &t);
+  r.witness_a = contact.witness_a;
+  r.witness_b = contact.witness_b - t;
 }
 
 ConvexSet reflected(const ConvexSet& s) {

@@ -1,13 +1,9 @@
 // SPDX-License-Identifier: MIT
-// penetration_result.hpp: the fields of a PenetrationResult from the nearest
-// facet. The witnesses: after moving B by the translation p the operands
-// touch, and the exact GJK of A against the moved B returns a common point
-// x; then x is in A, x - p is in B, and their difference is p.
+// penetration_result.hpp: the fields of a PenetrationResult.
 #include "penetration_result.hpp"
 
 #include <utility>
 
-#include "query_operands.hpp"
 
 namespace cvms {
 
@@ -27,15 +23,10 @@ PenetrationResult penetration_from_distance(const DistanceResult& d) {
   return r;
 }
 
-void set_nearest_facet(PenetrationResult& r, Vec3 direction, Rational offset, const SupportOperand& a,
-                       const SupportOperand& b) {
+void set_depth(PenetrationResult& r, Vec3 direction, Rational offset) {
   r.direction = std::move(direction);
   r.offset = std::move(offset);
   r.squared_depth = r.offset * r.offset / dot(r.direction, r.direction);
-  const Vec3 t = r.translation();
-  const DistanceResult contact = distance_with_offset(a, b, &t);
-  r.witness_a = contact.witness_a;
-  r.witness_b = contact.witness_b - t;
 }
 
 }  // namespace detail

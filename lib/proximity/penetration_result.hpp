@@ -5,7 +5,6 @@
 #pragma once
 
 #include "cvms/proximity.hpp"
-#include "support_operand.hpp"
 
 namespace cvms::detail {
 
@@ -13,11 +12,8 @@ namespace cvms::detail {
 /// intersect (a common point, depth 0, no direction yet).
 PenetrationResult penetration_from_distance(const DistanceResult& d);
 
-/// Sets the nearest facet {x : <direction, x> = offset} of A + (-B), the
-/// squared depth, and as witnesses the contact of A with B moved by the
-/// translation (an exact GJK: they touch there, so it returns a common
-/// point x, and x, x - translation are the witnesses).
-void set_nearest_facet(PenetrationResult& r, Vec3 direction, Rational offset, const SupportOperand& a,
-                       const SupportOperand& b);
+/// Sets the nearest facet {x : <direction, x> = offset} of A + (-B) and the
+/// squared depth (the witnesses are the caller's).
+void set_depth(PenetrationResult& r, Vec3 direction, Rational offset);
 
 }  // namespace cvms::detail
