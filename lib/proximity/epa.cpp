@@ -62,10 +62,9 @@
 //
 // Exactness and cost. Signs are filtered predicates (orient3d against the
 // face's vertices for "beyond"); the planes and squared distances are
-// rationals, since they are values the loop compares; each also keeps a
-// double interval of its squared distance, so that finding the nearest
-// faces compares rationals only between faces the intervals cannot order
-// (the nearest_faces filter). Coplanar faces of a
+// rationals, since they are values the loop compares, but computed only for
+// the faces whose double bounds on the squared distance (error_bounds.hpp,
+// quotient_bounds) cannot rule them out of the nearest (nearest_faces). Coplanar faces of a
 // verified plane are marked with it, so one support query verifies a facet
 // however P triangulates it. Each walk starts at the vertices of the face it
 // queries from, a short climb when P is already close to M there.
@@ -122,16 +121,16 @@ bool extend(const SupportOperand& a, const SupportOperand& b, std::vector<Polyto
   return false;
 }
 
-// The faces at the least distance. The filter keeps the faces whose
-// interval [value - error, value + error] can hold the least distance (its
-// low end is at most every interval's high end); exact comparisons decide
-// among those, usually one. A NaN or infinite bound keeps the face.
-std::vector<PolytopeFace*> nearest_faces(std::vector<PolytopeFace>& faces) {
+// The faces at the least distance. The filter keeps the faces whose lower
+// bound is at most every face's upper bound (a NaN bound keeps the face);
+// only those get exact planes, and exact comparisons decide among them.
+std::vector<PolytopeFace*> nearest_faces(ExpandingPolytope& p) {
   double least_high = std::numeric_limits<double>::infinity();
-  for (const PolytopeFace& f : faces) least_high = std::min(least_high, f.distance_approx.value + f.distance_approx.error);
+  for (const PolytopeFace& f : p.faces()) least_high = std::min(least_high, f.distance_high);
   std::vector<PolytopeFace*> out;
-  for (PolytopeFace& f : faces) {
-    if (f.distance_approx.value - f.distance_approx.error > least_high) continue;
+  for (PolytopeFace& f : p.faces()) {
+    if (f.distance_low > least_high) continue;
+    p.make_exact(f);
     const int order = out.empty() ? 0 : cmp(f.squared_distance, out.front()->squared_distance);
     if (order < 0) out.clear();
     if (order <= 0) out.push_back(&f);
@@ -221,7 +220,7 @@ std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const Sup
     if (!extend(a, b, s)) return std::nullopt;
   ExpandingPolytope p({std::move(s[0]), std::move(s[1]), std::move(s[2]), std::move(s[3])});
   for (;;) {
-    const std::vector<PolytopeFace*> nearest = nearest_faces(p.faces());
+    const std::vector<PolytopeFace*> nearest = nearest_faces(p);
     PolytopeFace* f = first_unverified(nearest);
     if (f == nullptr) {
       NearestFacet out = smallest_nearest(p, nearest);

@@ -16,14 +16,16 @@
 // outside. A face with x on its plane stays: its new neighbour may be
 // coplanar with it, which P allows (its faces are triangles, not facets).
 //
-// Everything is exact: the planes are rational, each visibility a filtered
-// sign; the squared distance of a plane from the origin is kept as a
-// rational for the exact comparisons of the EPA loop.
+// Everything is exact: each visibility is a filtered sign on the points; a
+// face's plane and squared distance from the origin are rationals, computed
+// when the EPA loop needs them (make_exact), and bounded in doubles before.
 #include "expanding_polytope.hpp"
 
 #include <algorithm>
 #include <utility>
 
+#include "error_bounds.hpp"
+#include "filtered_arithmetic.hpp"
 #include "filtered_predicates.hpp"
 
 namespace cvms::detail {
@@ -45,16 +47,39 @@ ExpandingPolytope::ExpandingPolytope(std::array<PolytopePoint, 4> points) {
   add_face(a, b, 3);
 }
 
+// The bounds of the squared distance, offset^2 / |normal|^2, by the running
+// error analysis (filtered_arithmetic.hpp, error_bounds.hpp): most faces are
+// never near the origin, and the bounds alone show it.
 void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  using filtered::add;
+  using filtered::mul;
+  using filtered::sub;
+  const ApproxVec3& p = points_[i].approx;
+  const ApproxVec3& q = points_[j].approx;
+  const ApproxVec3& r = points_[k].approx;
+  const Approx ux = sub(q.x, p.x), uy = sub(q.y, p.y), uz = sub(q.z, p.z);
+  const Approx vx = sub(r.x, p.x), vy = sub(r.y, p.y), vz = sub(r.z, p.z);
+  const Approx nx = sub(mul(uy, vz), mul(uz, vy));
+  const Approx ny = sub(mul(uz, vx), mul(ux, vz));
+  const Approx nz = sub(mul(ux, vy), mul(uy, vx));
+  const Approx c = add(add(mul(nx, p.x), mul(ny, p.y)), mul(nz, p.z));
+  const Approx n2 = add(add(mul(nx, nx), mul(ny, ny)), mul(nz, nz));
+  const filtered::QuotientBounds d = filtered::quotient_bounds(mul(c, c), n2);
   PolytopeFace f;
   f.v = {i, j, k};
-  const Vec3& p = points_[i].c;
-  f.normal = cross(points_[j].c - p, points_[k].c - p);
+  f.distance_low = d.low;
+  f.distance_high = d.high;
+  faces_.push_back(std::move(f));
+}
+
+void ExpandingPolytope::make_exact(PolytopeFace& f) const {
+  if (f.exact) return;
+  const Vec3& p = points_[f.v[0]].c;
+  f.normal = cross(points_[f.v[1]].c - p, points_[f.v[2]].c - p);
   f.normal_approx = ApproxVec3::of(f.normal);
   f.offset = dot(f.normal, p);
   f.squared_distance = f.offset * f.offset / dot(f.normal, f.normal);
-  f.distance_approx = Approx::of(f.squared_distance);
-  faces_.push_back(std::move(f));
+  f.exact = true;
 }
 
 bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) const {

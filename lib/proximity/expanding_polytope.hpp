@@ -22,17 +22,21 @@ struct PolytopePoint {
   ApproxVec3 approx;
 };
 
-/// A triangle of P's boundary, counterclockwise seen from outside, with its
+/// A triangle of P's boundary, counterclockwise seen from outside. Its
 /// plane {x : <normal, x> = offset} (normal = cross(c1 - c0, c2 - c0), not
-/// normalised) and the squared distance of that plane from the origin.
+/// normalised) and the squared distance of that plane from the origin are
+/// exact once `exact` is set (ExpandingPolytope::make_exact); until then
+/// only the bounds of that distance, from the points' approximations, are.
 struct PolytopeFace {
   std::array<std::uint32_t, 3> v;
+  double distance_low = 0.0;   ///< <= squared_distance
+  double distance_high = 0.0;  ///< >= squared_distance (may be infinite or NaN: no bound)
+  bool exact = false;
+  bool verified = false;  ///< the plane is known to be a facet plane of M
   Vec3 normal;
   ApproxVec3 normal_approx;
   Rational offset;
   Rational squared_distance;  ///< offset^2 / |normal|^2
-  Approx distance_approx;     ///< of squared_distance, for the filter
-  bool verified = false;      ///< the plane is known to be a facet plane of M
 };
 
 class ExpandingPolytope {
@@ -46,6 +50,9 @@ class ExpandingPolytope {
 
   /// P := conv(P + {x}). \pre x is strictly beyond some face of P.
   void add(PolytopePoint x);
+
+  /// Computes f's exact plane and distance, once.
+  void make_exact(PolytopeFace& f) const;
 
  private:
   void add_face(std::uint32_t i, std::uint32_t j, std::uint32_t k);
