@@ -130,8 +130,8 @@ std::vector<PolytopeFace*> nearest_faces(ExpandingPolytope& p) {
   std::vector<PolytopeFace*> out;
   for (PolytopeFace& f : p.faces()) {
     if (f.distance_low > least_high) continue;
-    p.make_exact(f);
-    const int order = out.empty() ? 0 : cmp(f.squared_distance, out.front()->squared_distance);
+    const Rational& d = p.plane(f).squared_distance;
+    const int order = out.empty() ? 0 : cmp(d, p.plane(*out.front()).squared_distance);
     if (order < 0) out.clear();
     if (order <= 0) out.push_back(&f);
   }
@@ -145,10 +145,10 @@ PolytopeFace* first_unverified(const std::vector<PolytopeFace*>& faces) {
 }
 
 // f's coplanar faces: the same distance and the same outward direction.
-void mark_verified(const std::vector<PolytopeFace*>& nearest, const PolytopeFace& f) {
-  const Vec3Ref nf{f.normal, f.normal_approx};
+void mark_verified(const ExpandingPolytope& p, const std::vector<PolytopeFace*>& nearest, const PolytopeFace& f) {
+  const Vec3Ref nf{p.plane(f).normal, p.plane(f).normal_approx};
   for (PolytopeFace* g : nearest) {
-    const Vec3Ref ng{g->normal, g->normal_approx};
+    const Vec3Ref ng{p.plane(*g).normal, p.plane(*g).normal_approx};
     if (!g->verified && sign_dot(nf, ng) == Sign::positive && is_parallel(nf, ng)) g->verified = true;
   }
 }
@@ -166,7 +166,7 @@ std::optional<std::array<Rational, 3>> weights_in(const ExpandingPolytope& p, co
   for (int i = 0; i < 3; ++i) {
     const Vec3& u = p.points()[f.v[(i + 1) % 3]].c;
     const Vec3& v = p.points()[f.v[(i + 2) % 3]].c;
-    w[i] = dot(cross(u - q, v - q), f.normal);
+    w[i] = dot(cross(u - q, v - q), p.plane(f).normal);
     if (sgn(w[i]) < 0) return std::nullopt;
   }
   return w;
@@ -182,8 +182,8 @@ void set_witnesses(const SupportOperand& a, const ExpandingPolytope& p,
   const ApproxVec3 approx = ApproxVec3::of(out.direction);
   const Vec3Ref n{out.direction, approx};
   for (const PolytopeFace* f : nearest) {
-    if (sign_dot(n, {f->normal, f->normal_approx}) != Sign::positive || !is_parallel(n, {f->normal, f->normal_approx}))
-      continue;
+    const Vec3Ref fn{p.plane(*f).normal, p.plane(*f).normal_approx};
+    if (sign_dot(n, fn) != Sign::positive || !is_parallel(n, fn)) continue;
     const std::optional<std::array<Rational, 3>> w = weights_in(p, *f, q);
     if (!w) continue;
     const Rational total = (*w)[0] + (*w)[1] + (*w)[2];
@@ -199,7 +199,7 @@ NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<Poly
   const PolytopeFace* best = nullptr;
   Vec3 best_direction;
   for (const PolytopeFace* f : nearest) {
-    Vec3 n = primitive_direction(f->normal);
+    Vec3 n = primitive_direction(p.plane(*f).normal);
     if (best == nullptr || n < best_direction) {
       best = f;
       best_direction = std::move(n);
@@ -227,11 +227,11 @@ std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const Sup
       set_witnesses(a, p, nearest, out);
       return out;
     }
-    PolytopePoint w = support_point(a, b, f->normal, p.points()[f->v[0]]);
+    PolytopePoint w = support_point(a, b, p.plane(*f).normal, p.points()[f->v[0]]);
     if (beyond(p, *f, w))
       p.add(std::move(w));
     else
-      mark_verified(nearest, *f);
+      mark_verified(p, nearest, *f);
   }
 }
 

@@ -18,7 +18,7 @@
 //
 // Everything is exact: each visibility is a filtered sign on the points; a
 // face's plane and squared distance from the origin are rationals, computed
-// when the EPA loop needs them (make_exact), and bounded in doubles before.
+// when the EPA loop needs them (plane()), and bounded in doubles before.
 #include "expanding_polytope.hpp"
 
 #include <algorithm>
@@ -72,14 +72,16 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
   faces_.push_back(std::move(f));
 }
 
-void ExpandingPolytope::make_exact(PolytopeFace& f) const {
-  if (f.exact) return;
+const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
+  if (f.plane != PolytopeFace::no_plane) return planes_[f.plane];
+  FacePlane& e = planes_.emplace_back();
   const Vec3& p = points_[f.v[0]].c;
-  f.normal = cross(points_[f.v[1]].c - p, points_[f.v[2]].c - p);
-  f.normal_approx = ApproxVec3::of(f.normal);
-  f.offset = dot(f.normal, p);
-  f.squared_distance = f.offset * f.offset / dot(f.normal, f.normal);
-  f.exact = true;
+  e.normal = cross(points_[f.v[1]].c - p, points_[f.v[2]].c - p);
+  e.normal_approx = ApproxVec3::of(e.normal);
+  e.offset = dot(e.normal, p);
+  e.squared_distance = e.offset * e.offset / dot(e.normal, e.normal);
+  f.plane = static_cast<std::uint32_t>(planes_.size() - 1);
+  return e;
 }
 
 bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) const {

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "approx.hpp"
@@ -22,21 +23,27 @@ struct PolytopePoint {
   ApproxVec3 approx;
 };
 
-/// A triangle of P's boundary, counterclockwise seen from outside. Its
-/// plane {x : <normal, x> = offset} (normal = cross(c1 - c0, c2 - c0), not
-/// normalised) and the squared distance of that plane from the origin are
-/// exact once `exact` is set (ExpandingPolytope::make_exact); until then
-/// only the bounds of that distance, from the points' approximations, are.
-struct PolytopeFace {
-  std::array<std::uint32_t, 3> v;
-  double distance_low = 0.0;   ///< <= squared_distance
-  double distance_high = 0.0;  ///< >= squared_distance (may be infinite or NaN: no bound)
-  bool exact = false;
-  bool verified = false;  ///< the plane is known to be a facet plane of M
+/// A face's exact plane {x : <normal, x> = offset}, normal = cross(c1 - c0,
+/// c2 - c0) (not normalised), and its squared distance from the origin.
+struct FacePlane {
   Vec3 normal;
   ApproxVec3 normal_approx;
   Rational offset;
   Rational squared_distance;  ///< offset^2 / |normal|^2
+};
+
+/// A triangle of P's boundary, counterclockwise seen from outside, with
+/// double bounds on its plane's squared distance from the origin (from the
+/// points' approximations) and, once asked for (ExpandingPolytope::plane),
+/// its exact plane, kept apart so that the faces P discards cost no
+/// rational arithmetic.
+struct PolytopeFace {
+  std::array<std::uint32_t, 3> v;
+  double distance_low = 0.0;   ///< <= the squared distance
+  double distance_high = 0.0;  ///< >= it (may be infinite or NaN: no bound)
+  std::uint32_t plane = no_plane;  ///< index of the exact plane, or no_plane
+  bool verified = false;           ///< the plane is known to be a facet plane of M
+  static constexpr std::uint32_t no_plane = 0xffffffffu;
 };
 
 class ExpandingPolytope {
@@ -44,22 +51,25 @@ class ExpandingPolytope {
   /// The tetrahedron on four affinely independent points.
   explicit ExpandingPolytope(std::array<PolytopePoint, 4> points);
 
-  [[nodiscard]] const std::vector<PolytopePoint>& points() const noexcept { return points_; }
+  [[nodiscard]] const std::deque<PolytopePoint>& points() const noexcept { return points_; }
   [[nodiscard]] std::vector<PolytopeFace>& faces() noexcept { return faces_; }
   [[nodiscard]] const std::vector<PolytopeFace>& faces() const noexcept { return faces_; }
 
   /// P := conv(P + {x}). \pre x is strictly beyond some face of P.
   void add(PolytopePoint x);
 
-  /// Computes f's exact plane and distance, once.
-  void make_exact(PolytopeFace& f) const;
+  /// f's exact plane, computed on the first call.
+  const FacePlane& plane(PolytopeFace& f);
+  /// f's exact plane. \pre plane(f) was called.
+  [[nodiscard]] const FacePlane& plane(const PolytopeFace& f) const { return planes_[f.plane]; }
 
  private:
   void add_face(std::uint32_t i, std::uint32_t j, std::uint32_t k);
   [[nodiscard]] bool sees(const PolytopeFace& f, const PolytopePoint& x) const;
 
-  std::vector<PolytopePoint> points_;
+  std::deque<PolytopePoint> points_;  // a deque: points never move
   std::vector<PolytopeFace> faces_;
+  std::deque<FacePlane> planes_;  // a deque: planes never move
 };
 
 }  // namespace cvms::detail
