@@ -64,15 +64,16 @@
 // face's vertices for "beyond"); the planes and squared distances are
 // rationals, since they are values the loop compares, but computed only for
 // the faces whose double bounds on the squared distance (error_bounds.hpp,
-// quotient_bounds) cannot rule them out of the nearest (nearest_faces). Coplanar faces of a
-// verified plane are marked with it, so one support query verifies a facet
-// however P triangulates it. Each walk starts at the vertices of the face it
+// quotient_bounds) cannot rule them out of the nearest (nearest_faces).
+// Coplanar faces of a verified plane are marked with it, so one support
+// query verifies a facet however P triangulates it. Each walk starts at the vertices of the face it
 // queries from, a short climb when P is already close to M there.
 #include "epa.hpp"
 
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // How a PenetrationResult is filled, shared by the EPA (penetration.cpp) and
-// its reference on the whole sum (penetration_by_sum.cpp), so that both
-// answer alike once they agree on the nearest facet.
+// its reference on the whole sum (penetration_by_sum.cpp), so that both give
+// the same apart answer and the same depth from the same nearest facet (each
+// finds its own witnesses).
 #pragma once
 
 #include "cvms/proximity.hpp"
