@@ -83,12 +83,6 @@
 namespace cvms::detail {
 namespace {
 
-PolytopePoint make_point(VertexId va, VertexId vb, Vec3 c) {
-  PolytopePoint p{va, vb, std::move(c), {}};
-  p.approx = ApproxVec3::of(p.c);
-  return p;
-}
-
 // The support point of M in direction n, the walks started at `from`'s pair.
 PolytopePoint support_point(const SupportOperand& a, const SupportOperand& b, const Vec3& n,
                             const PolytopePoint& from) {
@@ -96,7 +90,7 @@ PolytopePoint support_point(const SupportOperand& a, const SupportOperand& b, co
   const Vec3Ref u{n, approx};
   const VertexId va = a.support(u, Sign::positive, from.vertex_a);
   const VertexId vb = b.support(u, Sign::negative, from.vertex_b);
-  return make_point(va, vb, a.position(va) - b.position(vb));
+  return polytope_point(va, vb, a.position(va) - b.position(vb));
 }
 
 // A nonzero normal of aff(s) (1 to 3 affinely independent points).
@@ -131,8 +125,8 @@ std::vector<PolytopeFace*> nearest_faces(ExpandingPolytope& p) {
   std::vector<PolytopeFace*> out;
   for (PolytopeFace& f : p.faces()) {
     if (f.distance_low > least_high) continue;
-    const Rational& d = p.plane(f).squared_distance;
-    const int order = out.empty() ? 0 : cmp(d, p.plane(*out.front()).squared_distance);
+    const FacePlane& e = p.plane(f);
+    const int order = out.empty() ? 0 : compare_distances(e, p.plane(*out.front()));
     if (order < 0) out.clear();
     if (order <= 0) out.push_back(&f);
   }
@@ -216,7 +210,7 @@ NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<Poly
 std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b, const GjkOutcome& gjk) {
   std::vector<PolytopePoint> s;
   for (int i = 0; i < gjk.size; ++i)
-    s.push_back(make_point(gjk.simplex[i].vertex_a, gjk.simplex[i].vertex_b, gjk.simplex[i].c));
+    s.push_back(polytope_point(gjk.simplex[i].vertex_a, gjk.simplex[i].vertex_b, gjk.simplex[i].c));
   while (s.size() < 4)
     if (!extend(a, b, s)) return std::nullopt;
   ExpandingPolytope p({std::move(s[0]), std::move(s[1]), std::move(s[2]), std::move(s[3])});

@@ -72,14 +72,53 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
   faces_.push_back(std::move(f));
 }
 
+PolytopePoint polytope_point(VertexId vertex_a, VertexId vertex_b, Vec3 c) {
+  PolytopePoint p{vertex_a, vertex_b, std::move(c), {}, {}, 1};
+  p.approx = ApproxVec3::of(p.c);
+  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z}) mpz_lcm(p.scale.get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
+  int i = 0;
+  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z}) {
+    mpz_divexact(p.scaled[i].get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
+    p.scaled[i] *= x->get_num();
+    ++i;
+  }
+  return p;
+}
+
+int compare_distances(const FacePlane& a, const FacePlane& b) {
+  return cmp(a.distance_num * b.distance_den, b.distance_num * a.distance_den);
+}
+
+namespace {
+
+using Int3 = std::array<mpz_class, 3>;
+
+// s * x - t * y, coordinatewise.
+Int3 scaled_difference(const mpz_class& s, const Int3& x, const mpz_class& t, const Int3& y) {
+  return {s * x[0] - t * y[0], s * x[1] - t * y[1], s * x[2] - t * y[2]};
+}
+
+}  // namespace
+
+// In integers: with p = P / d_p (and q, r alike), q - p = (d_p Q - d_q P) /
+// (d_p d_q) and r - p = (d_p R - d_r P) / (d_p d_r), so n = cross(d_p Q -
+// d_q P, d_p R - d_r P) is cross(q - p, r - p) times d_p^2 d_q d_r > 0; the
+// plane is <n, x> = <n, P> / d_p, at squared distance <n, P>^2 / (d_p^2
+// |n|^2) from the origin. No gcd anywhere.
 const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
   if (f.plane != PolytopeFace::no_plane) return planes_[f.plane];
+  const PolytopePoint& p = points_[f.v[0]];
+  const PolytopePoint& q = points_[f.v[1]];
+  const PolytopePoint& r = points_[f.v[2]];
+  const Int3 u = scaled_difference(p.scale, q.scaled, q.scale, p.scaled);
+  const Int3 v = scaled_difference(p.scale, r.scaled, r.scale, p.scaled);
+  const Int3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
   FacePlane& e = planes_.emplace_back();
-  const Vec3& p = points_[f.v[0]].c;
-  e.normal = cross(points_[f.v[1]].c - p, points_[f.v[2]].c - p);
+  e.normal = Vec3{Rational(n[0]), Rational(n[1]), Rational(n[2])};
   e.normal_approx = ApproxVec3::of(e.normal);
-  e.offset = dot(e.normal, p);
-  e.squared_distance = e.offset * e.offset / dot(e.normal, e.normal);
+  const mpz_class offset = n[0] * p.scaled[0] + n[1] * p.scaled[1] + n[2] * p.scaled[2];
+  e.distance_num = offset * offset;
+  e.distance_den = p.scale * p.scale * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   f.plane = static_cast<std::uint32_t>(planes_.size() - 1);
   return e;
 }

@@ -16,21 +16,32 @@
 
 namespace cvms::detail {
 
-/// A vertex of P: a - b for vertex_a of A and vertex_b of B.
+/// A vertex of P: a - b for vertex_a of A and vertex_b of B; also as the
+/// integer vector scaled / scale (scale > 0, the lcm of the denominators),
+/// so that planes are computed in integers.
 struct PolytopePoint {
   VertexId vertex_a, vertex_b;
   Vec3 c;
   ApproxVec3 approx;
+  std::array<mpz_class, 3> scaled;
+  mpz_class scale;
 };
 
-/// A face's exact plane {x : <normal, x> = offset}, normal = cross(c1 - c0,
-/// c2 - c0) (not normalised), and its squared distance from the origin.
+/// The point a - b with its approximation and scaled form.
+PolytopePoint polytope_point(VertexId vertex_a, VertexId vertex_b, Vec3 c);
+
+/// A face's exact plane: an integer outward normal (a positive multiple of
+/// cross(c1 - c0, c2 - c0)) and its squared distance from the origin,
+/// distance_num / distance_den, kept unreduced (compared by products).
 struct FacePlane {
   Vec3 normal;
   ApproxVec3 normal_approx;
-  Rational offset;
-  Rational squared_distance;  ///< offset^2 / |normal|^2
+  mpz_class distance_num;
+  mpz_class distance_den;  ///< > 0
 };
+
+/// The sign of a's squared distance minus b's.
+int compare_distances(const FacePlane& a, const FacePlane& b);
 
 /// A triangle of P's boundary, counterclockwise seen from outside, with
 /// double bounds on its plane's squared distance from the origin (from the
