@@ -79,6 +79,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "expanding_polytope.hpp"
 #include "filtered_predicates.hpp"
+#include "nearest_on_simplex.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -154,15 +155,24 @@ bool beyond(const ExpandingPolytope& p, const PolytopeFace& f, const PolytopePoi
   return orient3d(r(f.v[0]), r(f.v[1]), r(f.v[2]), {w.c, w.approx}) == Sign::positive;
 }
 
-// The barycentric weights of q, a point of f's plane, in f's triangle
-// (numerators over |normal|^2), or nothing if q is outside the triangle.
-std::optional<std::array<Rational, 3>> weights_in(const ExpandingPolytope& p, const PolytopeFace& f, const Vec3& q) {
-  std::array<Rational, 3> w;
+// The barycentric weights of q = t n (the foot point of f's plane, n its
+// normal) in f's triangle c_0 c_1 c_2, or nothing if q is outside it. The
+// weight of c_i is proportional to <cross(c_j - q, c_k - q), n> = <cross(c_j,
+// c_k), n> (the terms with q vanish: det(c, q, n) = 0 as q is parallel to n),
+// and with c = C / D (PolytopePoint::scaled) that is det(C_j, C_k, n) /
+// (D_j D_k): times D_0 D_1 D_2 > 0, the integer det(C_j, C_k, n) D_i.
+std::optional<std::array<mpz_class, 3>> foot_weights(const ExpandingPolytope& p, const PolytopeFace& f) {
+  const Vec3& n = p.plane(f).normal;
+  std::array<mpz_class, 3> w;
   for (int i = 0; i < 3; ++i) {
-    const Vec3& u = p.points()[f.v[(i + 1) % 3]].c;
-    const Vec3& v = p.points()[f.v[(i + 2) % 3]].c;
-    w[i] = dot(cross(u - q, v - q), p.plane(f).normal);
+    const PolytopePoint& u = p.points()[f.v[(i + 1) % 3]];
+    const PolytopePoint& v = p.points()[f.v[(i + 2) % 3]];
+    const auto& x = u.scaled;
+    const auto& y = v.scaled;
+    w[i] = (x[1] * y[2] - x[2] * y[1]) * n.x.get_num() + (x[2] * y[0] - x[0] * y[2]) * n.y.get_num() +
+           (x[0] * y[1] - x[1] * y[0]) * n.z.get_num();
     if (sgn(w[i]) < 0) return std::nullopt;
+    w[i] *= p.points()[f.v[i]].scale;
   }
   return w;
 }
@@ -171,20 +181,26 @@ std::optional<std::array<Rational, 3>> weights_in(const ExpandingPolytope& p, co
 // point of P on the chosen plane (the header), so in one of P's triangles
 // on it; with its weights l_i, sum l_i a_i is in A, sum l_i b_i in B, and
 // their difference is q.
-void set_witnesses(const SupportOperand& a, const ExpandingPolytope& p,
+void set_witnesses(const SupportOperand& a, const SupportOperand& b, const ExpandingPolytope& p,
                    const std::vector<PolytopeFace*>& nearest, NearestFacet& out) {
-  const Vec3 q = (out.offset / dot(out.direction, out.direction)) * out.direction;
   const ApproxVec3 approx = ApproxVec3::of(out.direction);
   const Vec3Ref n{out.direction, approx};
   for (const PolytopeFace* f : nearest) {
     const Vec3Ref fn{p.plane(*f).normal, p.plane(*f).normal_approx};
     if (sign_dot(n, fn) != Sign::positive || !is_parallel(n, fn)) continue;
-    const std::optional<std::array<Rational, 3>> w = weights_in(p, *f, q);
+    const std::optional<std::array<mpz_class, 3>> w = foot_weights(p, *f);
     if (!w) continue;
-    const Rational total = (*w)[0] + (*w)[1] + (*w)[2];
-    out.witness_a = Vec3{0, 0, 0};
-    for (int i = 0; i < 3; ++i) out.witness_a += ((*w)[i] / total) * a.position(p.points()[f->v[i]].vertex_a);
-    out.witness_b = out.witness_a - q;
+    std::array<Vec3, 3> xa;
+    std::array<Vec3, 3> xb;
+    for (int i = 0; i < 3; ++i) {
+      xa[i] = a.position(p.points()[f->v[i]].vertex_a);
+      xb[i] = b.position(p.points()[f->v[i]].vertex_b);
+    }
+    const mpz_class total = (*w)[0] + (*w)[1] + (*w)[2];
+    const Vec3* pa[3] = {&xa[0], &xa[1], &xa[2]};
+    const Vec3* pb[3] = {&xb[0], &xb[1], &xb[2]};
+    out.witness_a = weighted_sum(pa, w->data(), total, 3);
+    out.witness_b = weighted_sum(pb, w->data(), total, 3);
     return;
   }
 }
@@ -219,7 +235,7 @@ std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const Sup
     PolytopeFace* f = first_unverified(nearest);
     if (f == nullptr) {
       NearestFacet out = smallest_nearest(p, nearest);
-      set_witnesses(a, p, nearest, out);
+      set_witnesses(a, b, p, nearest, out);
       return out;
     }
     PolytopePoint w = support_point(a, b, p.plane(*f).normal, p.points()[f->v[0]]);
