@@ -30,7 +30,8 @@ using test::v3;
 std::string differences(const PenetrationResult& epa, const PenetrationResult& sum) {
   if (epa.intersect != sum.intersect) return "intersect differs";
   if (epa.squared_depth != sum.squared_depth)
-    return "squared_depth " + to_string(epa.squared_depth) + ", the sum gives " + to_string(sum.squared_depth);
+    return "squared_depth " + to_string(epa.squared_depth) + ", the sum gives " +
+           to_string(sum.squared_depth);
   if (epa.direction != sum.direction)
     return "direction " + test::to_text(epa.direction) + ", the sum gives " + test::to_text(sum.direction);
   if (epa.offset != sum.offset) return "offset differs";
@@ -48,7 +49,8 @@ TEST(Epa, TwoThousandSeededPairsAsTheSumAndTheOracle) {
     const test::RandomPlacement r = test::random_placement(seed);
     ASSERT_EQ(r.failure, "") << "seed " << seed << ": " << r.description;
     const PenetrationResult p = penetration(r.a, r.b);
-    ASSERT_EQ(differences(p, detail::penetration_by_sum(r.a, r.b)), "") << "seed " << seed << ": " << r.description;
+    ASSERT_EQ(differences(p, detail::penetration_by_sum(r.a, r.b)), "")
+        << "seed " << seed << ": " << r.description;
     ASSERT_EQ(test::check_penetration(r.a, r.b, p, r.oracle), "") << "seed " << seed << ": " << r.description;
   }
 }

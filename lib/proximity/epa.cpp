@@ -61,13 +61,14 @@
 // sum l_i b_i is in B, and a - b = q.
 //
 // Exactness and cost. Signs are filtered predicates (orient3d against the
-// face's vertices for "beyond"); the planes and squared distances are
-// rationals, since they are values the loop compares, but computed only for
-// the faces whose double bounds on the squared distance (error_bounds.hpp,
-// quotient_bounds) cannot rule them out of the nearest (nearest_faces).
-// Coplanar faces of a verified plane are marked with it, so one support
-// query verifies a facet however P triangulates it. Each walk starts at the vertices of the face it
-// queries from, a short climb when P is already close to M there.
+// face's vertices for "beyond"); the planes and squared distances are exact
+// (scaled integers, expanding_polytope.cpp), since they are values the loop
+// compares, but computed only for the faces whose double bounds on the
+// squared distance (error_bounds.hpp, quotient_bounds) cannot rule them out
+// of the nearest (nearest_faces). Coplanar faces of a verified plane are
+// marked with it, so one support query verifies a facet however P
+// triangulates it. Each walk starts at the vertices of the face it queries
+// from, a short climb when P is already close to M there.
 #include "epa.hpp"
 
 #include <algorithm>
@@ -141,7 +142,8 @@ PolytopeFace* first_unverified(const std::vector<PolytopeFace*>& faces) {
 }
 
 // f's coplanar faces: the same distance and the same outward direction.
-void mark_verified(const ExpandingPolytope& p, const std::vector<PolytopeFace*>& nearest, const PolytopeFace& f) {
+void mark_verified(const ExpandingPolytope& p, const std::vector<PolytopeFace*>& nearest,
+                   const PolytopeFace& f) {
   const Vec3Ref nf{p.plane(f).normal, p.plane(f).normal_approx};
   for (PolytopeFace* g : nearest) {
     const Vec3Ref ng{p.plane(*g).normal, p.plane(*g).normal_approx};
@@ -223,7 +225,8 @@ NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<Poly
 
 }  // namespace
 
-std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b, const GjkOutcome& gjk) {
+std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b,
+                                              const GjkOutcome& gjk) {
   std::vector<PolytopePoint> s;
   for (int i = 0; i < gjk.size; ++i)
     s.push_back(polytope_point(gjk.simplex[i].vertex_a, gjk.simplex[i].vertex_b, gjk.simplex[i].c));

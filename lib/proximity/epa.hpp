@@ -13,7 +13,7 @@ namespace cvms::detail {
 
 /// The facet plane {x : <direction, x> = offset} of M nearest to the origin.
 struct NearestFacet {
-  Vec3 direction;  ///< primitive integer outward normal; ties: the smallest
+  Vec3 direction;   ///< primitive integer outward normal; ties: the smallest
   Rational offset;  ///< >= 0
   /// A point of A and a point of B with witness_a - witness_b the
   /// translation offset / |direction|^2 direction (a contact after it).
@@ -22,6 +22,7 @@ struct NearestFacet {
 
 /// \pre gjk is an exact_gjk outcome on a and b (no offset) with intersect set.
 /// \return the nearest facet, or nothing when M is flat (no facets).
-std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b, const GjkOutcome& gjk);
+std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b,
+                                              const GjkOutcome& gjk);
 
 }  // namespace cvms::detail

@@ -17,8 +17,9 @@
 // coplanar with it, which P allows (its faces are triangles, not facets).
 //
 // Everything is exact: each visibility is a filtered sign on the points; a
-// face's plane and squared distance from the origin are rationals, computed
-// when the EPA loop needs them (plane()), and bounded in doubles before.
+// face's plane and squared distance from the origin are exact (in scaled
+// integers, plane()), computed when the EPA loop needs them, and bounded in
+// doubles before.
 #include "expanding_polytope.hpp"
 
 #include <algorithm>
@@ -38,7 +39,8 @@ Vec3Ref ref(const PolytopePoint& p) { return {p.c, p.approx}; }
 ExpandingPolytope::ExpandingPolytope(std::array<PolytopePoint, 4> points) {
   points_.assign(std::make_move_iterator(points.begin()), std::make_move_iterator(points.end()));
   // Each triangle is oriented away from the fourth point.
-  const bool positive = orient3d(ref(points_[0]), ref(points_[1]), ref(points_[2]), ref(points_[3])) == Sign::positive;
+  const bool positive =
+      orient3d(ref(points_[0]), ref(points_[1]), ref(points_[2]), ref(points_[3])) == Sign::positive;
   const std::uint32_t a = positive ? 1 : 2;
   const std::uint32_t b = positive ? 2 : 1;
   add_face(0, b, a);
@@ -75,7 +77,8 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
 PolytopePoint polytope_point(VertexId vertex_a, VertexId vertex_b, Vec3 c) {
   PolytopePoint p{vertex_a, vertex_b, std::move(c), {}, {}, 1};
   p.approx = ApproxVec3::of(p.c);
-  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z}) mpz_lcm(p.scale.get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
+  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z})
+    mpz_lcm(p.scale.get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
   int i = 0;
   for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z}) {
     mpz_divexact(p.scaled[i].get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());

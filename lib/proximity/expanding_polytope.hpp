@@ -50,8 +50,8 @@ int compare_distances(const FacePlane& a, const FacePlane& b);
 /// rational arithmetic.
 struct PolytopeFace {
   std::array<std::uint32_t, 3> v;
-  double distance_low = 0.0;   ///< <= the squared distance
-  double distance_high = 0.0;  ///< >= it (may be infinite or NaN: no bound)
+  double distance_low = 0.0;       ///< <= the squared distance
+  double distance_high = 0.0;      ///< >= it (may be infinite or NaN: no bound)
   std::uint32_t plane = no_plane;  ///< index of the exact plane, or no_plane
   bool verified = false;           ///< the plane is known to be a facet plane of M
   static constexpr std::uint32_t no_plane = 0xffffffffu;

@@ -70,7 +70,8 @@ FaceId nearest_facet(const ConvexPolyhedron& m) {
 }
 
 // The depth from a solid M = A + (-B) with the origin inside.
-void depth_from_sum(const ConvexPolyhedron& m, const SupportOperand& a, const SupportOperand& b, PenetrationResult& r) {
+void depth_from_sum(const ConvexPolyhedron& m, const SupportOperand& a, const SupportOperand& b,
+                    PenetrationResult& r) {
   const FaceId f = nearest_facet(m);
   set_depth(r, m.normal(f), m.plane_offset(f));
   const Vec3 t = r.translation();

@@ -4,7 +4,6 @@
 
 #include <utility>
 
-
 namespace cvms {
 
 Vec3 PenetrationResult::translation() const {
