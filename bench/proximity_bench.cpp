@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Exact proximity queries (cvms/proximity.hpp): squared_distance (exact GJK
-// on support walks), intersects and penetration (the CVMS sum A + (-B) and a
-// facet scan), on Cube/Cube, Sphere_k/rotated Sphere_k and Sphere_k/Cube for
+// on support walks), intersects and penetration (the exact EPA on the same
+// walks), on Cube/Cube, Sphere_k/rotated Sphere_k and Sphere_k/Cube for
 // k = 3..5, each in three placements of B: overlapping, touching and
 // separated. B is moved by lambda p, p the point of M = A + (-B) farthest in
 // a fixed direction (a boundary point; the origin is inside M because both
 // shapes are centred there): lambda = 1/2 overlaps, 1 touches, 3/2 separates.
+// Penetration twice: the exact EPA (penetration) and its reference, the
+// whole sum and a scan of its facets (BM_PenetrationBySum, the first
+// version), so the speed-up is measured in one run.
 // Also: a double-rotation Placement against materialising it with
 // ConvexPolyhedron::transformed.
 //
@@ -20,6 +23,7 @@
 #include "cvms/proximity.hpp"
 #include "cvms/shapes.hpp"
 #include "filtered_predicates.hpp"
+#include "penetration_by_sum.hpp"
 #include "proximity_operands.hpp"
 
 namespace {
@@ -72,6 +76,12 @@ void BM_Penetration(benchmark::State& state) {
   exact_rate(state, before);
 }
 
+void BM_PenetrationBySum(benchmark::State& state) {
+  const Operands& o = operands(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  label(state);
+  for (auto _ : state) benchmark::DoNotOptimize(cvms::detail::penetration_by_sum(o.a, o.b));
+}
+
 void all_rows(benchmark::internal::Benchmark* b) {
   for (int pair = 0; pair < kPairs; ++pair)
     for (int placement = 0; placement < 3; ++placement) b->Args({pair, placement});
@@ -80,6 +90,7 @@ void all_rows(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_SquaredDistance)->Apply(all_rows)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Intersects)->Apply(all_rows)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Penetration)->Apply(all_rows)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PenetrationBySum)->Apply(all_rows)->Unit(benchmark::kMicrosecond);
 
 // A rotation in doubles: applied lazily (Placement) or materialised first.
 cvms::Placement rotation_placement() {

@@ -92,6 +92,26 @@ PointSet random_points(test::Rng& rng, double scale, bool inexact) {
   return set;
 }
 
+TEST(ErrorBounds, QuotientBoundsHoldTheQuotient) {
+  test::Rng rng(23);
+  for (int i = 0; i < 20000; ++i) {
+    Rational c = test::random_rational(rng);
+    Rational n = test::random_rational(rng);
+    if (sgn(c) < 0) c = -c;
+    if (sgn(n) < 0) n = -n;
+    if (i % 5 == 0) c += Rational(std::fabs(test::random_magnitude(rng, -1074, -900)));  // near underflow
+    if (sgn(n) == 0) n = 1;
+    Approx a = Approx::of(c), b = Approx::of(n);
+    if (i % 2 == 0) a.error = a.error * 4 + 0x1p-1070;  // coarser, still valid
+    const filtered::QuotientBounds q = filtered::quotient_bounds(a, b);
+    const Rational exact = c / n;
+    EXPECT_LE(Rational(q.low), exact) << to_string(c) << " / " << to_string(n);
+    if (std::isfinite(q.high)) {
+      EXPECT_GE(Rational(q.high), exact) << to_string(c) << " / " << to_string(n);
+    }
+  }
+}
+
 TEST(ErrorBounds, DotFilterBoundCoversEveryPointAndTheMarginDecides) {
   test::Rng rng(23);
   const double scales[] = {1.0, 1e-5, 1e5, 0x1p290, 1e-150, 1e-300};

@@ -222,22 +222,25 @@ struct PenetrationResult {
   [[nodiscard]] Vec3 translation() const;
 };
 
-/// The exact penetration depth of A and B. First version: the exact GJK
-/// decides intersection; if they intersect, the CVMS sum A + (-B) is built
-/// and the depth is the minimum over its facets of offset^2 / |normal|^2
-/// (the origin is inside, and the distance from an interior point of a convex
-/// polytope to its boundary is the smallest distance to a facet plane; the
-/// proof is in lib/proximity/penetration.cpp), compared exactly. Ties (several
-/// facets at the same depth) go to the lexicographically smallest primitive
-/// normal (x, then y, then z), so the answer does not depend on facet
-/// numbering. The witnesses come from an exact GJK of A against B moved by
-/// the translation (they touch there).
+/// The exact penetration depth of A and B. The exact GJK decides
+/// intersection; if they intersect, an exact EPA (expanding polytope) grows a
+/// polytope inside A + (-B) from support points until every face nearest to
+/// the origin is proved to lie in a facet of A + (-B): the depth is the
+/// distance to that facet plane (the origin is inside, and the distance from
+/// an interior point of a convex polytope to its boundary is the smallest
+/// distance to a facet plane; the proofs are in lib/proximity/epa.cpp),
+/// compared exactly. A + (-B) is never built. Ties (several facets at the
+/// same depth) go to the lexicographically smallest primitive normal (x,
+/// then y, then z), so the answer does not depend on facet numbering; the
+/// EPA finds every tied facet before it answers. The witnesses come from an
+/// exact GJK of A against B moved by the translation (they touch there).
 /// \throw Error(invalid_argument) for an empty operand or, when they
-///   intersect, a placed operand with a singular linear part;
-/// \throw Error(limit) when they intersect and A + (-B) is beyond the
-///   default SumLimits (see minkowski_sum).
+///   intersect, a placed operand with a singular linear part.
 /// Complexity: the distance query when apart; when they intersect, one
-/// Minkowski sum (see minkowski_sum) plus O(F) exact comparisons.
+/// support query of each operand per EPA step (a warm-started walk) and
+/// O(faces of the polytope) exact comparisons per step, plus the witnesses'
+/// distance query. The steps are as many as the vertices of A + (-B) the
+/// polytope needs near the answer, not all of them.
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
 
 /// penetration() on the unmoved polyhedra.
@@ -245,18 +248,18 @@ PenetrationResult penetration(const ConvexPolyhedron& a, const ConvexPolyhedron&
 
 /// The penetration of convex sets of any dimension. When they intersect and
 /// M = A + (-B) is solid (dimension 3: at least one operand is, or two flat
-/// ones span space together), as for polyhedra: the nearest facet of M
-/// (M from minkowski_sum of ConvexSets, cvms/set_sum.hpp). When M is flat
-/// (both operands in parallel planes, or on parallel lines, or points...),
-/// M has no interior: the origin is on its boundary whenever it is in M, so
-/// an intersecting pair has squared_depth 0 and translation() zero (any
-/// small move off M's affine hull separates them). Then offset is 0 and
-/// direction is M's canonical plane normal (ConvexSet::normal()) when M is a
-/// polygon, zero when it is a segment or a point (no single normal); the
-/// witnesses are a common point.
+/// ones span space together), as for polyhedra: the nearest facet of M, by
+/// the same exact EPA. When M is flat (both operands in parallel planes, or
+/// on parallel lines, or points...), M has no interior: the origin is on its
+/// boundary whenever it is in M, so an intersecting pair has squared_depth 0
+/// and translation() zero (any small move off M's affine hull separates
+/// them). Then offset is 0 and direction is M's canonical plane normal
+/// (ConvexSet::normal(), M from minkowski_sum of ConvexSets,
+/// cvms/set_sum.hpp) when M is a polygon, zero when it is a segment or a
+/// point (no single normal); the witnesses are a common point.
 /// \throw Error(invalid_argument) naming the operand (A or B) if one is the
 ///   empty set;
-/// \throw Error(limit) when they intersect and A + (-B) is beyond the
+/// \throw Error(limit) when they intersect, M is flat and beyond the
 ///   default SumLimits.
 PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b);
 

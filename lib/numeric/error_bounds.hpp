@@ -225,4 +225,42 @@ inline double dot_filter_bound(const ApproxVec3& n, double max_abs, double max_e
   return dot_inflation * (max_error * (a + f) + max_abs * f + dot_rounding * max_abs * a) + static_underflow;
 }
 
+// ---- A quotient of two running bounds (the EPA's face distances) -----------
+//
+// For Approx c and n standing for C >= 0 and N > 0, bounds L <= C / N <= H
+// in doubles. Lower: with a = fl(c.value - c.error) > 0 and b =
+// fl(n.value + n.error), (R3) gives C >= a (1 - u) and N <= b (1 + u); for
+// q = fl(a / b) in [2^-1000, max] (normal; else L = 0, an overflow too) (R1) gives a / b
+// >= q / (1 + u), so C / N >= q (1 - u) / (1 + u)^2; and L = fl(q G) <=
+// q G (1 + u) is at most that when G <= (1 - u) / (1 + u)^3, about 1 - 4u.
+// Upper: with A = fl(c.value + c.error) and B = fl(n.value - n.error) > 0
+// (else H is infinite), C <= A (1 + u) and N >= B / (1 + u), and for Q =
+// fl(A / B) (R1, R2) A / B <= Q (1 + u) + 2^-1075, so C / N <= (Q +
+// 2^-1000) (1 + u)^3. H = fl(fl(Q + 2^-1000) G') >= (Q + 2^-1000) G' /
+// (1 + u)^2 by (R4) and (R1), which covers it when G' >= (1 + u)^5. An
+// infinity makes H infinite; a NaN compares false, and the caller treats
+// it as "no bound".
+
+/// G = 1 - 32u and G' = 1 + 32u: the quotient bounds' rounding factors.
+inline constexpr double quotient_shrink = 1.0 - 0x1p-48;
+inline constexpr double quotient_inflation = 1.0 + 0x1p-48;
+/// Quotients below this give the lower bound 0 (no underflow analysis).
+inline constexpr double quotient_floor = 0x1p-1000;
+
+/// The bounds above: low <= C / N <= high.
+struct QuotientBounds {
+  double low = 0.0;
+  double high = std::numeric_limits<double>::infinity();
+};
+
+inline QuotientBounds quotient_bounds(Approx c, Approx n) noexcept {
+  QuotientBounds out;
+  const double a = c.value - c.error;
+  const double q = a / (n.value + n.error);
+  if (a > 0 && q >= quotient_floor && q <= std::numeric_limits<double>::max()) out.low = q * quotient_shrink;
+  const double b = n.value - n.error;
+  if (b > 0) out.high = ((c.value + c.error) / b + quotient_floor) * quotient_inflation;
+  return out;
+}
+
 }  // namespace cvms::filtered

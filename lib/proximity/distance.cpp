@@ -32,7 +32,10 @@ bool intersects(const ConvexSet& a, const ConvexSet& b) {
 namespace detail {
 
 DistanceResult distance_with_offset(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset) {
-  GjkOutcome g = exact_gjk(a, b, GjkGoal::distance, b_offset);
+  return distance_from(exact_gjk(a, b, GjkGoal::distance, b_offset));
+}
+
+DistanceResult distance_from(const GjkOutcome& g) {
   DistanceResult r;
   r.squared_distance = g.squared_norm;
   r.intersect = g.intersect;

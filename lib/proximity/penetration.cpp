@@ -1,120 +1,68 @@
 // SPDX-License-Identifier: MIT
-// penetration(): the exact minimum translation distance, first version on
-// the whole sum M = A + (-B) (CVMS), then a scan of its facets.
-//
-// Claim: for a convex polytope M = {x : <n_f, x> <= c_f for all facets f}
-// containing the origin, the distance from the origin to the boundary of M
-// is min_f c_f / |n_f| (the distance to the nearest facet plane).
-// Proof. (<=) Let f minimise c_f / |n_f| and p = c_f / |n_f|^2 n_f the
-// projection of the origin onto f's plane; |p| = c_f / |n_f|. The segment
-// from 0 to p stays in M: for any facet g, <n_g, t p> = t c_f <n_g, n_f> /
-// |n_f|^2 <= t (c_f / |n_f|) |n_g| <= t c_g for t in [0, 1] (Cauchy-Schwarz,
-// then minimality of f; for <n_g, n_f> <= 0 the left side is <= 0 <= c_g).
-// So p is in M and on f's plane, hence on the boundary: the distance is at
-// most |p|. (>=) Every boundary point q lies on some facet g, <n_g, q> = c_g,
-// so |q| >= c_g / |n_g| >= min_f c_f / |n_f| (Cauchy-Schwarz). []
-// The squared depth is therefore min_f c_f^2 / |n_f|^2, compared exactly
-// (c_f^2 |n_g|^2 against c_g^2 |n_f|^2, all rational); 0 iff some c_f is 0,
-// i.e. the operands only touch. The facet achieving it gives the direction:
-// translating B by t turns M into M - t, which no longer has the origin in
-// its interior iff t is outside the interior of M, and p is the shortest such
-// t. Ties go to the smallest normal in Vec3's lexicographic order, which is
-// independent of how the sum numbers its facets.
-//
-// The witnesses: after moving B by p the operands touch, and the exact GJK
-// of A against the moved B returns a common point x; then x is in A,
-// x - p is in B, and their difference is p.
-//
-// Convex sets of any dimension: M = A + (-B) from the sets layer. If M is
-// solid the claim applies unchanged. If M is flat (dimension <= 2), its
-// interior in space is empty, so every point of M is a boundary point: when
-// the origin is in M the distance to the boundary is 0, and any translation
-// of B off M's affine hull, however small, separates the operands. There is
-// no depth to find; the direction reported is M's canonical plane normal for
-// a polygon (one of the two that leave its plane) and zero for a segment or a
-// point (a whole circle or sphere of directions would do).
+// penetration(): the exact GJK decides whether the operands intersect
+// (gjk.cpp); if they do, its final simplex starts the exact EPA (epa.cpp),
+// which finds the facet of M = A + (-B) nearest to the origin, and every
+// facet tied with it, from support points of M only: M is never built. The
+// answers are those of the whole-sum scan it replaced (penetration_by_sum.cpp,
+// the tests' reference), tie rule included: the smallest primitive normal
+// among the tied facets, so the answer does not depend on how either method
+// numbers facets. The witnesses come from the EPA's polytope too (epa.cpp),
+// so they may differ from the whole-sum version's (a contact is rarely
+// unique); both are a point of A and a point of B whose difference is the
+// translation. Convex sets whose M is flat have no facet: the EPA says so
+// and the whole-sum version gives its answer, which needs only the flat sum.
 #include <optional>
+#include <utility>
 
-#include "cvms/minkowski.hpp"
+#include "cvms/error.hpp"
 #include "cvms/proximity.hpp"
-#include "cvms/set_sum.hpp"
-#include "gjk.hpp"
+#include "epa.hpp"
+#include "penetration_by_sum.hpp"
+#include "penetration_result.hpp"
 #include "query_operands.hpp"
-#include "reflection.hpp"
 
 namespace cvms {
 namespace {
 
-// The facet of m nearest to the origin (assumed inside), by the exact
-// comparison of c_f^2 / |n_f|^2; ties to the smallest normal.
-FaceId nearest_facet(const ConvexPolyhedron& m) {
-  FaceId best;
-  Rational best_num;  // c^2 of the best
-  Rational best_den;  // |n|^2 of the best
-  for (FaceId f : m.mesh().faces()) {
-    const Rational& c = m.plane_offset(f);
-    const Vec3& n = m.normal(f);
-    const Rational num = c * c;
-    const Rational den = dot(n, n);
-    if (best.is_valid()) {
-      const int order = cmp(num * best_den, best_num * den);
-      if (order > 0 || (order == 0 && !(n < m.normal(best)))) continue;
-    }
-    best = f;
-    best_num = num;
-    best_den = den;
-  }
-  return best;
-}
-
-// The answer when they are apart (closest points) or, provisionally, when
-// they intersect (a common point, depth 0, no direction yet).
-PenetrationResult from_distance(const DistanceResult& d) {
+// The exact GJK's outcome and the answer it gives when they are apart (or,
+// provisionally, when they intersect).
+struct Start {
+  detail::GjkOutcome gjk;
   PenetrationResult r;
-  r.intersect = d.intersect;
-  r.direction = Vec3{0, 0, 0};
-  r.witness_a = d.witness_a;
-  r.witness_b = d.witness_b;
-  return r;
+};
+
+Start start(const detail::SupportOperand& a, const detail::SupportOperand& b) {
+  Start s{detail::exact_gjk(a, b, detail::GjkGoal::distance), {}};
+  s.r = detail::penetration_from_distance(detail::distance_from(s.gjk));
+  return s;
 }
 
-// The depth from a solid M = A + (-B) with the origin inside, and the
-// witnesses of the contact after moving B by it.
-void depth_from_sum(const ConvexPolyhedron& m, const detail::SupportOperand& a, const detail::SupportOperand& b,
-                    PenetrationResult& r) {
-  const FaceId f = nearest_facet(m);
-  r.direction = m.normal(f);
-  r.offset = m.plane_offset(f);
-  r.squared_depth = r.offset * r.offset / dot(r.direction, r.direction);
-  const Vec3 t = r.translation();
-  const DistanceResult contact = detail::distance_with_offset(a, b, &t);
-  r.witness_a = contact.witness_a;
-  r.witness_b = contact.witness_b - t;
+void finish(PenetrationResult& r, detail::NearestFacet f) {
+  detail::set_depth(r, std::move(f.direction), std::move(f.offset));
+  r.witness_a = std::move(f.witness_a);
+  r.witness_b = std::move(f.witness_b);
 }
 
-ConvexSet reflected(const ConvexSet& s) {
-  return s.dimension() == 3 ? ConvexSet(detail::reflection(s.polyhedron())) : s.reflected();
+// The moved operand is a polyhedron, as the answer assumes (and as the
+// whole-sum version required when it built it).
+void check_invertible(const PlacedPolyhedron& p) {
+  if (p.is_placed() && sgn(p.linear().determinant()) == 0)
+    throw Error(ErrorCategory::invalid_argument, "penetration: singular linear map in a placement");
 }
 
 }  // namespace
 
-Vec3 PenetrationResult::translation() const {
-  if (is_zero(direction)) return Vec3{0, 0, 0};
-  return (offset / dot(direction, direction)) * direction;
-}
-
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
   detail::check_operands(a, b, "penetration");
-  PenetrationResult r = from_distance(squared_distance(a, b));
-  if (!r.intersect) return r;
-  // The moved operands, built only when a placement asks for it.
-  std::optional<ConvexPolyhedron> moved_a;
-  std::optional<ConvexPolyhedron> moved_b;
-  const ConvexPolyhedron& pa = a.is_placed() ? moved_a.emplace(a.materialized()) : a.polyhedron();
-  const ConvexPolyhedron& pb = b.is_placed() ? moved_b.emplace(b.materialized()) : b.polyhedron();
-  const ConvexPolyhedron m = minkowski_sum(pa, detail::reflection(pb)).polyhedron;
-  depth_from_sum(m, detail::SupportOperand(PlacedPolyhedron(pa)), detail::SupportOperand(PlacedPolyhedron(pb)), r);
-  return r;
+  const detail::SupportOperand sa(a);
+  const detail::SupportOperand sb(b);
+  Start s = start(sa, sb);
+  if (!s.r.intersect) return s.r;
+  check_invertible(a);
+  check_invertible(b);
+  // Both solid, so M is: the EPA answers.
+  finish(s.r, *detail::epa_nearest_facet(sa, sb, s.gjk));
+  return s.r;
 }
 
 PenetrationResult penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
@@ -125,14 +73,12 @@ PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b) {
   detail::check_operands(a, b, "penetration");
   const detail::SupportOperand sa(a);
   const detail::SupportOperand sb(b);
-  PenetrationResult r = from_distance(detail::distance_with_offset(sa, sb, nullptr));
-  if (!r.intersect) return r;
-  const ConvexSet m = minkowski_sum(a, reflected(b));
-  if (m.dimension() == 3)
-    depth_from_sum(m.polyhedron(), sa, sb, r);
-  else if (m.dimension() == 2)
-    r.direction = m.normal();  // flat M: depth and offset stay 0 (the file comment)
-  return r;
+  Start s = start(sa, sb);
+  if (!s.r.intersect) return s.r;
+  std::optional<detail::NearestFacet> f = detail::epa_nearest_facet(sa, sb, s.gjk);
+  if (!f) return detail::penetration_by_sum(a, b);  // flat M
+  finish(s.r, *std::move(f));
+  return s.r;
 }
 
 }  // namespace cvms

@@ -5,6 +5,7 @@
 
 #include "cvms/convex_set.hpp"
 #include "cvms/proximity.hpp"
+#include "gjk.hpp"
 #include "support_operand.hpp"
 
 namespace cvms::detail {
@@ -12,6 +13,10 @@ namespace cvms::detail {
 /// squared_distance with B moved further by *b_offset (if not null), exact;
 /// witness_b includes the offset.
 DistanceResult distance_with_offset(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset);
+
+/// The distance answer of a finished exact_gjk (goal distance): the witnesses
+/// are the simplex's weighted vertices.
+DistanceResult distance_from(const GjkOutcome& g);
 
 /// \throw Error(invalid_argument) naming `who` if an operand is empty.
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who);

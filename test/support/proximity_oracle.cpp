@@ -11,6 +11,7 @@
 #include <optional>
 
 #include <random>
+#include <utility>
 
 #include "cvms/minkowski.hpp"
 #include "support/oracle.hpp"
@@ -160,7 +161,7 @@ const char* placing_name(Placing p) {
 
 }  // namespace
 
-RandomPlacementCheck check_random_placement(std::uint64_t seed) {
+RandomPlacement random_placement(std::uint64_t seed) {
   RandomPair pair = random_pair(seed, 20);
   std::mt19937_64 rng(seed);
   const ConvexPolyhedron m = chms(pair.a, pair.b.reflected());
@@ -168,26 +169,29 @@ RandomPlacementCheck check_random_placement(std::uint64_t seed) {
   for (VertexId v : m.mesh().vertices()) c += m.vertex(v);
   c = Rational(1, m.num_vertices()) * c;  // interior: M is full-dimensional
   const Vec3 q = boundary_point(m, rng);
-  RandomPlacementCheck out;
+  RandomPlacement out;
   out.kind = static_cast<Placing>(rng() % 3);
   const Rational lambda = out.kind == Placing::overlapping ? Rational(static_cast<long>(rng() % 7) + 1, 8)
                           : out.kind == Placing::touching  ? Rational(1)
                                                            : Rational(static_cast<long>(rng() % 16) + 9, 8);
-  const ConvexPolyhedron& a = pair.a;
-  const ConvexPolyhedron b = pair.b.translated(c + lambda * (q - c));
+  out.a = std::move(pair.a);
+  out.b = pair.b.translated(c + lambda * (q - c));
   out.description = pair.description + ", " + placing_name(out.kind);
-  const OriginAndPolytope oracle = proximity_oracle(a, b);
-  if (oracle.inside != (out.kind != Placing::separated)) {
+  out.oracle = proximity_oracle(out.a, out.b);
+  if (out.oracle.inside != (out.kind != Placing::separated))
     out.failure = "the oracle contradicts the construction (inside)";
-    return out;
-  }
-  if (out.kind == Placing::touching && sgn(oracle.boundary_distance2) != 0) {
+  else if (out.kind == Placing::touching && sgn(out.oracle.boundary_distance2) != 0)
     out.failure = "the oracle contradicts the construction (touching)";
-    return out;
-  }
-  out.failure = check_distance(a, b, squared_distance(a, b), oracle);
-  if (out.failure.empty() && intersects(a, b) != oracle.inside) out.failure = "intersects disagrees";
-  if (out.failure.empty()) out.failure = check_penetration(a, b, penetration(a, b), oracle);
+  return out;
+}
+
+RandomPlacementCheck check_random_placement(std::uint64_t seed) {
+  const RandomPlacement p = random_placement(seed);
+  RandomPlacementCheck out{p.kind, p.description, p.failure};
+  if (!out.failure.empty()) return out;
+  out.failure = check_distance(p.a, p.b, squared_distance(p.a, p.b), p.oracle);
+  if (out.failure.empty() && intersects(p.a, p.b) != p.oracle.inside) out.failure = "intersects disagrees";
+  if (out.failure.empty()) out.failure = check_penetration(p.a, p.b, penetration(p.a, p.b), p.oracle);
   return out;
 }
 

@@ -68,13 +68,18 @@ struct RandomPlacementCheck {
   std::string failure;      ///< "" when every query agreed with the oracle
 };
 
-/// A random pair (random_pair(seed, 20)) with B moved by t = c + lambda (q -
-/// c), c an interior point of M = A + (-B) and q a point on its boundary (a
-/// vertex, an edge midpoint or a facet's vertex average): A and B + t overlap
-/// for lambda < 1, touch for lambda = 1 and are apart for lambda > 1 (the
-/// origin is in M - t iff t is in M). Then squared_distance, intersects and
-/// penetration are checked against the oracle, and the oracle against the
-/// construction.
+/// A seeded random pair, placed (see check_random_placement), with its oracle.
+struct RandomPlacement {
+  Placing kind = Placing::overlapping;
+  std::string description;  ///< the pair and the placement
+  ConvexPolyhedron a, b;
+  OriginAndPolytope oracle;
+  std::string failure;  ///< "" unless the oracle contradicts the construction
+};
+
+/// The pair of check_random_placement(seed), not yet queried.
+RandomPlacement random_placement(std::uint64_t seed);
+
 RandomPlacementCheck check_random_placement(std::uint64_t seed);
 
 }  // namespace cvms::test

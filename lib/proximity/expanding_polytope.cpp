@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+// The beneath-beyond step of the exact EPA: conv(P + {x}) for a convex
+// polytope P, triangulated, and a point x outside it.
+//
+// A face is visible from x iff x is strictly beyond its plane (orient3d,
+// filtered). Coplanar triangles of one facet of P share its plane, so
+// visibility is decided per facet, and the facets visible from a point
+// outside a convex polytope form a topological disc whose boundary (the
+// horizon) is one cycle of edges. The boundary of conv(P + {x}) is the
+// union of the faces not visible (x is beneath or on their planes, so they
+// still support the new polytope) and the triangles joining x to the
+// horizon edges. A horizon edge (u, v) bounds a visible face, whose plane
+// holds u and v and has x strictly beyond it, so x is not on the line uv:
+// each new triangle is proper. Orienting it (u, v, x), with (u, v) in the
+// order of the visible face it replaces, keeps it counterclockwise from
+// outside. A face with x on its plane stays: its new neighbour may be
+// coplanar with it, which P allows (its faces are triangles, not facets).
+//
+// Everything is exact: each visibility is a filtered sign on the points; a
+// face's plane and squared distance from the origin are exact (in scaled
+// integers, plane()), computed when the EPA loop needs them, and bounded in
+// doubles before.
+#include "expanding_polytope.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "error_bounds.hpp"
+#include "filtered_arithmetic.hpp"
+#include "filtered_predicates.hpp"
+
+namespace cvms::detail {
+namespace {
+
+Vec3Ref ref(const PolytopePoint& p) { return {p.c, p.approx}; }
+
+}  // namespace
+
+ExpandingPolytope::ExpandingPolytope(std::array<PolytopePoint, 4> points) {
+  points_.assign(std::make_move_iterator(points.begin()), std::make_move_iterator(points.end()));
+  // Each triangle is oriented away from the fourth point.
+  const bool positive =
+      orient3d(ref(points_[0]), ref(points_[1]), ref(points_[2]), ref(points_[3])) == Sign::positive;
+  const std::uint32_t a = positive ? 1 : 2;
+  const std::uint32_t b = positive ? 2 : 1;
+  add_face(0, b, a);
+  add_face(0, 3, b);
+  add_face(0, a, 3);
+  add_face(a, b, 3);
+}
+
+// The bounds of the squared distance, offset^2 / |normal|^2, by the running
+// error analysis (filtered_arithmetic.hpp, error_bounds.hpp): most faces are
+// never near the origin, and the bounds alone show it.
+void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  using filtered::add;
+  using filtered::mul;
+  using filtered::sub;
+  const ApproxVec3& p = points_[i].approx;
+  const ApproxVec3& q = points_[j].approx;
+  const ApproxVec3& r = points_[k].approx;
+  const Approx ux = sub(q.x, p.x), uy = sub(q.y, p.y), uz = sub(q.z, p.z);
+  const Approx vx = sub(r.x, p.x), vy = sub(r.y, p.y), vz = sub(r.z, p.z);
+  const Approx nx = sub(mul(uy, vz), mul(uz, vy));
+  const Approx ny = sub(mul(uz, vx), mul(ux, vz));
+  const Approx nz = sub(mul(ux, vy), mul(uy, vx));
+  const Approx c = add(add(mul(nx, p.x), mul(ny, p.y)), mul(nz, p.z));
+  const Approx n2 = add(add(mul(nx, nx), mul(ny, ny)), mul(nz, nz));
+  const filtered::QuotientBounds d = filtered::quotient_bounds(mul(c, c), n2);
+  PolytopeFace f;
+  f.v = {i, j, k};
+  f.distance_low = d.low;
+  f.distance_high = d.high;
+  faces_.push_back(std::move(f));
+}
+
+PolytopePoint polytope_point(VertexId vertex_a, VertexId vertex_b, Vec3 c) {
+  PolytopePoint p{vertex_a, vertex_b, std::move(c), {}, {}, 1};
+  p.approx = ApproxVec3::of(p.c);
+  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z})
+    mpz_lcm(p.scale.get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
+  int i = 0;
+  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z}) {
+    mpz_divexact(p.scaled[i].get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
+    p.scaled[i] *= x->get_num();
+    ++i;
+  }
+  return p;
+}
+
+int compare_distances(const FacePlane& a, const FacePlane& b) {
+  return cmp(a.distance_num * b.distance_den, b.distance_num * a.distance_den);
+}
+
+namespace {
+
+using Int3 = std::array<mpz_class, 3>;
+
+// s * x - t * y, coordinatewise.
+Int3 scaled_difference(const mpz_class& s, const Int3& x, const mpz_class& t, const Int3& y) {
+  return {s * x[0] - t * y[0], s * x[1] - t * y[1], s * x[2] - t * y[2]};
+}
+
+}  // namespace
+
+// In integers: with p = P / d_p (and q, r alike), q - p = (d_p Q - d_q P) /
+// (d_p d_q) and r - p = (d_p R - d_r P) / (d_p d_r), so n = cross(d_p Q -
+// d_q P, d_p R - d_r P) is cross(q - p, r - p) times d_p^2 d_q d_r > 0; the
+// plane is <n, x> = <n, P> / d_p, at squared distance <n, P>^2 / (d_p^2
+// |n|^2) from the origin. No gcd anywhere.
+const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
+  if (f.plane != PolytopeFace::no_plane) return planes_[f.plane];
+  const PolytopePoint& p = points_[f.v[0]];
+  const PolytopePoint& q = points_[f.v[1]];
+  const PolytopePoint& r = points_[f.v[2]];
+  const Int3 u = scaled_difference(p.scale, q.scaled, q.scale, p.scaled);
+  const Int3 v = scaled_difference(p.scale, r.scaled, r.scale, p.scaled);
+  const Int3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  FacePlane& e = planes_.emplace_back();
+  e.normal = Vec3{Rational(n[0]), Rational(n[1]), Rational(n[2])};
+  e.normal_approx = ApproxVec3::of(e.normal);
+  const mpz_class offset = n[0] * p.scaled[0] + n[1] * p.scaled[1] + n[2] * p.scaled[2];
+  e.distance_num = offset * offset;
+  e.distance_den = p.scale * p.scale * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  f.plane = static_cast<std::uint32_t>(planes_.size() - 1);
+  return e;
+}
+
+bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) const {
+  return orient3d(ref(points_[f.v[0]]), ref(points_[f.v[1]]), ref(points_[f.v[2]]), ref(x)) == Sign::positive;
+}
+
+void ExpandingPolytope::add(PolytopePoint x) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges;
+  std::vector<PolytopeFace> kept;
+  kept.reserve(faces_.size() + 8);
+  for (PolytopeFace& f : faces_) {
+    if (!sees(f, x)) {
+      kept.push_back(std::move(f));
+      continue;
+    }
+    for (int e = 0; e < 3; ++e) visible_edges.emplace_back(f.v[e], f.v[(e + 1) % 3]);
+  }
+  faces_ = std::move(kept);
+  const auto n = static_cast<std::uint32_t>(points_.size());
+  points_.push_back(std::move(x));
+  // A visible edge is on the horizon iff its twin is not visible too.
+  for (const auto& [u, v] : visible_edges)
+    if (std::find(visible_edges.begin(), visible_edges.end(), std::pair{v, u}) == visible_edges.end())
+      add_face(u, v, n);
+}
+
+}  // namespace cvms::detail
