@@ -16,32 +16,13 @@
 #include <string>
 #include <vector>
 
+#include "support/linear_solve.hpp"
+
 namespace cvms {
 namespace {
 
 using Rng = std::mt19937_64;
 using detail::LpRow;
-
-// Solves the square system m x = r (size n <= 4) by Gaussian elimination,
-// nothing if m is singular.
-std::optional<std::vector<Rational>> solve(std::vector<std::vector<Rational>> m, std::vector<Rational> r) {
-  const std::size_t n = r.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t p = c;
-    while (p < n && m[p][c] == 0) ++p;
-    if (p == n) return std::nullopt;
-    std::swap(m[p], m[c]);
-    std::swap(r[p], r[c]);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i == c || m[i][c] == 0) continue;
-      const Rational f = m[i][c] / m[c][c];
-      for (std::size_t j = c; j < n; ++j) m[i][j] -= f * m[c][j];
-      r[i] -= f * r[c];
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) r[i] /= m[i][i];
-  return r;
-}
 
 // max t over the feasible basic solutions of (u, t) with rows plus t <= 1;
 // nothing if the normals do not span R^d (then there is no basic solution).
@@ -62,7 +43,7 @@ std::optional<Rational> brute_force_slack(const std::vector<LpRow>& rows, std::s
         a.push_back(row);
         b.push_back(all[i].b);
       }
-      const std::optional<std::vector<Rational>> x = solve(a, b);
+      const std::optional<std::vector<Rational>> x = test::solve_linear(a, b);
       if (!x) return;
       for (const LpRow& r : all) {
         Rational lhs = (*x)[d];
