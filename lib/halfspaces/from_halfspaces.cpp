@@ -56,14 +56,17 @@ Vec3 direction_to_space(const Chart& chart, const std::vector<Rational>& u) {
 // makes the result empty (false) when it fails.
 bool rows_in_chart(std::span<const HalfspaceRow> rows, const Chart& chart, std::vector<detail::LpRow>& out) {
   out.clear();
+  // A chart of dimension 3 is the identity (whole_space; restrict_chart
+  // drops an axis), so its rows are the given ones, with no products.
+  const bool identity = chart.axes.size() == 3;
   for (const HalfspaceRow& row : rows) {
     detail::LpRow r;
     bool zero = true;
-    for (const Vec3& axis : chart.axes) {
-      r.a.push_back(dot(row.normal, axis));
+    for (std::size_t k = 0; k < chart.axes.size(); ++k) {
+      r.a.push_back(identity ? row.normal[static_cast<int>(k)] : dot(row.normal, chart.axes[k]));
       zero = zero && sgn(r.a.back()) == 0;
     }
-    r.b = row.offset - dot(row.normal, chart.origin);
+    r.b = identity ? row.offset : row.offset - dot(row.normal, chart.origin);
     if (zero) {
       if (sgn(r.b) < 0) return false;
       continue;
