@@ -53,7 +53,7 @@ Vec3 standing_for(const HomogeneousPoint& p) {
 }
 
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>* source_index) {
+                             std::vector<std::uint32_t>& source_index) {
   const Approximation approx = approximate(points);
   const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     return homogeneous_orient3d(points[a], points[b], points[c], points[d]);

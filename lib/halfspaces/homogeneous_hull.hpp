@@ -20,12 +20,13 @@ namespace cvms::detail {
 Vec3 standing_for(const HomogeneousPoint& p);
 
 /// hull_soup of the points the homogeneous points stand for, with the same
-/// decisions (hence the same soup) as on those rational points; exact(i)
-/// makes point i's rational value, for the few other exact decisions and
-/// the soup's points.
+/// decisions (hence the same faces) as on those rational points, but no
+/// soup points: source_index maps each face index to its input point.
+/// exact(i) makes point i's rational value, for the few other exact
+/// decisions.
 /// \pre exact(i) == standing_for(points[i]).
 /// \throw Error(degenerate) as hull_soup.
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>* source_index);
+                             std::vector<std::uint32_t>& source_index);
 
 }  // namespace cvms::detail

@@ -45,7 +45,7 @@ std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, con
   std::vector<std::uint32_t> row_of;
   try {
     soup = homogeneous_hull(
-        dual.points, [&](std::uint32_t i) { return standing_for(dual.points[i]); }, &row_of);
+        dual.points, [&](std::uint32_t i) { return standing_for(dual.points[i]); }, row_of);
   } catch (const Error& e) {
     // Dual points that do not span 3D: the origin is not interior to their
     // hull, so the set is unbounded.

@@ -50,7 +50,9 @@ void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
 ConvexPolyhedron intersection_polyhedron(const DualVertices& v) {
   std::vector<std::uint32_t> vertex_of;
   PolygonSoup soup = homogeneous_hull(
-      v.cramer, [&](std::uint32_t i) { return v.vertices[i]; }, &vertex_of);
+      v.cramer, [&](std::uint32_t i) { return v.vertices[i]; }, vertex_of);
+  soup.points.reserve(vertex_of.size());
+  for (std::uint32_t i : vertex_of) soup.points.push_back(v.vertices[i]);
   FacetPlanes planes;
   std::vector<std::uint32_t> corners;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {

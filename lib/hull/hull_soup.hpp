@@ -53,11 +53,11 @@ PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t
 using ExactOrient = std::function<Sign(std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t)>;
 /// The same, with every orient3d that the filters leave undecided answered
 /// by `orient` instead of by the exact points (from_halfspaces' dual points
-/// have an integer predicate that needs no rational). points.exact is still
-/// used for the few other exact decisions (the initial simplex, ties of the
-/// farthest point) and for the soup's points.
+/// have an integer predicate that needs no rational), and the soup's points
+/// left empty: the caller knows them by index, from source_index, and
+/// builds only those it needs. points.exact is still used for the few other
+/// exact decisions (the initial simplex, ties of the farthest point).
 /// \pre orient agrees with orient3d of points.exact.
-PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient,
-                      std::vector<std::uint32_t>* source_index = nullptr);
+PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>& source_index);
 
 }  // namespace cvms

@@ -123,7 +123,10 @@ class Quickhull {
   // Approximations only (double input is exact, with error 0): only the
   // points that an exact fallback or the output needs become rationals.
   explicit Quickhull(const ApproximatePoints& points, ExactOrient orient = {})
-      : coords_(points.approx), make_exact_(points.exact), exact_orient_(std::move(orient)) {
+      : coords_(points.approx),
+        make_exact_(points.exact),
+        exact_orient_(std::move(orient)),
+        copy_points_(!exact_orient_) {
     n_ = checked_size(coords_.size());
     double max_abs = 0;
     for (const Coords& c : coords_)
@@ -644,8 +647,10 @@ class Quickhull {
     }
     // Copied once, in order of first use (growing a vector of rationals
     // would copy them on every reallocation).
-    soup.points.reserve(extreme_points.size());
-    for (std::uint32_t q : extreme_points) soup.points.push_back(exact(q));
+    if (copy_points_) {
+      soup.points.reserve(extreme_points.size());
+      for (std::uint32_t q : extreme_points) soup.points.push_back(exact(q));
+    }
     if (source_index) *source_index = std::move(extreme_points);
     return soup;
   }
@@ -663,6 +668,7 @@ class Quickhull {
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
   ExactOrient exact_orient_;  // the caller's exact orient3d, if any
+  bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
   std::vector<PlaneFilter> planes_;    // per triangle slot
   std::vector<double> far_value_;
@@ -712,9 +718,9 @@ PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t
   return qh.run(source_index);
 }
 
-PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>* source_index) {
+PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>& source_index) {
   Quickhull qh(points, std::move(orient));
-  return qh.run(source_index);
+  return qh.run(&source_index);
 }
 
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {
