@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "nearest_on_simplex.hpp"
+#include "support/linear_solve.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -22,26 +23,6 @@ struct Projection {
   Rational norm;
   std::uint32_t mask = 0;
 };
-
-// Gaussian elimination on a k x k rational system; nullopt if singular.
-std::optional<std::vector<Rational>> solve(std::vector<std::vector<Rational>> g, std::vector<Rational> r) {
-  const std::size_t k = r.size();
-  for (std::size_t c = 0; c < k; ++c) {
-    std::size_t pivot = c;
-    while (pivot < k && g[pivot][c] == 0) ++pivot;
-    if (pivot == k) return std::nullopt;
-    std::swap(g[c], g[pivot]);
-    std::swap(r[c], r[pivot]);
-    for (std::size_t i = 0; i < k; ++i) {
-      if (i == c || g[i][c] == 0) continue;
-      const Rational f = g[i][c] / g[c][c];
-      for (std::size_t j = c; j < k; ++j) g[i][j] -= f * g[c][j];
-      r[i] -= f * r[c];
-    }
-  }
-  for (std::size_t i = 0; i < k; ++i) r[i] /= g[i][i];
-  return r;
-}
 
 // The nearest point of conv(points) to the origin, by brute force over subsets.
 Projection brute_force(const std::vector<Vec3>& p) {
@@ -57,7 +38,7 @@ Projection brute_force(const std::vector<Vec3>& p) {
       for (std::size_t j = 0; j < k; ++j) g[i][j] = dot(s[i + 1] - s[0], s[j + 1] - s[0]);
       r[i] = -dot(s[i + 1] - s[0], s[0]);
     }
-    const auto mu = solve(g, r);
+    const auto mu = test::solve_linear(g, r);
     if (!mu) continue;
     Rational first = 1;
     Vec3 x = s[0];
@@ -117,7 +98,7 @@ TEST(ProximityNearestOnSimplex, AgreesWithBruteForce) {
       std::vector<Rational> r(count - 1);
       for (int i = 0; i + 1 < count; ++i)
         for (int j = 0; j + 1 < count; ++j) g[i][j] = dot(pts[i + 1] - pts[0], pts[j + 1] - pts[0]);
-      independent = count == 1 || solve(g, r).has_value();
+      independent = count == 1 || test::solve_linear(g, r).has_value();
     }
     if (!independent) continue;
     std::array<Vec3, 4> in;

@@ -11,6 +11,13 @@
 // facets n·q <= c of Q (c > 0), and a row is irredundant iff its q is a
 // vertex of Q. A facet (or the plane of a flat Q) with c <= 0 gives n with
 // q_i·n <= 0 for all i: the direction of unboundedness.
+//
+// In three dimensions a bounded set takes the integer path
+// (integer_dual_hull.hpp, intersection_polyhedron.hpp): the same hull,
+// decided on homogeneous integer dual points, its vertices by Cramer's rule
+// from three tight rows, their hull decided on the Cramer numerators and its
+// planes read off the rows. The rational dual hull below runs only for an
+// unbounded set (to name the same direction as always) and in the plane.
 #include "cvms/halfspaces.hpp"
 
 #include <string>
@@ -18,6 +25,7 @@
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
+#include "intersection_polyhedron.hpp"
 #include "max_slack_lp.hpp"
 
 namespace cvms {
@@ -48,14 +56,17 @@ Vec3 direction_to_space(const Chart& chart, const std::vector<Rational>& u) {
 // makes the result empty (false) when it fails.
 bool rows_in_chart(std::span<const HalfspaceRow> rows, const Chart& chart, std::vector<detail::LpRow>& out) {
   out.clear();
+  // A chart of dimension 3 is the identity (whole_space; restrict_chart
+  // drops an axis), so its rows are the given ones, with no products.
+  const bool identity = chart.axes.size() == 3;
   for (const HalfspaceRow& row : rows) {
     detail::LpRow r;
     bool zero = true;
-    for (const Vec3& axis : chart.axes) {
-      r.a.push_back(dot(row.normal, axis));
+    for (std::size_t k = 0; k < chart.axes.size(); ++k) {
+      r.a.push_back(identity ? row.normal[static_cast<int>(k)] : dot(row.normal, chart.axes[k]));
       zero = zero && sgn(r.a.back()) == 0;
     }
-    r.b = row.offset - dot(row.normal, chart.origin);
+    r.b = identity ? row.offset : row.offset - dot(row.normal, chart.origin);
     if (zero) {
       if (sgn(r.b) < 0) return false;
       continue;
@@ -184,6 +195,11 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
     if (sgn(lp.slack) == 0) {
       chart = restrict_chart(chart, rows[lp.tight.front()]);
       continue;
+    }
+    // A chart of dimension 3 is all of space (restrict_chart drops an axis).
+    if (dimension == 3) {
+      if (const std::optional<detail::DualVertices> v = detail::bounded_vertices(rows, lp.point))
+        return {ConvexSet(detail::intersection_polyhedron(*v)), std::nullopt};
     }
     const DualAnswer dual = dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension);
     if (dual.unbounded) return {ConvexSet(), direction_to_space(chart, chart_vector(*dual.unbounded, dimension))};

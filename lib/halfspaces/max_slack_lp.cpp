@@ -1,18 +1,34 @@
 // SPDX-License-Identifier: MIT
-// The max-slack LP of max_slack_lp.hpp by the dictionary form of the simplex
-// method (Chvátal, "Linear Programming", ch. 2-3) in exact rationals.
+// The max-slack LP of max_slack_lp.hpp by the simplex method in dictionary
+// form (Chvátal, "Linear Programming", ch. 2-3) in exact arithmetic,
+// revised so that a pivot costs O(d) integer products per row instead of
+// 2d + 1 rational updates.
 //
 // Shape: the free unknowns are split, u = p − q with p, q >= 0, and the
 // slack is shifted, t = t' − M with M = max(0, −min b_i), so that every
 // right-hand side b_i + M (and the bound 1 + M on t') is >= 0 and the origin
 // is a feasible basis: one phase suffices. Bland's rule (smallest index
 // enters and leaves) excludes cycling, so the method terminates; the
-// objective t' is bounded by 1 + M, so it ends at an optimum. The dictionary
-// has one row per constraint and only 2d + 1 <= 7 columns, so a pivot costs
-// O(7 m) rational operations.
+// objective t' is bounded by 1 + M, so it ends at an optimum.
+//
+// Revision: the dictionary of a basis is unique, so any way of computing
+// its entries takes the same pivots. The 2d + 1 structural variables
+// (p, q, t') and the objective keep full rows; the row of a basic slack
+// w_i = (b_i + M) − a_i·(p − q) − t' is never stored but read off its
+// definition with the structural rows substituted: its entry in column e is
+// a_i·(D_q − D_p) − D_t and its constant (b_i + M) + a_i·(C_q − C_p) − C_t,
+// D_s and C_s the column-e entry and the constant of x_s in the dictionary
+// (a unit or zero column for a nonbasic x_s). The ratio test needs only
+// those two numbers per row and compares the ratios constant / −entry,
+// which a positive factor per row does not change: each row is scaled to
+// integers once (L_i > 0), the vectors D_q − D_p, C_q − C_p are put over
+// one denominator each per pivot, and the ratios are compared by cross
+// multiplication, so the scan builds no rational.
 #include "max_slack_lp.hpp"
 
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace cvms::detail {
 
@@ -20,100 +36,221 @@ namespace {
 
 constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
 
-// basic_k = constant + sum_j coef[j] * nonbasic_j, for every basic variable.
-struct Dictionary {
-  std::vector<Rational> constant;
-  std::vector<std::vector<Rational>> coef;
-  std::vector<std::size_t> basic;     // variable index of each row
-  std::vector<std::size_t> nonbasic;  // variable index of each column
-  Rational objective;                 // the objective's constant
-  std::vector<Rational> objective_coef;
+// x_basic = constant + sum_j coef[j] * (the variable of column j).
+struct Row {
+  Rational constant;
+  std::vector<Rational> coef;
+};
+
+// Constraint i scaled by L_i > 0 to integers: L_i w_i = b − a·(p − q) − t t'.
+struct IntegerConstraint {
+  std::vector<mpz_class> a;
+  mpz_class t, b;
 };
 
 // Variables: p_0..p_{d-1}, q_0..q_{d-1}, t' (structural), then one slack
-// per constraint row (the last constraint is t' <= 1 + M).
-Dictionary initial_dictionary(const std::vector<LpRow>& rows, int d, const Rational& shift) {
-  const std::size_t columns = 2 * static_cast<std::size_t>(d) + 1;
-  Dictionary dict;
-  for (std::size_t j = 0; j < columns; ++j) dict.nonbasic.push_back(j);
-  dict.objective_coef.assign(columns, Rational(0));
-  dict.objective_coef[columns - 1] = 1;
-  for (std::size_t i = 0; i <= rows.size(); ++i) {
-    std::vector<Rational> coef(columns, Rational(0));
-    if (i < rows.size()) {
-      for (int k = 0; k < d; ++k) {
-        coef[static_cast<std::size_t>(k)] = -rows[i].a[static_cast<std::size_t>(k)];
-        coef[static_cast<std::size_t>(d + k)] = rows[i].a[static_cast<std::size_t>(k)];
+// per constraint (the last constraint is t' <= 1 + M, with a == 0).
+class Simplex {
+ public:
+  Simplex(const std::vector<LpRow>& rows, int d, const Rational& shift)
+      : d_(static_cast<std::size_t>(d)), columns_(2 * d_ + 1), rows_(rows), shift_(shift) {
+    for (std::size_t j = 0; j < columns_; ++j) nonbasic_.push_back(j);
+    column_of_.assign(columns_ + rows.size() + 1, none);
+    for (std::size_t j = 0; j < columns_; ++j) column_of_[j] = j;
+    structural_.resize(columns_);
+    objective_.coef.assign(columns_, Rational(0));
+    objective_.coef[columns_ - 1] = 1;
+    for (std::size_t i = 0; i <= rows.size(); ++i) integer_.push_back(integer_constraint(i));
+  }
+
+  void run() {
+    for (std::size_t column; (column = entering_column()) != none;) pivot(leaving_variable(column), column);
+  }
+
+  MaxSlack result() const {
+    MaxSlack result;
+    result.slack = objective_.constant - shift_;
+    for (std::size_t k = 0; k < d_; ++k) result.point.push_back(value(k) - value(d_ + k));
+    for (std::size_t j = 0; j < columns_; ++j) {
+      const std::size_t var = nonbasic_[j];
+      if (var >= columns_ && var - columns_ < rows_.size() && sgn(objective_.coef[j]) < 0)
+        result.tight.push_back(var - columns_);
+    }
+    return result;
+  }
+
+ private:
+  // The constraint's a_k (zero for the bound on t') and b + M.
+  const Rational* a(std::size_t i, std::size_t k) const { return i < rows_.size() ? &rows_[i].a[k] : nullptr; }
+  Rational right_side(std::size_t i) const { return (i < rows_.size() ? rows_[i].b : Rational(1)) + shift_; }
+
+  IntegerConstraint integer_constraint(std::size_t i) const {
+    mpz_class l = 1;
+    const Rational b = right_side(i);
+    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), b.get_den_mpz_t());
+    for (std::size_t k = 0; k < d_; ++k)
+      if (const Rational* ak = a(i, k)) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), ak->get_den_mpz_t());
+    IntegerConstraint c{{}, l, mpz_class(b * l)};
+    for (std::size_t k = 0; k < d_; ++k) c.a.push_back(a(i, k) ? mpz_class(*a(i, k) * l) : mpz_class(0));
+    return c;
+  }
+
+  // The column-j entry (or, for j == none, the constant) of structural x_s.
+  Rational structural_entry(std::size_t s, std::size_t j) const {
+    if (structural_[s]) return j == none ? structural_[s]->constant : structural_[s]->coef[j];
+    return Rational(j != none && column_of_[s] == j ? 1 : 0);
+  }
+
+  // a_i·(x_q − x_p) − x_t' for the entries of column j (or the constants):
+  // the vector D_q − D_p and the scalar −D_t'.
+  void slack_terms(std::size_t j, std::vector<Rational>& u, Rational& u0) const {
+    u.resize(d_);
+    for (std::size_t k = 0; k < d_; ++k) u[k] = structural_entry(d_ + k, j) - structural_entry(k, j);
+    u0 = -structural_entry(2 * d_, j);
+  }
+
+  // The full dictionary row of the basic variable var.
+  Row row_of(std::size_t var) const {
+    if (var < columns_) return *structural_[var];
+    const std::size_t i = var - columns_;
+    std::vector<Rational> u;
+    Rational u0;
+    Row r;
+    for (std::size_t j = 0; j <= columns_; ++j) {
+      const std::size_t column = j == columns_ ? none : j;
+      slack_terms(column, u, u0);
+      Rational v = column == none ? right_side(i) + u0 : u0;
+      for (std::size_t k = 0; k < d_; ++k)
+        if (const Rational* ak = a(i, k)) v += *ak * u[k];
+      if (column == none)
+        r.constant = std::move(v);
+      else
+        r.coef.push_back(std::move(v));
+    }
+    return r;
+  }
+
+  Rational value(std::size_t var) const { return structural_[var] ? structural_[var]->constant : Rational(0); }
+
+  // Bland: the entering column with a positive objective coefficient whose
+  // variable index is smallest; none at an optimum.
+  std::size_t entering_column() const {
+    std::size_t best = none;
+    for (std::size_t j = 0; j < columns_; ++j)
+      if (sgn(objective_.coef[j]) > 0 && (best == none || nonbasic_[j] < nonbasic_[best])) best = j;
+    return best;
+  }
+
+  // Bland: among the basic variables that limit column j's most, the one
+  // with the smallest index.
+  std::size_t leaving_variable(std::size_t column) const {
+    std::size_t best = none;
+    Rational best_ratio;
+    auto consider = [&](std::size_t var, Rational ratio) {
+      if (best == none || ratio < best_ratio || (ratio == best_ratio && var < best)) {
+        best = var;
+        best_ratio = std::move(ratio);
       }
-      dict.constant.push_back(rows[i].b + shift);
-    } else {
-      dict.constant.push_back(1 + shift);
-    }
-    coef[columns - 1] = -1;
-    dict.coef.push_back(std::move(coef));
-    dict.basic.push_back(columns + i);
+    };
+    for (std::size_t s = 0; s < columns_; ++s)
+      if (structural_[s] && sgn(structural_[s]->coef[column]) < 0)
+        consider(s, structural_[s]->constant / -structural_[s]->coef[column]);
+    if (const std::optional<std::pair<std::size_t, Rational>> slack = limiting_slack(column))
+      consider(slack->first, slack->second);
+    return best;
   }
-  return dict;
-}
 
-// Bland: the entering column with a positive objective coefficient whose
-// variable index is smallest; none at an optimum.
-std::size_t entering_column(const Dictionary& dict) {
-  std::size_t best = none;
-  for (std::size_t j = 0; j < dict.nonbasic.size(); ++j) {
-    if (sgn(dict.objective_coef[j]) > 0 && (best == none || dict.nonbasic[j] < dict.nonbasic[best])) best = j;
-  }
-  return best;
-}
-
-// Bland: among the rows that limit the entering variable most, the one whose
-// basic variable index is smallest.
-std::size_t leaving_row(const Dictionary& dict, std::size_t column) {
-  std::size_t best = none;
-  Rational best_ratio;
-  for (std::size_t i = 0; i < dict.basic.size(); ++i) {
-    if (sgn(dict.coef[i][column]) >= 0) continue;
-    Rational ratio = dict.constant[i] / -dict.coef[i][column];
-    if (best == none || ratio < best_ratio || (ratio == best_ratio && dict.basic[i] < dict.basic[best])) {
+  // The basic slack that limits column j most (smallest index on ties),
+  // with its ratio.
+  std::optional<std::pair<std::size_t, Rational>> limiting_slack(std::size_t column) const {
+    const Over entry = over_one_denominator(column), constant = over_one_denominator(none);
+    std::size_t best = none;
+    mpz_class n, k, best_n, best_k, lhs, rhs;
+    for (std::size_t i = 0; i < integer_.size(); ++i) {
+      if (column_of_[columns_ + i] != none) continue;  // nonbasic
+      const IntegerConstraint& c = integer_[i];
+      // L_i * entry * entry.den and L_i * constant * constant.den.
+      n = c.t * entry.scalar;
+      k = c.b * constant.den + c.t * constant.scalar;
+      for (std::size_t m = 0; m < d_; ++m) {
+        mpz_addmul(n.get_mpz_t(), c.a[m].get_mpz_t(), entry.vector[m].get_mpz_t());
+        mpz_addmul(k.get_mpz_t(), c.a[m].get_mpz_t(), constant.vector[m].get_mpz_t());
+      }
+      if (sgn(n) >= 0) continue;
+      // k / −n < best_k / −best_n, both denominators positive.
+      if (best != none) {
+        lhs = k * best_n;
+        rhs = best_k * n;
+        if (lhs <= rhs) continue;  // not smaller (the earlier index wins ties)
+      }
       best = i;
-      best_ratio = std::move(ratio);
+      best_n = n;
+      best_k = k;
     }
+    if (best == none) return std::nullopt;
+    Rational ratio(mpz_class(best_k * entry.den), mpz_class(-best_n * constant.den));
+    ratio.canonicalize();
+    return std::pair{columns_ + best, std::move(ratio)};
   }
-  return best;
-}
 
-void substitute(std::vector<Rational>& coef, Rational& constant, const std::vector<Rational>& pivot_coef,
-                const Rational& pivot_constant, std::size_t column) {
-  const Rational factor = coef[column];
-  if (sgn(factor) == 0) return;
-  constant += factor * pivot_constant;
-  for (std::size_t j = 0; j < coef.size(); ++j) {
-    if (j == column) {
-      coef[j] = factor * pivot_coef[j];
-    } else {
-      coef[j] += factor * pivot_coef[j];
-    }
+  // The slack terms of column j (or of the constants) over one positive
+  // denominator: vector == den * (D_q − D_p), scalar == den * (−D_t').
+  struct Over {
+    std::vector<mpz_class> vector;
+    mpz_class scalar, den;
+  };
+  Over over_one_denominator(std::size_t j) const {
+    std::vector<Rational> u;
+    Rational u0;
+    slack_terms(j, u, u0);
+    Over o{{}, 0, 1};
+    mpz_lcm(o.den.get_mpz_t(), o.den.get_mpz_t(), u0.get_den_mpz_t());
+    for (const Rational& v : u) mpz_lcm(o.den.get_mpz_t(), o.den.get_mpz_t(), v.get_den_mpz_t());
+    for (const Rational& v : u) o.vector.push_back(mpz_class(v * o.den));
+    o.scalar = mpz_class(u0 * o.den);
+    return o;
   }
-}
 
-void pivot(Dictionary& dict, std::size_t row, std::size_t column) {
-  std::vector<Rational>& r = dict.coef[row];
-  const Rational inverse = 1 / r[column];
-  // Solve the pivot row for the entering variable.
-  dict.constant[row] = -dict.constant[row] * inverse;
-  for (std::size_t j = 0; j < r.size(); ++j) {
-    if (j == column) {
-      r[j] = inverse;
-    } else {
-      r[j] = -r[j] * inverse;
+  static void substitute(Row& row, const Row& pivot_row, std::size_t column) {
+    const Rational factor = row.coef[column];
+    if (sgn(factor) == 0) return;
+    row.constant += factor * pivot_row.constant;
+    for (std::size_t j = 0; j < row.coef.size(); ++j) {
+      if (j == column) {
+        row.coef[j] = factor * pivot_row.coef[j];
+      } else {
+        row.coef[j] += factor * pivot_row.coef[j];
+      }
     }
   }
-  for (std::size_t i = 0; i < dict.basic.size(); ++i) {
-    if (i != row) substitute(dict.coef[i], dict.constant[i], r, dict.constant[row], column);
+
+  void pivot(std::size_t leaving, std::size_t column) {
+    // Solve the leaving variable's row for the entering variable, whose
+    // column then stands for the leaving one.
+    Row r = row_of(leaving);
+    const Rational inverse = 1 / r.coef[column];
+    r.constant = -r.constant * inverse;
+    for (std::size_t j = 0; j < columns_; ++j) r.coef[j] = j == column ? inverse : -r.coef[j] * inverse;
+    const std::size_t entering = nonbasic_[column];
+    if (leaving < columns_) structural_[leaving].reset();
+    for (std::optional<Row>& s : structural_)
+      if (s) substitute(*s, r, column);
+    substitute(objective_, r, column);
+    if (entering < columns_) structural_[entering] = std::move(r);
+    nonbasic_[column] = leaving;
+    column_of_[leaving] = column;
+    column_of_[entering] = none;
   }
-  substitute(dict.objective_coef, dict.objective, r, dict.constant[row], column);
-  std::swap(dict.basic[row], dict.nonbasic[column]);
-}
+
+  std::size_t d_, columns_;
+  const std::vector<LpRow>& rows_;
+  Rational shift_;
+  std::vector<std::size_t> nonbasic_;            // variable of each column
+  std::vector<std::size_t> column_of_;           // column of each variable, none if basic
+  std::vector<std::optional<Row>> structural_;   // rows of the basic structural variables
+  Row objective_;
+  std::vector<IntegerConstraint> integer_;
+};
 
 }  // namespace
 
@@ -122,24 +259,9 @@ MaxSlack max_slack(const std::vector<LpRow>& rows, int dimension) {
   for (const LpRow& row : rows) {
     if (row.b < -shift) shift = -row.b;
   }
-  Dictionary dict = initial_dictionary(rows, dimension, shift);
-  for (std::size_t column; (column = entering_column(dict)) != none;) {
-    pivot(dict, leaving_row(dict, column), column);  // bounded: a row always limits
-  }
-  MaxSlack result;
-  result.slack = dict.objective - shift;
-  const auto d = static_cast<std::size_t>(dimension);
-  std::vector<Rational> value(2 * d + 1 + dict.basic.size(), Rational(0));
-  for (std::size_t i = 0; i < dict.basic.size(); ++i) value[dict.basic[i]] = dict.constant[i];
-  for (std::size_t k = 0; k < d; ++k) result.point.push_back(value[k] - value[d + k]);
-  const std::size_t first_slack = 2 * d + 1;
-  for (std::size_t j = 0; j < dict.nonbasic.size(); ++j) {
-    const std::size_t var = dict.nonbasic[j];
-    if (var >= first_slack && var - first_slack < rows.size() && sgn(dict.objective_coef[j]) < 0) {
-      result.tight.push_back(var - first_slack);
-    }
-  }
-  return result;
+  Simplex simplex(rows, dimension, shift);
+  simplex.run();
+  return simplex.result();
 }
 
 }  // namespace cvms::detail

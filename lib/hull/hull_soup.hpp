@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cvms/polygon_soup.hpp"
+#include "cvms/sign.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms {
@@ -46,5 +47,17 @@ struct ApproximatePoints {
 };
 /// The same for points known by approximations.
 PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index = nullptr);
+
+/// The sign of orient3d (predicates.hpp) of the exact input points with the
+/// given indices.
+using ExactOrient = std::function<Sign(std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t)>;
+/// The same, with every orient3d that the filters leave undecided answered
+/// by `orient` instead of by the exact points (from_halfspaces' dual points
+/// have an integer predicate that needs no rational), and the soup's points
+/// left empty: the caller knows them by index, from source_index, and
+/// builds only those it needs. points.exact is still used for the few other
+/// exact decisions (the initial simplex, ties of the farthest point).
+/// \pre orient agrees with orient3d of points.exact.
+PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>& source_index);
 
 }  // namespace cvms

@@ -122,7 +122,11 @@ class Quickhull {
 
   // Approximations only (double input is exact, with error 0): only the
   // points that an exact fallback or the output needs become rationals.
-  explicit Quickhull(const ApproximatePoints& points) : coords_(points.approx), make_exact_(points.exact) {
+  explicit Quickhull(const ApproximatePoints& points, ExactOrient orient = {})
+      : coords_(points.approx),
+        make_exact_(points.exact),
+        exact_orient_(std::move(orient)),
+        copy_points_(!exact_orient_) {
     n_ = checked_size(coords_.size());
     double max_abs = 0;
     for (const Coords& c : coords_)
@@ -190,9 +194,11 @@ class Quickhull {
     return exact_orient(a, b, c, d);
   }
 
-  // orient3d decided exactly: in integers when the coordinates are dyadic
-  // (doubles, sums of doubles), else by the predicates module.
+  // orient3d decided exactly: by the caller's predicate when it gave one, in
+  // integers when the coordinates are dyadic (doubles, sums of doubles), else
+  // by the predicates module.
   [[nodiscard]] Sign exact_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    if (exact_orient_) return exact_orient_(a, b, c, d);
     const Vec3Ref ra = ref(a), rb = ref(b), rc = ref(c), rd = ref(d);
     if (const std::optional<Sign> s = dyadic_orient3d(ra.exact, rb.exact, rc.exact, rd.exact)) {
       ++predicate_counters().exact;
@@ -641,8 +647,10 @@ class Quickhull {
     }
     // Copied once, in order of first use (growing a vector of rationals
     // would copy them on every reallocation).
-    soup.points.reserve(extreme_points.size());
-    for (std::uint32_t q : extreme_points) soup.points.push_back(exact(q));
+    if (copy_points_) {
+      soup.points.reserve(extreme_points.size());
+      for (std::uint32_t q : extreme_points) soup.points.push_back(exact(q));
+    }
     if (source_index) *source_index = std::move(extreme_points);
     return soup;
   }
@@ -659,6 +667,8 @@ class Quickhull {
   std::vector<std::uint32_t> lazy_;
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
+  ExactOrient exact_orient_;  // the caller's exact orient3d, if any
+  bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
   std::vector<PlaneFilter> planes_;    // per triangle slot
   std::vector<double> far_value_;
@@ -706,6 +716,11 @@ PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
 PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index) {
   Quickhull qh(points);
   return qh.run(source_index);
+}
+
+PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>& source_index) {
+  Quickhull qh(points, std::move(orient));
+  return qh.run(&source_index);
 }
 
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Building the homogeneous dual points of homogeneous_dual.hpp: each row is
+// multiplied by the lcm of its denominators and divided by the gcd of its
+// numerators (a positive factor either way), and x0 is written over the lcm
+// D of its denominators, so s_i = b_i D − a_i·X = D (b_i − a_i·x0) > 0
+// exactly when x0 is strictly inside.
+#include "homogeneous_dual.hpp"
+
+#include <array>
+
+namespace cvms::detail {
+namespace {
+
+// The integers (n_k) and the positive factor L with n_k = L q_k, L the lcm
+// of the denominators.
+std::array<mpz_class, 4> over_common_denominator(const std::array<const Rational*, 4>& q, mpz_class& lcm) {
+  lcm = 1;
+  for (const Rational* v : q) mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), v->get_den_mpz_t());
+  std::array<mpz_class, 4> n;
+  for (std::size_t k = 0; k < 4; ++k) {
+    mpz_divexact(n[k].get_mpz_t(), lcm.get_mpz_t(), q[k]->get_den_mpz_t());
+    n[k] *= q[k]->get_num();
+  }
+  return n;
+}
+
+}  // namespace
+
+HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vector<Rational>& x0) {
+  mpz_class d;
+  const Rational zero;
+  const std::array<mpz_class, 4> xd = over_common_denominator({&x0[0], &x0[1], &x0[2], &zero}, d);
+  HomogeneousDual dual;
+  dual.points.reserve(rows.size());
+  dual.offsets.reserve(rows.size());
+  mpz_class scale, g;
+  for (const LpRow& row : rows) {
+    std::array<mpz_class, 4> n = over_common_denominator({&row.a[0], &row.a[1], &row.a[2], &row.b}, scale);
+    g = 0;
+    for (const mpz_class& v : n) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v.get_mpz_t());
+    for (mpz_class& v : n) mpz_divexact(v.get_mpz_t(), v.get_mpz_t(), g.get_mpz_t());
+    HomogeneousPoint& p = dual.points.emplace_back();
+    p.w = n[3] * d;
+    mpz_submul(p.w.get_mpz_t(), n[0].get_mpz_t(), xd[0].get_mpz_t());
+    mpz_submul(p.w.get_mpz_t(), n[1].get_mpz_t(), xd[1].get_mpz_t());
+    mpz_submul(p.w.get_mpz_t(), n[2].get_mpz_t(), xd[2].get_mpz_t());
+    p.x = std::move(n[0]);
+    p.y = std::move(n[1]);
+    p.z = std::move(n[2]);
+    dual.offsets.push_back(std::move(n[3]));
+  }
+  return dual;
+}
+
+}  // namespace cvms::detail

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// The exact quickhull (hull_soup.hpp) of points in homogeneous integer
+// coordinates (homogeneous_orient.hpp): its filters run on the doubles of
+// the quotients, each within a proven bound; what they leave undecided goes
+// to the integer determinant, so no rational is reduced for a decision.
+// Used twice by from_halfspaces: for the dual points a/s of the rows and for
+// the set's vertices, which Cramer's rule gives as (numerators, det).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "cvms/polygon_soup.hpp"
+#include "homogeneous_orient.hpp"
+
+namespace cvms::detail {
+
+/// The point p stands for, reduced.
+Vec3 standing_for(const HomogeneousPoint& p);
+
+/// hull_soup of the points the homogeneous points stand for, with the same
+/// decisions (hence the same faces) as on those rational points, but no
+/// soup points: source_index maps each face index to its input point.
+/// exact(i) makes point i's rational value, for the few other exact
+/// decisions.
+/// \pre exact(i) == standing_for(points[i]).
+/// \throw Error(degenerate) as hull_soup.
+PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
+                             std::vector<std::uint32_t>& source_index);
+
+}  // namespace cvms::detail

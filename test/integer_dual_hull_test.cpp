@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+// Tests of the integer path of from_halfspaces
+// (lib/halfspaces/integer_dual_hull.hpp, homogeneous_dual.hpp,
+// intersection_polyhedron.hpp): the vertices against the brute-force
+// enumeration over row triples (support/halfspace_oracle.hpp), the tight
+// rows by substitution, and the polyhedron against convex_hull of the
+// vertices, identical to the last vertex and plane. On random rational
+// systems around a rational interior point, with duplicated and scaled
+// rows; on the facet planes of a geodesic sphere (many rows through each
+// vertex: every dual facet is degenerate); the unbounded cases must give
+// nothing.
+#include "integer_dual_hull.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cvms/convex_hull.hpp"
+#include "cvms/halfspaces.hpp"
+#include "cvms/shapes.hpp"
+#include "intersection_polyhedron.hpp"
+#include "support/halfspace_oracle.hpp"
+
+namespace cvms {
+namespace {
+
+using Rng = std::mt19937_64;
+
+detail::LpRow lp_row(const HalfspaceRow& r) { return {{r.normal.x, r.normal.y, r.normal.z}, r.offset}; }
+
+std::vector<detail::LpRow> lp_rows(const std::vector<HalfspaceRow>& rows) {
+  std::vector<detail::LpRow> out;
+  for (const HalfspaceRow& r : rows) out.push_back(lp_row(r));
+  return out;
+}
+
+std::vector<Rational> chart_point(const Vec3& x) { return {x.x, x.y, x.z}; }
+
+Rational fraction(long n, long d) {
+  Rational q(n, d);
+  q.canonicalize();
+  return q;
+}
+
+// Rows through no common point around x0, some scaled by a rational factor
+// and some repeated.
+std::vector<HalfspaceRow> random_rows(Rng& rng, const Vec3& x0, int count) {
+  std::vector<HalfspaceRow> rows;
+  auto coordinate = [&] { return Rational(static_cast<long>(rng() % 13) - 6); };
+  while (static_cast<int>(rows.size()) < count) {
+    Vec3 a{coordinate(), coordinate(), coordinate()};
+    if (is_zero(a)) continue;
+    Rational b = dot(a, x0) + fraction(1 + static_cast<long>(rng() % 20), 1 + static_cast<long>(rng() % 6));
+    if (rng() % 4 == 0) {
+      const Rational f = fraction(1 + static_cast<long>(rng() % 9), 1 + static_cast<long>(rng() % 9));
+      a = f * a;
+      b *= f;
+    }
+    rows.push_back({a, b});
+    if (rng() % 8 == 0) rows.push_back(rows.back());
+  }
+  return rows;
+}
+
+// Independent of the dual: the set is bounded iff no vertex of its
+// intersection with the box [−B, B]^3 lies on the box, for B beyond every
+// vertex the small rows of random_rows can have (coordinates below 10^4).
+bool bounded_by_box(std::vector<HalfspaceRow> rows) {
+  const Rational big(1000000);
+  for (int k = 0; k < 3; ++k) {
+    Vec3 e{0, 0, 0};
+    e[k] = 1;
+    rows.push_back({e, big});
+    rows.push_back({-e, big});
+  }
+  for (const Vec3& v : test::brute_force_vertices(rows))
+    for (int k = 0; k < 3; ++k)
+      if (abs(v[k]) == big) return false;
+  return true;
+}
+
+// Each vertex's tight rows hold with equality there, and each vertex has at
+// least three.
+void expect_tight_rows_hold(const detail::DualVertices& v, const std::vector<HalfspaceRow>& rows) {
+  ASSERT_EQ(v.tight_offsets.size(), v.vertices.size() + 1);
+  for (std::size_t k = 0; k < v.vertices.size(); ++k) {
+    EXPECT_GE(v.tight_offsets[k + 1] - v.tight_offsets[k], 3u);
+    for (std::uint32_t i = v.tight_offsets[k]; i < v.tight_offsets[k + 1]; ++i)
+      EXPECT_EQ(dot(rows[v.tight[i]].normal, v.vertices[k]), rows[v.tight[i]].offset);
+  }
+}
+
+// Identical, vertex by vertex and facet by facet.
+void expect_same_polyhedron(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
+  ASSERT_EQ(p.num_vertices(), q.num_vertices());
+  ASSERT_EQ(p.num_facets(), q.num_facets());
+  EXPECT_EQ(p.mesh().positions(), q.mesh().positions());
+  const PolygonSoup ps = p.mesh().to_soup(), qs = q.mesh().to_soup();
+  EXPECT_EQ(ps.face_offsets, qs.face_offsets);
+  EXPECT_EQ(ps.face_indices, qs.face_indices);
+  for (FaceId f : p.mesh().faces()) {
+    EXPECT_EQ(p.normal(f), q.normal(f));
+    EXPECT_EQ(p.plane_offset(f), q.plane_offset(f));
+  }
+}
+
+std::vector<Vec3> sorted(std::vector<Vec3> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(IntegerDualHull, RandomSystemsMatchTheTripleEnumeration) {
+  Rng rng(1602);
+  int bounded = 0;
+  for (int round = 0; round < 150; ++round) {
+    SCOPED_TRACE("seed 1602 round " + std::to_string(round));
+    const Vec3 x0{fraction(static_cast<long>(rng() % 11) - 5, 3), fraction(-2, 7), fraction(5, 11)};
+    const std::vector<HalfspaceRow> rows = random_rows(rng, x0, 6 + round % 18);
+    const std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
+    ASSERT_EQ(v.has_value(), bounded_by_box(rows));
+    if (!v) continue;
+    ++bounded;
+    EXPECT_EQ(sorted(v->vertices), test::brute_force_vertices(rows));
+    expect_tight_rows_hold(*v, rows);
+    expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+  }
+  EXPECT_GE(bounded, 100);
+}
+
+TEST(IntegerDualHull, SphereFacetPlanesThroughEveryVertex) {
+  const ConvexPolyhedron s = shapes::geodesic_sphere(2);
+  const HalfspaceSystem h = to_halfspaces(ConvexSet(s));
+  const std::optional<detail::DualVertices> v =
+      detail::bounded_vertices(lp_rows(h.inequalities), chart_point(Vec3{0, 0, 0}));
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(sorted(v->vertices), sorted(s.mesh().positions()));
+  expect_tight_rows_hold(*v, h.inequalities);
+  expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+}
+
+TEST(IntegerDualHull, UnboundedSystemsGiveNothing) {
+  const Vec3 o{0, 0, 0};
+  auto row = [](long x, long y, long z, long b) { return HalfspaceRow{Vec3{x, y, z}, Rational(b)}; };
+  // Open towards −z: every normal has a_z >= 0.
+  const std::vector<HalfspaceRow> cone = {row(1, 0, 1, 1), row(-1, 0, 1, 1), row(0, 1, 1, 1), row(0, -1, 1, 1)};
+  EXPECT_FALSE(detail::bounded_vertices(lp_rows(cone), chart_point(o)));
+  // A prism along z: the dual points span only a plane.
+  const std::vector<HalfspaceRow> prism = {row(1, 0, 0, 1), row(-1, 0, 0, 1), row(0, 1, 0, 1), row(0, -1, 0, 1),
+                                           row(1, 1, 0, 3)};
+  EXPECT_FALSE(detail::bounded_vertices(lp_rows(prism), chart_point(o)));
+  // Too few rows to bound anything, and a slab: the origin on a dual facet.
+  EXPECT_FALSE(detail::bounded_vertices(lp_rows({row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, 0, 1, 1)}), chart_point(o)));
+  const std::vector<HalfspaceRow> half_box = {row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, -1, 0, 1), row(0, 0, 1, 1),
+                                              row(0, 0, -1, 1)};
+  EXPECT_FALSE(detail::bounded_vertices(lp_rows(half_box), chart_point(o)));
+}
+
+}  // namespace
+}  // namespace cvms
