@@ -444,7 +444,10 @@ TEST_F(Cli, SetSumLimitsRefuseBigSums) {
   std::string polygon = "OFF\n60 1 0\n";
   for (int k = 0; k < 60; ++k) polygon += std::to_string(k) + " 0 " + std::to_string(k * k) + "\n";
   polygon += "60";
-  for (int k = 0; k < 60; ++k) polygon += " " + std::to_string(k);
+  for (int k = 0; k < 60; ++k) {
+    polygon += ' ';
+    polygon += std::to_string(k);
+  }
   write_text("parabola.off", polygon + "\n");
   ASSERT_EQ(run("gen prism --points 40 -o prism.off").code, 0);
   Outcome ok = run("sum parabola.off prism.off -o s.off --stats");

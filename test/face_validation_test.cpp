@@ -245,7 +245,11 @@ std::vector<Vec2> random_polygon(std::mt19937_64& rng, int kind) {
 
 void check_pyramid(const std::vector<Vec3>& q, const Vec3& w, const Vec3& apex, const std::string& trace) {
   std::string pts;
-  for (const Vec3& v : q) pts += "(" + v.x.get_str() + " " + v.y.get_str() + " " + v.z.get_str() + ") ";
+  for (const Vec3& v : q) {
+    pts += '(';
+    pts += v.x.get_str() + " " + v.y.get_str() + " " + v.z.get_str();
+    pts += ") ";
+  }
   SCOPED_TRACE(trace + ": " + pts);
   const PolygonSoup s = pyramid(q, apex);
   const FaceVerdict want = face_oracle(q, w);

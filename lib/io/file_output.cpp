@@ -37,7 +37,14 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
   std::random_device device;
   std::string suffix;
   for (int i = 0; i < 12; ++i) suffix += digits[device() % 36];
-  return target.parent_path() / ("." + target.filename().string() + ".cvms-" + suffix + ".tmp");
+  // Appended piece by piece: "literal" + std::string&& sets off GCC 12's
+  // false -Wrestrict (GCC bug 105329) in a plain Release build.
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".cvms-";
+  name += suffix;
+  name += ".tmp";
+  return target.parent_path() / name;
 }
 
 #ifdef CVMS_POSIX_FILES
