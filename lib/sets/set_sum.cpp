@@ -100,13 +100,33 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
   }
 }
 
-ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& options) {
-  Vec3 offset{0, 0, 0};
-  // (vertex count, list position) -> operand: the smallest two first.
+namespace {
+
+// The operands of positive dimension summed smallest two first (by vertex
+// count, ties by position), the result translated by `offset`.
+ConvexSet fold_smallest_first(std::span<const ConvexSet> operands, const Vec3& offset, const Options& options) {
   using Entry = std::pair<std::pair<std::size_t, std::size_t>, ConvexSet>;
   auto larger = [](const Entry& x, const Entry& y) { return x.first > y.first; };
   std::priority_queue<Entry, std::vector<Entry>, decltype(larger)> queue(larger);
   std::size_t position = 0;
+  for (const ConvexSet& s : operands)
+    if (s.dimension() > 0) queue.push({{s.num_vertices(), position++}, s});
+  if (queue.empty()) return ConvexSet::point(offset);
+  while (queue.size() > 1) {
+    ConvexSet x = queue.top().second;
+    queue.pop();
+    ConvexSet y = queue.top().second;
+    queue.pop();
+    ConvexSet sum = minkowski_sum(x, y, options);
+    queue.push({{sum.num_vertices(), position++}, std::move(sum)});
+  }
+  return queue.top().second.translated(offset);
+}
+
+}  // namespace
+
+ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& options) {
+  Vec3 offset{0, 0, 0};
   std::vector<Vec3> segment_directions;
   bool only_segments = true;
   for (const ConvexSet& s : operands) {
@@ -123,18 +143,7 @@ ConvexSet minkowski_sum(std::span<const ConvexSet> operands, const Options& opti
   // step: a sum has at least the facets of each partial sum, so a step
   // beyond the limits means the whole is too.
   if (only_segments) check_zonotope(std::move(segment_directions), detail::OutputBudget(options.limits, "sets"));
-  for (const ConvexSet& s : operands)
-    if (s.dimension() > 0) queue.push({{s.num_vertices(), position++}, s});
-  if (queue.empty()) return ConvexSet::point(offset);
-  while (queue.size() > 1) {
-    ConvexSet x = queue.top().second;
-    queue.pop();
-    ConvexSet y = queue.top().second;
-    queue.pop();
-    ConvexSet sum = minkowski_sum(x, y, options);
-    queue.push({{sum.num_vertices(), position++}, std::move(sum)});
-  }
-  return queue.top().second.translated(offset);
+  return fold_smallest_first(operands, offset, options);
 }
 
 ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators, const SumLimits& limits) {
@@ -142,14 +151,14 @@ ConvexSet zonotope(const Vec3& center, std::span<const Vec3> generators, const S
   directions.reserve(generators.size());
   for (const Vec3& g : generators)
     if (!is_zero(g)) directions.push_back(g);
+  // Bounded once, from the generators, before any segment is built.
   check_zonotope(directions, detail::OutputBudget(limits, "sets"));
   std::vector<ConvexSet> segments;
-  segments.reserve(directions.size() + 1);
-  segments.push_back(ConvexSet::point(center));
+  segments.reserve(directions.size());
   for (const Vec3& g : directions) segments.push_back(ConvexSet::segment(-g, g));
   Options options;
   options.limits = limits;
-  return minkowski_sum(segments, options);
+  return fold_smallest_first(segments, center, options);
 }
 
 }  // namespace cvms
