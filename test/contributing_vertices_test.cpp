@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <random>
 #include <vector>
 
@@ -66,13 +68,32 @@ TEST(ContributingVertices, ThreeOrMoreMaximisersAreAParallelFacet) {
   for (FaceId f : c.mesh().faces()) {
     maximising_vertices(t, detail::normal_ref(c, f), cv);
     ASSERT_GE(cv.size(), 3u);
-    const FaceId g = facet_with_normal(t, cv[0], c.normal(f));
+    const FaceId g = facet_with_normal(t, cv[0], detail::normal_ref(c, f));
     ASSERT_TRUE(g.is_valid());
     EXPECT_EQ(t.normal(g), c.normal(f));
     sorted_facet_vertices(t, g, facet);
     EXPECT_EQ(facet, cv);
   }
-  EXPECT_FALSE(facet_with_normal(c, VertexId(0), Vec3{1, 1, 1}).is_valid());
+  const Vec3 diagonal{1, 1, 1};
+  EXPECT_FALSE(facet_with_normal(c, VertexId(0), {diagonal, ApproxVec3::of(diagonal)}).is_valid());
+
+  // The approximations only let it skip facets that cannot match: with a
+  // useless approximation (infinite error) the facet is still found, and a
+  // vector equal to a facet's normal in double alone is not taken for it.
+  const VertexId v = c.mesh().from(*c.mesh().face_halfedges(FaceId(0)).begin());
+  const Vec3& n = c.normal(FaceId(0));
+  const double inf = std::numeric_limits<double>::infinity();
+  const ApproxVec3 useless{{0.0, inf}, {0.0, inf}, {0.0, inf}};
+  EXPECT_EQ(facet_with_normal(c, v, {n, useless}), FaceId(0));
+  Vec3 nearly = n;
+  for (int i = 0; i < 3; ++i)
+    if (sgn(nearly[i]) != 0) nearly[i] += Rational(1, 1) / (mpz_class(1) << 80);
+  const ApproxVec3 nearly_approx = ApproxVec3::of(nearly);
+  const ApproxVec3& n_approx = detail::normal_approx(c, FaceId(0));
+  ASSERT_FALSE(provably_different(nearly_approx.x, n_approx.x));  // so the exact comparison decides
+  ASSERT_FALSE(provably_different(nearly_approx.y, n_approx.y));
+  ASSERT_FALSE(provably_different(nearly_approx.z, n_approx.z));
+  EXPECT_FALSE(facet_with_normal(c, v, {nearly, nearly_approx}).is_valid());
 }
 
 TEST(ContributingVertices, DisjointSorted) {

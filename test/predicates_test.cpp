@@ -284,6 +284,31 @@ TEST(Predicates, ExactlyDegenerateNonDoubleInputsFallBack) {
   EXPECT_GT(perturbed_exact, 1000u);
 }
 
+// compare_dot with an integer normal (every facet normal is one) takes its
+// own exact path: L (v - w) over the lcm L of the denominators, no rational
+// canonicalised. Against the written-out oracle on every kind of coordinate,
+// and on exact ties made by construction (w = v + a vector orthogonal to n,
+// then nudged by a tiny multiple of n).
+TEST(Predicates, CompareDotWithIntegerNormalsMatchesTheOracle) {
+  for (Kind kind : all_kinds) {
+    const unsigned seed = 900 + static_cast<unsigned>(kind);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    for (int i = 0; i < 400; ++i) {
+      const Vec3 v = point3(rng, kind), w = point3(rng, kind), u = point3(rng, kind);
+      const Vec3 n{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
+                   Rational(test::random_integer(rng, 1u + static_cast<unsigned>(rng() % 120)))};
+      ASSERT_EQ(compare_dot(v, w, n), oracle_compare_dot(v, w, n)) << "case " << i;
+      if (is_zero(n)) continue;
+      const Vec3 tie = v + cross(n, u);  // dot(v - tie, n) = 0 exactly
+      ASSERT_EQ(compare_dot(v, tie, n), Sign::zero) << "case " << i;
+      const Rational e = power_of_ten(-30);
+      ASSERT_EQ(compare_dot(v, tie - e * n, n), Sign::positive) << "case " << i;
+      ASSERT_EQ(compare_dot(v, tie + e * n, n), Sign::negative) << "case " << i;
+    }
+  }
+}
+
 TEST(Predicates, ZeroAnswersAlwaysComeFromTheFallback) {
   // One call, one count; a zero is always an exact evaluation.
   Vec3 a{1, 2, 3}, b{2, 4, 6};

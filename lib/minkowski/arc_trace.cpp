@@ -109,7 +109,7 @@ WalkPosition start_of_walk(const ConvexPolyhedron& a, HalfedgeId ha, const Conve
     // Three or more maximisers span the facet of B supporting B in direction
     // n1 (an edge has only two vertices, all being extreme): its primitive
     // normal is n1's, and it is incident to c1[0].
-    at.event = facet_with_normal(b, c1[0], a.normal(f1));
+    at.event = facet_with_normal(b, c1[0], detail::normal_ref(a, f1));
   }
   return at;
 }

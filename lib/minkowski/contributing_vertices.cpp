@@ -28,11 +28,15 @@ void maximising_vertices(const ConvexPolyhedron& q, Vec3Ref n, std::vector<Verte
   }
 }
 
-FaceId facet_with_normal(const ConvexPolyhedron& q, VertexId v, const Vec3& n) {
+FaceId facet_with_normal(const ConvexPolyhedron& q, VertexId v, Vec3Ref n) {
   const Mesh& m = q.mesh();
   for (HalfedgeId h : m.outgoing_halfedges(v)) {
     const FaceId f = m.face(h);
-    if (q.normal(f) == n) return f;
+    const ApproxVec3& fa = detail::normal_approx(q, f);
+    if (provably_different(fa.x, n.approx.x) || provably_different(fa.y, n.approx.y) ||
+        provably_different(fa.z, n.approx.z))
+      continue;
+    if (q.normal(f) == n.exact) return f;
   }
   return {};
 }
@@ -95,7 +99,7 @@ void climb(const ConvexPolyhedron& q, Vec3Ref n, VertexId start, std::vector<Ver
     std::sort(out.begin(), out.end());
     return;
   }
-  sorted_facet_vertices(q, facet_with_normal(q, v, n.exact), out);
+  sorted_facet_vertices(q, facet_with_normal(q, v, n), out);
 }
 
 }  // namespace

@@ -23,8 +23,9 @@ void maximising_vertices(const ConvexPolyhedron& q, Vec3Ref n, std::vector<Verte
 
 /// The facet of q incident to vertex v whose outward normal equals n, or an
 /// invalid FaceId if there is none. Normals are primitive integer vectors, so
-/// equal direction is equal vectors. Cost: the degree of v.
-FaceId facet_with_normal(const ConvexPolyhedron& q, VertexId v, const Vec3& n);
+/// equal direction is equal vectors. Cost: the degree of v comparisons of
+/// approximations, and exact ones only where those cannot tell.
+FaceId facet_with_normal(const ConvexPolyhedron& q, VertexId v, Vec3Ref n);
 
 /// The vertices of facet f of p, sorted by index.
 void sorted_facet_vertices(const ConvexPolyhedron& p, FaceId f, std::vector<VertexId>& out);

@@ -223,7 +223,7 @@ std::vector<FaceId> add_translated_facets(const ConvexPolyhedron& a, const Conve
       // Three or more maximisers span the facet of B supporting B in the
       // direction of n(fa) (an edge has only two vertices, all being
       // extreme): its primitive normal is n(fa), and it is incident to c[0].
-      const FaceId fb = facet_with_normal(b, c[0], a.normal(fa));
+      const FaceId fb = facet_with_normal(b, c[0], detail::normal_ref(a, fa));
       partner[fb.index()] = fa;
       out.add_facet_plus_facet(fa, fb);
       ++stats.contributing_ties;

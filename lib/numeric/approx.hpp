@@ -20,6 +20,18 @@ struct Approx {
   static Approx of(const Rational& q) noexcept;
 };
 
+/// True only if the exact values a and b approximate differ: |a.value -
+/// b.value| > 2 (a.error + b.error) as computed. The computed difference is
+/// within a factor 1 + u of the true one, and the computed error sum at least
+/// (1 - u) times the true one (exact when subnormal), so the approximations
+/// differ by more than 2 (1 - u) / (1 + u) (a.error + b.error) >= a.error +
+/// b.error, and the exact values by more than zero. Infinite or NaN values or errors make the
+/// comparison false: undecided, never wrong.
+inline bool provably_different(const Approx& a, const Approx& b) noexcept {
+  const double difference = a.value - b.value;
+  return (difference < 0 ? -difference : difference) > 2.0 * (a.error + b.error);
+}
+
 /// Approximations of the two coordinates of a Vec2.
 struct ApproxVec2 {
   ///@{

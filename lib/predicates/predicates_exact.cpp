@@ -8,7 +8,25 @@ namespace cvms::exact {
 
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) { return exact::sign_cross2(b - a, c - a); }
 
-Sign sign_cross2(const Vec2& u, const Vec2& v) { return sign_of(cmp(u.x * v.y, u.y * v.x)); }
+// cmp(u.x v.y, u.y v.x) with both sides over the positive denominator
+// den(u.x) den(u.y) den(v.x) den(v.y): four integer products a side and no
+// canonical rational (the ties of parallel facets' planar sums, issue 14).
+Sign sign_cross2(const Vec2& u, const Vec2& v) {
+  struct Scratch {
+    mpz_class left, right;
+  };
+  thread_local Scratch s;
+  mpz_mul(s.left.get_mpz_t(), u.x.get_num_mpz_t(), v.y.get_num_mpz_t());
+  mpz_mul(s.right.get_mpz_t(), u.y.get_num_mpz_t(), v.x.get_num_mpz_t());
+  const int left_sign = mpz_sgn(s.left.get_mpz_t()), right_sign = mpz_sgn(s.right.get_mpz_t());
+  if (left_sign != right_sign) return sign_of(left_sign - right_sign);  // also when one side is zero
+  if (left_sign == 0) return Sign::zero;
+  mpz_mul(s.left.get_mpz_t(), s.left.get_mpz_t(), u.y.get_den_mpz_t());
+  mpz_mul(s.left.get_mpz_t(), s.left.get_mpz_t(), v.x.get_den_mpz_t());
+  mpz_mul(s.right.get_mpz_t(), s.right.get_mpz_t(), u.x.get_den_mpz_t());
+  mpz_mul(s.right.get_mpz_t(), s.right.get_mpz_t(), v.y.get_den_mpz_t());
+  return sign_of(mpz_cmp(s.left.get_mpz_t(), s.right.get_mpz_t()));
+}
 
 Sign sign_dot(const Vec2& u, const Vec2& v) { return sign_of(sgn(dot(u, v))); }
 
@@ -18,7 +36,43 @@ Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 
 Sign sign_dot(const Vec3& u, const Vec3& v) { return sign_of(sgn(dot(u, v))); }
 
-Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) { return sign_of(sgn(dot(v - w, n))); }
+namespace {
+
+bool has_integer_coordinates(const Vec3& v) {
+  return v.x.get_den() == 1 && v.y.get_den() == 1 && v.z.get_den() == 1;
+}
+
+}  // namespace
+
+// For an integer n (every facet normal is one): with L the lcm of the six
+// denominators of v and w, L (v - w) is an integer vector and L > 0, so the
+// sign is that of sum_i n_i (num(v_i) L / den(v_i) - num(w_i) L / den(w_i)),
+// one integer sum. The rational form canonicalises nine intermediates, and
+// their gcds were most of the exact cost when the coordinates are not dyadic
+// (decimal input, where A + A makes every contributing-vertex choice an exact
+// tie: issue 14).
+Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) {
+  if (!has_integer_coordinates(n)) return sign_of(sgn(dot(v - w, n)));
+  struct Scratch {
+    mpz_class l, sum, term;
+  };
+  thread_local Scratch s;
+  s.l = v.x.get_den();
+  for (const Vec3* p : {&v, &w})
+    for (int i = 0; i < 3; ++i)
+      if ((*p)[i].get_den() != s.l) mpz_lcm(s.l.get_mpz_t(), s.l.get_mpz_t(), (*p)[i].get_den_mpz_t());
+  s.sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (mpz_sgn(n[i].get_num_mpz_t()) == 0) continue;
+    mpz_divexact(s.term.get_mpz_t(), s.l.get_mpz_t(), v[i].get_den_mpz_t());
+    mpz_mul(s.term.get_mpz_t(), s.term.get_mpz_t(), v[i].get_num_mpz_t());
+    mpz_addmul(s.sum.get_mpz_t(), s.term.get_mpz_t(), n[i].get_num_mpz_t());
+    mpz_divexact(s.term.get_mpz_t(), s.l.get_mpz_t(), w[i].get_den_mpz_t());
+    mpz_mul(s.term.get_mpz_t(), s.term.get_mpz_t(), w[i].get_num_mpz_t());
+    mpz_submul(s.sum.get_mpz_t(), s.term.get_mpz_t(), n[i].get_num_mpz_t());
+  }
+  return sign_of(mpz_sgn(s.sum.get_mpz_t()));
+}
 
 Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset) {
   return sign_of(cmp(dot(p, n), offset));

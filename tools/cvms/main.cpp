@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "machine_memory.hpp"
 #include "cvms/error.hpp"
 #include "files.hpp"
 #include "sizes.hpp"
@@ -83,7 +84,7 @@ CLI::Option* add_algorithm_option(CLI::App& command, cvms::Algorithm& algorithm,
       ->default_str(default_text);
 }
 
-// --max-facets and --max-memory of sum, with the library's defaults.
+// --max-facets and --max-memory of sum; `limits` holds the defaults (machine_memory.hpp).
 void add_sum_limit_options(CLI::App& command, cvms::SumLimits& limits) {
   command.add_option("--max-facets", limits.max_output_facets, "refuse a sum with more output facets")
       ->default_val(limits.max_output_facets)
@@ -92,7 +93,8 @@ void add_sum_limit_options(CLI::App& command, cvms::SumLimits& limits) {
       .add_option_function<std::string>(
           "--max-memory",
           [&limits](const std::string& text) { limits.max_memory_bytes = cvms::cli::parse_byte_size(text); },
-          "refuse a sum whose output is estimated to need more memory (bytes, or 512M, 4G, ...)")
+          "refuse a sum whose output is estimated to need more memory (bytes, or 512M, 4G, ...; "
+          "at most half of this machine's memory by default)")
       ->check([](const std::string& text) {
         try {
           cvms::cli::parse_byte_size(text);
@@ -115,6 +117,7 @@ int main(int argc, char** argv) {
   const char* default_algorithm = cvms::to_string(cvms::Options{}.algorithm);
 
   SumArgs sum;
+  sum.limits = sum_limits_for_memory(usable_memory_bytes());
   CLI::App* sum_cmd = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
   sum_cmd->add_option("A", sum.a, "first operand")->required()->check(mesh_path);
   sum_cmd->add_option("B", sum.b, "second operand")->required()->check(mesh_path);

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Machine-fitted sum limits for the tool (see machine_memory.hpp).
+#include "machine_memory.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#endif
+
+namespace cvms::cli {
+namespace {
+
+std::optional<std::uint64_t> physical_memory_bytes() {
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_size = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page_size > 0) return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
+#endif
+  return std::nullopt;
+}
+
+// cgroup v2 writes "max" when unlimited; anything unreadable counts as no limit.
+std::optional<std::uint64_t> cgroup_memory_limit() {
+  std::ifstream in("/sys/fs/cgroup/memory.max");
+  std::string text;
+  if (!(in >> text) || text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
+      text.size() > 19)
+    return std::nullopt;
+  return std::stoull(text);
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> usable_memory_bytes() {
+  std::optional<std::uint64_t> usable = physical_memory_bytes();
+  if (const auto cgroup = cgroup_memory_limit(); cgroup && (!usable || *cgroup < *usable)) usable = cgroup;
+  return usable;
+}
+
+SumLimits sum_limits_for_memory(std::optional<std::uint64_t> usable) {
+  SumLimits limits;
+  // Whole MiB, so that --help shows a short size ("12046M").
+  constexpr std::uint64_t mebibyte = std::uint64_t{1} << 20;
+  if (usable && *usable >= 4 * mebibyte)
+    limits.max_memory_bytes = std::min(limits.max_memory_bytes, *usable / 2 / mebibyte * mebibyte);
+  return limits;
+}
+
+}  // namespace cvms::cli
