@@ -4,7 +4,8 @@
 // intersection_polyhedron.hpp): the vertices against the brute-force
 // enumeration over row triples (support/halfspace_oracle.hpp), the tight
 // rows by substitution, and the polyhedron against convex_hull of the
-// vertices, identical to the last vertex and plane. On random rational
+// vertices: the same vertices, oriented facets and exact planes (the
+// numbering differs: the polyhedron is read off the dual hull). On random rational
 // systems around a rational interior point, with duplicated and scaled
 // rows; on the facet planes of a geodesic sphere (many rows through each
 // vertex: every dual facet is degenerate); the unbounded cases must give
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
@@ -93,18 +95,42 @@ void expect_tight_rows_hold(const detail::DualVertices& v, const std::vector<Hal
   }
 }
 
-// Identical, vertex by vertex and facet by facet.
+// The same polyhedron up to the numbering of vertices and facets: the same
+// vertex set, and the same facets as oriented cycles of positions (each
+// rotated to start at its smallest position) with the same exact planes.
+struct FacetKey {
+  std::vector<Vec3> cycle;
+  Vec3 normal;
+  Rational offset;
+  friend bool operator<(const FacetKey& a, const FacetKey& b) {
+    return std::tie(a.cycle, a.normal, a.offset) < std::tie(b.cycle, b.normal, b.offset);
+  }
+  friend bool operator==(const FacetKey& a, const FacetKey& b) {
+    return std::tie(a.cycle, a.normal, a.offset) == std::tie(b.cycle, b.normal, b.offset);
+  }
+};
+
+std::vector<FacetKey> facet_keys(const ConvexPolyhedron& p) {
+  const PolygonSoup soup = p.mesh().to_soup();
+  std::vector<FacetKey> keys;
+  for (FaceId f : p.mesh().faces()) {
+    FacetKey key{{}, p.normal(f), p.plane_offset(f)};
+    for (std::uint32_t i : soup.face(f.index())) key.cycle.push_back(soup.points[i]);
+    std::rotate(key.cycle.begin(), std::min_element(key.cycle.begin(), key.cycle.end()), key.cycle.end());
+    keys.push_back(std::move(key));
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 void expect_same_polyhedron(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
   ASSERT_EQ(p.num_vertices(), q.num_vertices());
   ASSERT_EQ(p.num_facets(), q.num_facets());
-  EXPECT_EQ(p.mesh().positions(), q.mesh().positions());
-  const PolygonSoup ps = p.mesh().to_soup(), qs = q.mesh().to_soup();
-  EXPECT_EQ(ps.face_offsets, qs.face_offsets);
-  EXPECT_EQ(ps.face_indices, qs.face_indices);
-  for (FaceId f : p.mesh().faces()) {
-    EXPECT_EQ(p.normal(f), q.normal(f));
-    EXPECT_EQ(p.plane_offset(f), q.plane_offset(f));
-  }
+  std::vector<Vec3> pv = p.mesh().positions(), qv = q.mesh().positions();
+  std::sort(pv.begin(), pv.end());
+  std::sort(qv.begin(), qv.end());
+  EXPECT_EQ(pv, qv);
+  EXPECT_TRUE(facet_keys(p) == facet_keys(q));
 }
 
 std::vector<Vec3> sorted(std::vector<Vec3> v) {
