@@ -59,11 +59,13 @@ Vec3 direction_to_space(const Chart& chart, const std::vector<Rational>& u) {
 // makes the result empty (false) when it fails.
 bool rows_in_chart(std::span<const HalfspaceRow> rows, const Chart& chart, std::vector<detail::LpRow>& out) {
   out.clear();
+  out.reserve(rows.size());
   // A chart of dimension 3 is the identity (whole_space; restrict_chart
   // drops an axis), so its rows are the given ones, with no products.
   const bool identity = chart.axes.size() == 3;
   for (const HalfspaceRow& row : rows) {
     detail::LpRow r;
+    r.a.reserve(chart.axes.size());
     bool zero = true;
     for (std::size_t k = 0; k < chart.axes.size(); ++k) {
       r.a.push_back(identity ? row.normal[static_cast<int>(k)] : dot(row.normal, chart.axes[k]));

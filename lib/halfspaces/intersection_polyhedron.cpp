@@ -52,15 +52,20 @@ std::vector<Corner> sorted_corners(const DualVertices& v) {
 }
 
 // The plane a·x == b of row r as an outward primitive integer normal and
-// its offset.
+// its offset: the primitive row divided by the gcd of its normal.
 void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
   const HomogeneousPoint& a = v.dual.points[r];
-  mpz_class g;
-  mpz_gcd(g.get_mpz_t(), a.x.get_mpz_t(), a.y.get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), a.z.get_mpz_t());
-  Vec3 n{Rational(a.x / g), Rational(a.y / g), Rational(a.z / g)};
-  Rational offset(v.dual.offsets[r], g);
-  offset.canonicalize();
+  const mpz_class& content = v.dual.normal_contents[r];
+  Vec3 n;
+  Rational offset;
+  if (content == 1) {
+    n = Vec3{Rational(a.x), Rational(a.y), Rational(a.z)};
+    offset = v.dual.offsets[r];
+  } else {
+    n = Vec3{Rational(a.x / content), Rational(a.y / content), Rational(a.z / content)};
+    offset = Rational(v.dual.offsets[r], content);
+    offset.canonicalize();
+  }
   planes.normal_approx.push_back(ApproxVec3::of(n));
   planes.normals.push_back(std::move(n));
   planes.offsets.push_back(std::move(offset));
@@ -76,7 +81,16 @@ ConvexPolyhedron intersection_polyhedron(const DualVertices& v) {
   soup.points.reserve(v.vertices.size());
   std::vector<ApproxVec3> approx;
   approx.reserve(v.vertices.size());
+  // Reserved up front: a reallocation would copy every rational (Vec3's
+  // move is not noexcept).
+  std::size_t facets = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i) facets += i == 0 || corners[i].row != corners[i - 1].row;
   FacetPlanes planes;
+  planes.normals.reserve(facets);
+  planes.normal_approx.reserve(facets);
+  planes.offsets.reserve(facets);
+  soup.face_offsets.reserve(facets + 1);
+  soup.face_indices.reserve(corners.size());
   std::vector<std::uint32_t> face;
   for (auto group = corners.begin(); group != corners.end();) {
     const auto group_end = std::find_if(group, corners.end(), [&](const Corner& c) { return c.row != group->row; });
