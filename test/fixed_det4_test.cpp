@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Tests of the fixed-width 4×4 determinant sign (lib/predicates/
-// fixed_det4.hpp) against an independent mpz evaluation (cofactor expansion
+// fixed_det4.hpp), both by the 2×2 minors and by the last row's cofactors,
+// against an independent mpz evaluation (cofactor expansion
 // along the first row, 3×3 minors by Sarrus' rule): random entries of every
 // width from 1 to 255 bits (seeded), singular matrices (a row a combination
 // of the others), the extreme entries ±(2^b − 1) at each limb boundary in
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <random>
 #include <string>
@@ -37,11 +39,31 @@ int oracle_sign(const Matrix& m) {
   return sgn(det);
 }
 
+template <int E>
+int cofactor_sign(const std::array<std::array<mpz_srcptr, 4>, 4>& p) {
+  const detail::Cofactors<E> cof = detail::last_row_cofactors<E>(detail::fixed_row<E>(p[0]), detail::fixed_row<E>(p[1]),
+                                                                 detail::fixed_row<E>(p[2]));
+  return detail::fixed_det4_sign<E>(cof, detail::fixed_row<E>(p[3]));
+}
+
+// The sign by the entry point, checked to agree with the cofactor path
+// (last_row_cofactors, then four products) in the same width.
 std::optional<int> fixed_sign(const Matrix& m) {
   std::array<std::array<mpz_srcptr, 4>, 4> p;
+  int limbs = 1;
   for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) p[r][c] = m[r][c].get_mpz_t();
-  return detail::fixed_det4_sign(p);
+    for (int c = 0; c < 4; ++c) {
+      p[r][c] = m[r][c].get_mpz_t();
+      limbs = std::max(limbs, detail::signed_limbs(p[r][c]));
+    }
+  const std::optional<int> s = detail::fixed_det4_sign(p);
+  if (!s) return s;
+  const int by_cofactors = limbs == 1   ? cofactor_sign<1>(p)
+                           : limbs == 2 ? cofactor_sign<2>(p)
+                           : limbs == 3 ? cofactor_sign<3>(p)
+                                        : cofactor_sign<4>(p);
+  EXPECT_EQ(by_cofactors, *s) << "the cofactor path disagrees";
+  return s;
 }
 
 // A uniform integer of at most `bits` bits, either sign.
