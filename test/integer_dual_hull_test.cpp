@@ -167,6 +167,58 @@ TEST(IntegerDualHull, SphereFacetPlanesThroughEveryVertex) {
   expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
 }
 
+// Whole-pipeline check of a system: the vertices against the triple
+// enumeration, the polyhedron against convex_hull of them (as sets).
+void expect_matches_oracles(const std::vector<HalfspaceRow>& rows, const Vec3& x0) {
+  const std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(sorted(v->vertices), test::brute_force_vertices(rows));
+  expect_tight_rows_hold(*v, rows);
+  expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+  expect_same_polyhedron(from_halfspaces(rows).polyhedron(), convex_hull(v->vertices));
+}
+
+TEST(IntegerDualHull, ManyRowsThroughOneApex) {
+  // A pyramid over a convex 12-gon: 12 rows x_i x + y_i y + z <= 1 all tight
+  // at the apex (0, 0, 1) (one dual facet of 12 coplanar points), the
+  // points (x_i, y_i) on the circle x^2 + y^2 = 25 (in convex position),
+  // and a floor z >= −1; every row repeated once, one scaled by 3.
+  const long pts[12][2] = {{5, 0},  {4, 3},  {3, 4},  {0, 5},  {-3, 4}, {-4, 3},
+                           {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  std::vector<HalfspaceRow> rows;
+  for (int i = 0; i < 12; ++i) {
+    rows.push_back({Vec3{Rational(pts[i][0]), Rational(pts[i][1]), Rational(1)}, Rational(1)});
+    rows.push_back(rows.back());
+  }
+  rows[3] = {Rational(3) * rows[3].normal, Rational(3) * rows[3].offset};
+  rows.push_back({Vec3{0, 0, -1}, Rational(1)});
+  expect_matches_oracles(rows, Vec3{0, 0, 0});
+}
+
+TEST(IntegerDualHull, RowsBeyondTheFixedWidthTakeMpz) {
+  // Rows with normals of about 300 bits (a perturbation over 2^300 + k),
+  // so the dual points exceed the fixed-width determinant's 255 bits.
+  Rng rng(1604);
+  int bounded = 0;
+  for (int round = 0; round < 20; ++round) {
+    SCOPED_TRACE("seed 1604 round " + std::to_string(round));
+    const Vec3 x0{fraction(1, 3), fraction(-2, 7), fraction(5, 11)};
+    std::vector<HalfspaceRow> rows = random_rows(rng, x0, 8 + round % 8);
+    mpz_class big = 1;
+    big <<= 300;
+    for (HalfspaceRow& r : rows) {
+      Rational tiny(mpz_class(1 + static_cast<long>(rng() % 5)), big + static_cast<long>(rng() % 1000));
+      tiny.canonicalize();
+      r.normal.x += tiny;
+      r.offset = dot(r.normal, x0) + 1 + static_cast<long>(rng() % 9);
+    }
+    if (!bounded_by_box(rows)) continue;
+    ++bounded;
+    expect_matches_oracles(rows, x0);
+  }
+  EXPECT_GE(bounded, 10);
+}
+
 TEST(IntegerDualHull, UnboundedSystemsGiveNothing) {
   const Vec3 o{0, 0, 0};
   auto row = [](long x, long y, long z, long b) { return HalfspaceRow{Vec3{x, y, z}, Rational(b)}; };
