@@ -76,8 +76,15 @@ int width(const std::vector<HomogeneousPoint>& points) {
 template <int E>
 class CofactorCache {
  public:
+  // 2^bits entries, fewer for few points (a small hull should not pay for
+  // clearing a large cache).
+  explicit CofactorCache(std::size_t points) {
+    while (bits_ < 8 && (std::size_t{1} << bits_) < points) ++bits_;
+    entries_.resize(std::size_t{1} << bits_);
+  }
+
   const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c, const std::vector<FixedRow<E>>& rows) {
-    Entry& e = entries_[(a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ c * 0xC2B2AE3Du) >> (32 - bits)];
+    Entry& e = entries_[(a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ c * 0xC2B2AE3Du) >> (32 - bits_)];
     if (!e.used || e.a != a || e.b != b || e.c != c) {
       e = {true, a, b, c, last_row_cofactors<E>(rows[a], rows[b], rows[c])};
     }
@@ -85,13 +92,13 @@ class CofactorCache {
   }
 
  private:
-  static constexpr int bits = 8;
   struct Entry {
     bool used = false;
     std::uint32_t a = 0, b = 0, c = 0;
     Cofactors<E> cofactors;
   };
-  std::vector<Entry> entries_ = std::vector<Entry>(std::size_t{1} << bits);
+  int bits_ = 2;
+  std::vector<Entry> entries_;
 };
 
 // The hull with every undecided orient3d as the integer determinant of
@@ -104,7 +111,7 @@ PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const App
   rows.reserve(points.size());
   for (const HomogeneousPoint& p : points)
     rows.push_back(fixed_row<E>({p.x.get_mpz_t(), p.y.get_mpz_t(), p.z.get_mpz_t(), p.w.get_mpz_t()}));
-  CofactorCache<E> cache;
+  CofactorCache<E> cache(points.size());
   const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     ++predicate_counters().exact;
     return sign_of(-fixed_det4_sign<E>(cache.cofactors(a, b, c, rows), rows[d]));
