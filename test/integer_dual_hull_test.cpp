@@ -4,7 +4,8 @@
 // intersection_polyhedron.hpp): the vertices against the brute-force
 // enumeration over row triples (support/halfspace_oracle.hpp), the tight
 // rows by substitution, and the polyhedron against convex_hull of the
-// vertices, identical to the last vertex and plane. On random rational
+// vertices: the same vertices, oriented facets and exact planes (the
+// numbering differs: the polyhedron is read off the dual hull). On random rational
 // systems around a rational interior point, with duplicated and scaled
 // rows; on the facet planes of a geodesic sphere (many rows through each
 // vertex: every dual facet is degenerate); the unbounded cases must give
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
@@ -93,18 +95,42 @@ void expect_tight_rows_hold(const detail::DualVertices& v, const std::vector<Hal
   }
 }
 
-// Identical, vertex by vertex and facet by facet.
+// The same polyhedron up to the numbering of vertices and facets: the same
+// vertex set, and the same facets as oriented cycles of positions (each
+// rotated to start at its smallest position) with the same exact planes.
+struct FacetKey {
+  std::vector<Vec3> cycle;
+  Vec3 normal;
+  Rational offset;
+  friend bool operator<(const FacetKey& a, const FacetKey& b) {
+    return std::tie(a.cycle, a.normal, a.offset) < std::tie(b.cycle, b.normal, b.offset);
+  }
+  friend bool operator==(const FacetKey& a, const FacetKey& b) {
+    return std::tie(a.cycle, a.normal, a.offset) == std::tie(b.cycle, b.normal, b.offset);
+  }
+};
+
+std::vector<FacetKey> facet_keys(const ConvexPolyhedron& p) {
+  const PolygonSoup soup = p.mesh().to_soup();
+  std::vector<FacetKey> keys;
+  for (FaceId f : p.mesh().faces()) {
+    FacetKey key{{}, p.normal(f), p.plane_offset(f)};
+    for (std::uint32_t i : soup.face(f.index())) key.cycle.push_back(soup.points[i]);
+    std::rotate(key.cycle.begin(), std::min_element(key.cycle.begin(), key.cycle.end()), key.cycle.end());
+    keys.push_back(std::move(key));
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 void expect_same_polyhedron(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
   ASSERT_EQ(p.num_vertices(), q.num_vertices());
   ASSERT_EQ(p.num_facets(), q.num_facets());
-  EXPECT_EQ(p.mesh().positions(), q.mesh().positions());
-  const PolygonSoup ps = p.mesh().to_soup(), qs = q.mesh().to_soup();
-  EXPECT_EQ(ps.face_offsets, qs.face_offsets);
-  EXPECT_EQ(ps.face_indices, qs.face_indices);
-  for (FaceId f : p.mesh().faces()) {
-    EXPECT_EQ(p.normal(f), q.normal(f));
-    EXPECT_EQ(p.plane_offset(f), q.plane_offset(f));
-  }
+  std::vector<Vec3> pv = p.mesh().positions(), qv = q.mesh().positions();
+  std::sort(pv.begin(), pv.end());
+  std::sort(qv.begin(), qv.end());
+  EXPECT_EQ(pv, qv);
+  EXPECT_TRUE(facet_keys(p) == facet_keys(q));
 }
 
 std::vector<Vec3> sorted(std::vector<Vec3> v) {
@@ -139,6 +165,58 @@ TEST(IntegerDualHull, SphereFacetPlanesThroughEveryVertex) {
   EXPECT_EQ(sorted(v->vertices), sorted(s.mesh().positions()));
   expect_tight_rows_hold(*v, h.inequalities);
   expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+}
+
+// Whole-pipeline check of a system: the vertices against the triple
+// enumeration, the polyhedron against convex_hull of them (as sets).
+void expect_matches_oracles(const std::vector<HalfspaceRow>& rows, const Vec3& x0) {
+  const std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(sorted(v->vertices), test::brute_force_vertices(rows));
+  expect_tight_rows_hold(*v, rows);
+  expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+  expect_same_polyhedron(from_halfspaces(rows).polyhedron(), convex_hull(v->vertices));
+}
+
+TEST(IntegerDualHull, ManyRowsThroughOneApex) {
+  // A pyramid over a convex 12-gon: 12 rows x_i x + y_i y + z <= 1 all tight
+  // at the apex (0, 0, 1) (one dual facet of 12 coplanar points), the
+  // points (x_i, y_i) on the circle x^2 + y^2 = 25 (in convex position),
+  // and a floor z >= −1; every row repeated once, one scaled by 3.
+  const long pts[12][2] = {{5, 0},  {4, 3},  {3, 4},  {0, 5},  {-3, 4}, {-4, 3},
+                           {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  std::vector<HalfspaceRow> rows;
+  for (int i = 0; i < 12; ++i) {
+    rows.push_back({Vec3{Rational(pts[i][0]), Rational(pts[i][1]), Rational(1)}, Rational(1)});
+    rows.push_back(rows.back());
+  }
+  rows[3] = {Rational(3) * rows[3].normal, Rational(3) * rows[3].offset};
+  rows.push_back({Vec3{0, 0, -1}, Rational(1)});
+  expect_matches_oracles(rows, Vec3{0, 0, 0});
+}
+
+TEST(IntegerDualHull, RowsBeyondTheFixedWidthTakeMpz) {
+  // Rows with normals of about 300 bits (a perturbation over 2^300 + k),
+  // so the dual points exceed the fixed-width determinant's 255 bits.
+  Rng rng(1604);
+  int bounded = 0;
+  for (int round = 0; round < 20; ++round) {
+    SCOPED_TRACE("seed 1604 round " + std::to_string(round));
+    const Vec3 x0{fraction(1, 3), fraction(-2, 7), fraction(5, 11)};
+    std::vector<HalfspaceRow> rows = random_rows(rng, x0, 8 + round % 8);
+    mpz_class big = 1;
+    big <<= 300;
+    for (HalfspaceRow& r : rows) {
+      Rational tiny(mpz_class(1 + static_cast<long>(rng() % 5)), big + static_cast<long>(rng() % 1000));
+      tiny.canonicalize();
+      r.normal.x += tiny;
+      r.offset = dot(r.normal, x0) + 1 + static_cast<long>(rng() % 9);
+    }
+    if (!bounded_by_box(rows)) continue;
+    ++bounded;
+    expect_matches_oracles(rows, x0);
+  }
+  EXPECT_GE(bounded, 10);
 }
 
 TEST(IntegerDualHull, UnboundedSystemsGiveNothing) {

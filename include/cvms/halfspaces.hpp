@@ -60,7 +60,14 @@ struct HalfspaceIntersection {
 /// hull (convex_hull_set) has the vertices of the result as its facets and
 /// the irredundant rows as its vertices; the origin not strictly inside that
 /// hull means unbounded, and a facet (or plane) of the hull that misses it
-/// names the direction.
+/// names the direction. A bounded polyhedron is read off that hull (its
+/// polar: dual facets are the vertices, dual vertices the facets, dual edges
+/// the edges), with no second hull.
+/// Order (deterministic, the same on every run and thread count): a
+/// polyhedron's facets come in the order of their rows (of duplicated rows,
+/// one stands for all), its vertices in order of first use by the facets; a
+/// polygon, segment or point comes in convex_hull_set's order of its
+/// vertices.
 /// Complexity: O(m) rational operations per simplex pivot (m rows), then
 /// O(m log m) expected for the dual hull.
 HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities);

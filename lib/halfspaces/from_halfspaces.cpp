@@ -13,11 +13,13 @@
 // q_i·n <= 0 for all i: the direction of unboundedness.
 //
 // In three dimensions a bounded set takes the integer path
-// (integer_dual_hull.hpp, intersection_polyhedron.hpp): the same hull,
-// decided on homogeneous integer dual points, its vertices by Cramer's rule
-// from three tight rows, their hull decided on the Cramer numerators and its
-// planes read off the rows. The rational dual hull below runs only for an
-// unbounded set (to name the same direction as always) and in the plane.
+// (integer_dual_hull.hpp, intersection_polyhedron.hpp) around a strict
+// interior point with short coordinates (short_interior_point.hpp): the
+// hull decided on homogeneous integer dual points, its facets' vertices by
+// Cramer's rule from three tight rows, and the polyhedron read off the dual
+// hull (its polar) with its planes taken from the rows. The rational dual
+// hull below runs only for an unbounded set (around the LP's point, to name
+// the same direction as always) and in the plane.
 #include "cvms/halfspaces.hpp"
 
 #include <string>
@@ -27,6 +29,7 @@
 #include "cvms/error.hpp"
 #include "intersection_polyhedron.hpp"
 #include "max_slack_lp.hpp"
+#include "short_interior_point.hpp"
 
 namespace cvms {
 
@@ -56,11 +59,13 @@ Vec3 direction_to_space(const Chart& chart, const std::vector<Rational>& u) {
 // makes the result empty (false) when it fails.
 bool rows_in_chart(std::span<const HalfspaceRow> rows, const Chart& chart, std::vector<detail::LpRow>& out) {
   out.clear();
+  out.reserve(rows.size());
   // A chart of dimension 3 is the identity (whole_space; restrict_chart
   // drops an axis), so its rows are the given ones, with no products.
   const bool identity = chart.axes.size() == 3;
   for (const HalfspaceRow& row : rows) {
     detail::LpRow r;
+    r.a.reserve(chart.axes.size());
     bool zero = true;
     for (std::size_t k = 0; k < chart.axes.size(); ++k) {
       r.a.push_back(identity ? row.normal[static_cast<int>(k)] : dot(row.normal, chart.axes[k]));
@@ -198,7 +203,8 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
     }
     // A chart of dimension 3 is all of space (restrict_chart drops an axis).
     if (dimension == 3) {
-      if (const std::optional<detail::DualVertices> v = detail::bounded_vertices(rows, lp.point))
+      if (const std::optional<detail::DualVertices> v =
+              detail::bounded_vertices(rows, detail::short_interior_point(rows, lp.point)))
         return {ConvexSet(detail::intersection_polyhedron(*v)), std::nullopt};
     }
     const DualAnswer dual = dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension);

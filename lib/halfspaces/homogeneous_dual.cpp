@@ -33,12 +33,18 @@ HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vect
   HomogeneousDual dual;
   dual.points.reserve(rows.size());
   dual.offsets.reserve(rows.size());
+  dual.normal_contents.reserve(rows.size());
   mpz_class scale, g;
   for (const LpRow& row : rows) {
     std::array<mpz_class, 4> n = over_common_denominator({&row.a[0], &row.a[1], &row.a[2], &row.b}, scale);
-    g = 0;
-    for (const mpz_class& v : n) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), v.get_mpz_t());
-    for (mpz_class& v : n) mpz_divexact(v.get_mpz_t(), v.get_mpz_t(), g.get_mpz_t());
+    mpz_class& content = dual.normal_contents.emplace_back();
+    mpz_gcd(content.get_mpz_t(), n[0].get_mpz_t(), n[1].get_mpz_t());
+    mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), n[2].get_mpz_t());
+    mpz_gcd(g.get_mpz_t(), content.get_mpz_t(), n[3].get_mpz_t());
+    if (g != 1) {
+      for (mpz_class& v : n) mpz_divexact(v.get_mpz_t(), v.get_mpz_t(), g.get_mpz_t());
+      mpz_divexact(content.get_mpz_t(), content.get_mpz_t(), g.get_mpz_t());
+    }
     HomogeneousPoint& p = dual.points.emplace_back();
     p.w = n[3] * d;
     mpz_submul(p.w.get_mpz_t(), n[0].get_mpz_t(), xd[0].get_mpz_t());

@@ -25,6 +25,10 @@ namespace cvms::detail {
 struct HomogeneousDual {
   std::vector<HomogeneousPoint> points;  ///< (a_i, s_i): a_i the primitive row normal, s_i > 0
   std::vector<mpz_class> offsets;        ///< b_i of the primitive row (a_i, b_i)
+  /// gcd(a_i) of the primitive row (usually 1): the facet's primitive
+  /// normal is a_i / c_i and its offset b_i / c_i, with no gcd to compute
+  /// later (the gcd of the four entries is taken through it anyway).
+  std::vector<mpz_class> normal_contents;
 };
 
 /// The dual of rows in 3 unknowns (no zero normal) around x0.

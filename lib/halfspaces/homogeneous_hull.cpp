@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: MIT
 // homogeneous_hull (homogeneous_hull.hpp). The soup is the one hull_soup
 // gives on the rational points: every decision of the quickhull is the exact
-// sign of a predicate, whichever stage answers it.
+// sign of a predicate, whichever stage answers it. The exact stage is the
+// integer determinant of homogeneous_orient.cpp, in fixed-width integers
+// (fixed_det4.hpp, with the overflow proof) when every coordinate of every
+// point has at most 255 bits, each point converted once; in mpz otherwise.
 #include "homogeneous_hull.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
 #include "approx.hpp"
 #include "error_bounds.hpp"
+#include "filtered_predicates.hpp"
+#include "fixed_det4.hpp"
 #include "hull_soup.hpp"
 
 namespace cvms::detail {
@@ -52,13 +58,84 @@ Vec3 standing_for(const HomogeneousPoint& p) {
   return q;
 }
 
+namespace {
+
+// The widest entry of the points, in signed limbs (fixed_det4.hpp).
+int width(const std::vector<HomogeneousPoint>& points) {
+  int limbs = 1;
+  for (const HomogeneousPoint& p : points)
+    for (const mpz_class* v : {&p.x, &p.y, &p.z, &p.w}) limbs = std::max(limbs, signed_limbs(v->get_mpz_t()));
+  return limbs;
+}
+
+// The last-row cofactors of recent triangles (a, b, c), direct-mapped: the
+// quickhull asks one triangle about many points (its conflict points, the
+// coplanar neighbours when merging facets), and each later question then
+// costs four products instead of a 4×4 determinant. An entry is used only
+// for the very same ordered triple.
+template <int E>
+class CofactorCache {
+ public:
+  // 2^bits entries, fewer for few points (a small hull should not pay for
+  // clearing a large cache).
+  explicit CofactorCache(std::size_t points) {
+    while (bits_ < 8 && (std::size_t{1} << bits_) < points) ++bits_;
+    entries_.resize(std::size_t{1} << bits_);
+  }
+
+  const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c, const std::vector<FixedRow<E>>& rows) {
+    Entry& e = entries_[(a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ c * 0xC2B2AE3Du) >> (32 - bits_)];
+    if (!e.used || e.a != a || e.b != b || e.c != c) {
+      e = {true, a, b, c, last_row_cofactors<E>(rows[a], rows[b], rows[c])};
+    }
+    return e.cofactors;
+  }
+
+ private:
+  struct Entry {
+    bool used = false;
+    std::uint32_t a = 0, b = 0, c = 0;
+    Cofactors<E> cofactors;
+  };
+  int bits_ = 2;
+  std::vector<Entry> entries_;
+};
+
+// The hull with every undecided orient3d as the integer determinant of
+// homogeneous_orient.cpp (sign orient3d = −sign det), each point converted
+// to E limbs once instead of at every call.
+template <int E>
+PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const ApproximatePoints& approx,
+                          std::vector<std::uint32_t>& source_index) {
+  std::vector<FixedRow<E>> rows;
+  rows.reserve(points.size());
+  for (const HomogeneousPoint& p : points)
+    rows.push_back(fixed_row<E>({p.x.get_mpz_t(), p.y.get_mpz_t(), p.z.get_mpz_t(), p.w.get_mpz_t()}));
+  CofactorCache<E> cache(points.size());
+  const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    ++predicate_counters().exact;
+    return sign_of(-fixed_det4_sign<E>(cache.cofactors(a, b, c, rows), rows[d]));
+  };
+  return hull_soup(approx, orient, source_index);
+}
+
+}  // namespace
+
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
                              std::vector<std::uint32_t>& source_index) {
   const Approximation approx = approximate(points);
+  const ApproximatePoints approximate_points{approx.coords, approx.max_error, exact};
+  switch (width(points)) {
+    case 1: return hull_in_width<1>(points, approximate_points, source_index);
+    case 2: return hull_in_width<2>(points, approximate_points, source_index);
+    case 3: return hull_in_width<3>(points, approximate_points, source_index);
+    case 4: return hull_in_width<4>(points, approximate_points, source_index);
+    default: break;
+  }
   const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     return homogeneous_orient3d(points[a], points[b], points[c], points[d]);
   };
-  return hull_soup(ApproximatePoints{approx.coords, approx.max_error, exact}, orient, source_index);
+  return hull_soup(approximate_points, orient, source_index);
 }
 
 }  // namespace cvms::detail

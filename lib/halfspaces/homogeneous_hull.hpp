@@ -3,8 +3,7 @@
 // coordinates (homogeneous_orient.hpp): its filters run on the doubles of
 // the quotients, each within a proven bound; what they leave undecided goes
 // to the integer determinant, so no rational is reduced for a decision.
-// Used twice by from_halfspaces: for the dual points a/s of the rows and for
-// the set's vertices, which Cramer's rule gives as (numerators, det).
+// Used by from_halfspaces for the dual points a/s of the rows.
 #pragma once
 
 #include <cstdint>

@@ -53,14 +53,12 @@ std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, con
     throw;
   }
   out.vertices.reserve(soup.num_faces());
-  out.cramer.reserve(soup.num_faces());
   out.tight.reserve(soup.face_indices.size());
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     const auto corners = soup.face(f);
     std::optional<HomogeneousPoint> x = tight_point(dual, row_of[corners[0]], row_of[corners[1]], row_of[corners[2]]);
     if (!x) return std::nullopt;
     out.vertices.push_back(standing_for(*x));
-    out.cramer.push_back(std::move(*x));
     for (std::uint32_t c : corners) out.tight.push_back(row_of[c]);
     out.tight_offsets.push_back(static_cast<std::uint32_t>(out.tight.size()));
   }

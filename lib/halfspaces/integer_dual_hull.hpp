@@ -3,7 +3,8 @@
 // R^3 from the exact hull of its homogeneous integer dual points
 // (homogeneous_dual.hpp): the hull's filters run on the doubles of a_i/s_i,
 // its exact fallback is the integer determinant (homogeneous_orient.hpp),
-// and of the hull only the combinatorics are used. Each facet of the dual
+// and of the hull only the combinatorics are used (the dual facets' corners
+// as rows, from which intersection_polyhedron.hpp reads the polyhedron). Each facet of the dual
 // hull is a vertex x of the set, where the rows of the facet's corners are
 // tight; any three corners of the strictly convex facet are affinely
 // independent, and the facet's plane misses the origin exactly when the set
@@ -31,9 +32,8 @@ namespace cvms::detail {
 struct DualVertices {
   HomogeneousDual dual;                   ///< the rows, index by index
   std::vector<Vec3> vertices;             ///< one per facet of the dual hull
-  std::vector<HomogeneousPoint> cramer;   ///< the same vertices, (numerators, det > 0)
   std::vector<std::uint32_t> tight_offsets{0};  ///< vertex v: tight[tight_offsets[v] .. tight_offsets[v + 1])
-  std::vector<std::uint32_t> tight;             ///< the rows at the corners of each dual facet
+  std::vector<std::uint32_t> tight;             ///< the rows at the corners of each dual facet, counterclockwise from outside
 };
 
 /// The vertices of {x : rows} (3 unknowns, no zero normal) in the order of

@@ -3,43 +3,69 @@
 // The trusted builder takes the planes as they are; they equal the ones
 // parts_with_planes would compute: the outward primitive integer normal of
 // a plane is unique, and the offset is its value on the plane.
+//
+// Why the walk below runs counterclockwise. At a dual vertex q, a dual facet
+// f holds q with its corners ... p, q, s ... counterclockwise seen from
+// outside; the facet across the edge p–q holds it as ... q, p ..., and that
+// facet follows f counterclockwise around q seen from outside (f lies to the
+// left of p → q, the other one to its right). Around a vertex of a convex
+// polytope, seen from outside, its facets and their outward normals turn
+// the same way (the facets' cone at q and its normal cone are polar); the
+// primal vertices of these facets are n_f / c_f (from_halfspaces.cpp), with
+// c_f > 0, so seen along q — the primal facet's outward normal — they turn
+// the same way too: the walk gives the primal facet counterclockwise.
 #include "intersection_polyhedron.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <span>
+#include <tuple>
 
 #include "cvms/error.hpp"
-#include "homogeneous_hull.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
 namespace {
 
-std::span<const std::uint32_t> tight_rows(const DualVertices& v, std::uint32_t vertex) {
-  return {v.tight.data() + v.tight_offsets[vertex], v.tight_offsets[vertex + 1] - v.tight_offsets[vertex]};
-}
+// Dual vertex `row` as a corner of dual facet (= primal vertex) `vertex`,
+// with its neighbours in the facet's counterclockwise cycle.
+struct Corner {
+  std::uint32_t row, next, previous, vertex;
+};
 
-bool contains(std::span<const std::uint32_t> rows, std::uint32_t r) {
-  return std::find(rows.begin(), rows.end(), r) != rows.end();
-}
+bool before(const Corner& a, const Corner& b) { return std::tie(a.row, a.next) < std::tie(b.row, b.next); }
 
-// A row tight at the first three corners of a facet (given as vertices).
-std::uint32_t facet_row(const DualVertices& v, std::span<const std::uint32_t> corners) {
-  for (std::uint32_t r : tight_rows(v, corners[0]))
-    if (contains(tight_rows(v, corners[1]), r) && contains(tight_rows(v, corners[2]), r)) return r;
-  throw Error(ErrorCategory::invalid_argument, "intersection_polyhedron: a facet with no tight row");  // unreachable
+// Every corner of every dual facet, grouped by row and, within a row, by the
+// next corner.
+std::vector<Corner> sorted_corners(const DualVertices& v) {
+  std::vector<Corner> corners;
+  corners.reserve(v.tight.size());
+  for (std::uint32_t vertex = 0; vertex + 1 < v.tight_offsets.size(); ++vertex) {
+    const std::uint32_t begin = v.tight_offsets[vertex], end = v.tight_offsets[vertex + 1];
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::uint32_t next = i + 1 == end ? begin : i + 1, previous = i == begin ? end - 1 : i - 1;
+      corners.push_back({v.tight[i], v.tight[next], v.tight[previous], vertex});
+    }
+  }
+  std::sort(corners.begin(), corners.end(), before);
+  return corners;
 }
 
 // The plane a·x == b of row r as an outward primitive integer normal and
-// its offset.
+// its offset: the primitive row divided by the gcd of its normal.
 void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
   const HomogeneousPoint& a = v.dual.points[r];
-  mpz_class g;
-  mpz_gcd(g.get_mpz_t(), a.x.get_mpz_t(), a.y.get_mpz_t());
-  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), a.z.get_mpz_t());
-  Vec3 n{Rational(a.x / g), Rational(a.y / g), Rational(a.z / g)};
-  Rational offset(v.dual.offsets[r], g);
-  offset.canonicalize();
+  const mpz_class& content = v.dual.normal_contents[r];
+  Vec3 n;
+  Rational offset;
+  if (content == 1) {
+    n = Vec3{Rational(a.x), Rational(a.y), Rational(a.z)};
+    offset = v.dual.offsets[r];
+  } else {
+    n = Vec3{Rational(a.x / content), Rational(a.y / content), Rational(a.z / content)};
+    offset = Rational(v.dual.offsets[r], content);
+    offset.canonicalize();
+  }
   planes.normal_approx.push_back(ApproxVec3::of(n));
   planes.normals.push_back(std::move(n));
   planes.offsets.push_back(std::move(offset));
@@ -48,21 +74,45 @@ void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
 }  // namespace
 
 ConvexPolyhedron intersection_polyhedron(const DualVertices& v) {
-  std::vector<std::uint32_t> vertex_of;
-  PolygonSoup soup = homogeneous_hull(
-      v.cramer, [&](std::uint32_t i) { return v.vertices[i]; }, vertex_of);
-  soup.points.reserve(vertex_of.size());
-  for (std::uint32_t i : vertex_of) soup.points.push_back(v.vertices[i]);
-  FacetPlanes planes;
-  std::vector<std::uint32_t> corners;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    corners.clear();
-    for (std::uint32_t c : soup.face(f).first(3)) corners.push_back(vertex_of[c]);
-    add_plane(v, facet_row(v, corners), planes);
-  }
+  const std::vector<Corner> corners = sorted_corners(v);
+  constexpr std::uint32_t unnumbered = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> number(v.vertices.size(), unnumbered);
+  PolygonSoup soup;
+  soup.points.reserve(v.vertices.size());
   std::vector<ApproxVec3> approx;
-  approx.reserve(soup.points.size());
-  for (const Vec3& p : soup.points) approx.push_back(ApproxVec3::of(p));
+  approx.reserve(v.vertices.size());
+  // Reserved up front: a reallocation would copy every rational (Vec3's
+  // move is not noexcept).
+  std::size_t facets = 0;
+  for (std::size_t i = 0; i < corners.size(); ++i) facets += i == 0 || corners[i].row != corners[i - 1].row;
+  FacetPlanes planes;
+  planes.normals.reserve(facets);
+  planes.normal_approx.reserve(facets);
+  planes.offsets.reserve(facets);
+  soup.face_offsets.reserve(facets + 1);
+  soup.face_indices.reserve(corners.size());
+  std::vector<std::uint32_t> face;
+  for (auto group = corners.begin(); group != corners.end();) {
+    const auto group_end = std::find_if(group, corners.end(), [&](const Corner& c) { return c.row != group->row; });
+    face.clear();
+    auto c = group;
+    do {
+      if (number[c->vertex] == unnumbered) {
+        number[c->vertex] = static_cast<std::uint32_t>(soup.points.size());
+        soup.points.push_back(v.vertices[c->vertex]);
+        approx.push_back(ApproxVec3::of(soup.points.back()));
+      }
+      face.push_back(number[c->vertex]);
+      // The facet across the edge previous–row holds row just before previous.
+      const std::uint32_t previous = c->previous;
+      c = std::lower_bound(group, group_end, Corner{c->row, previous, 0, 0}, before);
+      if (c == group_end || c->next != previous || face.size() > v.vertices.size())
+        throw Error(ErrorCategory::invalid_argument, "intersection_polyhedron: an open ring of facets");  // unreachable
+    } while (c != group);
+    soup.add_face(face);
+    add_plane(v, group->row, planes);
+    group = group_end;
+  }
   return assemble(output_mesh(std::move(soup)), std::move(approx), std::move(planes));
 }
 

@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: MIT
 // The polyhedron of a bounded full-dimensional intersection of half-spaces
-// from its vertices and the rows tight at each (integer_dual_hull.hpp):
-// the exact hull of the vertices, decided on their Cramer numerators
-// (homogeneous_hull.hpp), so it is the soup convex_hull builds from the
-// rational vertices, and the planes read off the rows instead of recomputed
-// from the vertices. A facet's plane is the plane of any row tight at three
-// of its corners: three corners of a strictly convex facet are not
-// collinear, so only one plane holds them. The facet's row is such a row: a
-// facet of the set is an irredundant row, whose dual point is a corner of
-// the dual facet of each of the facet's vertices.
+// read off the dual hull (integer_dual_hull.hpp), with no second hull: the
+// set is the polar of the dual hull, so its vertices are the dual facets,
+// its facets the dual vertices (the irredundant rows) and its edges the dual
+// edges. A facet's vertices are the dual facets around its row's dual point,
+// in the order of the walk around that point (intersection_polyhedron.cpp
+// shows it is counterclockwise from outside); they are pairwise distinct
+// dual facets (maximal: no two coplanar facets share an edge), hence
+// pairwise distinct vertices of a strictly convex facet. A facet's plane is
+// its row's, made primitive.
+//
+// The order, which the docs of from_halfspaces state: facets in the order of
+// their rows (for duplicated rows, the row the dual hull kept), each starting
+// at the dual facet whose next corner is the row with the smallest index;
+// vertices numbered in order of first use by the facets.
 #pragma once
 
 #include "cvms/convex_polyhedron.hpp"
@@ -16,7 +21,8 @@
 
 namespace cvms::detail {
 
-/// The polyhedron, identical to convex_hull(v.vertices).
+/// The polyhedron, the same (vertices, oriented facets, exact planes) as
+/// convex_hull(v.vertices), in the order stated above.
 /// \pre v is the answer of bounded_vertices.
 ConvexPolyhedron intersection_polyhedron(const DualVertices& v);
 

@@ -30,6 +30,10 @@
 // each bound below still covers the unrounded intermediate, so the analysis
 // stays valid; x86-64 without -mfma never contracts anyway. The rounding mode
 // must be the default round to nearest (the library never changes it).
+//
+// Exact fixed-width integer arithmetic is no filter and has no error: its
+// bit-length bounds (that no intermediate overflows its limbs) are next to
+// the code they justify, in fixed_int.hpp and fixed_det4.hpp.
 #pragma once
 
 #include <cfloat>

@@ -9,12 +9,15 @@
 // det M by Laplace expansion along the first two rows: with the 2×2 minors
 // s_jk of rows a, b and c_jk of rows c, d (columns j < k),
 // det M = s01 c23 − s02 c13 + s03 c12 + s12 c03 − s13 c02 + s23 c01:
-// 30 integer products, no division.
+// 30 integer products, no division. With entries of at most 255 bits it is
+// evaluated in fixed-width integers on the stack (fixed_det4.hpp, with the
+// overflow proof); longer entries take GMP's mpz below.
 #include "homogeneous_orient.hpp"
 
 #include <gmp.h>
 
 #include "filtered_predicates.hpp"
+#include "fixed_det4.hpp"
 
 namespace cvms {
 namespace {
@@ -59,6 +62,13 @@ void minors(const HomogeneousPoint& p, const HomogeneousPoint& q, mpz_t out[6]) 
 
 Sign homogeneous_orient3d(const HomogeneousPoint& a, const HomogeneousPoint& b, const HomogeneousPoint& c,
                           const HomogeneousPoint& d) {
+  ++predicate_counters().exact;
+  const std::array<std::array<mpz_srcptr, 4>, 4> rows = {
+      {{a.x.get_mpz_t(), a.y.get_mpz_t(), a.z.get_mpz_t(), a.w.get_mpz_t()},
+       {b.x.get_mpz_t(), b.y.get_mpz_t(), b.z.get_mpz_t(), b.w.get_mpz_t()},
+       {c.x.get_mpz_t(), c.y.get_mpz_t(), c.z.get_mpz_t(), c.w.get_mpz_t()},
+       {d.x.get_mpz_t(), d.y.get_mpz_t(), d.z.get_mpz_t(), d.w.get_mpz_t()}}};
+  if (const std::optional<int> s = detail::fixed_det4_sign(rows)) return sign_of(-*s);
   thread_local Scratch s;
   minors(a, b, s.top);
   minors(c, d, s.bottom);
@@ -71,7 +81,6 @@ Sign homogeneous_orient3d(const HomogeneousPoint& a, const HomogeneousPoint& b, 
     else
       mpz_addmul(s.det, s.top[m], s.bottom[5 - m]);
   }
-  ++predicate_counters().exact;
   return sign_of(-mpz_sgn(s.det));
 }
 

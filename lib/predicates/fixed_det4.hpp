@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// The sign of a 4×4 integer determinant in fixed-width integers
+// (fixed_int.hpp) when every entry is short: the exact stage of
+// homogeneous_orient3d, whose degenerate inputs (the coplanar dual points of
+// a geodesic sphere's facet planes) make it decide thousands of exact zeros.
+//
+// Overflow proof, by the width E (in 64-bit limbs) chosen from the entries:
+// every entry has at most 64E − 1 bits, so |m_ij| < 2^(64E − 1).
+//  - A 2×2 minor u_j v_k − u_k v_j: each product is below 2^(128E − 2)
+//    (multiply in fixed_int.hpp), the difference below 2^(128E − 1): it fits
+//    the signed range of 2E limbs.
+//  - det = s01 c23 − s02 c13 + s03 c12 + s12 c03 − s13 c02 + s23 c01
+//    (Laplace along the first two rows, homogeneous_orient.cpp): each
+//    product of two minors is below 2^(256E − 2), the sum of six below
+//    6 · 2^(256E − 2) < 2^(256E + 1), inside the signed range of 4E + 1
+//    limbs (2^(256E + 63)), where the products are added after sign
+//    extension. Every intermediate of the sum is a partial sum of at most
+//    six such terms, so none wraps either.
+// Entries of more than max_fixed_entry_bits bits are not handled (the
+// caller falls back to GMP's mpz): huge rationals are legal input.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+#include <gmp.h>
+
+#include "fixed_int.hpp"
+
+namespace cvms::detail {
+
+/// Entries up to this many bits (E = 4 limbs) take the fixed-width path.
+inline constexpr std::size_t max_fixed_entry_bits = 4 * 64 - 1;
+
+/// The limbs a FixedInt needs to hold x: its GMP limbs, one more when the
+/// top bit of the top limb is set (x then has 64 n bits, and n signed limbs
+/// hold only 64 n − 1).
+inline int signed_limbs(mpz_srcptr x) noexcept {
+  const std::size_t n = mpz_size(x);
+  return n == 0 ? 1 : static_cast<int>(n + (mpz_getlimbn(x, static_cast<mp_size_t>(n - 1)) >> 63));
+}
+
+/// A matrix row in E limbs per entry. \pre every entry has at most 64E − 1 bits.
+template <int E>
+using FixedRow = std::array<FixedInt<E>, 4>;
+
+template <int E>
+FixedRow<E> fixed_row(const std::array<mpz_srcptr, 4>& entries) noexcept {
+  FixedRow<E> r;
+  for (int k = 0; k < 4; ++k) r[k] = FixedInt<E>::from(entries[k]);
+  return r;
+}
+
+namespace fixed_det4_internal {
+
+// The columns of the six 2×2 minors, in the order 01, 02, 03, 12, 13, 23.
+inline constexpr int first_column[6] = {0, 0, 0, 1, 1, 2};
+inline constexpr int second_column[6] = {1, 2, 3, 2, 3, 3};
+
+template <int E>
+std::array<FixedInt<2 * E>, 6> minors(const FixedRow<E>& u, const FixedRow<E>& v) noexcept {
+  std::array<FixedInt<2 * E>, 6> out;
+  for (int m = 0; m < 6; ++m) {
+    const int j = first_column[m], k = second_column[m];
+    out[m] = multiply(u[j], v[k]);
+    subtract_from(out[m], multiply(u[k], v[j]));
+  }
+  return out;
+}
+
+}  // namespace fixed_det4_internal
+
+/// The sign (−1, 0 or 1) of det[a; b; c; d] (the bound above holds).
+template <int E>
+int fixed_det4_sign(const FixedRow<E>& a, const FixedRow<E>& b, const FixedRow<E>& c, const FixedRow<E>& d) noexcept {
+  const std::array<FixedInt<2 * E>, 6> top = fixed_det4_internal::minors<E>(a, b),
+                                       bottom = fixed_det4_internal::minors<E>(c, d);
+  FixedInt<4 * E + 1> det;
+  for (int k = 0; k < 6; ++k) {
+    // s_jk pairs with the complementary minor c_(5 − k); signs + − + + − +.
+    const FixedInt<4 * E + 1> term = multiply(top[k], bottom[5 - k]).template widened<4 * E + 1>();
+    if (k == 1 || k == 4)
+      subtract_from(det, term);
+    else
+      add_to(det, term);
+  }
+  return det.sign();
+}
+
+/// The cofactors of the last row of [a; b; c; d]: det = sum_k d_k cof_k for
+/// every d, so that many d against the same a, b, c cost four products each.
+/// Bound: cof_k = ±(a_p m_qr − a_q m_pr + a_r m_pq) with m the 2×2 minors of
+/// b, c (below 2^(128E − 1)), so |cof_k| < 3 · 2^(192E − 2) < 2^(192E): it
+/// fits 3E + 1 limbs; then |d_k cof_k| < 3 · 2^(256E − 3) and the sum of
+/// four is below 2^(256E + 1), inside the 4E + 1 limbs of fixed_det4_sign.
+template <int E>
+using Cofactors = std::array<FixedInt<3 * E + 1>, 4>;
+
+template <int E>
+Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, const FixedRow<E>& c) noexcept {
+  const std::array<FixedInt<2 * E>, 6> m = fixed_det4_internal::minors<E>(b, c);  // 01 02 03 12 13 23
+  // D_k, the 3×3 determinant without column k, along the row a; cof_k =
+  // (−1)^(k + 3) D_k (Laplace along the last row).
+  constexpr int column[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  constexpr int minor[4][3] = {{5, 4, 3}, {5, 2, 1}, {4, 2, 0}, {3, 1, 0}};
+  Cofactors<E> cof;
+  for (int k = 0; k < 4; ++k) {
+    FixedInt<3 * E + 1>& d = cof[k];
+    add_to(d, multiply(a[column[k][0]], m[minor[k][0]]).template widened<3 * E + 1>());
+    subtract_from(d, multiply(a[column[k][1]], m[minor[k][1]]).template widened<3 * E + 1>());
+    add_to(d, multiply(a[column[k][2]], m[minor[k][2]]).template widened<3 * E + 1>());
+    if (k % 2 == 0) d.negate();
+  }
+  return cof;
+}
+
+/// The sign (−1, 0 or 1) of det[a; b; c; d] from the cofactors of a, b, c.
+template <int E>
+int fixed_det4_sign(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
+  FixedInt<4 * E + 1> det;
+  for (int k = 0; k < 4; ++k) add_to(det, multiply(d[k], cof[k]));
+  return det.sign();
+}
+
+/// The sign (−1, 0 or 1) of det[m], or nothing if an entry has more than
+/// max_fixed_entry_bits bits.
+std::optional<int> fixed_det4_sign(const std::array<std::array<mpz_srcptr, 4>, 4>& m);
+
+}  // namespace cvms::detail

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: MIT
+// Tests of the fixed-width 4×4 determinant sign (lib/predicates/
+// fixed_det4.hpp), both by the 2×2 minors and by the last row's cofactors,
+// against an independent mpz evaluation (cofactor expansion
+// along the first row, 3×3 minors by Sarrus' rule): random entries of every
+// width from 1 to 255 bits (seeded), singular matrices (a row a combination
+// of the others), the extreme entries ±(2^b − 1) at each limb boundary in
+// Hadamard sign patterns (the largest determinants ±1 patterns reach), and
+// the refusal of entries of 256 bits and more.
+#include "fixed_det4.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <random>
+#include <string>
+
+#include <gmpxx.h>
+
+namespace cvms {
+namespace {
+
+using Rng = std::mt19937_64;
+using Matrix = std::array<std::array<mpz_class, 4>, 4>;
+
+int oracle_sign(const Matrix& m) {
+  mpz_class det = 0;
+  for (int c = 0; c < 4; ++c) {
+    int col[3], n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != c) col[n++] = k;
+    auto e = [&](int r, int k) -> const mpz_class& { return m[1 + r][col[k]]; };
+    const mpz_class minor = e(0, 0) * (e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1)) -
+                            e(0, 1) * (e(1, 0) * e(2, 2) - e(1, 2) * e(2, 0)) +
+                            e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0));
+    det += (c % 2 == 0 ? 1 : -1) * m[0][c] * minor;
+  }
+  return sgn(det);
+}
+
+template <int E>
+int cofactor_sign(const std::array<std::array<mpz_srcptr, 4>, 4>& p) {
+  const detail::Cofactors<E> cof = detail::last_row_cofactors<E>(detail::fixed_row<E>(p[0]), detail::fixed_row<E>(p[1]),
+                                                                 detail::fixed_row<E>(p[2]));
+  return detail::fixed_det4_sign<E>(cof, detail::fixed_row<E>(p[3]));
+}
+
+// The sign by the entry point, checked to agree with the cofactor path
+// (last_row_cofactors, then four products) in the same width.
+std::optional<int> fixed_sign(const Matrix& m) {
+  std::array<std::array<mpz_srcptr, 4>, 4> p;
+  int limbs = 1;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      p[r][c] = m[r][c].get_mpz_t();
+      limbs = std::max(limbs, detail::signed_limbs(p[r][c]));
+    }
+  const std::optional<int> s = detail::fixed_det4_sign(p);
+  if (!s) return s;
+  const int by_cofactors = limbs == 1   ? cofactor_sign<1>(p)
+                           : limbs == 2 ? cofactor_sign<2>(p)
+                           : limbs == 3 ? cofactor_sign<3>(p)
+                                        : cofactor_sign<4>(p);
+  EXPECT_EQ(by_cofactors, *s) << "the cofactor path disagrees";
+  return s;
+}
+
+// A uniform integer of at most `bits` bits, either sign.
+mpz_class random_integer(Rng& rng, int bits) {
+  mpz_class v = 0;
+  for (int k = 0; k < bits; k += 32) v = (v << 32) + mpz_class(static_cast<unsigned long>(rng() & 0xffffffffu));
+  mpz_fdiv_r_2exp(v.get_mpz_t(), v.get_mpz_t(), static_cast<mp_bitcnt_t>(bits));
+  return rng() % 2 == 0 ? mpz_class(-v) : v;
+}
+
+TEST(FixedDet4, RandomMatricesOfEveryWidthMatchMpz) {
+  Rng rng(1603);
+  int zeros = 0;
+  for (int round = 0; round < 6000; ++round) {
+    const int bits = 1 + round % 255;
+    SCOPED_TRACE("seed 1603 round " + std::to_string(round) + " bits " + std::to_string(bits));
+    Matrix m;
+    for (auto& row : m)
+      for (mpz_class& x : row) x = random_integer(rng, 1 + static_cast<int>(rng() % static_cast<unsigned>(bits)));
+    m[0][0] = random_integer(rng, bits);  // one entry of the full width, the rest shorter or equal
+    if (round % 3 == 0) {
+      // Row 3 = s row 0 + t row 1 (small s, t), clipped to the width: singular
+      // when nothing was clipped.
+      const long s = static_cast<long>(rng() % 5) - 2, t = static_cast<long>(rng() % 5) - 2;
+      bool fits = true;
+      for (int c = 0; c < 4; ++c) {
+        m[3][c] = s * m[0][c] + t * m[1][c];
+        fits = fits && mpz_sizeinbase(m[3][c].get_mpz_t(), 2) <= detail::max_fixed_entry_bits;
+      }
+      if (!fits) m[3] = m[1];
+    }
+    const int expected = oracle_sign(m);
+    zeros += expected == 0;
+    const std::optional<int> got = fixed_sign(m);
+    ASSERT_TRUE(got.has_value());
+    EXPECT_EQ(*got, expected);
+  }
+  EXPECT_GE(zeros, 1900);
+}
+
+TEST(FixedDet4, ExtremeEntriesAtEveryLimbBoundary) {
+  const int hadamard[4][4] = {{1, 1, 1, 1}, {1, -1, 1, -1}, {1, 1, -1, -1}, {1, -1, -1, 1}};
+  for (const int bits : {1, 2, 62, 63, 64, 65, 126, 127, 128, 129, 190, 191, 192, 193, 254, 255}) {
+    SCOPED_TRACE("bits " + std::to_string(bits));
+    mpz_class big = 1;
+    big = (big << bits) - 1;
+    for (int flip = 0; flip < 16; ++flip) {
+      // The Hadamard pattern with rows negated by `flip`, and a swapped
+      // pair of rows for odd flips: every sign of the largest determinant.
+      Matrix m;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m[r][c] = ((flip >> r) & 1 ? -1 : 1) * hadamard[r][c] * big;
+      if (flip % 2 == 1) std::swap(m[1], m[2]);
+      ASSERT_EQ(fixed_sign(m), std::optional<int>(oracle_sign(m)));
+      // All entries equal: rank one, determinant 0.
+      Matrix same;
+      for (auto& row : same)
+        for (mpz_class& x : row) x = (flip % 2 == 0 ? 1 : -1) * big;
+      EXPECT_EQ(fixed_sign(same), std::optional<int>(0));
+    }
+    // The identity scaled: det = big^4 > 0; one entry −big: det < 0.
+    Matrix diag;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) diag[r][c] = r == c ? big : mpz_class(0);
+    EXPECT_EQ(fixed_sign(diag), std::optional<int>(1));
+    diag[2][2] = -big;
+    EXPECT_EQ(fixed_sign(diag), std::optional<int>(-1));
+  }
+}
+
+TEST(FixedDet4, LongEntriesAreLeftToMpz) {
+  Matrix m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m[r][c] = r == c ? 1 : 0;
+  m[3][1] = mpz_class(1) << 255;  // 256 bits
+  EXPECT_FALSE(fixed_sign(m).has_value());
+  m[3][1] = -(mpz_class(1) << 255);
+  EXPECT_FALSE(fixed_sign(m).has_value());
+  m[3][1] = (mpz_class(1) << 255) - 1;
+  EXPECT_EQ(fixed_sign(m), std::optional<int>(1));
+}
+
+}  // namespace
+}  // namespace cvms
