@@ -64,8 +64,10 @@ std::vector<detail::VertexPair> wrong_epa_guess(std::mt19937_64& rng, const Conv
 PenetrationResult penetration_with(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                                    const detail::GjkCandidate& gjk_guess,
                                    const std::vector<detail::VertexPair>& epa_guess) {
-  const detail::SupportOperand sa{PlacedPolyhedron(a)};
-  const detail::SupportOperand sb{PlacedPolyhedron(b)};
+  const PlacedPolyhedron pa(a);
+  const PlacedPolyhedron pb(b);
+  const detail::SupportOperand sa(pa);
+  const detail::SupportOperand sb(pb);
   const detail::GjkOutcome g = detail::exact_gjk_from(sa, sb, detail::GjkGoal::distance, nullptr, gjk_guess);
   PenetrationResult r = detail::penetration_from_distance(detail::distance_from(g));
   if (!r.intersect) return r;
@@ -88,8 +90,10 @@ TEST(ProximityWarmStart, WrongGuessesGiveTheExactAnswer) {
   for (std::uint64_t seed = 1; seed <= 400; ++seed) {
     const test::RandomPlacement r = test::random_placement(seed);
     ASSERT_EQ(r.failure, "") << "seed " << seed << ": " << r.description;
-    const detail::SupportOperand sa{PlacedPolyhedron(r.a)};
-    const detail::SupportOperand sb{PlacedPolyhedron(r.b)};
+    const PlacedPolyhedron pa(r.a);
+    const PlacedPolyhedron pb(r.b);
+    const detail::SupportOperand sa(pa);
+    const detail::SupportOperand sb(pb);
     const detail::GjkCandidate guess = wrong_gjk_guess(rng, r.a, r.b);
     const DistanceResult d =
         detail::distance_from(detail::exact_gjk_from(sa, sb, detail::GjkGoal::distance, nullptr, guess));
@@ -107,8 +111,10 @@ TEST(ProximityWarmStart, IntersectionGoalWithWrongGuesses) {
   std::mt19937_64 rng(1718);
   for (std::uint64_t seed = 1; seed <= 200; ++seed) {
     const test::RandomPlacement r = test::random_placement(seed);
-    const detail::SupportOperand sa{PlacedPolyhedron(r.a)};
-    const detail::SupportOperand sb{PlacedPolyhedron(r.b)};
+    const PlacedPolyhedron pa(r.a);
+    const PlacedPolyhedron pb(r.b);
+    const detail::SupportOperand sa(pa);
+    const detail::SupportOperand sb(pb);
     const bool hit =
         detail::exact_gjk_from(sa, sb, detail::GjkGoal::intersection, nullptr, wrong_gjk_guess(rng, r.a, r.b))
             .intersect;

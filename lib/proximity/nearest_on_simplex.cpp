@@ -272,7 +272,41 @@ SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) 
   return answer_of(best, p, scale, newest);
 }
 
+namespace {
+
+Int det3(const IntVec& a, const IntVec& b, const IntVec& c) {
+  return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+}
+
+// Four points: the origin's barycentric coordinates in their tetrahedron,
+// by Cramer's rule on the points themselves (the weight of p_i is the
+// volume of the tetrahedron with p_i replaced by the origin, over the
+// whole one): determinants of the scaled coordinates, half the size of the
+// Gram route's, and no projection (aff is all of space).
+std::optional<SimplexNearest> inside_tetrahedron(const std::array<Vec3, 4>& points) {
+  std::array<IntVec, 4> p;
+  scale_to_integers(points, 4, p);
+  SimplexNearest out;
+  out.weight_num = {det3(p[1], p[2], p[3]), -det3(p[0], p[2], p[3]), det3(p[0], p[1], p[3]),
+                    -det3(p[0], p[1], p[2])};
+  out.weight_den = out.weight_num[0] + out.weight_num[1] + out.weight_num[2] + out.weight_num[3];
+  const int orientation = sgn(out.weight_den);
+  for (const mpz_class& w : out.weight_num)
+    if (sgn(w) != orientation || orientation == 0) return std::nullopt;
+  if (orientation < 0) {
+    for (mpz_class& w : out.weight_num) w = -w;
+    out.weight_den = -out.weight_den;
+  }
+  out.support_mask = 15;
+  out.point = Vec3{0, 0, 0};
+  out.squared_norm = 0;
+  return out;
+}
+
+}  // namespace
+
 std::optional<SimplexNearest> project_inside(const std::array<Vec3, 4>& points, int count) {
+  if (count == 4) return inside_tetrahedron(points);
   const int newest = count - 1;
   std::array<IntVec, 4> p;
   Int d[4][4];

@@ -33,6 +33,8 @@ class SupportOperand {
  public:
   /// A view of p (which must outlive the operand).
   explicit SupportOperand(const PlacedPolyhedron& p);
+  /// Not from a temporary: the operand keeps a pointer to it.
+  explicit SupportOperand(PlacedPolyhedron&&) = delete;
   /// A set of dimension 3 is viewed (it must outlive the operand); a lower
   /// one has its few vertices and their approximations copied, because
   /// ConvexSet keeps no approximations for the filters.
@@ -55,7 +57,10 @@ class SupportOperand {
   [[nodiscard]] std::array<double, 3> approx_position(VertexId v) const;
 
  private:
-  std::optional<PlacedPolyhedron> polyhedron_;
+  // Views, not copies (a PlacedPolyhedron holds 21 rationals): the solid
+  // walked, its placement when it has one, else the cycle.
+  const ConvexPolyhedron* solid_ = nullptr;
+  const PlacedPolyhedron* placed_ = nullptr;
   VertexCycle cycle_;  // when not a polyhedron
   // The placement's doubles (the exact placement is made of doubles, so
   // these are its entries, not roundings); identity when not placed.
