@@ -35,6 +35,10 @@ class SupportOperand {
   explicit SupportOperand(const PlacedPolyhedron& p);
   /// Not from a temporary: the operand keeps a pointer to it.
   explicit SupportOperand(PlacedPolyhedron&&) = delete;
+  /// p unmoved, viewed (no PlacedPolyhedron to build: its identity map is
+  /// 21 rationals).
+  explicit SupportOperand(const ConvexPolyhedron& p) : solid_(&p) {}
+  explicit SupportOperand(ConvexPolyhedron&&) = delete;
   /// A set of dimension 3 is viewed (it must outlive the operand); a lower
   /// one has its few vertices and their approximations copied, because
   /// ConvexSet keeps no approximations for the filters.
