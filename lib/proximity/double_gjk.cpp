@@ -143,7 +143,7 @@ constexpr int max_steps = 64;
 
 }  // namespace
 
-GjkCandidate double_gjk(const SupportOperand& a, const SupportOperand& b, const D3& b_offset) {
+GjkCandidate double_gjk(const SupportOperand& a, const SupportOperand& b, const D3& b_offset, bool until_separated) {
   Simplex s;
   s.p[0] = point_of(a, b, b_offset, VertexId(0), VertexId(0));
   s.size = 1;
@@ -155,6 +155,7 @@ GjkCandidate double_gjk(const SupportOperand& a, const SupportOperand& b, const 
     const VertexId vb = b.approx_support(s.v, s.p[0].vb);
     if (contains(s, va, vb)) break;
     Point w = point_of(a, b, b_offset, va, vb);
+    if (until_separated && ddot(s.v, w.c) > 0) break;  // <v, x> > 0 on C, as far as doubles tell
     if (!(s.vv - ddot(s.v, w.c) > 0)) break;  // optimal as far as doubles tell
     const Simplex before = s;
     s.p[s.size++] = w;

@@ -18,6 +18,9 @@ struct GjkCandidate {
 };
 
 /// B moved further by b_offset (rounded); finite or not, never throws.
-GjkCandidate double_gjk(const SupportOperand& a, const SupportOperand& b, const std::array<double, 3>& b_offset);
+/// With `until_separated`, it stops at the first direction that separates
+/// in doubles (the exact GjkGoal::intersection test then needs no more).
+GjkCandidate double_gjk(const SupportOperand& a, const SupportOperand& b, const std::array<double, 3>& b_offset,
+                        bool until_separated = false);
 
 }  // namespace cvms::detail

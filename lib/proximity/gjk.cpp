@@ -119,7 +119,7 @@ GjkOutcome exact_gjk(const SupportOperand& a, const SupportOperand& b, GjkGoal g
   std::array<double, 3> offset{0, 0, 0};
   if (b_offset != nullptr)
     for (int i = 0; i < 3; ++i) offset[i] = (*b_offset)[i].get_d();
-  return exact_gjk_from(a, b, goal, b_offset, double_gjk(a, b, offset));
+  return exact_gjk_from(a, b, goal, b_offset, double_gjk(a, b, offset, goal == GjkGoal::intersection));
 }
 
 GjkOutcome exact_gjk_from(const SupportOperand& a, const SupportOperand& b, GjkGoal goal, const Vec3* b_offset,
