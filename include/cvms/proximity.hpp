@@ -183,8 +183,10 @@ struct DistanceResult {
 /// point proves optimality exactly. It terminates because the distance
 /// strictly decreases and there are finitely many simplices (the proof is in
 /// lib/proximity/gjk.cpp). Output-sensitive: it never builds A + (-B).
-/// Which closest points are reported when they are not unique (parallel
-/// faces) is deterministic for the same inputs.
+/// The loop starts from the simplex a floating-point GJK ends with, if an
+/// exact test accepts it (else from one point): rounding changes the time,
+/// never the answer. Which closest points are reported when they are not
+/// unique (parallel faces) is deterministic for the same inputs.
 /// \throw Error(invalid_argument) for an empty operand.
 DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
 
@@ -240,7 +242,8 @@ struct PenetrationResult {
 /// support query of each operand per EPA step (a warm-started walk) and
 /// O(faces of the polytope) exact comparisons per step, plus the witnesses'
 /// distance query. The steps are as many as the vertices of A + (-B) the
-/// polytope needs near the answer, not all of them.
+/// polytope needs near the answer, not all of them; most are proposed by a
+/// floating-point EPA and only inserted and verified exactly.
 PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
 
 /// penetration() on the unmoved polyhedra.

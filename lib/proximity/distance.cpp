@@ -3,7 +3,7 @@
 // witnesses from its final simplex. With v = sum w_i (a_i - b_i) the nearest
 // point of A + (-B) (weights positive, sum 1), a = sum w_i a_i is in A and
 // b = sum w_i b_i is in B (convex combinations of their vertices), and
-// a - b = v: so |a - b|^2 = |v|^2 is the distance, and a = b when they
+// a - b = v (so b is computed as a - v): so |a - b|^2 = |v|^2 is the distance, and a = b when they
 // intersect. The same for polyhedra and for convex sets of any dimension:
 // both are SupportOperands.
 #include "cvms/proximity.hpp"
@@ -20,7 +20,9 @@ bool intersects(const PlacedPolyhedron& a, const PlacedPolyhedron& b) {
 }
 
 bool intersects(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
-  return intersects(PlacedPolyhedron(a), PlacedPolyhedron(b));
+  detail::check_operands(a, b, "intersects");
+  return detail::exact_gjk(detail::SupportOperand(a), detail::SupportOperand(b), detail::GjkGoal::intersection)
+      .intersect;
 }
 
 bool intersects(const ConvexSet& a, const ConvexSet& b) {
@@ -41,13 +43,9 @@ DistanceResult distance_from(const GjkOutcome& g) {
   r.intersect = g.intersect;
   r.iterations = g.iterations;
   const Vec3* a_points[4];
-  const Vec3* b_points[4];
-  for (int i = 0; i < g.size; ++i) {
-    a_points[i] = &g.simplex[i].a;
-    b_points[i] = &g.simplex[i].b;
-  }
+  for (int i = 0; i < g.size; ++i) a_points[i] = &g.simplex[i].a;
   r.witness_a = weighted_sum(a_points, g.weight_num.data(), g.weight_den, g.size);
-  r.witness_b = weighted_sum(b_points, g.weight_num.data(), g.weight_den, g.size);
+  r.witness_b = g.intersect ? r.witness_a : r.witness_a - g.nearest;  // a - b = v: one weighted sum, not two
   return r;
 }
 
@@ -59,7 +57,8 @@ DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedro
 }
 
 DistanceResult squared_distance(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
-  return squared_distance(PlacedPolyhedron(a), PlacedPolyhedron(b));
+  detail::check_operands(a, b, "squared_distance");
+  return detail::distance_with_offset(detail::SupportOperand(a), detail::SupportOperand(b), nullptr);
 }
 
 DistanceResult squared_distance(const ConvexSet& a, const ConvexSet& b) {

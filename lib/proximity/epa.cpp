@@ -60,6 +60,18 @@
 // with its barycentric weights l_i (exact), a = sum l_i a_i is in A, b =
 // sum l_i b_i is in B, and a - b = q.
 //
+// Warm start. Nothing above needs P to grow by the loop's own support
+// points: any point of M keeps the invariant. So before the loop, the
+// support points a floating-point EPA ends with (double_epa.cpp, on the
+// operands' approximations from the same tetrahedron) are inserted exactly,
+// each a pair of vertices of A and B, hence a point of M whatever rounding
+// did. When the guess is good the loop then only verifies the nearest faces
+// (one exact support query each), instead of growing P one exact step at a
+// time; when not, it goes on growing. The answer is the same either way:
+// the depth, the tied facets and the tie rule depend on M only, and the
+// witnesses on the triangle of P the chosen facet's foot point falls in,
+// which, like the triangulation of P, may differ from a cold start.
+//
 // Exactness and cost. Signs are filtered predicates (orient3d against the
 // face's vertices for "beyond"); the planes and squared distances are exact
 // (scaled integers, expanding_polytope.cpp), since they are values the loop
@@ -78,6 +90,7 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "double_epa.hpp"
 #include "expanding_polytope.hpp"
 #include "filtered_predicates.hpp"
 #include "nearest_on_simplex.hpp"
@@ -223,16 +236,36 @@ NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<Poly
   return out;
 }
 
+// The support points a floating-point EPA ends with, inserted exactly
+// (those in P already are skipped): each is a point of M, so P keeps the
+// invariant, and the loop below then mostly verifies.
+void warm_start(const SupportOperand& a, const SupportOperand& b, const std::vector<VertexPair>& guess,
+                ExpandingPolytope& p) {
+  for (const auto& [va, vb] : guess) p.add(polytope_point(va, vb, a.position(va) - b.position(vb)));
+}
+
 }  // namespace
 
 std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b,
                                               const GjkOutcome& gjk) {
+  return epa_nearest_facet_from(a, b, gjk, nullptr);
+}
+
+std::optional<NearestFacet> epa_nearest_facet_from(const SupportOperand& a, const SupportOperand& b,
+                                                   const GjkOutcome& gjk, const std::vector<VertexPair>* guess) {
   std::vector<PolytopePoint> s;
   for (int i = 0; i < gjk.size; ++i)
     s.push_back(polytope_point(gjk.simplex[i].vertex_a, gjk.simplex[i].vertex_b, gjk.simplex[i].c));
   while (s.size() < 4)
     if (!extend(a, b, s)) return std::nullopt;
   ExpandingPolytope p({std::move(s[0]), std::move(s[1]), std::move(s[2]), std::move(s[3])});
+  if (guess != nullptr) {
+    warm_start(a, b, *guess, p);
+  } else {
+    std::array<VertexPair, 4> start;
+    for (std::uint32_t i = 0; i < 4; ++i) start[i] = {p.points()[i].vertex_a, p.points()[i].vertex_b};
+    warm_start(a, b, double_epa(a, b, start), p);
+  }
   for (;;) {
     const std::vector<PolytopeFace*> nearest = nearest_faces(p);
     PolytopeFace* f = first_unverified(nearest);

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
+#include "double_epa.hpp"
 #include "gjk.hpp"
 #include "support_operand.hpp"
 
@@ -24,5 +26,12 @@ struct NearestFacet {
 /// \return the nearest facet, or nothing when M is flat (no facets).
 std::optional<NearestFacet> epa_nearest_facet(const SupportOperand& a, const SupportOperand& b,
                                               const GjkOutcome& gjk);
+
+/// epa_nearest_facet with `guess` (support points of M as vertex pairs)
+/// inserted before the loop instead of the double EPA's (which null asks
+/// for; the tests pass wrong or empty guesses): the same answer but for
+/// the witnesses. \pre the pairs are valid vertex ids of a and b.
+std::optional<NearestFacet> epa_nearest_facet_from(const SupportOperand& a, const SupportOperand& b,
+                                                   const GjkOutcome& gjk, const std::vector<VertexPair>* guess);
 
 }  // namespace cvms::detail

@@ -130,24 +130,26 @@ bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) cons
   return orient3d(ref(points_[f.v[0]]), ref(points_[f.v[1]]), ref(points_[f.v[2]]), ref(x)) == Sign::positive;
 }
 
-void ExpandingPolytope::add(PolytopePoint x) {
+bool ExpandingPolytope::add(PolytopePoint x) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges;
-  std::vector<PolytopeFace> kept;
-  kept.reserve(faces_.size() + 8);
-  for (PolytopeFace& f : faces_) {
-    if (!sees(f, x)) {
-      kept.push_back(std::move(f));
-      continue;
-    }
-    for (int e = 0; e < 3; ++e) visible_edges.emplace_back(f.v[e], f.v[(e + 1) % 3]);
+  std::vector<char> visible(faces_.size(), 0);
+  for (std::size_t i = 0; i < faces_.size(); ++i) {
+    if (!sees(faces_[i], x)) continue;
+    visible[i] = 1;
+    for (int e = 0; e < 3; ++e) visible_edges.emplace_back(faces_[i].v[e], faces_[i].v[(e + 1) % 3]);
   }
-  faces_ = std::move(kept);
+  if (visible_edges.empty()) return false;  // x is in P: P stays
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < faces_.size(); ++i)
+    if (!visible[i]) faces_[kept++] = std::move(faces_[i]);
+  faces_.resize(kept);
   const auto n = static_cast<std::uint32_t>(points_.size());
   points_.push_back(std::move(x));
   // A visible edge is on the horizon iff its twin is not visible too.
   for (const auto& [u, v] : visible_edges)
     if (std::find(visible_edges.begin(), visible_edges.end(), std::pair{v, u}) == visible_edges.end())
       add_face(u, v, n);
+  return true;
 }
 
 }  // namespace cvms::detail

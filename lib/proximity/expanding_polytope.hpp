@@ -66,8 +66,9 @@ class ExpandingPolytope {
   [[nodiscard]] std::vector<PolytopeFace>& faces() noexcept { return faces_; }
   [[nodiscard]] const std::vector<PolytopeFace>& faces() const noexcept { return faces_; }
 
-  /// P := conv(P + {x}). \pre x is strictly beyond some face of P.
-  void add(PolytopePoint x);
+  /// P := conv(P + {x}); false (and P unchanged) if x is beyond no face of
+  /// P, i.e. in P. \pre P + {x} is inside M (x a point of M).
+  bool add(PolytopePoint x);
 
   /// f's exact plane, computed on the first call.
   const FacePlane& plane(PolytopeFace& f);

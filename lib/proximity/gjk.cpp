@@ -36,10 +36,23 @@
 // there is no tolerance to tune and no "no progress" case to guess at, which
 // is where the floating-point versions fail (fcl #493, #495).
 //
+// Warm start. Nothing above needs the loop to begin with one point: it
+// needs W affinely independent with v the nearest point of conv(W) and
+// every weight positive. So the loop starts from the simplex a GJK in
+// doubles ends with (double_gjk.cpp) when the exact projection of the
+// origin onto its affine hull has positive weights (project_inside: then
+// the points are independent and v is that nearest point), else from one
+// point as before. When the guess is right the first exact step proves it
+// optimal (two exact support walks, one comparison); when not, the exact
+// loop goes on from there. The distance is the same either way (the
+// nearest point is unique); the simplex, hence the witnesses when closest
+// points are not unique, is the one the loop ends with, deterministic.
+//
 // Intersection only (GjkGoal::intersection): stop as soon as <v, w> > 0, the
 // plane {x : <v, x> = <v, w>} then separating the origin from C.
 #include "gjk.hpp"
 
+#include "double_gjk.hpp"
 #include "filtered_predicates.hpp"
 #include "nearest_on_simplex.hpp"
 
@@ -72,18 +85,49 @@ void add_and_reduce(GjkOutcome& out, GjkPoint w) {
   out.squared_norm = std::move(n.squared_norm);
 }
 
-}  // namespace
-
-GjkOutcome exact_gjk(const SupportOperand& a, const SupportOperand& b, GjkGoal goal, const Vec3* b_offset) {
-  GjkOutcome out;
-  VertexId hint_a(0);
-  VertexId hint_b(0);
-  out.simplex[0] = point_of(a, b, b_offset, hint_a, hint_b);
+void cold_start(GjkOutcome& out, const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset) {
+  out.simplex[0] = point_of(a, b, b_offset, VertexId(0), VertexId(0));
   out.weight_num[0] = 1;
   out.weight_den = 1;
   out.size = 1;
   out.nearest = out.simplex[0].c;
   out.squared_norm = dot(out.nearest, out.nearest);
+}
+
+// The guessed simplex, if the exact projection has positive weights.
+bool warm_start(GjkOutcome& out, const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset,
+                const GjkCandidate& guess) {
+  if (guess.size < 1 || guess.size > 4) return false;
+  std::array<Vec3, 4> points;
+  for (int i = 0; i < guess.size; ++i) {
+    out.simplex[i] = point_of(a, b, b_offset, guess.vertex_a[i], guess.vertex_b[i]);
+    points[i] = out.simplex[i].c;
+  }
+  std::optional<SimplexNearest> n = project_inside(points, guess.size);
+  if (!n) return false;
+  out.size = guess.size;
+  for (int i = 0; i < out.size; ++i) out.weight_num[i] = std::move(n->weight_num[i]);
+  out.weight_den = std::move(n->weight_den);
+  out.nearest = std::move(n->point);
+  out.squared_norm = std::move(n->squared_norm);
+  return true;
+}
+
+}  // namespace
+
+GjkOutcome exact_gjk(const SupportOperand& a, const SupportOperand& b, GjkGoal goal, const Vec3* b_offset) {
+  std::array<double, 3> offset{0, 0, 0};
+  if (b_offset != nullptr)
+    for (int i = 0; i < 3; ++i) offset[i] = (*b_offset)[i].get_d();
+  return exact_gjk_from(a, b, goal, b_offset, double_gjk(a, b, offset, goal == GjkGoal::intersection));
+}
+
+GjkOutcome exact_gjk_from(const SupportOperand& a, const SupportOperand& b, GjkGoal goal, const Vec3* b_offset,
+                          const GjkCandidate& guess) {
+  GjkOutcome out;
+  if (!warm_start(out, a, b, b_offset, guess)) cold_start(out, a, b, b_offset);
+  VertexId hint_a = out.simplex[0].vertex_a;
+  VertexId hint_b = out.simplex[0].vertex_b;
   while (sgn(out.squared_norm) != 0) {
     ++out.iterations;
     const ApproxVec3 v_approx = ApproxVec3::of(out.nearest);

@@ -8,6 +8,7 @@
 #include <array>
 
 #include "cvms/proximity.hpp"
+#include "double_gjk.hpp"
 #include "support_operand.hpp"
 
 namespace cvms::detail {
@@ -42,5 +43,11 @@ enum class GjkGoal {
 /// exact vector (the simplex's b points include it).
 GjkOutcome exact_gjk(const SupportOperand& a, const SupportOperand& b, GjkGoal goal,
                      const Vec3* b_offset = nullptr);
+
+/// exact_gjk started from `guess` instead of the double GJK's (the tests
+/// pass wrong guesses): the same answer for any guess, only the time
+/// differs. \pre the guess's vertex ids are valid (any pairs, repeated or not).
+GjkOutcome exact_gjk_from(const SupportOperand& a, const SupportOperand& b, GjkGoal goal, const Vec3* b_offset,
+                          const GjkCandidate& guess);
 
 }  // namespace cvms::detail

@@ -226,15 +226,10 @@ Candidate enumerate_faces(const Int d[4][4], int count) {
 
 }  // namespace
 
-SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) {
-  const int newest = count - 1;
-  std::array<IntVec, 4> p;
-  const Int scale = scale_to_integers(points, count, p);
-  Int d[4][4];
-  for (int i = 0; i < count; ++i)
-    for (int j = i; j < count; ++j) d[i][j] = d[j][i] = idot(p[i], p[j]);
-  Candidate best;
-  if (!solve_face(d, newest, guess_face(d, count), best) || !is_optimal(d, count, best)) best = enumerate_faces(d, count);
+namespace {
+
+// The answer for the face `best` of the scaled points p.
+SimplexNearest answer_of(const Candidate& best, const std::array<IntVec, 4>& p, const Int& scale, int newest) {
   SimplexNearest out;
   out.support_mask = best.others | (1u << newest);
   for (mpz_class& w : out.weight_num) w = 0;
@@ -255,6 +250,70 @@ SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) 
   out.squared_norm = Rational(best.norm_num, dl * scale);
   out.squared_norm.canonicalize();
   return out;
+}
+
+// The scaled points and their Gram matrix.
+Int gram(const std::array<Vec3, 4>& points, int count, std::array<IntVec, 4>& p, Int d[4][4]) {
+  const Int scale = scale_to_integers(points, count, p);
+  for (int i = 0; i < count; ++i)
+    for (int j = i; j < count; ++j) d[i][j] = d[j][i] = idot(p[i], p[j]);
+  return scale;
+}
+
+}  // namespace
+
+SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) {
+  const int newest = count - 1;
+  std::array<IntVec, 4> p;
+  Int d[4][4];
+  const Int scale = gram(points, count, p, d);
+  Candidate best;
+  if (!solve_face(d, newest, guess_face(d, count), best) || !is_optimal(d, count, best)) best = enumerate_faces(d, count);
+  return answer_of(best, p, scale, newest);
+}
+
+namespace {
+
+Int det3(const IntVec& a, const IntVec& b, const IntVec& c) {
+  return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+}
+
+// Four points: the origin's barycentric coordinates in their tetrahedron,
+// by Cramer's rule on the points themselves (the weight of p_i is the
+// volume of the tetrahedron with p_i replaced by the origin, over the
+// whole one): determinants of the scaled coordinates, half the size of the
+// Gram route's, and no projection (aff is all of space).
+std::optional<SimplexNearest> inside_tetrahedron(const std::array<Vec3, 4>& points) {
+  std::array<IntVec, 4> p;
+  scale_to_integers(points, 4, p);
+  SimplexNearest out;
+  out.weight_num = {det3(p[1], p[2], p[3]), -det3(p[0], p[2], p[3]), det3(p[0], p[1], p[3]),
+                    -det3(p[0], p[1], p[2])};
+  out.weight_den = out.weight_num[0] + out.weight_num[1] + out.weight_num[2] + out.weight_num[3];
+  const int orientation = sgn(out.weight_den);
+  for (const mpz_class& w : out.weight_num)
+    if (sgn(w) != orientation || orientation == 0) return std::nullopt;
+  if (orientation < 0) {
+    for (mpz_class& w : out.weight_num) w = -w;
+    out.weight_den = -out.weight_den;
+  }
+  out.support_mask = 15;
+  out.point = Vec3{0, 0, 0};
+  out.squared_norm = 0;
+  return out;
+}
+
+}  // namespace
+
+std::optional<SimplexNearest> project_inside(const std::array<Vec3, 4>& points, int count) {
+  if (count == 4) return inside_tetrahedron(points);
+  const int newest = count - 1;
+  std::array<IntVec, 4> p;
+  Int d[4][4];
+  const Int scale = gram(points, count, p, d);
+  Candidate c;
+  if (!solve_face(d, newest, (1u << newest) - 1, c)) return std::nullopt;
+  return answer_of(c, p, scale, newest);
 }
 
 Vec3 weighted_sum(const Vec3* const points[], const mpz_class weight_num[], const mpz_class& weight_den, int count) {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "cvms/vec.hpp"
 
@@ -27,6 +28,13 @@ struct SimplexNearest {
 ///   nearest point's support contains points[count - 1] (GJK's newest point;
 ///   the proof that it does is in gjk.cpp). Only subsets containing it are tried.
 SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count);
+
+/// The projection of the origin onto aff(points[0..count)) if it lies in
+/// the relative interior of their hull (every weight positive): then it is
+/// the nearest point of the hull. Nothing if a weight is not positive or the
+/// points are affinely dependent (no precondition: the GJK's warm start
+/// passes points proposed by floating point).
+std::optional<SimplexNearest> project_inside(const std::array<Vec3, 4>& points, int count);
 
 /// sum weight_num[i] points[i] / weight_den, exact, for i < count: one
 /// common denominator, one gcd per coordinate.

@@ -66,7 +66,13 @@ PenetrationResult penetration(const PlacedPolyhedron& a, const PlacedPolyhedron&
 }
 
 PenetrationResult penetration(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
-  return penetration(PlacedPolyhedron(a), PlacedPolyhedron(b));
+  detail::check_operands(a, b, "penetration");
+  const detail::SupportOperand sa(a);
+  const detail::SupportOperand sb(b);
+  Start s = start(sa, sb);
+  if (!s.r.intersect) return s.r;
+  finish(s.r, *detail::epa_nearest_facet(sa, sb, s.gjk));  // both solid: the EPA answers
+  return s.r;
 }
 
 PenetrationResult penetration(const ConvexSet& a, const ConvexSet& b) {

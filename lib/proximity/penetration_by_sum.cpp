@@ -96,7 +96,9 @@ PenetrationResult penetration_by_sum(const PlacedPolyhedron& a, const PlacedPoly
   const ConvexPolyhedron& pa = a.is_placed() ? moved_a.emplace(a.materialized()) : a.polyhedron();
   const ConvexPolyhedron& pb = b.is_placed() ? moved_b.emplace(b.materialized()) : b.polyhedron();
   const ConvexPolyhedron m = minkowski_sum(pa, reflection(pb)).polyhedron;
-  depth_from_sum(m, SupportOperand(PlacedPolyhedron(pa)), SupportOperand(PlacedPolyhedron(pb)), r);
+  const PlacedPolyhedron unmoved_a(pa);
+  const PlacedPolyhedron unmoved_b(pb);
+  depth_from_sum(m, SupportOperand(unmoved_a), SupportOperand(unmoved_b), r);
   return r;
 }
 

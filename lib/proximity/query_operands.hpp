@@ -20,6 +20,8 @@ DistanceResult distance_from(const GjkOutcome& g);
 
 /// \throw Error(invalid_argument) naming `who` if an operand is empty.
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who);
+/// The same for unmoved polyhedra.
+void check_operands(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const char* who);
 /// \throw Error(invalid_argument) naming `who` and the operand (A or B) if
 ///   one is the empty set.
 void check_operands(const ConvexSet& a, const ConvexSet& b, const char* who);

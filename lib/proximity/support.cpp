@@ -55,6 +55,11 @@ void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const 
   check_operand(b.polyhedron(), who);
 }
 
+void check_operands(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const char* who) {
+  check_operand(a, who);
+  check_operand(b, who);
+}
+
 void check_operands(const ConvexSet& a, const ConvexSet& b, const char* who) {
   for (const auto& [set, name] : {std::pair{&a, "A"}, std::pair{&b, "B"}})
     if (set->empty()) throw Error(ErrorCategory::invalid_argument, std::string(who) + ": operand " + name + " is the empty set");

@@ -7,6 +7,7 @@
 // cycle (support_walk.hpp, CycleGraph).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -31,7 +32,13 @@ struct VertexCycle {
 class SupportOperand {
  public:
   /// A view of p (which must outlive the operand).
-  explicit SupportOperand(const PlacedPolyhedron& p) : polyhedron_(p) {}
+  explicit SupportOperand(const PlacedPolyhedron& p);
+  /// Not from a temporary: the operand keeps a pointer to it.
+  explicit SupportOperand(PlacedPolyhedron&&) = delete;
+  /// p unmoved, viewed (no PlacedPolyhedron to build: its identity map is
+  /// 21 rationals).
+  explicit SupportOperand(const ConvexPolyhedron& p) : solid_(&p) {}
+  explicit SupportOperand(ConvexPolyhedron&&) = delete;
   /// A set of dimension 3 is viewed (it must outlive the operand); a lower
   /// one has its few vertices and their approximations copied, because
   /// ConvexSet keeps no approximations for the filters.
@@ -44,9 +51,26 @@ class SupportOperand {
   /// The (moved) position of vertex v.
   [[nodiscard]] Vec3 position(VertexId v) const;
 
+  /// Heuristics for double_gjk.cpp, in plain doubles (no error bound: they
+  /// only propose candidates that exact arithmetic then checks). A vertex
+  /// maximising <x, u> as far as rounding tells, climbing from `start`; it
+  /// stops at the first vertex with no neighbour better in doubles (NaN
+  /// compares false, so the climb always ends).
+  [[nodiscard]] VertexId approx_support(const std::array<double, 3>& u, VertexId start) const;
+  /// The (moved) position of vertex v in doubles, rounded (maybe infinite).
+  [[nodiscard]] std::array<double, 3> approx_position(VertexId v) const;
+
  private:
-  std::optional<PlacedPolyhedron> polyhedron_;
+  // Views, not copies (a PlacedPolyhedron holds 21 rationals): the solid
+  // walked, its placement when it has one, else the cycle.
+  const ConvexPolyhedron* solid_ = nullptr;
+  const PlacedPolyhedron* placed_ = nullptr;
   VertexCycle cycle_;  // when not a polyhedron
+  // The placement's doubles (the exact placement is made of doubles, so
+  // these are its entries, not roundings); identity when not placed.
+  double linear_[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  double translation_[3] = {0, 0, 0};
+  void copy_placement();
 };
 
 }  // namespace cvms::detail
