@@ -172,7 +172,9 @@ struct DistanceResult {
   Vec3 witness_b;
   /// True iff they intersect (squared_distance == 0; touching counts).
   bool intersect = false;
-  /// Iterations of the exact GJK loop (one support query of each operand each).
+  /// Iterations of the exact GJK loop (one support query of each operand
+  /// each), counted after its warm start: 0 or 1 when the floating-point
+  /// guess was right.
   int iterations = 0;
 };
 
@@ -186,7 +188,10 @@ struct DistanceResult {
 /// The loop starts from the simplex a floating-point GJK ends with, if an
 /// exact test accepts it (else from one point): rounding changes the time,
 /// never the answer. Which closest points are reported when they are not
-/// unique (parallel faces) is deterministic for the same inputs.
+/// unique (parallel faces) is deterministic for the same inputs and the same
+/// build (the floating-point guess picks among tied answers; a build with
+/// other floating-point code generation, e.g. contracted multiply-adds, may
+/// pick another witness pair at the same exact distance).
 /// \throw Error(invalid_argument) for an empty operand.
 DistanceResult squared_distance(const PlacedPolyhedron& a, const PlacedPolyhedron& b);
 
