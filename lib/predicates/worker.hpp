@@ -11,9 +11,13 @@
 // is joined by the destructor, and what it threw is dropped: the caller's
 // exception is the one that leaves. Declare the worker after everything its
 // callable writes, so that it is joined before those are destroyed.
+//
+// run_on_threads is the N-thread form: the caller is one of the N, so that
+// N = 1 starts nothing and N = 2 starts one worker.
 #pragma once
 
 #include <exception>
+#include <memory>
 #include <thread>
 #include <utility>
 
@@ -64,5 +68,21 @@ class Worker {
   std::exception_ptr failure_;
   std::jthread thread_;  // last: destroyed (joined) first
 };
+
+/// Calls f(0) on this thread and f(1), ..., f(n - 1) on workers, and returns
+/// when all have returned. Their predicate counts are this thread's; f(0)'s
+/// exception leaves first, else the workers' in index order. A worker must
+/// not wait for another call (a worker that failed to start never runs).
+template <class F>
+void run_on_threads(unsigned n, F&& f) {
+  if (n <= 1) {
+    f(0u);
+    return;
+  }
+  const auto workers = std::make_unique<Worker[]>(n - 1);
+  for (unsigned i = 1; i < n; ++i) workers[i - 1].start([&f, i] { f(i); });
+  f(0u);
+  for (unsigned i = 1; i < n; ++i) workers[i - 1].join();
+}
 
 }  // namespace cvms::detail
