@@ -668,7 +668,8 @@ TEST(MinkowskiSum, ThreadedSearchStopsWhereOneThreadStops) {
   };
   for (std::uint64_t limit = pair.a.num_facets() + 40; limit <= facets; limit += facets / 7) {
     const std::string one = message(limit, 1);
-    for (const unsigned n : {2u, 4u, 8u}) EXPECT_EQ(message(limit, n), one) << "limit " << limit << ", " << n << " threads";
+    for (const unsigned n : {2u, 4u, 8u})
+      EXPECT_EQ(message(limit, n), one) << "limit " << limit << ", " << n << " threads";
   }
   EXPECT_EQ(message(facets, 8), "no error");
 }

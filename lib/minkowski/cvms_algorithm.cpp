@@ -152,9 +152,9 @@ namespace {
 // walk, added to out; returns their number. The walk meets the edges of B in
 // arc order; sorting them by edge index emits the facets in the paper
 // search's order, so both modes build the identical polyhedron.
-std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
-                              HalfedgeId ha, std::vector<HalfedgeId>& crossed, SumFacetBuilder& out,
-                              std::uint64_t& steps) {
+std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                              const ContributingVertices& cv_a, HalfedgeId ha,
+                              std::vector<HalfedgeId>& crossed, SumFacetBuilder& out, std::uint64_t& steps) {
   const Mesh& ma = a.mesh();
   crossed.clear();
   trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed, steps);
@@ -182,17 +182,24 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
 // thread that takes it, and merged in chunk order, which is the order one
 // thread gives.
 //
-// The budget. A thread takes no chunk once the facets found by all exceed the
-// allowance, and finishes the chunk it has, so the chunks traced are always
-// the first ones, in full: merge() replays one thread's checks on their
-// per-edge counts and throws the identical error where one thread would. At
-// most one chunk per thread is traced beyond that point.
+// The chunks are of all edges of A, Property 1 tested by the thread that
+// takes them, so that no serial pass precedes the threads. The budget. A
+// thread takes no chunk once the facets found by all exceed the allowance,
+// and finishes the chunk it has, so the chunks traced are always the first
+// ones, in full: merge() replays one thread's checks on their per-edge
+// counts and throws the identical error where one thread would (an edge that
+// fails Property 1 adds nothing, so checking before it too repeats the
+// previous check). At most one chunk per thread is traced beyond that point.
 class ThreadedTrace {
  public:
   ThreadedTrace(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
                 const EdgeFacetBudget& budget, unsigned threads)
-      : a_(a), b_(b), cv_a_(cv_a), budget_(budget), edges_(edges_passing_property1(a, cv_a)),
-        facets_of_edge_(edges_.size()), chunk_ends_((edges_.size() + chunk_size - 1) / chunk_size) {
+      : a_(a),
+        b_(b),
+        cv_a_(cv_a),
+        budget_(budget),
+        facets_of_edge_(a.num_edges()),
+        chunk_ends_((facets_of_edge_.size() + chunk_size - 1) / chunk_size) {
     // One thread per chunk at most, the caller included.
     const std::size_t lanes = std::min<std::size_t>(threads, chunk_ends_.size() + 1);
     lanes_.reserve(lanes);
@@ -209,8 +216,10 @@ class ThreadedTrace {
       const std::size_t c = next_chunk_.fetch_add(1, std::memory_order_relaxed);
       if (c >= chunk_ends_.size()) return;
       std::uint64_t found = 0;
-      for (std::size_t e = c * chunk_size; e < std::min((c + 1) * chunk_size, edges_.size()); ++e) {
-        facets_of_edge_[e] = add_traced_facets(a_, b_, cv_a_, edges_[e], lane.crossed, lane.out, lane.steps);
+      for (std::size_t e = c * chunk_size; e < std::min((c + 1) * chunk_size, facets_of_edge_.size()); ++e) {
+        const HalfedgeId ha = Mesh::halfedge(EdgeId(static_cast<std::uint32_t>(e)));
+        if (!may_produce_edge_facets(a_, cv_a_, ha)) continue;
+        facets_of_edge_[e] = add_traced_facets(a_, b_, cv_a_, ha, lane.crossed, lane.out, lane.steps);
         found += facets_of_edge_[e];
       }
       chunk_ends_[c] = {thread, lane.out.num_facets()};
@@ -237,7 +246,7 @@ class ThreadedTrace {
   }
 
  private:
-  static constexpr std::size_t chunk_size = 32;
+  static constexpr std::size_t chunk_size = 64;
   struct Lane {
     Lane(const ConvexPolyhedron& a, const ConvexPolyhedron& b) : out(a, b) {}
     SumFacetBuilder out;
@@ -255,8 +264,7 @@ class ThreadedTrace {
   const ConvexPolyhedron& b_;
   const ContributingVertices& cv_a_;
   const EdgeFacetBudget& budget_;
-  std::vector<HalfedgeId> edges_;
-  std::vector<std::size_t> facets_of_edge_;  // each written by the thread tracing the edge
+  std::vector<std::size_t> facets_of_edge_;  // by edge of A, each written by the thread tracing it
   std::vector<ChunkEnd> chunk_ends_;         // each written by the thread tracing the chunk
   std::vector<Lane> lanes_;
   std::atomic<std::size_t> next_chunk_{0};

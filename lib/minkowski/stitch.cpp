@@ -157,7 +157,10 @@ class BuildQueue {
   };
 
   BuildQueue(std::size_t vertices, std::size_t facets)
-      : vertices_(vertices), facets_(facets), vertex_chunks_(chunks(vertices)), tasks_(1 + vertex_chunks_ + chunks(facets)) {}
+      : vertices_(vertices),
+        facets_(facets),
+        vertex_chunks_(chunks(vertices)),
+        tasks_(1 + vertex_chunks_ + chunks(facets)) {}
 
   // One thread per task at most, the caller (building the mesh) aside.
   [[nodiscard]] unsigned tasks() const noexcept {

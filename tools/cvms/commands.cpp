@@ -88,7 +88,8 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   std::vector<ConvexSet> sets{read_set(args.a), read_set(args.b)};
   for (const std::string& path : args.more) sets.push_back(read_set(path));
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
-    return run_set_sum(sets, args.options(), args.output, args.format, coordinates_of(args.float_output), args.stats, report);
+    return run_set_sum(sets, args.options(), args.output, args.format, coordinates_of(args.float_output),
+                       args.stats, report);
   const ConvexPolyhedron& a = sets[0].polyhedron();
   const ConvexPolyhedron& b = sets[1].polyhedron();
   Timed sum = limited_sum(a, b, args);
