@@ -176,6 +176,7 @@ void BM_CVMS_2threads_SphereRot(benchmark::State& state) {
 void BM_CVMS_2threads_CubeSphere(benchmark::State& state) {
   run_family(state, Family::cube_sphere, with_threads(2));
 }
+// Up to 4 threads, no more than the cores (on two cores the 2-thread path).
 void BM_CVMS_4threads_SphereRot(benchmark::State& state) {
   run_family(state, Family::sphere_rotated, with_threads(4));
 }

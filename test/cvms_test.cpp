@@ -109,7 +109,7 @@ MinkowskiResult with_workers_always(const ConvexPolyhedron& a, const ConvexPolyh
   Options options;
   options.threads = n;
   detail::ResearchOptions research;
-  research.worker_minimums = {0, 0};
+  research.worker_minimums = {0, 0, true};
   return detail::minkowski_sum(a, b, options, research);
 }
 
@@ -658,7 +658,7 @@ TEST(MinkowskiSum, ThreadedSearchStopsWhereOneThreadStops) {
     options.threads = threads;
     options.limits.max_output_facets = limit;
     detail::ResearchOptions research;
-    research.worker_minimums = {0, 0};
+    research.worker_minimums = {0, 0, true};
     try {
       (void)detail::minkowski_sum(pair.a, pair.b, options, research);
     } catch (const Error& e) {

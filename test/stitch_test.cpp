@@ -11,6 +11,7 @@
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
 #include "polyhedron_builder.hpp"
+#include "research_options.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -66,6 +67,7 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
 
 // Options::threads = 2, 4, 8 build the same polyhedron (numbering included)
 // on workers plus the caller, and it equals CHMS, the independent oracle.
+// 4 and 8 threads run as many, whatever the cores (oversubscribe).
 TEST(Stitch, ThreadsBuildTheSamePolyhedron) {
   const std::pair<ConvexPolyhedron, ConvexPolyhedron> cases[] = {
       {shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3)},
@@ -81,7 +83,9 @@ TEST(Stitch, ThreadsBuildTheSamePolyhedron) {
       SCOPED_TRACE(std::to_string(n) + " threads");
       Options options;
       options.threads = n;
-      const ConvexPolyhedron threaded = minkowski_sum(a, b, options).polyhedron;
+      detail::ResearchOptions research;
+      research.worker_minimums.oversubscribe = true;
+      const ConvexPolyhedron threaded = detail::minkowski_sum(a, b, options, research).polyhedron;
       const PolygonSoup soup = threaded.to_soup();
       ASSERT_EQ(soup.points, one_soup.points);
       ASSERT_EQ(soup.face_offsets, one_soup.face_offsets);

@@ -57,9 +57,6 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
 
 /// The half-edge mesh of an output soup, topology checked as in
 /// Mesh::from_soup. \pre the points are canonical and pairwise distinct.
-/// The points are moved into the mesh, never read, and moving a vector keeps
-/// its elements in place: another thread may still be writing them through
-/// their addresses until the mesh is used (the threaded output build).
 Mesh output_mesh(PolygonSoup soup);
 
 /// The polyhedron from its mesh, the approximations of its vertices and the

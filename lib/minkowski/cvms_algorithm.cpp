@@ -31,6 +31,7 @@
 #include <atomic>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "arc_trace.hpp"
@@ -271,6 +272,14 @@ class ThreadedTrace {
   std::atomic<std::uint64_t> found_{0};
 };
 
+// Options::threads, but no more threads than cores unless the research
+// options ask (WorkerMinimums::oversubscribe).
+unsigned usable_threads(const Options& options, const ResearchOptions& research) {
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (research.worker_minimums.oversubscribe || cores == 0) return options.threads;
+  return std::min(options.threads, cores);
+}
+
 // The search modes are plain enums a caller may set to anything.
 void check_search_modes(const ResearchOptions& research) {
   if (research.contributing_vertex_search != ContributingVertexSearch::walk &&
@@ -370,7 +379,8 @@ void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           const ResearchOptions& research, Stats& stats) {
   const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
-  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
+  const bool large = facets.num_facets() >= research.worker_minimums.output_facets;
+  return facets.build(large ? usable_threads(options, research) : 1);
 }
 
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
@@ -400,12 +410,28 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
   // The arc walk needs only the contributing vertices of A's facets: with
-  // threads > 1, workers trace the edge facets while this thread does step 2
-  // and then joins them, and they are appended after step 2's facets in the
-  // order one thread gives.
-  if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
+  // threads > 1, workers trace the edge facets while this thread does step 2,
+  // and they are appended after step 2's facets in the order one thread
+  // gives. Two threads: one worker traces every edge into a builder of its
+  // own. More: all trace chunks of edges after step 2 (ThreadedTrace), which
+  // on two cores measured no faster, and in some runs slower (its workers'
+  // malloc arenas: README, Performance), hence only with more cores.
+  const unsigned threads = usable_threads(options, research);
+  if (threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
       std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
-    ThreadedTrace trace(a, b, cv_a, budget, options.threads);
+    if (threads == 2) {
+      SumFacetBuilder tracer_out(a, b);
+      Stats tracer_stats;
+      Worker tracer;  // after what it writes: destroyed (joined) first
+      tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
+      corner_facets();
+      tracer.join();  // its predicates count as this thread's
+      out.append(tracer_out, 0, tracer_out.num_facets());
+      stats.edge_candidates += tracer_stats.edge_candidates;
+      stats.edge_facets += tracer_stats.edge_facets;
+      return out;
+    }
+    ThreadedTrace trace(a, b, cv_a, budget, threads);
     run_on_threads(trace.threads(), [&](unsigned thread) {
       if (thread == 0) corner_facets();
       trace.run(thread);

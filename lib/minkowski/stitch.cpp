@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <latch>
 #include <functional>
-#include <limits>
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
@@ -142,78 +142,6 @@ Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) n
 // the output itself; otherwise a hash map.
 constexpr std::uint64_t dense_table_limit = 1u << 16;
 
-// The threaded build's work in the order it is handed out by one atomic
-// counter: sizing the planes (one task), the vertex sums, then the planes, in
-// chunks, so the split adapts to the input (any split gives the same exact
-// values). A thread only waits for the sizing, and only once some running
-// thread has taken it, so a worker that failed to start blocks nobody.
-class BuildQueue {
- public:
-  enum class Kind { size_planes, vertices, planes, done };
-  struct Task {
-    Kind kind;
-    std::size_t begin;
-    std::size_t end;
-  };
-
-  BuildQueue(std::size_t vertices, std::size_t facets)
-      : vertices_(vertices),
-        facets_(facets),
-        vertex_chunks_(chunks(vertices)),
-        tasks_(1 + vertex_chunks_ + chunks(facets)) {}
-
-  // One thread per task at most, the caller (building the mesh) aside.
-  [[nodiscard]] unsigned tasks() const noexcept {
-    return static_cast<unsigned>(std::min<std::size_t>(tasks_, std::numeric_limits<unsigned>::max()));
-  }
-
-  Task next() {
-    const std::size_t t = next_.fetch_add(1, std::memory_order_relaxed);
-    if (t == 0) return {Kind::size_planes, 0, 0};
-    if (t <= vertex_chunks_) return chunk(Kind::vertices, t - 1, vertices_);
-    if (t < tasks_) return chunk(Kind::planes, t - 1 - vertex_chunks_, facets_);
-    return {Kind::done, 0, 0};
-  }
-
-  // Runs the sizing and tells the waiting threads whether it succeeded.
-  template <class F>
-  void size_planes(F size) {
-    try {
-      size();
-    } catch (...) {
-      publish(State::failed);
-      throw;
-    }
-    publish(State::sized);
-  }
-
-  // False if the sizing failed.
-  bool wait_for_planes() {
-    state_.wait(State::pending);
-    return state_.load() == State::sized;
-  }
-
- private:
-  static constexpr std::size_t chunk_size = 256;
-  enum class State { pending, sized, failed };
-  static std::size_t chunks(std::size_t n) { return (n + chunk_size - 1) / chunk_size; }
-  static Task chunk(Kind kind, std::size_t index, std::size_t n) {
-    const std::size_t begin = index * chunk_size;
-    return {kind, begin, std::min(begin + chunk_size, n)};
-  }
-  void publish(State s) {
-    state_.store(s);
-    state_.notify_all();
-  }
-
-  std::size_t vertices_;
-  std::size_t facets_;
-  std::size_t vertex_chunks_;
-  std::size_t tasks_;
-  std::atomic<std::size_t> next_{0};
-  std::atomic<State> state_{State::pending};
-};
-
 }  // namespace
 
 SumFacetBuilder::SumFacetBuilder(const ConvexPolyhedron& a, const ConvexPolyhedron& b) : a_(a), b_(b) {}
@@ -286,33 +214,34 @@ void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, st
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr); }
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
-  Numbering numbered = number_vertices();
-  const std::size_t n = numbered.vertices.size();
-  // Sized first, then written in place: moving an mpq_class re-initialises
-  // the source, which allocates.
-  numbered.soup.points.resize(n);
-  if (approx != nullptr) approx->resize(n);
-  sum_vertices(numbered.vertices, 0, n, numbered.soup.points,
-               approx != nullptr ? std::span<ApproxVec3>(*approx) : std::span<ApproxVec3>());
-  return std::move(numbered.soup);
-}
-
-SumFacetBuilder::Numbering SumFacetBuilder::number_vertices() const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
-  Numbering out;
-  out.soup.face_offsets = offsets_;
-  out.soup.face_indices.resize(pairs_.size());
+  PolygonSoup soup;
+  soup.face_offsets = offsets_;
+  soup.face_indices.resize(pairs_.size());
+  soup.points.reserve(pairs_.size() / 3 + 1);  // each vertex is in at least three facets
+
+  if (approx != nullptr) approx->reserve(soup.points.capacity());
+  auto new_vertex = [&](const VertexPair& p) {
+    const VertexId va(p.a), vb(p.b);
+    // Built in place: moving an mpq_class re-initialises the source, which allocates.
+    Vec3& sum = soup.points.emplace_back();
+    for (int i = 0; i < 3; ++i) add_into(sum[i], a_.vertex(va)[i], b_.vertex(vb)[i]);
+    if (approx != nullptr) {
+      const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
+      approx->push_back(
+          {approx_sum(xa.x, xb.x, sum.x), approx_sum(xa.y, xb.y, sum.y), approx_sum(xa.z, xb.z, sum.z)});
+    }
+    return static_cast<std::uint32_t>(soup.points.size() - 1);
+  };
+
   if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{pairs_.size()}) {
     constexpr std::uint32_t unset = ~std::uint32_t{0};
     std::vector<std::uint32_t> index(table_size, unset);
     for (std::size_t i = 0; i < pairs_.size(); ++i) {
       std::uint32_t& slot = index[pairs_[i].a * nb + pairs_[i].b];
-      if (slot == unset) {
-        slot = static_cast<std::uint32_t>(out.vertices.size());
-        out.vertices.push_back(pairs_[i]);
-      }
-      out.soup.face_indices[i] = slot;
+      if (slot == unset) slot = new_vertex(pairs_[i]);
+      soup.face_indices[i] = slot;
     }
   } else {
     // Sparse: numbered by sorting, not hashing (std::hash of an integer is
@@ -320,24 +249,11 @@ SumFacetBuilder::Numbering SumFacetBuilder::number_vertices() const {
     // bucket count would make a hash map quadratic; issue 18, item 1).
     std::vector<std::uint64_t> keys(pairs_.size());
     for (std::size_t i = 0; i < pairs_.size(); ++i) keys[i] = pairs_[i].a * nb + pairs_[i].b;
-    detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
-    out.vertices.reserve(numbered.first.size());
-    for (const std::size_t first : numbered.first) out.vertices.push_back(pairs_[first]);
-    out.soup.face_indices = std::move(numbered.index);
+    const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
+    for (const std::size_t first : numbered.first) new_vertex(pairs_[first]);
+    for (std::size_t i = 0; i < pairs_.size(); ++i) soup.face_indices[i] = numbered.index[i];
   }
-  return out;
-}
-
-void SumFacetBuilder::sum_vertices(std::span<const VertexPair> vertices, std::size_t begin, std::size_t end,
-                                   std::span<Vec3> points, std::span<ApproxVec3> approx) const {
-  for (std::size_t i = begin; i < end; ++i) {
-    const VertexId va(vertices[i].a), vb(vertices[i].b);
-    Vec3& sum = points[i];
-    for (int k = 0; k < 3; ++k) add_into(sum[k], a_.vertex(va)[k], b_.vertex(vb)[k]);
-    if (approx.empty()) continue;
-    const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
-    approx[i] = {approx_sum(xa.x, xb.x, sum.x), approx_sum(xa.y, xb.y, sum.y), approx_sum(xa.z, xb.z, sum.z)};
-  }
+  return soup;
 }
 
 // What one thread needs to write planes: reused scratch and its own lazy
@@ -410,49 +326,49 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
 }
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
-  if (threads > 1) return build_threaded(threads);
   std::vector<ApproxVec3> vertex_approx;
-  Mesh mesh = output_mesh(soup(&vertex_approx));
-  FacetPlanes planes = sized_planes();
-  PlaneScratch scratch(*this);
-  write_planes(planes, 0, num_facets(), &mesh, scratch);
-  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
-}
-
-// The threaded build: after the numbering (this thread), the caller builds
-// the mesh's connectivity while the others size the planes and then all
-// share the vertex sums and the planes in chunks (BuildQueue). The mesh
-// takes the points before their sums are written: output_mesh only moves
-// them, and moving a vector keeps its elements where they are.
-ConvexPolyhedron SumFacetBuilder::build_threaded(unsigned threads) const {
-  Numbering numbered = number_vertices();
-  const std::size_t num_vertices = numbered.vertices.size();
-  numbered.soup.points.resize(num_vertices);  // in place, as in soup()
-  std::vector<ApproxVec3> vertex_approx(num_vertices);
-  const std::span<Vec3> points(numbered.soup.points);
   Mesh mesh;
-  FacetPlanes planes;
-  BuildQueue queue(num_vertices, num_facets());
-  run_on_threads(std::min(threads, queue.tasks()), [&](unsigned thread) {
-    if (thread == 0) mesh = output_mesh(std::move(numbered.soup));
+  auto build_mesh = [&] { mesh = output_mesh(soup(&vertex_approx)); };
+  if (threads <= 1) {
+    build_mesh();
+    FacetPlanes planes = sized_planes();
     PlaneScratch scratch(*this);
-    for (BuildQueue::Task task = queue.next(); task.kind != BuildQueue::Kind::done; task = queue.next()) {
-      switch (task.kind) {
-        case BuildQueue::Kind::size_planes:
-          queue.size_planes([&] { planes = sized_planes(); });
-          break;
-        case BuildQueue::Kind::vertices:
-          sum_vertices(numbered.vertices, task.begin, task.end, points, vertex_approx);
-          break;
-        case BuildQueue::Kind::planes:
-          if (!queue.wait_for_planes()) return;  // sizing them failed: its thread reports it
-          write_planes(planes, task.begin, task.end, nullptr, scratch);
-          break;
-        case BuildQueue::Kind::done:
-          break;
+    write_planes(planes, 0, num_facets(), &mesh, scratch);
+    return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
+  }
+  // Two parts: the vertices with the mesh (one thread), and the facet planes
+  // (the larger part, shared). A worker starts on the planes at once; this
+  // thread joins it when the mesh is done. Facets are handed out in chunks by
+  // an atomic counter, so the split adapts to the input, and any split gives
+  // the same exact planes.
+  constexpr std::size_t chunk = 256;
+  const std::size_t n = num_facets();
+  FacetPlanes planes;
+  std::atomic<std::size_t> next{0};
+  std::latch sized(1);
+  auto take_chunks = [&](const Mesh* with_mesh) {
+    PlaneScratch scratch(*this);
+    for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
+      write_planes(planes, begin, std::min(begin + chunk, n), with_mesh, scratch);
+  };
+  {
+    Worker worker;
+    worker.start([&] {
+      try {
+        planes = sized_planes();
+      } catch (...) {
+        next = n;            // nothing for anyone to write
+        sized.count_down();  // also on failure: the other thread waits for this
+        throw;
       }
-    }
-  });
+      sized.count_down();
+      take_chunks(nullptr);
+    });
+    build_mesh();  // if this throws, the worker joins before the exception leaves
+    sized.wait();
+    take_chunks(&mesh);
+    worker.join();  // rethrows the worker's exception
+  }
   return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
 }
 

@@ -63,9 +63,9 @@ class SumFacetBuilder {
   /// The normals are not recomputed from the output: each is the known
   /// normal of the facet of A or B it is parallel to, or, for e_A + e_B, the
   /// primitive direction of +-cross(d_A, d_B).
-  /// threads > 1 builds the mesh's connectivity on this thread while up to
-  /// threads - 1 workers sum the vertices and compute the facet planes,
-  /// which this thread then helps with (same result).
+  /// threads > 1 computes the facet planes on a second thread while this
+  /// one builds the vertices and the mesh, then shares the rest of the
+  /// planes (same result).
   [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
 
   /// The glued facets as a soup: one point per distinct vertex pair (its
@@ -78,24 +78,11 @@ class SumFacetBuilder {
   // write_planes fills facets [begin, end) (taking the offsets' points from
   // the output mesh if it is given). Threads may write disjoint ranges.
   struct PlaneScratch;
-  [[nodiscard]] ConvexPolyhedron build_threaded(unsigned threads) const;
   [[nodiscard]] FacetPlanes sized_planes() const;
   void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
                     PlaneScratch& scratch) const;
   // soup(), and if approx is not null the approximations of its points.
   [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx) const;
-  // The output vertices numbered by first use in facet order: the soup
-  // without its points, and the pair of each vertex. Only the sums are left,
-  // which sum_vertices writes into sized points for vertices [begin, end)
-  // (and their approximations unless approx is empty): threads may write
-  // disjoint ranges.
-  struct Numbering {
-    PolygonSoup soup;
-    std::vector<VertexPair> vertices;
-  };
-  [[nodiscard]] Numbering number_vertices() const;
-  void sum_vertices(std::span<const VertexPair> vertices, std::size_t begin, std::size_t end,
-                    std::span<Vec3> points, std::span<ApproxVec3> approx) const;
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
   // Where the normal of an output facet comes from: facet `index` of A or B,
   // or the edges of halfedges (index, other) with the given orientation.

@@ -18,6 +18,7 @@
 
 #include <exception>
 #include <memory>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -69,20 +70,28 @@ class Worker {
   std::jthread thread_;  // last: destroyed (joined) first
 };
 
-/// Calls f(0) on this thread and f(1), ..., f(n - 1) on workers, and returns
-/// when all have returned. Their predicate counts are this thread's; f(0)'s
-/// exception leaves first, else the workers' in index order. A worker must
-/// not wait for another call (a worker that failed to start never runs).
+/// Calls f(0) on this thread and f(1), ..., f(k - 1) on workers, k <= n,
+/// and returns when all have returned. Their predicate counts are this
+/// thread's; f(0)'s exception leaves first, else the workers' in index
+/// order. k < n only if the system refused to start another thread: the
+/// calls must share their work so that any k gives the same result (and
+/// may wait for f(0), which always runs). Returns k.
 template <class F>
-void run_on_threads(unsigned n, F&& f) {
+unsigned run_on_threads(unsigned n, F&& f) {
   if (n <= 1) {
     f(0u);
-    return;
+    return 1;
   }
   const auto workers = std::make_unique<Worker[]>(n - 1);
-  for (unsigned i = 1; i < n; ++i) workers[i - 1].start([&f, i] { f(i); });
+  unsigned started = 1;
+  try {
+    for (; started < n; ++started) workers[started - 1].start([&f, i = started] { f(i); });
+  } catch (const std::system_error&) {
+    // No more threads now: the ones started and this one do the work.
+  }
   f(0u);
-  for (unsigned i = 1; i < n; ++i) workers[i - 1].join();
+  for (unsigned i = 1; i < started; ++i) workers[i - 1].join();
+  return started;
 }
 
 }  // namespace cvms::detail
