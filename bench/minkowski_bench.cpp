@@ -32,13 +32,13 @@ using cvms_bench::Pair;
 constexpr const auto& kRows = cvms_bench::kTableRows;
 const ConvexPolyhedron& operand(int row) { return cvms_bench::table_operand(row); }
 
-// The default CVMS with Options::threads = 2 (a worker thread inside the
-// call). Timed in real time: the CPU time of the calling thread alone would
-// flatter it. It reports no peak_heap_bytes: the counters are per thread and
-// would miss the worker's allocations.
-cvms::Options two_threads() {
+// The default CVMS with Options::threads = n (workers inside the call).
+// Timed in real time: the CPU time of the calling thread alone would flatter
+// it. It reports no peak_heap_bytes: the counters are per thread and would
+// miss the workers' allocations.
+cvms::Options with_threads(unsigned n) {
   cvms::Options o;
-  o.threads = 2;
+  o.threads = n;
   return o;
 }
 
@@ -92,7 +92,7 @@ BENCHMARK(BM_CHMS)->Apply(table_args);
 BENCHMARK(BM_ESSDMS)->Apply(table_args);
 BENCHMARK(BM_CVMS_paper)->Apply(table_args);
 BENCHMARK(BM_CVMS)->Apply(table_args);
-void BM_CVMS_2threads(benchmark::State& state) { run_sum(state, two_threads()); }
+void BM_CVMS_2threads(benchmark::State& state) { run_sum(state, with_threads(2)); }
 BENCHMARK(BM_CVMS_2threads)->Apply(table_args)->UseRealTime();
 
 // --- Scaling families (bench_operands.hpp): Sphere_k + rotated Sphere_k and Cube + Sphere_k.
@@ -171,10 +171,14 @@ void BM_CVMS_paper_SphereRot(benchmark::State& state) {
 }
 void BM_CVMS_CubeSphere(benchmark::State& state) { run_family(state, Family::cube_sphere, {}); }
 void BM_CVMS_2threads_SphereRot(benchmark::State& state) {
-  run_family(state, Family::sphere_rotated, two_threads());
+  run_family(state, Family::sphere_rotated, with_threads(2));
 }
 void BM_CVMS_2threads_CubeSphere(benchmark::State& state) {
-  run_family(state, Family::cube_sphere, two_threads());
+  run_family(state, Family::cube_sphere, with_threads(2));
+}
+// Up to 4 threads, no more than the cores (on two cores the 2-thread path).
+void BM_CVMS_4threads_SphereRot(benchmark::State& state) {
+  run_family(state, Family::sphere_rotated, with_threads(4));
 }
 void BM_Limit_Mesh_SphereRot(benchmark::State& state) {
   run_output_only(state, Family::sphere_rotated, false);
@@ -191,6 +195,7 @@ BENCHMARK(BM_CVMS_paper_SphereRot)->Apply(small_family_args);
 BENCHMARK(BM_CVMS_CubeSphere)->Apply(family_args);
 BENCHMARK(BM_CVMS_2threads_SphereRot)->Apply(family_args)->UseRealTime();
 BENCHMARK(BM_CVMS_2threads_CubeSphere)->Apply(family_args)->UseRealTime();
+BENCHMARK(BM_CVMS_4threads_SphereRot)->Apply(family_args)->UseRealTime();
 BENCHMARK(BM_Limit_Mesh_CubeSphere)->Apply(family_args);
 BENCHMARK(BM_Limit_Build_CubeSphere)->Apply(family_args);
 

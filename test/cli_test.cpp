@@ -185,6 +185,20 @@ TEST_F(Cli, SumOfGeneratedFilesEqualsChmsForEveryAlgorithm) {
   }
 }
 
+// --threads N writes the same bytes as one thread (the library's guarantee,
+// through the CLI); 0 threads is a usage error.
+TEST_F(Cli, SumWithThreadsWritesTheSameFile) {
+  ASSERT_EQ(run("gen sphere --subdivisions 3 -o a.off").code, 0);
+  ASSERT_EQ(run("gen rotated-sphere --subdivisions 3 -o b.off").code, 0);
+  ASSERT_EQ(run("sum a.off b.off -o one.off").code, 0);
+  for (const char* threads : {"2", "4"}) {
+    Outcome o = run(std::string("sum a.off b.off --threads ") + threads + " -o many.off");
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(slurp(file("many.off")), slurp(file("one.off"))) << threads << " threads";
+  }
+  expect_usage("sum a.off b.off --threads 0");
+}
+
 TEST_F(Cli, SumStatsAndFloatOutput) {
   ASSERT_EQ(run("gen cube -o a.off").code, 0);
   ASSERT_EQ(run("gen rotated-sphere --subdivisions 1 -o b.off").code, 0);

@@ -16,11 +16,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -34,6 +36,7 @@
 #include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"
 #include "support/oracle.hpp"
+#include "support/prism_attack.hpp"
 #include "support/random_clouds.hpp"
 
 namespace cvms {
@@ -100,30 +103,46 @@ std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, cons
   return "";
 }
 
-// CVMS (default mode) with Options::threads = 2 and the worker started
+// CVMS (default mode) with Options::threads = n and the workers started
 // however small the sum (minkowski_sum keeps small sums on one thread).
-MinkowskiResult with_worker_always(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+MinkowskiResult with_workers_always(const ConvexPolyhedron& a, const ConvexPolyhedron& b, unsigned n) {
   Options options;
-  options.threads = 2;
+  options.threads = n;
   detail::ResearchOptions research;
-  research.worker_minimums = {0, 0};
+  research.worker_minimums = {0, 0, true};
   return detail::minkowski_sum(a, b, options, research);
 }
 
+// Every counter, the search work included.
+bool same_stats(const Stats& x, const Stats& y) {
+  const auto fields = [](const Stats& s) {
+    return std::array{s.translated_facets, s.corner_facets,         s.edge_facets,        s.contributing_ties,
+                      s.edge_candidates,   s.edge_paper_rejections, s.predicate_filtered, s.predicate_exact};
+  };
+  return fields(x) == fields(y);
+}
+
+// The thread counts of the differential suite: 2 on this machine's cores,
+// 4 and 8 oversubscribed, which shuffles the interleavings further.
+constexpr unsigned thread_counts[] = {2, 4, 8};
+
 // "" iff CVMS in the reference mode, in the default mode, and in the default
-// mode with a worker thread (Options::threads = 2) build the identical
-// polyhedron with the same facet counts, for a + b. The threaded run must
-// also report the same search work (steps and predicate evaluations).
-std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+// mode with workers (Options::threads = each of `threads`) build the
+// identical polyhedron with the same facet counts, for a + b. The threaded
+// runs must also report the same search work (steps and predicate
+// evaluations).
+std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                             std::span<const unsigned> threads) {
   const MinkowskiResult ref = sum_with(a, b, variant_options({Algorithm::cvms, true}));
   const MinkowskiResult fast = sum_with(a, b, variant_options({Algorithm::cvms, false}));
-  const MinkowskiResult threaded = with_worker_always(a, b);
   std::string why = same_result(ref, fast, "the two CVMS modes");
-  if (why.empty()) why = same_result(fast, threaded, "one and two threads");
-  if (why.empty() && (fast.stats.edge_candidates != threaded.stats.edge_candidates ||
-                      fast.stats.predicate_filtered != threaded.stats.predicate_filtered ||
-                      fast.stats.predicate_exact != threaded.stats.predicate_exact))
-    why = "one and two threads report different search work";
+  for (const unsigned n : threads) {
+    if (!why.empty()) break;
+    const MinkowskiResult threaded = with_workers_always(a, b, n);
+    const std::string what = "one and " + std::to_string(n) + " threads";
+    why = same_result(fast, threaded, what);
+    if (why.empty() && !same_stats(fast.stats, threaded.stats)) why = what + " report different Stats";
+  }
   return why;
 }
 
@@ -155,11 +174,12 @@ class Cvms : public ::testing::TestWithParam<Variant> {
   [[nodiscard]] static Algorithm algorithm() { return GetParam().algorithm; }
   [[nodiscard]] static test::SumOptions options() { return variant_options(GetParam()); }
   // The differential check between the CVMS modes runs once per case, in the
-  // default-mode instance.
-  [[nodiscard]] static std::string modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  // default-mode instance, with every thread count unless `threads` says.
+  [[nodiscard]] static std::string modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                                               std::span<const unsigned> threads = thread_counts) {
     if (algorithm() != Algorithm::cvms || GetParam().reference) return "";
-    const std::string ab = cvms_modes_agree(a, b);
-    return ab.empty() ? cvms_modes_agree(b, a) : ab;
+    const std::string ab = cvms_modes_agree(a, b, threads);
+    return ab.empty() ? cvms_modes_agree(b, a, threads) : ab;
   }
   // Shadows the free function: the algorithm under test.
   [[nodiscard]] static MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
@@ -554,7 +574,8 @@ TEST_P(Cvms, RandomPairsAgreeWithChms) {
       const std::string msg = test::check_sum(p.a, p.b, test::chms_shape(p.a, p.b), options());
       ASSERT_EQ(msg, "");
     }
-    ASSERT_EQ(modes_agree(p.a, p.b), "");
+    // One thread count per pair, in turn: the threaded runs cost what one did.
+    ASSERT_EQ(modes_agree(p.a, p.b, {&thread_counts[i % std::size(thread_counts)], 1}), "");
     const Stats s = cvms_sum(p.a, p.b).stats;
     with_edge_ties += s.contributing_ties > 0;
     with_parallel_facets += s.corner_facets < p.b.num_facets();
@@ -623,6 +644,34 @@ TEST(MinkowskiSum, ThreadsComputeIndependently) {
   EXPECT_TRUE(shape_of(ac.polyhedron) == shape_of(expected_ac.polyhedron));
   EXPECT_EQ(ab.stats.predicate_exact + ab.stats.predicate_filtered,
             expected_ab.stats.predicate_exact + expected_ab.stats.predicate_filtered);
+}
+
+// The threaded edge-facet search stops where one thread stops: it traces
+// chunks of edges on every thread and replays one thread's budget checks when
+// it merges them, so the error (with the count where the search stopped) is
+// the same for every limit, including limits inside a chunk.
+TEST(MinkowskiSum, ThreadedSearchStopsWhereOneThreadStops) {
+  const test::PrismPair pair = test::prism_attack(40);
+  const std::uint64_t facets = minkowski_sum(pair.a, pair.b).polyhedron.num_facets();
+  auto message = [&](std::uint64_t limit, unsigned threads) -> std::string {
+    Options options;
+    options.threads = threads;
+    options.limits.max_output_facets = limit;
+    detail::ResearchOptions research;
+    research.worker_minimums = {0, 0, true};
+    try {
+      (void)detail::minkowski_sum(pair.a, pair.b, options, research);
+    } catch (const Error& e) {
+      return e.message();
+    }
+    return "no error";
+  };
+  for (std::uint64_t limit = pair.a.num_facets() + 40; limit <= facets; limit += facets / 7) {
+    const std::string one = message(limit, 1);
+    for (const unsigned n : {2u, 4u, 8u})
+      EXPECT_EQ(message(limit, n), one) << "limit " << limit << ", " << n << " threads";
+  }
+  EXPECT_EQ(message(facets, 8), "no error");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "cvms/shapes.hpp"
 #include "support/oracle.hpp"
 #include "polyhedron_builder.hpp"
+#include "research_options.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -64,29 +65,38 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
   }
 }
 
-// Options::threads = 2 builds the same polyhedron (numbering included) on a
-// worker thread plus the caller, and it equals CHMS, the independent oracle.
-TEST(Stitch, TwoThreadsBuildTheSamePolyhedron) {
+// Options::threads = 2, 4, 8 build the same polyhedron (numbering included)
+// on workers plus the caller, and it equals CHMS, the independent oracle.
+// 4 and 8 threads run as many, whatever the cores (oversubscribe).
+TEST(Stitch, ThreadsBuildTheSamePolyhedron) {
   const std::pair<ConvexPolyhedron, ConvexPolyhedron> cases[] = {
       {shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3)},
       {shapes::cube(), shapes::geodesic_sphere(3)},
       {shapes::truncated_cube(), shapes::tetrahedron()}};
   for (const auto& [a, b] : cases) {
-    Options two;
-    two.threads = 2;
     const ConvexPolyhedron one_thread = minkowski_sum(a, b).polyhedron;
-    const ConvexPolyhedron two_threads = minkowski_sum(a, b, two).polyhedron;
-    ASSERT_EQ(two_threads.num_vertices(), one_thread.num_vertices());
-    ASSERT_EQ(two_threads.num_facets(), one_thread.num_facets());
-    for (VertexId v : one_thread.mesh().vertices()) ASSERT_EQ(two_threads.vertex(v), one_thread.vertex(v));
-    for (FaceId f : one_thread.mesh().faces()) {
-      ASSERT_EQ(two_threads.normal(f), one_thread.normal(f));
-      ASSERT_EQ(two_threads.plane_offset(f), one_thread.plane_offset(f));
-    }
+    const PolygonSoup one_soup = one_thread.to_soup();
     Options chms;
     chms.algorithm = Algorithm::chms;
-    EXPECT_EQ(test::describe(two_threads), test::describe(minkowski_sum(a, b, chms).polyhedron));
-    EXPECT_TRUE(two_threads.is_convex());
+    const test::Shape oracle = test::describe(minkowski_sum(a, b, chms).polyhedron);
+    for (const unsigned n : {2u, 4u, 8u}) {
+      SCOPED_TRACE(std::to_string(n) + " threads");
+      Options options;
+      options.threads = n;
+      detail::ResearchOptions research;
+      research.worker_minimums.oversubscribe = true;
+      const ConvexPolyhedron threaded = detail::minkowski_sum(a, b, options, research).polyhedron;
+      const PolygonSoup soup = threaded.to_soup();
+      ASSERT_EQ(soup.points, one_soup.points);
+      ASSERT_EQ(soup.face_offsets, one_soup.face_offsets);
+      ASSERT_EQ(soup.face_indices, one_soup.face_indices);
+      for (FaceId f : one_thread.mesh().faces()) {
+        ASSERT_EQ(threaded.normal(f), one_thread.normal(f));
+        ASSERT_EQ(threaded.plane_offset(f), one_thread.plane_offset(f));
+      }
+      EXPECT_EQ(test::describe(threaded), oracle);
+      EXPECT_TRUE(threaded.is_convex());
+    }
   }
 }
 

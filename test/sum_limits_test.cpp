@@ -91,7 +91,7 @@ TEST_F(PrismAttack, OutputIsQuadraticInTheInput) {
 TEST_F(PrismAttack, FacetLimitIsExactAtTheBoundary) {
   const test::Shape expected = describe(chms(pair_->a, pair_->b));
   for (Algorithm algorithm : {Algorithm::cvms, Algorithm::essdms}) {
-    for (unsigned threads : {1u, 2u}) {
+    for (unsigned threads : {1u, 2u, 4u, 8u}) {
       SCOPED_TRACE(std::string(to_string(algorithm)) + " threads " + std::to_string(threads));
       Options options = with(algorithm, threads);
       options.limits.max_output_facets = facets_;
@@ -123,7 +123,7 @@ TEST_F(PrismAttack, MemoryLimitIsFacetsTimesBytesPerFacet) {
 
 // The search stops once its running count passes the limit: it holds at
 // most one edge's facets (e_B) beyond it, whatever the size of the sum, and
-// the count it reports is the same with one thread or two.
+// the count it reports is the same with one thread or more.
 TEST(SumLimits, PrismAttackStopsTheSearchNearTheLimit) {
   const PrismPair pair = prism_attack(1200);  // about 700,000 output facets
   Options options;
@@ -136,8 +136,10 @@ TEST(SumLimits, PrismAttackStopsTheSearchNearTheLimit) {
   EXPECT_LE(found, 20000u + pair.b.num_edges()) << one_thread;
   // A sum of 700,000 facets takes seconds; stopping at 20,000 a small part.
   EXPECT_LT(seconds, 2.0) << one_thread;
-  options.threads = 2;
-  EXPECT_EQ(limit_message(pair.a, pair.b, options), one_thread);
+  for (const unsigned n : {2u, 4u, 8u}) {
+    options.threads = n;
+    EXPECT_EQ(limit_message(pair.a, pair.b, options), one_thread) << n << " threads";
+  }
   // ESSDMS stops alike (its arc loop checks per arc of A).
   options.algorithm = Algorithm::essdms;
   const std::uint64_t essdms_found = facets_at_least(limit_message(pair.a, pair.b, options));

@@ -72,13 +72,15 @@ struct SumLimits {
 struct Options {
   Algorithm algorithm = Algorithm::cvms;  ///< which algorithm
   /// CVMS only: 1 (the default) computes everything on the calling thread;
-  /// 2 or more also use one worker thread at a time inside the call: it
-  /// traces the edge facets (arc walk) while the calling thread finds the
-  /// corner facets, then computes the output's facet planes while the
-  /// calling thread builds the vertices and mesh, which then helps with the
-  /// planes (more threads are not used yet). Small sums stay on the calling
-  /// thread, where starting a thread would cost more than it saves. The
-  /// result, Stats included, is identical.
+  /// N > 1 also uses worker threads inside the call, never more threads in
+  /// all than the machine has cores. The edge facets (arc walk) are traced
+  /// while the calling thread finds the corner facets: by one worker for two
+  /// threads, in chunks of edges shared by all N (the caller once it is done)
+  /// for more. Then one worker computes the output's facet planes while the
+  /// calling thread builds the vertices and the mesh and then helps with the
+  /// planes. Small sums stay on the calling thread, where starting threads
+  /// would cost more than it saves. The result (numbering included) and
+  /// Stats are identical for every N.
   unsigned threads = 1;
   /// Bounds on the sum's output size, memory and (ESSDMS) work.
   SumLimits limits;

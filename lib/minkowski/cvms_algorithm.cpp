@@ -28,8 +28,10 @@
 #include "cvms_algorithm.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "arc_trace.hpp"
@@ -55,6 +57,9 @@ struct EdgeFacetBudget {
   std::uint64_t corner;
 
   void check(std::uint64_t edge_facets_found) const { budget.check(translated, corner, edge_facets_found); }
+  [[nodiscard]] bool allows(std::uint64_t edge_facets_found) const {
+    return saturating_sum(saturating_sum(translated, corner), edge_facets_found) <= budget.max_facets();
+  }
 };
 
 // The halfedge of each edge of p that passes Property 1.
@@ -144,27 +149,135 @@ void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
 
 namespace {
 
+// The edge facets of the edge of ha (which passes Property 1) by the arc
+// walk, added to out; returns their number. The walk meets the edges of B in
+// arc order; sorting them by edge index emits the facets in the paper
+// search's order, so both modes build the identical polyhedron.
+std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                              const ContributingVertices& cv_a, HalfedgeId ha,
+                              std::vector<HalfedgeId>& crossed, SumFacetBuilder& out, std::uint64_t& steps) {
+  const Mesh& ma = a.mesh();
+  crossed.clear();
+  trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed, steps);
+  std::sort(crossed.begin(), crossed.end(),
+            [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
+  for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
+  return crossed.size();
+}
+
 // Step 3 with the arc walk, for the edges of A that pass Property 1.
 void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
                       const EdgeFacetBudget& budget, SumFacetBuilder& out, Stats& stats) {
-  const Mesh& ma = a.mesh();
-  // The walk meets the edges of B in arc order; sorting them by edge index
-  // emits the facets in the paper search's order, so both modes build the
-  // identical polyhedron.
   std::vector<HalfedgeId> crossed;
   std::uint64_t found = 0;
   for (HalfedgeId ha : edges_passing_property1(a, cv_a)) {
     budget.check(found);
-    crossed.clear();
-    trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed,
-                      stats.edge_candidates);
-    std::sort(crossed.begin(), crossed.end(),
-              [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
-    for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
-    stats.edge_facets += crossed.size();
-    found += crossed.size();
+    found += add_traced_facets(a, b, cv_a, ha, crossed, out, stats.edge_candidates);
   }
+  stats.edge_facets += found;
   budget.check(found);
+}
+
+// Step 3 with the arc walk on several threads: the edges in chunks handed
+// out in order by one atomic counter, each traced into the builder of the
+// thread that takes it, and merged in chunk order, which is the order one
+// thread gives.
+//
+// The chunks are of all edges of A, Property 1 tested by the thread that
+// takes them, so that no serial pass precedes the threads. The budget. A
+// thread takes no chunk once the facets found by all exceed the allowance,
+// and finishes the chunk it has, so the chunks traced are always the first
+// ones, in full: merge() replays one thread's checks on their per-edge
+// counts and throws the identical error where one thread would (an edge that
+// fails Property 1 adds nothing, so checking before it too repeats the
+// previous check). At most one chunk per thread is traced beyond that point.
+class ThreadedTrace {
+ public:
+  ThreadedTrace(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
+                const EdgeFacetBudget& budget, unsigned threads)
+      : a_(a),
+        b_(b),
+        cv_a_(cv_a),
+        budget_(budget),
+        facets_of_edge_(a.num_edges()),
+        chunk_ends_((facets_of_edge_.size() + chunk_size - 1) / chunk_size) {
+    // One thread per chunk at most, the caller included.
+    const std::size_t lanes = std::min<std::size_t>(threads, chunk_ends_.size() + 1);
+    lanes_.reserve(lanes);
+    for (std::size_t i = 0; i < lanes; ++i) lanes_.emplace_back(a, b);
+  }
+
+  [[nodiscard]] unsigned threads() const noexcept { return static_cast<unsigned>(lanes_.size()); }
+
+  // Traces chunks until none is left or the budget is spent. \pre thread < threads.
+  void run(unsigned thread) {
+    Lane& lane = lanes_[thread];
+    for (;;) {
+      if (!budget_.allows(found_.load(std::memory_order_relaxed))) return;
+      const std::size_t c = next_chunk_.fetch_add(1, std::memory_order_relaxed);
+      if (c >= chunk_ends_.size()) return;
+      std::uint64_t found = 0;
+      for (std::size_t e = c * chunk_size; e < std::min((c + 1) * chunk_size, facets_of_edge_.size()); ++e) {
+        const HalfedgeId ha = Mesh::halfedge(EdgeId(static_cast<std::uint32_t>(e)));
+        if (!may_produce_edge_facets(a_, cv_a_, ha)) continue;
+        facets_of_edge_[e] = add_traced_facets(a_, b_, cv_a_, ha, lane.crossed, lane.out, lane.steps);
+        found += facets_of_edge_[e];
+      }
+      chunk_ends_[c] = {thread, lane.out.num_facets()};
+      found_.fetch_add(found, std::memory_order_relaxed);
+    }
+  }
+
+  // After every run() returned: the facets into out, in one thread's order,
+  // and the counts into stats. \throw Error(limit) as edge_facets_walk.
+  void merge(SumFacetBuilder& out, Stats& stats) const {
+    std::uint64_t found = 0;
+    for (const std::size_t n : facets_of_edge_) {
+      budget_.check(found);
+      found += n;
+    }
+    budget_.check(found);
+    std::vector<std::size_t> merged(lanes_.size(), 0);  // facets of each lane merged so far
+    for (const ChunkEnd& end : chunk_ends_) {
+      out.append(lanes_[end.thread].out, merged[end.thread], end.facets);
+      merged[end.thread] = end.facets;
+    }
+    for (const Lane& lane : lanes_) stats.edge_candidates += lane.steps;
+    stats.edge_facets += found;
+  }
+
+ private:
+  static constexpr std::size_t chunk_size = 64;
+  struct Lane {
+    Lane(const ConvexPolyhedron& a, const ConvexPolyhedron& b) : out(a, b) {}
+    SumFacetBuilder out;
+    std::uint64_t steps = 0;
+    std::vector<HalfedgeId> crossed;
+  };
+  // Where a chunk's facets end in the builder of the thread that traced it
+  // (they start where that thread's previous chunk ended).
+  struct ChunkEnd {
+    unsigned thread = 0;
+    std::size_t facets = 0;
+  };
+
+  const ConvexPolyhedron& a_;
+  const ConvexPolyhedron& b_;
+  const ContributingVertices& cv_a_;
+  const EdgeFacetBudget& budget_;
+  std::vector<std::size_t> facets_of_edge_;  // by edge of A, each written by the thread tracing it
+  std::vector<ChunkEnd> chunk_ends_;         // each written by the thread tracing the chunk
+  std::vector<Lane> lanes_;
+  std::atomic<std::size_t> next_chunk_{0};
+  std::atomic<std::uint64_t> found_{0};
+};
+
+// Options::threads, but no more threads than cores unless the research
+// options ask (WorkerMinimums::oversubscribe).
+unsigned usable_threads(const Options& options, const ResearchOptions& research) {
+  const unsigned cores = std::thread::hardware_concurrency();
+  if (research.worker_minimums.oversubscribe || cores == 0) return options.threads;
+  return std::min(options.threads, cores);
 }
 
 // The search modes are plain enums a caller may set to anything.
@@ -266,7 +379,8 @@ void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                           const ResearchOptions& research, Stats& stats) {
   const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
-  return facets.build(facets.num_facets() >= research.worker_minimums.output_facets ? options.threads : 1);
+  const bool large = facets.num_facets() >= research.worker_minimums.output_facets;
+  return facets.build(large ? usable_threads(options, research) : 1);
 }
 
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
@@ -285,31 +399,48 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const EdgeFacetBudget budget{output_budget, a.num_facets(), count_corner_facets(partner)};
   budget.check(0);
 
-  // Step 3 with the arc walk needs only the contributing vertices of A's
-  // facets: with threads > 1, a worker traces the edge facets into a builder
-  // of its own during step 2, and they are appended after step 2's facets,
-  // in the order one thread gives.
-  SumFacetBuilder tracer_out(a, b);
-  Stats tracer_stats;
-  Worker tracer;  // after what it writes: destroyed (joined) first
-  if (options.threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
-      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
-    tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
-  }
-
   // Step 2. The contributing vertices of a facet of B that has a partner are
   // the vertices of the partner (the face of A supporting A in that
   // direction); we record them for Property 1 without a search.
-  const ContributingVertices cv_b = find_contributing_vertices(b, a, partner, walk_vertices);
-  add_corner_facets(b, cv_b, partner, out, stats);
+  auto corner_facets = [&] {
+    const ContributingVertices cv_b = find_contributing_vertices(b, a, partner, walk_vertices);
+    add_corner_facets(b, cv_b, partner, out, stats);
+    return cv_b;
+  };
 
   // Step 3: edge facets, from the edges that pass Property 1 on both sides.
-  if (tracer.joinable()) {
-    tracer.join();  // its predicates count as this thread's
-    out.append(tracer_out);
-    stats.edge_candidates += tracer_stats.edge_candidates;
-    stats.edge_facets += tracer_stats.edge_facets;
-  } else if (research.edge_facet_search == EdgeFacetSearch::paper) {
+  // The arc walk needs only the contributing vertices of A's facets: with
+  // threads > 1, workers trace the edge facets while this thread does step 2,
+  // and they are appended after step 2's facets in the order one thread
+  // gives. Two threads: one worker traces every edge into a builder of its
+  // own. More: all trace chunks of edges after step 2 (ThreadedTrace), which
+  // on two cores measured no faster, and in some runs slower (its workers'
+  // malloc arenas: README, Performance), hence only with more cores.
+  const unsigned threads = usable_threads(options, research);
+  if (threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
+      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
+    if (threads == 2) {
+      SumFacetBuilder tracer_out(a, b);
+      Stats tracer_stats;
+      Worker tracer;  // after what it writes: destroyed (joined) first
+      tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
+      corner_facets();
+      tracer.join();  // its predicates count as this thread's
+      out.append(tracer_out, 0, tracer_out.num_facets());
+      stats.edge_candidates += tracer_stats.edge_candidates;
+      stats.edge_facets += tracer_stats.edge_facets;
+      return out;
+    }
+    ThreadedTrace trace(a, b, cv_a, budget, threads);
+    run_on_threads(trace.threads(), [&](unsigned thread) {
+      if (thread == 0) corner_facets();
+      trace.run(thread);
+    });
+    trace.merge(out, stats);
+    return out;
+  }
+  const ContributingVertices cv_b = corner_facets();
+  if (research.edge_facet_search == EdgeFacetSearch::paper) {
     const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
     edge_facets_paper(a, b, edges_a, edges_b, budget, out, stats);

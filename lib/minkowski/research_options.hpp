@@ -47,6 +47,11 @@ struct WorkerMinimums {
   /// (edge-facet tracing, corner facets).
   std::size_t trace = 256;
   std::size_t output_facets = 512;  ///< facets of A + B, for the output build
+  /// Options::threads beyond std::thread::hardware_concurrency() only on
+  /// request: the tests run 4 and 8 threads on two cores to shuffle the
+  /// interleavings. A sum does not: nothing runs sooner, and every extra
+  /// worker brings a malloc arena of its own (README, Performance).
+  bool oversubscribe = false;
 };
 
 /// The defaults are what minkowski_sum runs; {scan, paper} is the

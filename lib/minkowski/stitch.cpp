@@ -202,11 +202,13 @@ void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orie
                ha.index(), hb.index()});
 }
 
-void SumFacetBuilder::append(const SumFacetBuilder& other) {
-  const auto base = static_cast<std::uint32_t>(pairs_.size());
-  pairs_.insert(pairs_.end(), other.pairs_.begin(), other.pairs_.end());
-  for (std::size_t i = 1; i < other.offsets_.size(); ++i) offsets_.push_back(base + other.offsets_[i]);
-  normals_.insert(normals_.end(), other.normals_.begin(), other.normals_.end());
+void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, std::size_t end) {
+  const std::uint32_t first = other.offsets_[begin];
+  const std::uint32_t base = static_cast<std::uint32_t>(pairs_.size()) - first;
+  pairs_.insert(pairs_.end(), other.pairs_.begin() + first, other.pairs_.begin() + other.offsets_[end]);
+  for (std::size_t i = begin + 1; i <= end; ++i) offsets_.push_back(base + other.offsets_[i]);
+  normals_.insert(normals_.end(), other.normals_.begin() + static_cast<std::ptrdiff_t>(begin),
+                  other.normals_.begin() + static_cast<std::ptrdiff_t>(end));
 }
 
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr); }

@@ -47,9 +47,9 @@ class SumFacetBuilder {
   /// `orientation` (positive or negative), d = to(h) - from(h).
   void add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation);
 
-  /// Adds the facets of other after these, in other's order.
-  /// \pre other was built for the same operands.
-  void append(const SumFacetBuilder& other);
+  /// Adds facets [begin, end) of other after these, in other's order.
+  /// \pre other was built for the same operands; begin <= end <= other.num_facets().
+  void append(const SumFacetBuilder& other, std::size_t begin, std::size_t end);
 
   [[nodiscard]] std::size_t num_facets() const noexcept { return offsets_.size() - 1; }
   /// The pairs of facet i, counterclockwise seen from outside.

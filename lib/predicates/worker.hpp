@@ -11,9 +11,14 @@
 // is joined by the destructor, and what it threw is dropped: the caller's
 // exception is the one that leaves. Declare the worker after everything its
 // callable writes, so that it is joined before those are destroyed.
+//
+// run_on_threads is the N-thread form: the caller is one of the N, so that
+// N = 1 starts nothing and N = 2 starts one worker.
 #pragma once
 
 #include <exception>
+#include <memory>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -64,5 +69,29 @@ class Worker {
   std::exception_ptr failure_;
   std::jthread thread_;  // last: destroyed (joined) first
 };
+
+/// Calls f(0) on this thread and f(1), ..., f(k - 1) on workers, k <= n,
+/// and returns when all have returned. Their predicate counts are this
+/// thread's; f(0)'s exception leaves first, else the workers' in index
+/// order. k < n only if the system refused to start another thread: the
+/// calls must share their work so that any k gives the same result (and
+/// may wait for f(0), which always runs). Returns k.
+template <class F>
+unsigned run_on_threads(unsigned n, F&& f) {
+  if (n <= 1) {
+    f(0u);
+    return 1;
+  }
+  const auto workers = std::make_unique<Worker[]>(n - 1);
+  unsigned started = 1;
+  try {
+    for (; started < n; ++started) workers[started - 1].start([&f, i = started] { f(i); });
+  } catch (const std::system_error&) {
+    // No more threads now: the ones started and this one do the work.
+  }
+  f(0u);
+  for (unsigned i = 1; i < started; ++i) workers[i - 1].join();
+  return started;
+}
 
 }  // namespace cvms::detail

@@ -40,11 +40,7 @@ struct Timed {
   std::chrono::steady_clock::duration time;
 };
 
-Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm algorithm,
-                const SumLimits& limits = {}) {
-  Options options;
-  options.algorithm = algorithm;
-  options.limits = limits;
+Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
   auto start = std::chrono::steady_clock::now();
   MinkowskiResult result = minkowski_sum(a, b, options);
   return {std::move(result), std::chrono::steady_clock::now() - start};
@@ -60,7 +56,7 @@ void print_stats(std::ostream& report, const Stats& s) {
 // A limit error names the option that raises it (sizes.hpp).
 Timed limited_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args) {
   try {
-    return timed_sum(a, b, args.algorithm, args.limits);
+    return timed_sum(a, b, args.options());
   } catch (const Error& e) {
     rethrow_with_limit_hint(e);
   }
@@ -75,6 +71,14 @@ void check_output(const std::string& path, const std::string& format) {
 
 }  // namespace
 
+Options SumArgs::options() const {
+  Options options;
+  options.algorithm = algorithm;
+  options.threads = threads;
+  options.limits = limits;
+  return options;
+}
+
 void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
   check_output(args.output, args.format);
@@ -84,7 +88,8 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   std::vector<ConvexSet> sets{read_set(args.a), read_set(args.b)};
   for (const std::string& path : args.more) sets.push_back(read_set(path));
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
-    return run_set_sum(sets, args.algorithm, args.limits, args.output, args.format, coordinates_of(args.float_output), args.stats, report);
+    return run_set_sum(sets, args.options(), args.output, args.format, coordinates_of(args.float_output),
+                       args.stats, report);
   const ConvexPolyhedron& a = sets[0].polyhedron();
   const ConvexPolyhedron& b = sets[1].polyhedron();
   Timed sum = limited_sum(a, b, args);
@@ -168,7 +173,9 @@ void run_check(const std::string& input, std::ostream& report) {
 void run_demo(const DemoArgs& args, std::ostream& report) {
   ConvexPolyhedron a = shapes::cube();
   ConvexPolyhedron b = shapes::geodesic_sphere(4);
-  Timed sum = timed_sum(a, b, args.algorithm);
+  Options options;
+  options.algorithm = args.algorithm;
+  Timed sum = timed_sum(a, b, options);
   report << "cvms demo: exact Minkowski sum Cube + Sphere4\n"
          << "  Cube      " << counts(a) << "\n"
          << "  Sphere4   " << counts(b) << "\n"

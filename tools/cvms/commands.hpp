@@ -24,9 +24,11 @@ struct SumArgs {
   std::vector<std::string> more;  ///< operands after B (set_commands.cpp sums them)
   std::string format;  ///< --format, empty: from the output path
   Algorithm algorithm = Options{}.algorithm;
+  unsigned threads = 1;  ///< --threads: Options::threads
   bool float_output = false;
   bool stats = false;
   SumLimits limits;  ///< --max-facets, --max-memory
+  [[nodiscard]] Options options() const;
 };
 /// A + B (+ C ...) written to output; flat operands and more than two go
 /// through the sum of convex sets (set_commands.hpp); with stats, counts, time and Stats go to report.

@@ -124,6 +124,12 @@ int main(int argc, char** argv) {
   sum_cmd->add_option("C", sum.more, "further operands")->check(mesh_path);
   add_output_options(*sum_cmd, sum.output, sum.format, sum.float_output);
   add_algorithm_option(*sum_cmd, sum.algorithm, default_algorithm);
+  sum_cmd
+      ->add_option(
+          "--threads", sum.threads,
+          "threads for each sum of two polyhedra by cvms, used where they pay (the output is identical)")
+      ->check(CLI::Range(1u, 1024u))
+      ->default_val(1u);
   sum_cmd->add_flag("--stats", sum.stats, "print counts, time and algorithm statistics");
   add_sum_limit_options(*sum_cmd, sum.limits);
 

@@ -52,11 +52,8 @@ void write_set(const std::string& path, const ConvexSet& set, Coordinates coordi
   write_stdout([&](std::ostream& out) { write(out, set, chosen, "standard output", coordinates); });
 }
 
-void run_set_sum(const std::vector<ConvexSet>& operands, Algorithm algorithm, const SumLimits& limits,
-                 const std::string& output, const std::string& format, Coordinates coordinates, bool stats, std::ostream& report) {
-  Options options;
-  options.algorithm = algorithm;
-  options.limits = limits;
+void run_set_sum(const std::vector<ConvexSet>& operands, const Options& options, const std::string& output,
+                 const std::string& format, Coordinates coordinates, bool stats, std::ostream& report) {
   const auto start = std::chrono::steady_clock::now();
   const ConvexSet sum = [&] {
     try {
@@ -72,7 +69,7 @@ void run_set_sum(const std::vector<ConvexSet>& operands, Algorithm algorithm, co
     report << "operand " << i + 1 << ": " << kind(operands[i]) << ", " << size_text(operands[i]) << "\n";
   char ms[64];
   std::snprintf(ms, sizeof ms, "%.3f ms", time.count());
-  report << "sum: " << kind(sum) << ", " << size_text(sum) << "\nalgorithm: " << to_string(algorithm)
+  report << "sum: " << kind(sum) << ", " << size_text(sum) << "\nalgorithm: " << to_string(options.algorithm)
          << "\ntime: " << ms << "\n";
 }
 

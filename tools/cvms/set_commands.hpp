@@ -27,8 +27,8 @@ void write_set(const std::string& path, const ConvexSet& set, Coordinates coordi
 
 /// The sum of the sets, written to output; with stats, the operands' and
 /// the result's sizes and the time go to report.
-void run_set_sum(const std::vector<ConvexSet>& operands, Algorithm algorithm, const SumLimits& limits,
-                 const std::string& output, const std::string& format, Coordinates coordinates, bool stats, std::ostream& report);
+void run_set_sum(const std::vector<ConvexSet>& operands, const Options& options, const std::string& output,
+                 const std::string& format, Coordinates coordinates, bool stats, std::ostream& report);
 
 /// "point", "segment", "polygon" ... and its vertex count, for check.
 void report_set(const std::string& name, const ConvexSet& set, std::ostream& report);
