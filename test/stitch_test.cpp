@@ -168,5 +168,38 @@ TEST(Stitch, FacetPlusVertexAndEdgePlusEdgeOrientation) {
   }
 }
 
+// Edge facets keep no corner pairs of their own (their corners follow from
+// their halfedges): mixed with facets that do, appending a builder in pieces
+// and building the soup must keep every facet's corners in place.
+TEST(Stitch, EdgeFacetsKeepTheirCornersThroughAppendAndSoup) {
+  const auto c = shapes::cube();
+  const auto t = shapes::tetrahedron();
+  SumFacetBuilder whole(c, t);
+  whole.add_facet_plus_vertex(Operand::b, FaceId(0), VertexId(2));
+  whole.add_edge_plus_edge(HalfedgeId(0), HalfedgeId(2), Sign::positive);
+  whole.add_edge_plus_edge(HalfedgeId(4), HalfedgeId(3), Sign::negative);
+  whole.add_facet_plus_vertex(Operand::a, FaceId(1), VertexId(0));
+  whole.add_edge_plus_edge(HalfedgeId(6), HalfedgeId(1), Sign::positive);
+  SumFacetBuilder pieces(c, t);
+  pieces.append(whole, 0, 2);
+  pieces.append(whole, 2, 5);
+  ASSERT_EQ(pieces.num_facets(), whole.num_facets());
+  const PolygonSoup soup = pieces.soup();
+  ASSERT_EQ(soup.face_offsets.size(), whole.num_facets() + 1);
+  for (std::size_t i = 0; i < whole.num_facets(); ++i) {
+    const std::vector<VertexPair> expected = whole.facet(i);
+    const std::vector<VertexPair> got = pieces.facet(i);
+    ASSERT_EQ(got.size(), expected.size()) << "facet " << i;
+    ASSERT_EQ(soup.face_offsets[i + 1] - soup.face_offsets[i], expected.size()) << "facet " << i;
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      EXPECT_EQ(got[k].a, expected[k].a);
+      EXPECT_EQ(got[k].b, expected[k].b);
+      // The soup's point is the exact sum of the pair's vertices.
+      EXPECT_EQ(soup.points[soup.face_indices[soup.face_offsets[i] + k]], point(c, t, expected[k]))
+          << "facet " << i << " corner " << k;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cvms::detail

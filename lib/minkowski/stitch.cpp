@@ -184,31 +184,61 @@ void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const Ve
 }
 
 void SumFacetBuilder::add_edge_plus_edge(HalfedgeId ha, HalfedgeId hb, Sign orientation) {
+  close_facet({orientation == Sign::positive ? NormalKind::edges_positive : NormalKind::edges_negative,
+               ha.index(), hb.index()});
+}
+
+std::array<VertexPair, 4> SumFacetBuilder::edge_cycle(const NormalSource& source) const {
   const Mesh& ma = a_.mesh();
   const Mesh& mb = b_.mesh();
+  const HalfedgeId ha(source.index), hb(source.other);
   const std::uint32_t ua = ma.from(ha).index();
   const std::uint32_t va = ma.to(ha).index();
   const std::uint32_t ub = mb.from(hb).index();
   const std::uint32_t vb = mb.to(hb).index();
   // The cycle ua+ub, va+ub, va+vb, ua+vb has edge vectors d_A, d_B, -d_A,
   // -d_B, hence normal cross(d_A, d_B); reversed, the opposite normal.
-  const VertexPair cycle[4] = {{ua, ub}, {va, ub}, {va, vb}, {ua, vb}};
-  if (orientation == Sign::positive) {
-    for (int i = 0; i < 4; ++i) pairs_.push_back(cycle[i]);
-  } else {
-    for (int i = 3; i >= 0; --i) pairs_.push_back(cycle[i]);
+  if (source.kind == NormalKind::edges_positive) return {{{ua, ub}, {va, ub}, {va, vb}, {ua, vb}}};
+  return {{{ua, vb}, {va, vb}, {va, ub}, {ua, ub}}};
+}
+
+std::vector<VertexPair> SumFacetBuilder::facet(std::size_t i) const {
+  if (is_edge_facet(normals_[i])) {
+    const std::array<VertexPair, 4> cycle = edge_cycle(normals_[i]);
+    return {cycle.begin(), cycle.end()};
   }
-  close_facet({orientation == Sign::positive ? NormalKind::edges_positive : NormalKind::edges_negative,
-               ha.index(), hb.index()});
+  return {pairs_.data() + offsets_[i], pairs_.data() + offsets_[i + 1]};
+}
+
+VertexPair SumFacetBuilder::first_corner(std::size_t facet) const {
+  return is_edge_facet(normals_[facet]) ? edge_cycle(normals_[facet])[0] : pairs_[offsets_[facet]];
+}
+
+void SumFacetBuilder::expand_corners(std::vector<VertexPair>& corners, std::vector<std::uint32_t>& offsets) const {
+  const std::size_t n = num_facets();
+  std::size_t edge_facets = 0;
+  for (std::size_t i = 0; i < n; ++i) edge_facets += is_edge_facet(normals_[i]) ? 1 : 0;
+  corners.clear();
+  corners.reserve(pairs_.size() + 4 * edge_facets);
+  offsets.assign(1, 0);
+  offsets.reserve(n + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (is_edge_facet(normals_[i])) {
+      const std::array<VertexPair, 4> cycle = edge_cycle(normals_[i]);
+      corners.insert(corners.end(), cycle.begin(), cycle.end());
+    } else {
+      corners.insert(corners.end(), pairs_.data() + offsets_[i], pairs_.data() + offsets_[i + 1]);
+    }
+    offsets.push_back(static_cast<std::uint32_t>(corners.size()));
+  }
 }
 
 void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, std::size_t end) {
   const std::uint32_t first = other.offsets_[begin];
   const std::uint32_t base = static_cast<std::uint32_t>(pairs_.size()) - first;
-  pairs_.insert(pairs_.end(), other.pairs_.begin() + first, other.pairs_.begin() + other.offsets_[end]);
+  pairs_.append(other.pairs_.begin() + first, other.pairs_.begin() + other.offsets_[end]);
   for (std::size_t i = begin + 1; i <= end; ++i) offsets_.push_back(base + other.offsets_[i]);
-  normals_.insert(normals_.end(), other.normals_.begin() + static_cast<std::ptrdiff_t>(begin),
-                  other.normals_.begin() + static_cast<std::ptrdiff_t>(end));
+  normals_.append(other.normals_.begin() + begin, other.normals_.begin() + end);
 }
 
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr); }
@@ -217,9 +247,10 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
   PolygonSoup soup;
-  soup.face_offsets = offsets_;
-  soup.face_indices.resize(pairs_.size());
-  soup.points.reserve(pairs_.size() / 3 + 1);  // each vertex is in at least three facets
+  std::vector<VertexPair> pairs;
+  expand_corners(pairs, soup.face_offsets);
+  soup.face_indices.resize(pairs.size());
+  soup.points.reserve(pairs.size() / 3 + 1);  // each vertex is in at least three facets
 
   if (approx != nullptr) approx->reserve(soup.points.capacity());
   auto new_vertex = [&](const VertexPair& p) {
@@ -235,23 +266,23 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
     return static_cast<std::uint32_t>(soup.points.size() - 1);
   };
 
-  if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{pairs_.size()}) {
+  if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{pairs.size()}) {
     constexpr std::uint32_t unset = ~std::uint32_t{0};
     std::vector<std::uint32_t> index(table_size, unset);
-    for (std::size_t i = 0; i < pairs_.size(); ++i) {
-      std::uint32_t& slot = index[pairs_[i].a * nb + pairs_[i].b];
-      if (slot == unset) slot = new_vertex(pairs_[i]);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      std::uint32_t& slot = index[pairs[i].a * nb + pairs[i].b];
+      if (slot == unset) slot = new_vertex(pairs[i]);
       soup.face_indices[i] = slot;
     }
   } else {
     // Sparse: numbered by sorting, not hashing (std::hash of an integer is
     // the identity, so keys j * nb + v that an input lines up modulo the
     // bucket count would make a hash map quadratic; issue 18, item 1).
-    std::vector<std::uint64_t> keys(pairs_.size());
-    for (std::size_t i = 0; i < pairs_.size(); ++i) keys[i] = pairs_[i].a * nb + pairs_[i].b;
+    std::vector<std::uint64_t> keys(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i) keys[i] = pairs[i].a * nb + pairs[i].b;
     const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
-    for (const std::size_t first : numbered.first) new_vertex(pairs_[first]);
-    for (std::size_t i = 0; i < pairs_.size(); ++i) soup.face_indices[i] = numbered.index[i];
+    for (const std::size_t first : numbered.first) new_vertex(pairs[first]);
+    for (std::size_t i = 0; i < pairs.size(); ++i) soup.face_indices[i] = numbered.index[i];
   }
   return soup;
 }
@@ -317,7 +348,7 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
       const FaceId f(static_cast<std::uint32_t>(i));
       first_vertex = &mesh->position(mesh->from(mesh->halfedge(f)));
     } else {
-      const VertexPair& first = pairs_[offsets_[i]];
+      const VertexPair first = first_corner(i);
       const Vec3 &va = a_.vertex(VertexId(first.a)), &vb = b_.vertex(VertexId(first.b));
       for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
     }

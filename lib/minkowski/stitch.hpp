@@ -10,6 +10,7 @@
 // is computed once.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
+#include "realloc_vector.hpp"
 
 namespace cvms::detail {
 
@@ -53,9 +55,7 @@ class SumFacetBuilder {
 
   [[nodiscard]] std::size_t num_facets() const noexcept { return offsets_.size() - 1; }
   /// The pairs of facet i, counterclockwise seen from outside.
-  [[nodiscard]] std::span<const VertexPair> facet(std::size_t i) const noexcept {
-    return {pairs_.data() + offsets_[i], offsets_[i + 1] - offsets_[i]};
-  }
+  [[nodiscard]] std::vector<VertexPair> facet(std::size_t i) const;
 
   /// Glues the facets by vertex pair and builds the result. \pre the facets
   /// are exactly the facets of A + B (each maximal, strictly convex,
@@ -92,6 +92,17 @@ class SumFacetBuilder {
     std::uint32_t index;
     std::uint32_t other;
   };
+  // An edge facet e_A + e_B keeps no pairs: its four corners follow from
+  // its two halfedges and orientation (edge_cycle), which its normal source
+  // holds already. The search may record millions of them before the output
+  // budget refuses a hostile pair; this way each costs 16 bytes, not 48.
+  static bool is_edge_facet(const NormalSource& source) noexcept {
+    return source.kind == NormalKind::edges_positive || source.kind == NormalKind::edges_negative;
+  }
+  [[nodiscard]] std::array<VertexPair, 4> edge_cycle(const NormalSource& source) const;
+  // The corners of every facet, in order, with the offsets of each facet's first.
+  void expand_corners(std::vector<VertexPair>& corners, std::vector<std::uint32_t>& offsets) const;
+  [[nodiscard]] VertexPair first_corner(std::size_t facet) const;
   void close_facet(NormalSource normal) {
     offsets_.push_back(static_cast<std::uint32_t>(pairs_.size()));
     normals_.push_back(normal);
@@ -109,9 +120,10 @@ class SumFacetBuilder {
 
   const ConvexPolyhedron& a_;
   const ConvexPolyhedron& b_;
-  std::vector<std::uint32_t> offsets_{0};
-  std::vector<VertexPair> pairs_;
-  std::vector<NormalSource> normals_;
+  // Grown by realloc: see realloc_vector.hpp for why.
+  ReallocVector<std::uint32_t> offsets_{0};
+  ReallocVector<VertexPair> pairs_;
+  ReallocVector<NormalSource> normals_;
   // Scratch buffers, reused between facets.
   std::vector<VertexId> own_vertices_;
   std::vector<Vec2> own_points_;
