@@ -20,13 +20,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdio>
 #include <random>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/rational.hpp"
+#include "decimal_point.hpp"
 
 namespace {
 
@@ -43,14 +42,7 @@ ConvexPolyhedron decimal_shell_hull(int n, std::uint64_t seed) {
     const double norm = std::sqrt(x * x + y * y + z * z);
     if (norm == 0.0) continue;
     const double r = shell(rng) / norm;
-    const double c[3] = {x * r, y * r, z * r};
-    cvms::Vec3 p;
-    for (int i = 0; i < 3; ++i) {
-      char digits[32];
-      std::snprintf(digits, sizeof digits, "%.6f", c[i]);
-      p[i] = cvms::parse_rational(digits);
-    }
-    points.push_back(p);
+    points.push_back(cvms_bench::six_decimal_point(x * r, y * r, z * r));
   }
   return cvms::convex_hull(points);
 }

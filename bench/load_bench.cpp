@@ -17,7 +17,6 @@
 // the output of (issue 14: writing costs a small fraction of computing).
 #include <benchmark/benchmark.h>
 
-#include <cstdio>
 #include <random>
 #include <sstream>
 #include <string>
@@ -27,6 +26,7 @@
 #include "cvms/io.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "decimal_point.hpp"
 
 namespace {
 
@@ -48,14 +48,7 @@ std::string decimal_hull_text(int n) {
   while (static_cast<int>(points.size()) < n) {
     const double x = unit(rng), y = unit(rng), z = unit(rng);
     if (x * x + y * y + z * z > 1.0) continue;
-    cvms::Vec3 p;
-    const double c[3] = {x, y, z};
-    for (int i = 0; i < 3; ++i) {
-      char digits[32];
-      std::snprintf(digits, sizeof digits, "%.6f", c[i]);
-      p[i] = cvms::parse_rational(digits);
-    }
-    points.push_back(p);
+    points.push_back(cvms_bench::six_decimal_point(x, y, z));
   }
   return off_text(cvms::convex_hull(points));
 }
