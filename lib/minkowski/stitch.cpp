@@ -214,23 +214,13 @@ VertexPair SumFacetBuilder::first_corner(std::size_t facet) const {
   return is_edge_facet(normals_[facet]) ? edge_cycle(normals_[facet])[0] : pairs_[offsets_[facet]];
 }
 
-void SumFacetBuilder::expand_corners(std::vector<VertexPair>& corners, std::vector<std::uint32_t>& offsets) const {
-  const std::size_t n = num_facets();
-  std::size_t edge_facets = 0;
-  for (std::size_t i = 0; i < n; ++i) edge_facets += is_edge_facet(normals_[i]) ? 1 : 0;
-  corners.clear();
-  corners.reserve(pairs_.size() + 4 * edge_facets);
-  offsets.assign(1, 0);
-  offsets.reserve(n + 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (is_edge_facet(normals_[i])) {
-      const std::array<VertexPair, 4> cycle = edge_cycle(normals_[i]);
-      corners.insert(corners.end(), cycle.begin(), cycle.end());
-    } else {
-      corners.insert(corners.end(), pairs_.data() + offsets_[i], pairs_.data() + offsets_[i + 1]);
-    }
-    offsets.push_back(static_cast<std::uint32_t>(corners.size()));
-  }
+std::vector<std::uint32_t> SumFacetBuilder::corner_offsets() const {
+  std::vector<std::uint32_t> offsets;
+  offsets.reserve(num_facets() + 1);
+  offsets.push_back(0);
+  for (std::size_t i = 0; i < num_facets(); ++i)
+    offsets.push_back(offsets.back() + (is_edge_facet(normals_[i]) ? 4 : offsets_[i + 1] - offsets_[i]));
+  return offsets;
 }
 
 void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, std::size_t end) {
@@ -247,10 +237,10 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
   PolygonSoup soup;
-  std::vector<VertexPair> pairs;
-  expand_corners(pairs, soup.face_offsets);
-  soup.face_indices.resize(pairs.size());
-  soup.points.reserve(pairs.size() / 3 + 1);  // each vertex is in at least three facets
+  soup.face_offsets = corner_offsets();
+  const std::size_t corners = soup.face_offsets.back();
+  soup.face_indices.resize(corners);
+  soup.points.reserve(corners / 3 + 1);  // each vertex is in at least three facets
 
   if (approx != nullptr) approx->reserve(soup.points.capacity());
   auto new_vertex = [&](const VertexPair& p) {
@@ -266,23 +256,26 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
     return static_cast<std::uint32_t>(soup.points.size() - 1);
   };
 
-  if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{pairs.size()}) {
+  if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{corners}) {
     constexpr std::uint32_t unset = ~std::uint32_t{0};
     std::vector<std::uint32_t> index(table_size, unset);
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-      std::uint32_t& slot = index[pairs[i].a * nb + pairs[i].b];
-      if (slot == unset) slot = new_vertex(pairs[i]);
-      soup.face_indices[i] = slot;
-    }
+    std::size_t i = 0;
+    for_each_corner([&](const VertexPair& p) {
+      std::uint32_t& slot = index[p.a * nb + p.b];
+      if (slot == unset) slot = new_vertex(p);
+      soup.face_indices[i++] = slot;
+    });
   } else {
     // Sparse: numbered by sorting, not hashing (std::hash of an integer is
     // the identity, so keys j * nb + v that an input lines up modulo the
     // bucket count would make a hash map quadratic; issue 18, item 1).
-    std::vector<std::uint64_t> keys(pairs.size());
-    for (std::size_t i = 0; i < pairs.size(); ++i) keys[i] = pairs[i].a * nb + pairs[i].b;
+    std::vector<std::uint64_t> keys;
+    keys.reserve(corners);
+    for_each_corner([&](const VertexPair& p) { keys.push_back(p.a * nb + p.b); });
     const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
-    for (const std::size_t first : numbered.first) new_vertex(pairs[first]);
-    for (std::size_t i = 0; i < pairs.size(); ++i) soup.face_indices[i] = numbered.index[i];
+    for (const std::size_t first : numbered.first) new_vertex({static_cast<std::uint32_t>(keys[first] / nb),
+                                                               static_cast<std::uint32_t>(keys[first] % nb)});
+    for (std::size_t i = 0; i < corners; ++i) soup.face_indices[i] = numbered.index[i];
   }
   return soup;
 }

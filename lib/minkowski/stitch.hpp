@@ -100,8 +100,20 @@ class SumFacetBuilder {
     return source.kind == NormalKind::edges_positive || source.kind == NormalKind::edges_negative;
   }
   [[nodiscard]] std::array<VertexPair, 4> edge_cycle(const NormalSource& source) const;
-  // The corners of every facet, in order, with the offsets of each facet's first.
-  void expand_corners(std::vector<VertexPair>& corners, std::vector<std::uint32_t>& offsets) const;
+  // The offsets of each facet's first corner in the sequence of all corners.
+  [[nodiscard]] std::vector<std::uint32_t> corner_offsets() const;
+  // visit(pair) for the corners of every facet, in order, without storing
+  // them: the soup of an honest sum would page in a fresh copy otherwise.
+  template <typename Visit>
+  void for_each_corner(Visit&& visit) const {
+    for (std::size_t i = 0; i < num_facets(); ++i) {
+      if (is_edge_facet(normals_[i])) {
+        for (const VertexPair& p : edge_cycle(normals_[i])) visit(p);
+      } else {
+        for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) visit(pairs_[k]);
+      }
+    }
+  }
   [[nodiscard]] VertexPair first_corner(std::size_t facet) const;
   void close_facet(NormalSource normal) {
     offsets_.push_back(static_cast<std::uint32_t>(pairs_.size()));
