@@ -2,6 +2,8 @@
 // Exact rational evaluation of every predicate (the filter's fallback).
 #include "predicates_exact.hpp"
 
+#include <initializer_list>
+
 #include "dyadic.hpp"
 
 namespace cvms::exact {
@@ -42,6 +44,33 @@ bool has_integer_coordinates(const Vec3& v) {
   return v.x.get_den() == 1 && v.y.get_den() == 1 && v.z.get_den() == 1;
 }
 
+// Fraction-free dot products with an integer vector n: with L a common
+// multiple of a point's denominators, L dot(p, n) = sum_i n_i num(p_i) L /
+// den(p_i), an integer sum with no canonical rational (no gcd), scaled by L > 0.
+struct ScaledDots {
+  mpz_class l, sum, term;
+
+  // l = the lcm of the coordinates' denominators of every point.
+  void common_denominator(std::initializer_list<const Vec3*> points) {
+    l = (*points.begin())->x.get_den();
+    for (const Vec3* p : points)
+      for (int i = 0; i < 3; ++i)
+        if ((*p)[i].get_den() != l) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), (*p)[i].get_den_mpz_t());
+  }
+  // sum += L dot(p, n), or -= when subtract. \pre n is an integer vector.
+  void add_scaled_dot(const Vec3& p, const Vec3& n, bool subtract) {
+    for (int i = 0; i < 3; ++i) {
+      if (mpz_sgn(n[i].get_num_mpz_t()) == 0 || mpz_sgn(p[i].get_num_mpz_t()) == 0) continue;
+      mpz_divexact(term.get_mpz_t(), l.get_mpz_t(), p[i].get_den_mpz_t());
+      mpz_mul(term.get_mpz_t(), term.get_mpz_t(), p[i].get_num_mpz_t());
+      if (subtract)
+        mpz_submul(sum.get_mpz_t(), term.get_mpz_t(), n[i].get_num_mpz_t());
+      else
+        mpz_addmul(sum.get_mpz_t(), term.get_mpz_t(), n[i].get_num_mpz_t());
+    }
+  }
+};
+
 }  // namespace
 
 // For an integer n (every facet normal is one): with L the lcm of the six
@@ -53,24 +82,11 @@ bool has_integer_coordinates(const Vec3& v) {
 // tie: issue 14).
 Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) {
   if (!has_integer_coordinates(n)) return sign_of(sgn(dot(v - w, n)));
-  struct Scratch {
-    mpz_class l, sum, term;
-  };
-  thread_local Scratch s;
-  s.l = v.x.get_den();
-  for (const Vec3* p : {&v, &w})
-    for (int i = 0; i < 3; ++i)
-      if ((*p)[i].get_den() != s.l) mpz_lcm(s.l.get_mpz_t(), s.l.get_mpz_t(), (*p)[i].get_den_mpz_t());
+  thread_local ScaledDots s;
+  s.common_denominator({&v, &w});
   s.sum = 0;
-  for (int i = 0; i < 3; ++i) {
-    if (mpz_sgn(n[i].get_num_mpz_t()) == 0) continue;
-    mpz_divexact(s.term.get_mpz_t(), s.l.get_mpz_t(), v[i].get_den_mpz_t());
-    mpz_mul(s.term.get_mpz_t(), s.term.get_mpz_t(), v[i].get_num_mpz_t());
-    mpz_addmul(s.sum.get_mpz_t(), s.term.get_mpz_t(), n[i].get_num_mpz_t());
-    mpz_divexact(s.term.get_mpz_t(), s.l.get_mpz_t(), w[i].get_den_mpz_t());
-    mpz_mul(s.term.get_mpz_t(), s.term.get_mpz_t(), w[i].get_num_mpz_t());
-    mpz_submul(s.sum.get_mpz_t(), s.term.get_mpz_t(), n[i].get_num_mpz_t());
-  }
+  s.add_scaled_dot(v, n, false);
+  s.add_scaled_dot(w, n, true);
   return sign_of(mpz_sgn(s.sum.get_mpz_t()));
 }
 
@@ -112,21 +128,11 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Sign side_of_integer_plane(const Vec3& p, const Vec3& n, const Rational& offset) {
   // With L the lcm of p's denominators and offset = a / b (b > 0):
-  // dot(p, n) - offset = (sum_i n_i num_i (L / den_i) b - a L) / (L b).
-  struct Scratch {
-    mpz_class l, sum, term;
-  };
-  thread_local Scratch s;
-  s.l = p.x.get_den();
-  for (int i = 1; i < 3; ++i)
-    if (p[i].get_den() != s.l) mpz_lcm(s.l.get_mpz_t(), s.l.get_mpz_t(), p[i].get_den_mpz_t());
+  // dot(p, n) - offset = (L dot(p, n) b - a L) / (L b).
+  thread_local ScaledDots s;
+  s.common_denominator({&p});
   s.sum = 0;
-  for (int i = 0; i < 3; ++i) {
-    if (mpz_sgn(n[i].get_num_mpz_t()) == 0 || mpz_sgn(p[i].get_num_mpz_t()) == 0) continue;
-    mpz_divexact(s.term.get_mpz_t(), s.l.get_mpz_t(), p[i].get_den_mpz_t());
-    mpz_mul(s.term.get_mpz_t(), s.term.get_mpz_t(), p[i].get_num_mpz_t());
-    mpz_addmul(s.sum.get_mpz_t(), s.term.get_mpz_t(), n[i].get_num_mpz_t());
-  }
+  s.add_scaled_dot(p, n, false);
   mpz_mul(s.sum.get_mpz_t(), s.sum.get_mpz_t(), offset.get_den_mpz_t());
   mpz_mul(s.term.get_mpz_t(), s.l.get_mpz_t(), offset.get_num_mpz_t());
   return sign_of(mpz_cmp(s.sum.get_mpz_t(), s.term.get_mpz_t()));
