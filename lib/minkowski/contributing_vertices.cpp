@@ -32,10 +32,7 @@ FaceId facet_with_normal(const ConvexPolyhedron& q, VertexId v, Vec3Ref n) {
   const Mesh& m = q.mesh();
   for (HalfedgeId h : m.outgoing_halfedges(v)) {
     const FaceId f = m.face(h);
-    const ApproxVec3& fa = detail::normal_approx(q, f);
-    if (provably_different(fa.x, n.approx.x) || provably_different(fa.y, n.approx.y) ||
-        provably_different(fa.z, n.approx.z))
-      continue;
+    if (provably_different(detail::normal_approx(q, f), n.approx)) continue;
     if (q.normal(f) == n.exact) return f;
   }
   return {};

@@ -54,6 +54,12 @@ struct ApproxVec3 {
   }
 };
 
+/// True only if the exact vectors a and b approximate differ: some
+/// coordinate is provably different (the scalar test above).
+inline bool provably_different(const ApproxVec3& a, const ApproxVec3& b) noexcept {
+  return provably_different(a.x, b.x) || provably_different(a.y, b.y) || provably_different(a.z, b.z);
+}
+
 /// An exact vector together with its cached approximation. Cheap to pass by
 /// value: it only refers to storage owned elsewhere (typically a polyhedron).
 /// \pre approx approximates exact (ApproxVec2::of(exact) or a tighter bound);
