@@ -164,12 +164,6 @@ void mark_verified(const ExpandingPolytope& p, const std::vector<PolytopeFace*>&
   }
 }
 
-bool beyond(const ExpandingPolytope& p, const PolytopeFace& f, const PolytopePoint& w) {
-  const auto& x = p.points();
-  const auto r = [&](std::uint32_t i) { return Vec3Ref{x[i].c, x[i].approx}; };
-  return orient3d(r(f.v[0]), r(f.v[1]), r(f.v[2]), {w.c, w.approx}) == Sign::positive;
-}
-
 // The barycentric weights of q = t n (the foot point of f's plane, n its
 // normal) in f's triangle c_0 c_1 c_2, or nothing if q is outside it. The
 // weight of c_i is proportional to <cross(c_j - q, c_k - q), n> = <cross(c_j,
@@ -275,7 +269,7 @@ std::optional<NearestFacet> epa_nearest_facet_from(const SupportOperand& a, cons
       return out;
     }
     PolytopePoint w = support_point(a, b, p.plane(*f).normal, p.points()[f->v[0]]);
-    if (beyond(p, *f, w))
+    if (p.sees(*f, w))
       p.add(std::move(w));
     else
       mark_verified(p, nearest, *f);

@@ -69,6 +69,8 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
   const filtered::QuotientBounds d = filtered::quotient_bounds(mul(c, c), n2);
   PolytopeFace f;
   f.v = {i, j, k};
+  f.normal_filter = {nx, ny, nz};
+  f.offset_filter = c;
   f.distance_low = d.low;
   f.distance_high = d.high;
   faces_.push_back(std::move(f));
@@ -119,15 +121,31 @@ const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
   FacePlane& e = planes_.emplace_back();
   e.normal = Vec3{Rational(n[0]), Rational(n[1]), Rational(n[2])};
   e.normal_approx = ApproxVec3::of(e.normal);
-  const mpz_class offset = n[0] * p.scaled[0] + n[1] * p.scaled[1] + n[2] * p.scaled[2];
-  e.distance_num = offset * offset;
+  e.offset = n[0] * p.scaled[0] + n[1] * p.scaled[1] + n[2] * p.scaled[2];
+  e.offset_scale = p.scale;
+  e.distance_num = e.offset * e.offset;
   e.distance_den = p.scale * p.scale * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   f.plane = static_cast<std::uint32_t>(planes_.size() - 1);
   return e;
 }
 
-bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) const {
-  return orient3d(ref(points_[f.v[0]]), ref(points_[f.v[1]]), ref(points_[f.v[2]]), ref(x)) == Sign::positive;
+// orient3d(c0, c1, c2, x) = <n, x> - <n, c0> with n = cross(c1 - c0, c2 -
+// c0): the filter evaluates that form on the face's approximate plane, whose
+// running error bounds (filtered_arithmetic.hpp) carry over, so a certain
+// sign is orient3d's. Otherwise exactly, on the integer plane (plane()):
+// with x = X / D, <n, x> - offset / s has the sign of <n, X> s - offset D.
+bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
+  using filtered::add;
+  using filtered::mul;
+  using filtered::sub;
+  const ApproxVec3& n = f.normal_filter;
+  const Approx s = sub(add(add(mul(n.x, x.approx.x), mul(n.y, x.approx.y)), mul(n.z, x.approx.z)), f.offset_filter);
+  if (filtered::certain(s)) return filtered::sign(s) == Sign::positive;
+  const FacePlane& e = plane(f);
+  const mpz_class lhs = (e.normal.x.get_num() * x.scaled[0] + e.normal.y.get_num() * x.scaled[1] +
+                         e.normal.z.get_num() * x.scaled[2]) *
+                        e.offset_scale;
+  return cmp(lhs, e.offset * x.scale) > 0;
 }
 
 bool ExpandingPolytope::add(PolytopePoint x) {
