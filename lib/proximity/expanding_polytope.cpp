@@ -23,8 +23,10 @@
 #include "expanding_polytope.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
+#include "dyadic_orient.hpp"
 #include "error_bounds.hpp"
 #include "filtered_arithmetic.hpp"
 #include "filtered_predicates.hpp"
@@ -132,8 +134,10 @@ const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
 // orient3d(c0, c1, c2, x) = <n, x> - <n, c0> with n = cross(c1 - c0, c2 -
 // c0): the filter evaluates that form on the face's approximate plane, whose
 // running error bounds (filtered_arithmetic.hpp) carry over, so a certain
-// sign is orient3d's. Otherwise exactly, on the integer plane (plane()):
-// with x = X / D, <n, x> - offset / s has the sign of <n, X> s - offset D.
+// sign is orient3d's. Otherwise exactly: in integers without allocation
+// when every coordinate is dyadic (dyadic_orient.hpp; the cube's), else on
+// the integer plane (plane()): with x = X / D, <n, x> - offset / s has the
+// sign of <n, X> s - offset D.
 bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
   using filtered::add;
   using filtered::mul;
@@ -141,6 +145,10 @@ bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
   const ApproxVec3& n = f.normal_filter;
   const Approx s = sub(add(add(mul(n.x, x.approx.x), mul(n.y, x.approx.y)), mul(n.z, x.approx.z)), f.offset_filter);
   if (filtered::certain(s)) return filtered::sign(s) == Sign::positive;
+  if (f.plane == PolytopeFace::no_plane) {
+    const std::optional<Sign> d = dyadic_orient3d(points_[f.v[0]].c, points_[f.v[1]].c, points_[f.v[2]].c, x.c);
+    if (d) return *d == Sign::positive;
+  }
   const FacePlane& e = plane(f);
   const mpz_class lhs = (e.normal.x.get_num() * x.scaled[0] + e.normal.y.get_num() * x.scaled[1] +
                          e.normal.z.get_num() * x.scaled[2]) *
