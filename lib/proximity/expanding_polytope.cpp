@@ -157,8 +157,10 @@ bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
 }
 
 bool ExpandingPolytope::add(PolytopePoint x) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges;
-  std::vector<char> visible(faces_.size(), 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>& visible_edges = visible_edges_;
+  std::vector<char>& visible = visible_;
+  visible_edges.clear();
+  visible.assign(faces_.size(), 0);
   for (std::size_t i = 0; i < faces_.size(); ++i) {
     if (!sees(faces_[i], x)) continue;
     visible[i] = 1;

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <utility>
 #include <vector>
 
 #include "approx.hpp"
@@ -92,6 +93,9 @@ class ExpandingPolytope {
   std::deque<PolytopePoint> points_;  // a deque: points never move
   std::vector<PolytopeFace> faces_;
   std::deque<FacePlane> planes_;  // a deque: planes never move
+  // add()'s scratch, kept so that its storage is reused.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges_;
+  std::vector<char> visible_;
 };
 
 }  // namespace cvms::detail
