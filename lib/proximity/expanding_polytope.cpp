@@ -100,9 +100,19 @@ namespace {
 
 using Int3 = std::array<mpz_class, 3>;
 
-// s * x - t * y, coordinatewise.
-Int3 scaled_difference(const mpz_class& s, const Int3& x, const mpz_class& t, const Int3& y) {
-  return {s * x[0] - t * y[0], s * x[1] - t * y[1], s * x[2] - t * y[2]};
+// out = s * x - t * y, coordinatewise, in place (no temporaries).
+void scaled_difference(Int3& out, const mpz_class& s, const Int3& x, const mpz_class& t, const Int3& y) {
+  for (int i = 0; i < 3; ++i) {
+    mpz_mul(out[i].get_mpz_t(), s.get_mpz_t(), x[i].get_mpz_t());
+    mpz_submul(out[i].get_mpz_t(), t.get_mpz_t(), y[i].get_mpz_t());
+  }
+}
+
+// out = <x, y>, in place.
+void dot_into(mpz_class& out, const Int3& x, const Int3& y) {
+  mpz_mul(out.get_mpz_t(), x[0].get_mpz_t(), y[0].get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), x[1].get_mpz_t(), y[1].get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), x[2].get_mpz_t(), y[2].get_mpz_t());
 }
 
 }  // namespace
@@ -111,33 +121,34 @@ Int3 scaled_difference(const mpz_class& s, const Int3& x, const mpz_class& t, co
 // (d_p d_q) and r - p = (d_p R - d_r P) / (d_p d_r), so n = cross(d_p Q -
 // d_q P, d_p R - d_r P) is cross(q - p, r - p) times d_p^2 d_q d_r > 0; the
 // plane is <n, x> = <n, P> / d_p, at squared distance <n, P>^2 / (d_p^2
-// |n|^2) from the origin. No gcd anywhere.
+// |n|^2) from the origin. No gcd anywhere, and the intermediate integers
+// live in per-thread scratch (GMP keeps their storage between calls).
 const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
   if (f.plane != PolytopeFace::no_plane) return planes_[f.plane];
   const PolytopePoint& p = points_[f.v[0]];
   const PolytopePoint& q = points_[f.v[1]];
   const PolytopePoint& r = points_[f.v[2]];
-  const Int3 u = scaled_difference(p.scale, q.scaled, q.scale, p.scaled);
-  const Int3 v = scaled_difference(p.scale, r.scaled, r.scale, p.scaled);
-  const Int3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  thread_local Int3 u, v, n;
+  scaled_difference(u, p.scale, q.scaled, q.scale, p.scaled);
+  scaled_difference(v, p.scale, r.scaled, r.scale, p.scaled);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpz_mul(n[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
+    mpz_submul(n[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
+  }
   FacePlane& e = planes_.emplace_back();
   e.normal = Vec3{Rational(n[0]), Rational(n[1]), Rational(n[2])};
   e.normal_approx = ApproxVec3::of(e.normal);
-  e.offset = n[0] * p.scaled[0] + n[1] * p.scaled[1] + n[2] * p.scaled[2];
+  dot_into(e.offset, n, p.scaled);
   e.offset_scale = p.scale;
-  e.distance_num = e.offset * e.offset;
-  e.distance_den = p.scale * p.scale * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  mpz_mul(e.distance_num.get_mpz_t(), e.offset.get_mpz_t(), e.offset.get_mpz_t());
+  dot_into(e.distance_den, n, n);
+  e.distance_den *= p.scale;
+  e.distance_den *= p.scale;
   f.plane = static_cast<std::uint32_t>(planes_.size() - 1);
   return e;
 }
 
-// orient3d(c0, c1, c2, x) = <n, x> - <n, c0> with n = cross(c1 - c0, c2 -
-// c0): the filter evaluates that form on the face's approximate plane, whose
-// running error bounds (filtered_arithmetic.hpp) carry over, so a certain
-// sign is orient3d's. Otherwise exactly: in integers without allocation
-// when every coordinate is dyadic (dyadic_orient.hpp; the cube's), else on
-// the integer plane (plane()): with x = X / D, <n, x> - offset / s has the
-// sign of <n, X> s - offset D.
 bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
   using filtered::add;
   using filtered::mul;
@@ -150,10 +161,13 @@ bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
     if (d) return *d == Sign::positive;
   }
   const FacePlane& e = plane(f);
-  const mpz_class lhs = (e.normal.x.get_num() * x.scaled[0] + e.normal.y.get_num() * x.scaled[1] +
-                         e.normal.z.get_num() * x.scaled[2]) *
-                        e.offset_scale;
-  return cmp(lhs, e.offset * x.scale) > 0;
+  thread_local mpz_class lhs, rhs;
+  mpz_mul(lhs.get_mpz_t(), e.normal.x.get_num_mpz_t(), x.scaled[0].get_mpz_t());
+  mpz_addmul(lhs.get_mpz_t(), e.normal.y.get_num_mpz_t(), x.scaled[1].get_mpz_t());
+  mpz_addmul(lhs.get_mpz_t(), e.normal.z.get_num_mpz_t(), x.scaled[2].get_mpz_t());
+  lhs *= e.offset_scale;
+  mpz_mul(rhs.get_mpz_t(), e.offset.get_mpz_t(), x.scale.get_mpz_t());
+  return cmp(lhs, rhs) > 0;
 }
 
 bool ExpandingPolytope::add(PolytopePoint x) {
