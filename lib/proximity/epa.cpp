@@ -73,7 +73,8 @@
 // which, like the triangulation of P, may differ from a cold start.
 //
 // Exactness and cost. Signs are filtered predicates (orient3d against the
-// face's vertices for "beyond"); the planes and squared distances are exact
+// face's vertices for "beyond", filtered on the face's approximate plane,
+// expanding_polytope.cpp); the planes and squared distances are exact
 // (scaled integers, expanding_polytope.cpp), since they are values the loop
 // compares, but computed only for the faces whose double bounds on the
 // squared distance (error_bounds.hpp, quotient_bounds) cannot rule them out

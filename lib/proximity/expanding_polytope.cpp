@@ -16,10 +16,12 @@
 // outside. A face with x on its plane stays: its new neighbour may be
 // coplanar with it, which P allows (its faces are triangles, not facets).
 //
-// Everything is exact: each visibility is a filtered sign on the points; a
-// face's plane and squared distance from the origin are exact (in scaled
-// integers, plane()), computed when the EPA loop needs them, and bounded in
-// doubles before.
+// Everything is exact: each visibility is the sign of orient3d, filtered on
+// the face's approximate plane (kept with the face, so a test is a dot
+// product with its running error, sees()) and exact when the filter cannot
+// tell; a face's plane and squared distance from the origin are exact (in
+// scaled integers, plane()), computed when the EPA loop or an exact
+// visibility test needs them, and bounded in doubles before.
 #include "expanding_polytope.hpp"
 
 #include <algorithm>
