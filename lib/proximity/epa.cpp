@@ -215,11 +215,27 @@ void set_witnesses(const SupportOperand& a, const SupportOperand& b, const Expan
   }
 }
 
-// The tie rule on the (verified) faces at the least distance.
+// Whether f's outward normal has the direction of one of `seen`'s.
+bool same_direction_as_any(const ExpandingPolytope& p, const std::vector<const PolytopeFace*>& seen,
+                           const PolytopeFace& f) {
+  const Vec3Ref nf{p.plane(f).normal, p.plane(f).normal_approx};
+  for (const PolytopeFace* g : seen) {
+    const Vec3Ref ng{p.plane(*g).normal, p.plane(*g).normal_approx};
+    if (sign_dot(nf, ng) == Sign::positive && is_parallel(nf, ng)) return true;
+  }
+  return false;
+}
+
+// The tie rule on the (verified) faces at the least distance. The triangles
+// of one facet share its primitive normal, so it is reduced (gcds) once per
+// direction.
 NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<PolytopeFace*>& nearest) {
   const PolytopeFace* best = nullptr;
   Vec3 best_direction;
+  std::vector<const PolytopeFace*> seen;
   for (const PolytopeFace* f : nearest) {
+    if (same_direction_as_any(p, seen, *f)) continue;
+    seen.push_back(f);
     Vec3 n = primitive_direction(p.plane(*f).normal);
     if (best == nullptr || n < best_direction) {
       best = f;
