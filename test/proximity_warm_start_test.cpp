@@ -10,6 +10,7 @@
 // tell (1e-30 apart).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -181,6 +182,40 @@ TEST(ProximityWarmStart, NearlyCoplanarSupportPoints) {
   const ConvexPolyhedron b = convex_hull(turned);
   expect_exact(cube, b);
   expect_exact(cube, b.translated(Vec3{Rational(3, 2), Rational(1, 3), 0}));
+}
+
+// A hull of random points of the grid {0..3}^3 around a tetrahedron (so it
+// is solid): small integers, so that many support points of A + (-B) are
+// exactly coplanar with faces of the EPA's polytope (the exact fallback of
+// its visibility test) or repeated.
+ConvexPolyhedron grid_solid(std::mt19937_64& rng) {
+  std::vector<Vec3> points{v3(0, 0, 0), v3(3, 0, 0), v3(0, 3, 0), v3(0, 0, 3)};
+  for (std::uint64_t i = rng() % 12; i > 0; --i)
+    points.push_back(v3(static_cast<int>(rng() % 4), static_cast<int>(rng() % 4), static_cast<int>(rng() % 4)));
+  return convex_hull(points);
+}
+
+// Many guessed points (up to 80, far more than the double EPA's tens):
+// every vertex pair once, in a random order, with repeats, on grid solids
+// moved by halves, so that the operands overlap or touch along faces.
+TEST(ProximityWarmStart, ManyCoplanarAndRepeatedGuessedPoints) {
+  for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+    std::mt19937_64 rng(seed);
+    const ConvexPolyhedron a = grid_solid(rng);
+    const auto half = [&rng] { return Rational(static_cast<int>(rng() % 7) - 3, 2); };
+    const ConvexPolyhedron b = grid_solid(rng).translated(Vec3{half(), half(), half()});
+    std::vector<detail::VertexPair> guess;
+    for (std::uint32_t i = 0; i < a.num_vertices(); ++i)
+      for (std::uint32_t j = 0; j < b.num_vertices(); ++j) guess.emplace_back(VertexId(i), VertexId(j));
+    std::shuffle(guess.begin(), guess.end(), rng);
+    guess.resize(std::min<std::size_t>(guess.size(), 60));
+    for (std::uint64_t i = rng() % 20; i > 0 && !guess.empty(); --i) guess.push_back(guess[rng() % guess.size()]);
+    const test::OriginAndPolytope oracle = test::proximity_oracle(a, b);
+    if (!oracle.inside) continue;
+    const PenetrationResult p = penetration_with(a, b, detail::GjkCandidate{}, guess);
+    ASSERT_EQ(test::check_penetration(a, b, p, oracle), "") << "seed " << seed;
+    ASSERT_EQ(same_answer(p, detail::penetration_by_sum(a, b)), "") << "seed " << seed;
+  }
 }
 
 }  // namespace

@@ -70,6 +70,8 @@ class Polytope {
   std::vector<D3> pts_;
   std::vector<VertexPair> pairs_;
   std::vector<Face> faces_;
+  std::vector<Face> kept_;
+  std::vector<std::pair<int, int>> edges_;
 
   D3 point_of(const VertexPair& p) const { return dsub(a_.approx_position(p.first), b_.approx_position(p.second)); }
 
@@ -94,9 +96,12 @@ class Polytope {
     return best;
   }
 
+  // The scratch vectors are members so that their storage is reused.
   bool insert(const VertexPair& w, const D3& x) {
-    std::vector<std::pair<int, int>> edges;
-    std::vector<Face> kept;
+    std::vector<std::pair<int, int>>& edges = edges_;
+    std::vector<Face>& kept = kept_;
+    edges.clear();
+    kept.clear();
     for (const Face& f : faces_) {
       if (ddot(f.n, x) - f.dist > 0) {
         for (int e = 0; e < 3; ++e) edges.emplace_back(f.v[e], f.v[(e + 1) % 3]);
@@ -105,7 +110,7 @@ class Polytope {
       }
     }
     if (edges.empty()) return false;
-    faces_ = std::move(kept);
+    std::swap(faces_, kept);
     const int n = static_cast<int>(pts_.size());
     pairs_.push_back(w);
     pts_.push_back(x);

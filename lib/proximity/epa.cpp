@@ -73,7 +73,8 @@
 // which, like the triangulation of P, may differ from a cold start.
 //
 // Exactness and cost. Signs are filtered predicates (orient3d against the
-// face's vertices for "beyond"); the planes and squared distances are exact
+// face's vertices for "beyond", filtered on the face's approximate plane,
+// expanding_polytope.cpp); the planes and squared distances are exact
 // (scaled integers, expanding_polytope.cpp), since they are values the loop
 // compares, but computed only for the faces whose double bounds on the
 // squared distance (error_bounds.hpp, quotient_bounds) cannot rule them out
@@ -164,12 +165,6 @@ void mark_verified(const ExpandingPolytope& p, const std::vector<PolytopeFace*>&
   }
 }
 
-bool beyond(const ExpandingPolytope& p, const PolytopeFace& f, const PolytopePoint& w) {
-  const auto& x = p.points();
-  const auto r = [&](std::uint32_t i) { return Vec3Ref{x[i].c, x[i].approx}; };
-  return orient3d(r(f.v[0]), r(f.v[1]), r(f.v[2]), {w.c, w.approx}) == Sign::positive;
-}
-
 // The barycentric weights of q = t n (the foot point of f's plane, n its
 // normal) in f's triangle c_0 c_1 c_2, or nothing if q is outside it. The
 // weight of c_i is proportional to <cross(c_j - q, c_k - q), n> = <cross(c_j,
@@ -220,11 +215,27 @@ void set_witnesses(const SupportOperand& a, const SupportOperand& b, const Expan
   }
 }
 
-// The tie rule on the (verified) faces at the least distance.
+// Whether f's outward normal has the direction of one of `seen`'s.
+bool same_direction_as_any(const ExpandingPolytope& p, const std::vector<const PolytopeFace*>& seen,
+                           const PolytopeFace& f) {
+  const Vec3Ref nf{p.plane(f).normal, p.plane(f).normal_approx};
+  for (const PolytopeFace* g : seen) {
+    const Vec3Ref ng{p.plane(*g).normal, p.plane(*g).normal_approx};
+    if (sign_dot(nf, ng) == Sign::positive && is_parallel(nf, ng)) return true;
+  }
+  return false;
+}
+
+// The tie rule on the (verified) faces at the least distance. The triangles
+// of one facet share its primitive normal, so it is reduced (gcds) once per
+// direction.
 NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<PolytopeFace*>& nearest) {
   const PolytopeFace* best = nullptr;
   Vec3 best_direction;
+  std::vector<const PolytopeFace*> seen;
   for (const PolytopeFace* f : nearest) {
+    if (same_direction_as_any(p, seen, *f)) continue;
+    seen.push_back(f);
     Vec3 n = primitive_direction(p.plane(*f).normal);
     if (best == nullptr || n < best_direction) {
       best = f;
@@ -275,7 +286,7 @@ std::optional<NearestFacet> epa_nearest_facet_from(const SupportOperand& a, cons
       return out;
     }
     PolytopePoint w = support_point(a, b, p.plane(*f).normal, p.points()[f->v[0]]);
-    if (beyond(p, *f, w))
+    if (p.sees(*f, w))
       p.add(std::move(w));
     else
       mark_verified(p, nearest, *f);

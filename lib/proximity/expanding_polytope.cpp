@@ -16,15 +16,19 @@
 // outside. A face with x on its plane stays: its new neighbour may be
 // coplanar with it, which P allows (its faces are triangles, not facets).
 //
-// Everything is exact: each visibility is a filtered sign on the points; a
-// face's plane and squared distance from the origin are exact (in scaled
-// integers, plane()), computed when the EPA loop needs them, and bounded in
-// doubles before.
+// Everything is exact: each visibility is the sign of orient3d, filtered on
+// the face's approximate plane (kept with the face, so a test is a dot
+// product with its running error, sees()) and exact when the filter cannot
+// tell; a face's plane and squared distance from the origin are exact (in
+// scaled integers, plane()), computed when the EPA loop or an exact
+// visibility test needs them, and bounded in doubles before.
 #include "expanding_polytope.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
+#include "dyadic_orient.hpp"
 #include "error_bounds.hpp"
 #include "filtered_arithmetic.hpp"
 #include "filtered_predicates.hpp"
@@ -69,6 +73,8 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
   const filtered::QuotientBounds d = filtered::quotient_bounds(mul(c, c), n2);
   PolytopeFace f;
   f.v = {i, j, k};
+  f.normal_filter = {nx, ny, nz};
+  f.offset_filter = c;
   f.distance_low = d.low;
   f.distance_high = d.high;
   faces_.push_back(std::move(f));
@@ -96,9 +102,19 @@ namespace {
 
 using Int3 = std::array<mpz_class, 3>;
 
-// s * x - t * y, coordinatewise.
-Int3 scaled_difference(const mpz_class& s, const Int3& x, const mpz_class& t, const Int3& y) {
-  return {s * x[0] - t * y[0], s * x[1] - t * y[1], s * x[2] - t * y[2]};
+// out = s * x - t * y, coordinatewise, in place (no temporaries).
+void scaled_difference(Int3& out, const mpz_class& s, const Int3& x, const mpz_class& t, const Int3& y) {
+  for (int i = 0; i < 3; ++i) {
+    mpz_mul(out[i].get_mpz_t(), s.get_mpz_t(), x[i].get_mpz_t());
+    mpz_submul(out[i].get_mpz_t(), t.get_mpz_t(), y[i].get_mpz_t());
+  }
+}
+
+// out = <x, y>, in place.
+void dot_into(mpz_class& out, const Int3& x, const Int3& y) {
+  mpz_mul(out.get_mpz_t(), x[0].get_mpz_t(), y[0].get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), x[1].get_mpz_t(), y[1].get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), x[2].get_mpz_t(), y[2].get_mpz_t());
 }
 
 }  // namespace
@@ -107,32 +123,60 @@ Int3 scaled_difference(const mpz_class& s, const Int3& x, const mpz_class& t, co
 // (d_p d_q) and r - p = (d_p R - d_r P) / (d_p d_r), so n = cross(d_p Q -
 // d_q P, d_p R - d_r P) is cross(q - p, r - p) times d_p^2 d_q d_r > 0; the
 // plane is <n, x> = <n, P> / d_p, at squared distance <n, P>^2 / (d_p^2
-// |n|^2) from the origin. No gcd anywhere.
+// |n|^2) from the origin. No gcd anywhere, and the intermediate integers
+// live in per-thread scratch (GMP keeps their storage between calls).
 const FacePlane& ExpandingPolytope::plane(PolytopeFace& f) {
   if (f.plane != PolytopeFace::no_plane) return planes_[f.plane];
   const PolytopePoint& p = points_[f.v[0]];
   const PolytopePoint& q = points_[f.v[1]];
   const PolytopePoint& r = points_[f.v[2]];
-  const Int3 u = scaled_difference(p.scale, q.scaled, q.scale, p.scaled);
-  const Int3 v = scaled_difference(p.scale, r.scaled, r.scale, p.scaled);
-  const Int3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  thread_local Int3 u, v, n;
+  scaled_difference(u, p.scale, q.scaled, q.scale, p.scaled);
+  scaled_difference(v, p.scale, r.scaled, r.scale, p.scaled);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpz_mul(n[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
+    mpz_submul(n[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
+  }
   FacePlane& e = planes_.emplace_back();
   e.normal = Vec3{Rational(n[0]), Rational(n[1]), Rational(n[2])};
   e.normal_approx = ApproxVec3::of(e.normal);
-  const mpz_class offset = n[0] * p.scaled[0] + n[1] * p.scaled[1] + n[2] * p.scaled[2];
-  e.distance_num = offset * offset;
-  e.distance_den = p.scale * p.scale * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  dot_into(e.offset, n, p.scaled);
+  e.offset_scale = p.scale;
+  mpz_mul(e.distance_num.get_mpz_t(), e.offset.get_mpz_t(), e.offset.get_mpz_t());
+  dot_into(e.distance_den, n, n);
+  e.distance_den *= p.scale;
+  e.distance_den *= p.scale;
   f.plane = static_cast<std::uint32_t>(planes_.size() - 1);
   return e;
 }
 
-bool ExpandingPolytope::sees(const PolytopeFace& f, const PolytopePoint& x) const {
-  return orient3d(ref(points_[f.v[0]]), ref(points_[f.v[1]]), ref(points_[f.v[2]]), ref(x)) == Sign::positive;
+bool ExpandingPolytope::sees(PolytopeFace& f, const PolytopePoint& x) {
+  using filtered::add;
+  using filtered::mul;
+  using filtered::sub;
+  const ApproxVec3& n = f.normal_filter;
+  const Approx s = sub(add(add(mul(n.x, x.approx.x), mul(n.y, x.approx.y)), mul(n.z, x.approx.z)), f.offset_filter);
+  if (filtered::certain(s)) return filtered::sign(s) == Sign::positive;
+  if (f.plane == PolytopeFace::no_plane) {
+    const std::optional<Sign> d = dyadic_orient3d(points_[f.v[0]].c, points_[f.v[1]].c, points_[f.v[2]].c, x.c);
+    if (d) return *d == Sign::positive;
+  }
+  const FacePlane& e = plane(f);
+  thread_local mpz_class lhs, rhs;
+  mpz_mul(lhs.get_mpz_t(), e.normal.x.get_num_mpz_t(), x.scaled[0].get_mpz_t());
+  mpz_addmul(lhs.get_mpz_t(), e.normal.y.get_num_mpz_t(), x.scaled[1].get_mpz_t());
+  mpz_addmul(lhs.get_mpz_t(), e.normal.z.get_num_mpz_t(), x.scaled[2].get_mpz_t());
+  lhs *= e.offset_scale;
+  mpz_mul(rhs.get_mpz_t(), e.offset.get_mpz_t(), x.scale.get_mpz_t());
+  return cmp(lhs, rhs) > 0;
 }
 
 bool ExpandingPolytope::add(PolytopePoint x) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges;
-  std::vector<char> visible(faces_.size(), 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>& visible_edges = visible_edges_;
+  std::vector<char>& visible = visible_;
+  visible_edges.clear();
+  visible.assign(faces_.size(), 0);
   for (std::size_t i = 0; i < faces_.size(); ++i) {
     if (!sees(faces_[i], x)) continue;
     visible[i] = 1;

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <utility>
 #include <vector>
 
 #include "approx.hpp"
@@ -31,11 +32,14 @@ struct PolytopePoint {
 PolytopePoint polytope_point(VertexId vertex_a, VertexId vertex_b, Vec3 c);
 
 /// A face's exact plane: an integer outward normal (a positive multiple of
-/// cross(c1 - c0, c2 - c0)) and its squared distance from the origin,
-/// distance_num / distance_den, kept unreduced (compared by products).
+/// cross(c1 - c0, c2 - c0)), the plane <normal, x> = offset / offset_scale,
+/// and its squared distance from the origin, distance_num / distance_den,
+/// kept unreduced (compared by products).
 struct FacePlane {
   Vec3 normal;
   ApproxVec3 normal_approx;
+  mpz_class offset;
+  mpz_class offset_scale;  ///< > 0
   mpz_class distance_num;
   mpz_class distance_den;  ///< > 0
 };
@@ -50,6 +54,10 @@ int compare_distances(const FacePlane& a, const FacePlane& b);
 /// rational arithmetic.
 struct PolytopeFace {
   std::array<std::uint32_t, 3> v;
+  /// cross(c1 - c0, c2 - c0) and its product with c0, from the points'
+  /// approximations with running error bounds: the filter of sees().
+  ApproxVec3 normal_filter;
+  Approx offset_filter;
   double distance_low = 0.0;       ///< <= the squared distance
   double distance_high = 0.0;      ///< >= it (may be infinite or NaN: no bound)
   std::uint32_t plane = no_plane;  ///< index of the exact plane, or no_plane
@@ -70,6 +78,10 @@ class ExpandingPolytope {
   /// P, i.e. in P. \pre P + {x} is inside M (x a point of M).
   bool add(PolytopePoint x);
 
+  /// Whether x is strictly beyond f's plane (exact: a filter on the face's
+  /// approximate plane, then the integer plane).
+  bool sees(PolytopeFace& f, const PolytopePoint& x);
+
   /// f's exact plane, computed on the first call.
   const FacePlane& plane(PolytopeFace& f);
   /// f's exact plane. \pre plane(f) was called.
@@ -77,11 +89,13 @@ class ExpandingPolytope {
 
  private:
   void add_face(std::uint32_t i, std::uint32_t j, std::uint32_t k);
-  [[nodiscard]] bool sees(const PolytopeFace& f, const PolytopePoint& x) const;
 
   std::deque<PolytopePoint> points_;  // a deque: points never move
   std::vector<PolytopeFace> faces_;
   std::deque<FacePlane> planes_;  // a deque: planes never move
+  // add()'s scratch, kept so that its storage is reused.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> visible_edges_;
+  std::vector<char> visible_;
 };
 
 }  // namespace cvms::detail
