@@ -45,12 +45,10 @@ class ReallocVector {
   ~ReallocVector() { std::free(data_); }
 
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
-  [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
   [[nodiscard]] const T* data() const noexcept { return data_; }
   [[nodiscard]] const T* begin() const noexcept { return data_; }
   [[nodiscard]] const T* end() const noexcept { return data_ + size_; }
   [[nodiscard]] const T& operator[](std::size_t i) const noexcept { return data_[i]; }
-  [[nodiscard]] const T& back() const noexcept { return data_[size_ - 1]; }
 
   void push_back(const T& value) {
     if (size_ == capacity_) grow(size_ + 1);
