@@ -301,6 +301,68 @@ TEST(PlanarSum, NearlyParallelEdgesBeyondDoublePrecision) {
   expect_sum(a, Poly{{Rational(0), Rational(0)}, {n, n - one}});
 }
 
+// Operands whose coordinates share a denominator L with every L * x below
+// 2^62 in magnitude are merged in machine integers (lib/planar/
+// small_points.hpp); these straddle that bound, so that an overflow in the
+// integer path, or a wrong choice between the paths, disagrees with the
+// oracle.
+TEST(PlanarSum, CoordinatesAtTheMachineIntegerBound) {
+  const mpz_class below = (mpz_class(1) << 62) - 1;
+  for (const mpz_class& m : {below, mpz_class(below + 1), mpz_class(below + 2)}) {
+    SCOPED_TRACE("m = " + m.get_str());
+    const Rational big(m);
+    const Rational one(1);
+    // Extreme corners: every edge vector has a coordinate near 2m, and the
+    // cross products of near-parallel edges come within a few units of
+    // 2^126 before they cancel.
+    Poly square{{-big, -big}, {big, -big}, {big, big}, {-big, big}};
+    Poly near_diagonal{{-big, -big}, {big, big - one}, {big - one, big}};
+    Poly thin{{-big, -big + one}, {big - one, big}, {-big, -big + 2}};
+    expect_sum(square, near_diagonal);
+    expect_sum(near_diagonal, negated(near_diagonal));
+    expect_sum(thin, near_diagonal);
+    expect_sum(thin, negated(thin));
+    // The same shapes over a denominator: L * x reaches the bound only
+    // through the common denominator.
+    const Rational third(1, 3);
+    expect_sum(scaled(near_diagonal, third, {}), scaled(thin, third, {third, third}));
+  }
+}
+
+// Denominators whose least common multiple overflows 64 bits, though each is
+// small, and short decimals (the scanned-mesh case, all in machine integers).
+TEST(PlanarSum, ManyDenominatorsAndShortDecimals) {
+  Poly primes;
+  const int denominators[] = {1000003, 999983, 1000033, 999979};
+  const std::pair<int, int> corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k = 0; k < 4; ++k) {
+    Rational x(corners[k].first * 2 * denominators[k] + 1, denominators[k]);
+    Rational y(corners[k].second * 2 * denominators[k] + 1, denominators[k]);
+    x.canonicalize();
+    y.canonicalize();
+    primes.push_back({x, y});
+  }
+  expect_sum(primes, negated(primes));
+  expect_sum(primes, v2({{0, 0}, {3, 1}, {1, 2}}));
+  for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937_64 rng(seed);
+    std::uniform_int_distribution<int> micro(-2000000, 2000000);
+    Poly pts;
+    for (int i = 0; i < 40; ++i) {
+      Rational x(micro(rng), 1000000);
+      Rational y(micro(rng), 1000000);
+      x.canonicalize();
+      y.canonicalize();
+      pts.push_back({x, y});
+    }
+    const Poly hull = oracle_hull(pts);
+    expect_sum(hull, hull);
+    expect_sum(hull, negated(hull));
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
 void expect_invalid(const Poly& p, const Poly& q, const std::string& fragment) {
   try {
     (void)planar_sum_indices(p, q);

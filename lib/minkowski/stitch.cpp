@@ -8,6 +8,7 @@
 #include <cmath>
 #include <latch>
 #include <functional>
+#include <span>
 #include <utility>
 
 #include "cvms/planar_sum.hpp"
@@ -52,7 +53,21 @@ Projection projection_along(const Vec3& n) {
   return {u, v};
 }
 
-Vec2 project(const Vec3& p, Projection pr) { return {p[pr.u], p[pr.v]}; }
+// out = the projection of p. Assigning into a reused Vec2 keeps its limbs,
+// where constructing one would allocate four blocks per point.
+void project_into(const Vec3& p, Projection pr, Vec2& out) {
+  out.x = p[pr.u];
+  out.y = p[pr.v];
+}
+
+// The projections of the given vertices as a prefix of scratch, which only
+// grows, so that its rationals are reused from one planar sum to the next.
+std::span<const Vec2> project_all(const ConvexPolyhedron& poly, std::span<const VertexId> vertices, Projection pr,
+                                  std::vector<Vec2>& scratch) {
+  if (scratch.size() < vertices.size()) scratch.resize(vertices.size());
+  for (std::size_t k = 0; k < vertices.size(); ++k) project_into(poly.vertex(vertices[k]), pr, scratch[k]);
+  return {scratch.data(), vertices.size()};
+}
 
 // out = primitive_direction(cross(u, v)) for integer vectors u, v: the
 // cross product and one gcd in integers (no rational canonicalisation).
@@ -169,15 +184,10 @@ void SumFacetBuilder::add_planar_sum(Operand which, FaceId f, std::span<const Ve
   const ConvexPolyhedron& oth = operand(which == Operand::a ? Operand::b : Operand::a);
   const Projection pr = projection_along(own.normal(f));
   own_vertices_.clear();
-  own_points_.clear();
-  for (HalfedgeId h : own.mesh().face_halfedges(f)) {
-    const VertexId v = own.mesh().from(h);
-    own_vertices_.push_back(v);
-    own_points_.push_back(project(own.vertex(v), pr));
-  }
-  other_points_.clear();
-  for (VertexId v : other) other_points_.push_back(project(oth.vertex(v), pr));
-  for (const auto& [i, j] : planar_sum_indices(own_points_, other_points_)) {
+  for (HalfedgeId h : own.mesh().face_halfedges(f)) own_vertices_.push_back(own.mesh().from(h));
+  const std::span<const Vec2> own_points = project_all(own, own_vertices_, pr, own_points_);
+  const std::span<const Vec2> other_points = project_all(oth, other, pr, other_points_);
+  for (const auto& [i, j] : planar_sum_indices(own_points, other_points)) {
     push(which, own_vertices_[i], other[j]);
   }
   close_facet(facet_normal(which, f));
