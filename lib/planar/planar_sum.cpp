@@ -121,7 +121,6 @@ struct EdgesOf<detail::SmallPoint2> {
 template <class Point>
 struct Walk {
   std::uint32_t start = 0;
-  std::uint32_t vertices = 0;
   typename EdgesOf<Point>::type edges;
 };
 
@@ -139,7 +138,6 @@ Walk<Point> prepare(std::span<const Point> poly, const char* operand) {
   if (poly.size() > std::numeric_limits<std::uint32_t>::max()) fail(operand, "more than 2^32 - 1 vertices");
   const auto n = static_cast<std::uint32_t>(poly.size());
   Walk<Point> walk;
-  walk.vertices = n;
   for (std::uint32_t i = 1; i < n; ++i) {
     if (is_lower(poly[i], poly[walk.start])) walk.start = i;
   }
@@ -169,6 +167,8 @@ template <class Point>
 std::vector<IndexPair> merge(std::span<const Point> p, std::span<const Point> q) {
   const Walk<Point> wp = prepare(p, "p");
   const Walk<Point> wq = prepare(q, "q");
+  const auto np = static_cast<std::uint32_t>(p.size());
+  const auto nq = static_cast<std::uint32_t>(q.size());
   const std::size_t ep = wp.edges.size();
   const std::size_t eq = wq.edges.size();
 
@@ -188,11 +188,11 @@ std::vector<IndexPair> merge(std::span<const Point> p, std::span<const Point> q)
     else
       order = wp.edges.compare(a, wq.edges, b);
     if (order != Sign::positive) {
-      i = (i + 1) % wp.vertices;
+      i = (i + 1) % np;
       ++a;
     }
     if (order != Sign::negative) {
-      j = (j + 1) % wq.vertices;
+      j = (j + 1) % nq;
       ++b;
     }
     if (a == ep && b == eq) break;  // back at the start
