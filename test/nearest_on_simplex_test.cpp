@@ -8,6 +8,7 @@
 // fallback runs.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <optional>
 #include <random>
 #include <vector>
@@ -70,17 +71,21 @@ Rational random_coordinate(std::mt19937_64& rng, int kind) {
       return Rational(mpz_class("100000000000000000000")) + fraction(v, 1000);
     case 2:
       return Rational(static_cast<double>(v) / 3.0);
-    default:  // a small integer moved by about 1e-25: the exact ties of the lattice are broken below double precision
+    case 3:  // a small integer moved by about 1e-25: the exact ties of the lattice are broken below double precision
       return Rational(v % 3) + fraction(v, 7) * Rational(mpz_class(1), mpz_class("10000000000000000000000000000"));
+    case 4:  // doubles of very different exponents: powers of two from 2^-1074 to 2^0 as denominators (the shift path)
+      return Rational(std::ldexp(static_cast<double>(v) / 3.0, -static_cast<int>(rng() % 1070)));
+    default:  // dyadic and non-dyadic coordinates mixed in one simplex (the lcm path)
+      return rng() % 4 == 0 ? fraction(v, 5) : Rational(static_cast<double>(v) / 64.0);
   }
 }
 
 TEST(ProximityNearestOnSimplex, AgreesWithBruteForce) {
   std::mt19937_64 rng(2026);
   int checked = 0;
-  for (int trial = 0; trial < 3000; ++trial) {
+  for (int trial = 0; trial < 4500; ++trial) {
     const int count = 1 + static_cast<int>(rng() % 4);
-    const int kind = static_cast<int>(rng() % 4);
+    const int kind = static_cast<int>(rng() % 6);
     std::vector<Vec3> pts;
     for (int i = 0; i < count; ++i)
       pts.push_back({random_coordinate(rng, kind), random_coordinate(rng, kind), random_coordinate(rng, kind)});
@@ -101,15 +106,14 @@ TEST(ProximityNearestOnSimplex, AgreesWithBruteForce) {
       independent = count == 1 || test::solve_linear(g, r).has_value();
     }
     if (!independent) continue;
-    std::array<Vec3, 4> in;
-    for (int i = 0; i < count; ++i) in[i] = pts[i];
+    SimplexPoints in{};
+    for (int i = 0; i < count; ++i) in[i] = &pts[i];
     const SimplexNearest got = nearest_on_simplex(in, count);
     SCOPED_TRACE("seed 2026, trial " + std::to_string(trial) + ", kind " + std::to_string(kind));
     ASSERT_EQ(got.squared_norm, expected.norm);
     ASSERT_EQ(got.point, expected.point);
     ASSERT_EQ(got.support_mask, expected.mask);
-    const Vec3* ptrs[4] = {&in[0], &in[1], &in[2], &in[3]};
-    ASSERT_EQ(weighted_sum(ptrs, got.weight_num.data(), got.weight_den, count), expected.point);
+    ASSERT_EQ(weighted_sum(in.data(), got.weight_num.data(), got.weight_den, count), expected.point);
     ++checked;
   }
   EXPECT_GT(checked, 1000);

@@ -70,7 +70,7 @@ PenetrationResult penetration_with(const ConvexPolyhedron& a, const ConvexPolyhe
   const detail::SupportOperand sa(pa);
   const detail::SupportOperand sb(pb);
   const detail::GjkOutcome g = detail::exact_gjk_from(sa, sb, detail::GjkGoal::distance, nullptr, gjk_guess);
-  PenetrationResult r = detail::penetration_from_distance(detail::distance_from(g));
+  PenetrationResult r = detail::penetration_from_distance(detail::distance_from(sa, g));
   if (!r.intersect) return r;
   detail::NearestFacet f = *detail::epa_nearest_facet_from(sa, sb, g, &epa_guess);
   detail::set_depth(r, std::move(f.direction), std::move(f.offset));
@@ -97,7 +97,7 @@ TEST(ProximityWarmStart, WrongGuessesGiveTheExactAnswer) {
     const detail::SupportOperand sb(pb);
     const detail::GjkCandidate guess = wrong_gjk_guess(rng, r.a, r.b);
     const DistanceResult d =
-        detail::distance_from(detail::exact_gjk_from(sa, sb, detail::GjkGoal::distance, nullptr, guess));
+        detail::distance_from(sa, detail::exact_gjk_from(sa, sb, detail::GjkGoal::distance, nullptr, guess));
     ASSERT_EQ(test::check_distance(r.a, r.b, d, r.oracle), "") << "seed " << seed << ": " << r.description;
     const std::vector<detail::VertexPair> none;
     for (const std::vector<detail::VertexPair>& epa_guess : {none, wrong_epa_guess(rng, r.a, r.b)}) {

@@ -4,6 +4,7 @@
 
 #include <initializer_list>
 
+#include "common_denominator.hpp"
 #include "dyadic.hpp"
 
 namespace cvms::exact {
@@ -49,6 +50,7 @@ bool has_integer_coordinates(const Vec3& v) {
 // den(p_i), an integer sum with no canonical rational (no gcd), scaled by L > 0.
 struct ScaledDots {
   mpz_class l, sum, term;
+  mpz_class n_scaled[3];  // n as an integer vector when it is not one
 
   // l = the lcm of the coordinates' denominators of every point.
   void common_denominator(std::initializer_list<const Vec3*> points) {
@@ -57,36 +59,52 @@ struct ScaledDots {
       for (int i = 0; i < 3; ++i)
         if ((*p)[i].get_den() != l) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), (*p)[i].get_den_mpz_t());
   }
-  // sum += L dot(p, n), or -= when subtract. \pre n is an integer vector.
-  void add_scaled_dot(const Vec3& p, const Vec3& n, bool subtract) {
+  // sum += L dot(p, n), or -= when subtract, for an integer vector n.
+  void add_scaled_dot(const Vec3& p, const mpz_class* const n[3], bool subtract) {
     for (int i = 0; i < 3; ++i) {
-      if (mpz_sgn(n[i].get_num_mpz_t()) == 0 || mpz_sgn(p[i].get_num_mpz_t()) == 0) continue;
+      if (mpz_sgn(n[i]->get_mpz_t()) == 0 || mpz_sgn(p[i].get_num_mpz_t()) == 0) continue;
       mpz_divexact(term.get_mpz_t(), l.get_mpz_t(), p[i].get_den_mpz_t());
       mpz_mul(term.get_mpz_t(), term.get_mpz_t(), p[i].get_num_mpz_t());
       if (subtract)
-        mpz_submul(sum.get_mpz_t(), term.get_mpz_t(), n[i].get_num_mpz_t());
+        mpz_submul(sum.get_mpz_t(), term.get_mpz_t(), n[i]->get_mpz_t());
       else
-        mpz_addmul(sum.get_mpz_t(), term.get_mpz_t(), n[i].get_num_mpz_t());
+        mpz_addmul(sum.get_mpz_t(), term.get_mpz_t(), n[i]->get_mpz_t());
     }
   }
 };
 
+// An integer vector K n for some K > 0, which has the sign of every dot
+// product with n: n's numerators when n is an integer vector, else n scaled
+// to the lcm of its denominators (into `scratch`).
+void positive_integer_multiple(const Vec3& n, mpz_class scratch[3], const mpz_class* out[3]) {
+  if (has_integer_coordinates(n)) {
+    for (int i = 0; i < 3; ++i) out[i] = &n[i].get_num();
+    return;
+  }
+  const Rational* const values[3] = {&n.x, &n.y, &n.z};
+  detail::scale_to_common_denominator(values, 3, scratch);
+  for (int i = 0; i < 3; ++i) out[i] = &scratch[i];
+}
+
 }  // namespace
 
-// For an integer n (every facet normal is one): with L the lcm of the six
-// denominators of v and w, L (v - w) is an integer vector and L > 0, so the
-// sign is that of sum_i n_i (num(v_i) L / den(v_i) - num(w_i) L / den(w_i)),
-// one integer sum. The rational form canonicalises nine intermediates, and
-// their gcds were most of the exact cost when the coordinates are not dyadic
-// (decimal input, where A + A makes every contributing-vertex choice an exact
-// tie: issue 14).
+// With L the lcm of the six denominators of v and w, L (v - w) is an integer
+// vector and L > 0; with K n an integer vector, K > 0 (n itself for a facet
+// normal), the sign is that of sum_i K n_i (num(v_i) L / den(v_i) - num(w_i)
+// L / den(w_i)), one integer sum. The rational form canonicalises nine
+// intermediates, and their gcds were most of the exact cost: when the
+// coordinates are not dyadic (decimal input, where A + A makes every
+// contributing-vertex choice an exact tie: issue 14), and in the exact GJK,
+// whose optimality test <w, v> >= <v, v> is an exact tie whenever the double
+// GJK's guess is right (v there is a rational point, not a normal).
 Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) {
-  if (!has_integer_coordinates(n)) return sign_of(sgn(dot(v - w, n)));
   thread_local ScaledDots s;
+  const mpz_class* n_int[3];
+  positive_integer_multiple(n, s.n_scaled, n_int);
   s.common_denominator({&v, &w});
   s.sum = 0;
-  s.add_scaled_dot(v, n, false);
-  s.add_scaled_dot(w, n, true);
+  s.add_scaled_dot(v, n_int, false);
+  s.add_scaled_dot(w, n_int, true);
   return sign_of(mpz_sgn(s.sum.get_mpz_t()));
 }
 
@@ -130,9 +148,10 @@ Sign side_of_integer_plane(const Vec3& p, const Vec3& n, const Rational& offset)
   // With L the lcm of p's denominators and offset = a / b (b > 0):
   // dot(p, n) - offset = (L dot(p, n) b - a L) / (L b).
   thread_local ScaledDots s;
+  const mpz_class* const n_int[3] = {&n.x.get_num(), &n.y.get_num(), &n.z.get_num()};
   s.common_denominator({&p});
   s.sum = 0;
-  s.add_scaled_dot(p, n, false);
+  s.add_scaled_dot(p, n_int, false);
   mpz_mul(s.sum.get_mpz_t(), s.sum.get_mpz_t(), offset.get_den_mpz_t());
   mpz_mul(s.term.get_mpz_t(), s.l.get_mpz_t(), offset.get_num_mpz_t());
   return sign_of(mpz_cmp(s.sum.get_mpz_t(), s.term.get_mpz_t()));

@@ -6,6 +6,9 @@
 // a - b = v (so b is computed as a - v): so |a - b|^2 = |v|^2 is the distance, and a = b when they
 // intersect. The same for polyhedra and for convex sets of any dimension:
 // both are SupportOperands.
+#include <array>
+#include <optional>
+
 #include "cvms/proximity.hpp"
 #include "gjk.hpp"
 #include "nearest_on_simplex.hpp"
@@ -34,16 +37,17 @@ bool intersects(const ConvexSet& a, const ConvexSet& b) {
 namespace detail {
 
 DistanceResult distance_with_offset(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset) {
-  return distance_from(exact_gjk(a, b, GjkGoal::distance, b_offset));
+  return distance_from(a, exact_gjk(a, b, GjkGoal::distance, b_offset));
 }
 
-DistanceResult distance_from(const GjkOutcome& g) {
+DistanceResult distance_from(const SupportOperand& a, const GjkOutcome& g) {
   DistanceResult r;
   r.squared_distance = g.squared_norm;
   r.intersect = g.intersect;
   r.iterations = g.iterations;
+  std::array<std::optional<Vec3>, 4> moved;  // A's positions when A is moved
   const Vec3* a_points[4];
-  for (int i = 0; i < g.size; ++i) a_points[i] = &g.simplex[i].a;
+  for (int i = 0; i < g.size; ++i) a_points[i] = &a.position_view(g.simplex[i].vertex_a, moved[i]);
   r.witness_a = weighted_sum(a_points, g.weight_num.data(), g.weight_den, g.size);
   r.witness_b = g.intersect ? r.witness_a : r.witness_a - g.nearest;  // a - b = v: one weighted sum, not two
   return r;

@@ -99,6 +99,13 @@
 namespace cvms::detail {
 namespace {
 
+// The point a - b of M for vertex a of A and b of B.
+PolytopePoint point_of(const SupportOperand& a, const SupportOperand& b, VertexId va, VertexId vb) {
+  Vec3 c;
+  subtract_positions(c, a, va, b, vb);
+  return polytope_point(va, vb, std::move(c));
+}
+
 // The support point of M in direction n, the walks started at `from`'s pair.
 PolytopePoint support_point(const SupportOperand& a, const SupportOperand& b, const Vec3& n,
                             const PolytopePoint& from) {
@@ -106,7 +113,7 @@ PolytopePoint support_point(const SupportOperand& a, const SupportOperand& b, co
   const Vec3Ref u{n, approx};
   const VertexId va = a.support(u, Sign::positive, from.vertex_a);
   const VertexId vb = b.support(u, Sign::negative, from.vertex_b);
-  return polytope_point(va, vb, a.position(va) - b.position(vb));
+  return point_of(a, b, va, vb);
 }
 
 // A nonzero normal of aff(s) (1 to 3 affinely independent points).
@@ -200,15 +207,14 @@ void set_witnesses(const SupportOperand& a, const SupportOperand& b, const Expan
     if (sign_dot(n, fn) != Sign::positive || !is_parallel(n, fn)) continue;
     const std::optional<std::array<mpz_class, 3>> w = foot_weights(p, *f);
     if (!w) continue;
-    std::array<Vec3, 3> xa;
-    std::array<Vec3, 3> xb;
+    std::array<std::optional<Vec3>, 6> moved;  // positions when the operands are moved
+    const Vec3* pa[3];
+    const Vec3* pb[3];
     for (int i = 0; i < 3; ++i) {
-      xa[i] = a.position(p.points()[f->v[i]].vertex_a);
-      xb[i] = b.position(p.points()[f->v[i]].vertex_b);
+      pa[i] = &a.position_view(p.points()[f->v[i]].vertex_a, moved[i]);
+      pb[i] = &b.position_view(p.points()[f->v[i]].vertex_b, moved[3 + i]);
     }
     const mpz_class total = (*w)[0] + (*w)[1] + (*w)[2];
-    const Vec3* pa[3] = {&xa[0], &xa[1], &xa[2]};
-    const Vec3* pb[3] = {&xb[0], &xb[1], &xb[2]};
     out.witness_a = weighted_sum(pa, w->data(), total, 3);
     out.witness_b = weighted_sum(pb, w->data(), total, 3);
     return;
@@ -252,7 +258,7 @@ NearestFacet smallest_nearest(const ExpandingPolytope& p, const std::vector<Poly
 // invariant, and the loop below then mostly verifies.
 void warm_start(const SupportOperand& a, const SupportOperand& b, const std::vector<VertexPair>& guess,
                 ExpandingPolytope& p) {
-  for (const auto& [va, vb] : guess) p.add(polytope_point(va, vb, a.position(va) - b.position(vb)));
+  for (const auto& [va, vb] : guess) p.add(point_of(a, b, va, vb));
 }
 
 }  // namespace

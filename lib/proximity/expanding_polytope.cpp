@@ -28,6 +28,7 @@
 #include <optional>
 #include <utility>
 
+#include "common_denominator.hpp"
 #include "dyadic_orient.hpp"
 #include "error_bounds.hpp"
 #include "filtered_arithmetic.hpp"
@@ -81,16 +82,10 @@ void ExpandingPolytope::add_face(std::uint32_t i, std::uint32_t j, std::uint32_t
 }
 
 PolytopePoint polytope_point(VertexId vertex_a, VertexId vertex_b, Vec3 c) {
-  PolytopePoint p{vertex_a, vertex_b, std::move(c), {}, {}, 1};
+  PolytopePoint p{vertex_a, vertex_b, std::move(c), {}, {}, {}};
   p.approx = ApproxVec3::of(p.c);
-  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z})
-    mpz_lcm(p.scale.get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
-  int i = 0;
-  for (const Rational* x : {&p.c.x, &p.c.y, &p.c.z}) {
-    mpz_divexact(p.scaled[i].get_mpz_t(), p.scale.get_mpz_t(), x->get_den_mpz_t());
-    p.scaled[i] *= x->get_num();
-    ++i;
-  }
+  const Rational* const values[3] = {&p.c.x, &p.c.y, &p.c.z};
+  p.scale = scale_to_common_denominator(values, 3, p.scaled.data());
   return p;
 }
 

@@ -59,20 +59,24 @@
 namespace cvms::detail {
 namespace {
 
-GjkPoint point_of(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset, VertexId va,
-                  VertexId vb) {
-  GjkPoint p{va, vb, a.position(va), b.position(vb), {}};
-  if (b_offset != nullptr) p.b += *b_offset;
-  p.c = p.a - p.b;
-  return p;
+void set_point(GjkPoint& p, const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset, VertexId va,
+               VertexId vb) {
+  p.vertex_a = va;
+  p.vertex_b = vb;
+  subtract_positions(p.c, a, va, b, vb);
+  if (b_offset != nullptr) p.c -= *b_offset;
+}
+
+SimplexPoints points_of(const GjkOutcome& out) {
+  SimplexPoints points{};
+  for (int i = 0; i < out.size; ++i) points[i] = &out.simplex[i].c;
+  return points;
 }
 
 // W := the support of conv(W + {w})'s nearest point, w appended last.
 void add_and_reduce(GjkOutcome& out, GjkPoint w) {
   out.simplex[out.size++] = std::move(w);
-  std::array<Vec3, 4> points;
-  for (int i = 0; i < out.size; ++i) points[i] = out.simplex[i].c;
-  SimplexNearest n = nearest_on_simplex(points, out.size);
+  SimplexNearest n = nearest_on_simplex(points_of(out), out.size);
   int kept = 0;
   for (int i = 0; i < out.size; ++i) {
     if (!(n.support_mask & (1u << i))) continue;
@@ -86,7 +90,7 @@ void add_and_reduce(GjkOutcome& out, GjkPoint w) {
 }
 
 void cold_start(GjkOutcome& out, const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset) {
-  out.simplex[0] = point_of(a, b, b_offset, VertexId(0), VertexId(0));
+  set_point(out.simplex[0], a, b, b_offset, VertexId(0), VertexId(0));
   out.weight_num[0] = 1;
   out.weight_den = 1;
   out.size = 1;
@@ -98,14 +102,10 @@ void cold_start(GjkOutcome& out, const SupportOperand& a, const SupportOperand& 
 bool warm_start(GjkOutcome& out, const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset,
                 const GjkCandidate& guess) {
   if (guess.size < 1 || guess.size > 4) return false;
-  std::array<Vec3, 4> points;
-  for (int i = 0; i < guess.size; ++i) {
-    out.simplex[i] = point_of(a, b, b_offset, guess.vertex_a[i], guess.vertex_b[i]);
-    points[i] = out.simplex[i].c;
-  }
-  std::optional<SimplexNearest> n = project_inside(points, guess.size);
-  if (!n) return false;
+  for (int i = 0; i < guess.size; ++i) set_point(out.simplex[i], a, b, b_offset, guess.vertex_a[i], guess.vertex_b[i]);
   out.size = guess.size;
+  std::optional<SimplexNearest> n = project_inside(points_of(out), guess.size);
+  if (!n) return false;
   for (int i = 0; i < out.size; ++i) out.weight_num[i] = std::move(n->weight_num[i]);
   out.weight_den = std::move(n->weight_den);
   out.nearest = std::move(n->point);
@@ -134,7 +134,8 @@ GjkOutcome exact_gjk_from(const SupportOperand& a, const SupportOperand& b, GjkG
     const Vec3Ref v{out.nearest, v_approx};
     hint_a = a.support(v, Sign::negative, hint_a);  // maximises <x, -v> on A
     hint_b = b.support(v, Sign::positive, hint_b);
-    GjkPoint w = point_of(a, b, b_offset, hint_a, hint_b);
+    GjkPoint w;
+    set_point(w, a, b, b_offset, hint_a, hint_b);
     const ApproxVec3 w_approx = ApproxVec3::of(w.c);
     const Vec3Ref wr{w.c, w_approx};
     if (goal == GjkGoal::intersection && sign_dot(v, wr) == Sign::positive) return out;

@@ -43,6 +43,8 @@
 
 #include <cmath>
 
+#include "common_denominator.hpp"
+
 namespace cvms::detail {
 namespace {
 
@@ -83,16 +85,16 @@ void cramer(int k, const Int g[3][3], const Int r[3], Int num[3], Int& den) {
 }
 
 // The points scaled by the lcm of their denominators, as integers.
-Int scale_to_integers(const std::array<Vec3, 4>& points, int count, std::array<IntVec, 4>& out) {
-  Int l = 1;
+Int scale_to_integers(const Vec3* const points[], int count, std::array<IntVec, 4>& out) {
+  const Rational* values[12];
+  Int scaled[12];
   for (int i = 0; i < count; ++i)
-    for (int c = 0; c < 3; ++c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), points[i][c].get_den_mpz_t());
+    for (int c = 0; c < 3; ++c) values[3 * i + c] = &(*points[i])[c];
+  Int l = scale_to_common_denominator(values, static_cast<std::size_t>(3 * count), scaled);
   for (int i = 0; i < count; ++i) {
-    Int* coords[3] = {&out[i].x, &out[i].y, &out[i].z};
-    for (int c = 0; c < 3; ++c) {
-      mpz_divexact(coords[c]->get_mpz_t(), l.get_mpz_t(), points[i][c].get_den_mpz_t());
-      *coords[c] *= points[i][c].get_num();
-    }
+    out[i].x.swap(scaled[3 * i]);
+    out[i].y.swap(scaled[3 * i + 1]);
+    out[i].z.swap(scaled[3 * i + 2]);
   }
   return l;
 }
@@ -253,8 +255,8 @@ SimplexNearest answer_of(const Candidate& best, const std::array<IntVec, 4>& p, 
 }
 
 // The scaled points and their Gram matrix.
-Int gram(const std::array<Vec3, 4>& points, int count, std::array<IntVec, 4>& p, Int d[4][4]) {
-  const Int scale = scale_to_integers(points, count, p);
+Int gram(const SimplexPoints& points, int count, std::array<IntVec, 4>& p, Int d[4][4]) {
+  const Int scale = scale_to_integers(points.data(), count, p);
   for (int i = 0; i < count; ++i)
     for (int j = i; j < count; ++j) d[i][j] = d[j][i] = idot(p[i], p[j]);
   return scale;
@@ -262,7 +264,7 @@ Int gram(const std::array<Vec3, 4>& points, int count, std::array<IntVec, 4>& p,
 
 }  // namespace
 
-SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) {
+SimplexNearest nearest_on_simplex(const SimplexPoints& points, int count) {
   const int newest = count - 1;
   std::array<IntVec, 4> p;
   Int d[4][4];
@@ -274,8 +276,18 @@ SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count) 
 
 namespace {
 
-Int det3(const IntVec& a, const IntVec& b, const IntVec& c) {
-  return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+// det(a, b, c) into out, with t as scratch: in-place products and
+// multiply-adds, so no temporary is allocated.
+void det3_into(Int& out, Int& t, const IntVec& a, const IntVec& b, const IntVec& c) {
+  t = b.y * c.z;
+  t -= b.z * c.y;
+  out = a.x * t;
+  t = b.x * c.z;
+  t -= b.z * c.x;
+  out -= a.y * t;
+  t = b.x * c.y;
+  t -= b.y * c.x;
+  out += a.z * t;
 }
 
 // Four points: the origin's barycentric coordinates in their tetrahedron,
@@ -283,13 +295,19 @@ Int det3(const IntVec& a, const IntVec& b, const IntVec& c) {
 // volume of the tetrahedron with p_i replaced by the origin, over the
 // whole one): determinants of the scaled coordinates, half the size of the
 // Gram route's, and no projection (aff is all of space).
-std::optional<SimplexNearest> inside_tetrahedron(const std::array<Vec3, 4>& points) {
+std::optional<SimplexNearest> inside_tetrahedron(const SimplexPoints& points) {
   std::array<IntVec, 4> p;
-  scale_to_integers(points, 4, p);
+  scale_to_integers(points.data(), 4, p);
   SimplexNearest out;
-  out.weight_num = {det3(p[1], p[2], p[3]), -det3(p[0], p[2], p[3]), det3(p[0], p[1], p[3]),
-                    -det3(p[0], p[1], p[2])};
-  out.weight_den = out.weight_num[0] + out.weight_num[1] + out.weight_num[2] + out.weight_num[3];
+  Int t;
+  det3_into(out.weight_num[0], t, p[1], p[2], p[3]);
+  det3_into(out.weight_num[1], t, p[0], p[2], p[3]);
+  det3_into(out.weight_num[2], t, p[0], p[1], p[3]);
+  det3_into(out.weight_num[3], t, p[0], p[1], p[2]);
+  mpz_neg(out.weight_num[1].get_mpz_t(), out.weight_num[1].get_mpz_t());
+  mpz_neg(out.weight_num[3].get_mpz_t(), out.weight_num[3].get_mpz_t());
+  out.weight_den = out.weight_num[0];
+  for (int i = 1; i < 4; ++i) out.weight_den += out.weight_num[i];
   const int orientation = sgn(out.weight_den);
   for (const mpz_class& w : out.weight_num)
     if (sgn(w) != orientation || orientation == 0) return std::nullopt;
@@ -305,7 +323,7 @@ std::optional<SimplexNearest> inside_tetrahedron(const std::array<Vec3, 4>& poin
 
 }  // namespace
 
-std::optional<SimplexNearest> project_inside(const std::array<Vec3, 4>& points, int count) {
+std::optional<SimplexNearest> project_inside(const SimplexPoints& points, int count) {
   if (count == 4) return inside_tetrahedron(points);
   const int newest = count - 1;
   std::array<IntVec, 4> p;
@@ -317,10 +335,8 @@ std::optional<SimplexNearest> project_inside(const std::array<Vec3, 4>& points, 
 }
 
 Vec3 weighted_sum(const Vec3* const points[], const mpz_class weight_num[], const mpz_class& weight_den, int count) {
-  std::array<Vec3, 4> pts;
-  for (int i = 0; i < count; ++i) pts[i] = *points[i];
   std::array<IntVec, 4> scaled;
-  const Int scale = scale_to_integers(pts, count, scaled);
+  const Int scale = scale_to_integers(points, count, scaled);
   IntVec sum{0, 0, 0};
   for (int i = 0; i < count; ++i) {
     sum.x += weight_num[i] * scaled[i].x;

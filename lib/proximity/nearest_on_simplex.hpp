@@ -12,6 +12,9 @@
 
 namespace cvms::detail {
 
+/// At most four points, viewed (the callers own them).
+using SimplexPoints = std::array<const Vec3*, 4>;
+
 /// The nearest point of conv(points[0..count)) to the origin.
 struct SimplexNearest {
   Vec3 point;                      ///< the nearest point, exact
@@ -27,14 +30,14 @@ struct SimplexNearest {
 /// \pre 1 <= count <= 4, the points are affinely independent, and the
 ///   nearest point's support contains points[count - 1] (GJK's newest point;
 ///   the proof that it does is in gjk.cpp). Only subsets containing it are tried.
-SimplexNearest nearest_on_simplex(const std::array<Vec3, 4>& points, int count);
+SimplexNearest nearest_on_simplex(const SimplexPoints& points, int count);
 
 /// The projection of the origin onto aff(points[0..count)) if it lies in
 /// the relative interior of their hull (every weight positive): then it is
 /// the nearest point of the hull. Nothing if a weight is not positive or the
 /// points are affinely dependent (no precondition: the GJK's warm start
 /// passes points proposed by floating point).
-std::optional<SimplexNearest> project_inside(const std::array<Vec3, 4>& points, int count);
+std::optional<SimplexNearest> project_inside(const SimplexPoints& points, int count);
 
 /// sum weight_num[i] points[i] / weight_den, exact, for i < count: one
 /// common denominator, one gcd per coordinate.

@@ -33,7 +33,11 @@ struct Start {
 
 Start start(const detail::SupportOperand& a, const detail::SupportOperand& b) {
   Start s{detail::exact_gjk(a, b, detail::GjkGoal::distance), {}};
-  s.r = detail::penetration_from_distance(detail::distance_from(s.gjk));
+  if (s.gjk.intersect) {
+    s.r.intersect = true;  // the EPA gives the witnesses
+    return s;
+  }
+  s.r = detail::penetration_from_distance(detail::distance_from(a, s.gjk));
   return s;
 }
 

@@ -14,9 +14,9 @@ namespace cvms::detail {
 /// witness_b includes the offset.
 DistanceResult distance_with_offset(const SupportOperand& a, const SupportOperand& b, const Vec3* b_offset);
 
-/// The distance answer of a finished exact_gjk (goal distance): the witnesses
-/// are the simplex's weighted vertices.
-DistanceResult distance_from(const GjkOutcome& g);
+/// The distance answer of a finished exact_gjk (goal distance) on operand
+/// `a`: the witnesses are the simplex's weighted vertices.
+DistanceResult distance_from(const SupportOperand& a, const GjkOutcome& g);
 
 /// \throw Error(invalid_argument) naming `who` if an operand is empty.
 void check_operands(const PlacedPolyhedron& a, const PlacedPolyhedron& b, const char* who);

@@ -46,6 +46,19 @@ Vec3 SupportOperand::position(VertexId v) const {
   return solid_ != nullptr ? solid_->vertex(v) : cycle_.points[v.index()];
 }
 
+const Vec3& SupportOperand::position_view(VertexId v, std::optional<Vec3>& moved) const {
+  if (placed_ != nullptr) return moved.emplace(placed_->position(v));
+  return solid_ != nullptr ? solid_->vertex(v) : cycle_.points[v.index()];
+}
+
+void subtract_positions(Vec3& out, const SupportOperand& a, VertexId va, const SupportOperand& b, VertexId vb) {
+  std::optional<Vec3> moved_a;
+  std::optional<Vec3> moved_b;
+  const Vec3& pa = a.position_view(va, moved_a);
+  const Vec3& pb = b.position_view(vb, moved_b);
+  for (int i = 0; i < 3; ++i) mpq_sub(out[i].get_mpq_t(), pa[i].get_mpq_t(), pb[i].get_mpq_t());
+}
+
 }  // namespace cvms::detail
 
 namespace cvms::detail {

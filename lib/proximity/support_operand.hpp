@@ -50,6 +50,10 @@ class SupportOperand {
   [[nodiscard]] VertexId support(Vec3Ref u, Sign sense, VertexId start) const;
   /// The (moved) position of vertex v.
   [[nodiscard]] Vec3 position(VertexId v) const;
+  /// The position of vertex v: the stored one, viewed, when the set is not
+  /// moved (the exact queries' hot paths copy no rationals then), else the
+  /// moved one, made in `moved`.
+  [[nodiscard]] const Vec3& position_view(VertexId v, std::optional<Vec3>& moved) const;
 
   /// Heuristics for double_gjk.cpp, in plain doubles (no error bound: they
   /// only propose candidates that exact arithmetic then checks). A vertex
@@ -72,5 +76,9 @@ class SupportOperand {
   double translation_[3] = {0, 0, 0};
   void copy_placement();
 };
+
+/// out := (a's vertex va) - (b's vertex vb), both moved; unmoved vertices
+/// are read in place, not copied.
+void subtract_positions(Vec3& out, const SupportOperand& a, VertexId va, const SupportOperand& b, VertexId vb);
 
 }  // namespace cvms::detail
