@@ -6,18 +6,17 @@
 
 #include <algorithm>
 
+#include "dyadic.hpp"
+
 namespace cvms::detail {
 namespace {
-
-bool is_power_of_two(const mpz_class& x) { return mpz_popcount(x.get_mpz_t()) == 1; }
 
 // The largest exponent if every denominator is a power of two.
 bool dyadic_exponent(const Rational* const values[], std::size_t count, mp_bitcnt_t& exponent) {
   exponent = 0;
   for (std::size_t i = 0; i < count; ++i) {
-    const mpz_class& den = values[i]->get_den();
-    if (!is_power_of_two(den)) return false;
-    exponent = std::max(exponent, mpz_scan1(den.get_mpz_t(), 0));
+    if (!is_dyadic(*values[i])) return false;
+    exponent = std::max(exponent, log2_of_power_of_two(values[i]->get_den_mpz_t()));
   }
   return true;
 }
@@ -31,7 +30,7 @@ mpz_class scale_to_common_denominator(const Rational* const values[], std::size_
     mpz_mul_2exp(l.get_mpz_t(), l.get_mpz_t(), exponent);
     for (std::size_t i = 0; i < count; ++i)
       mpz_mul_2exp(out[i].get_mpz_t(), values[i]->get_num_mpz_t(),
-                   exponent - mpz_scan1(values[i]->get_den_mpz_t(), 0));
+                   exponent - log2_of_power_of_two(values[i]->get_den_mpz_t()));
     return l;
   }
   for (std::size_t i = 0; i < count; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), values[i]->get_den_mpz_t());

@@ -5,6 +5,8 @@
 // for any linear R (support.cpp says more).
 #include "support_operand.hpp"
 
+#include "dyadic.hpp"
+
 namespace cvms::detail {
 
 VertexCycle::VertexCycle(const ConvexSet& s) : points(s.vertices()) {
@@ -56,7 +58,7 @@ void subtract_positions(Vec3& out, const SupportOperand& a, VertexId va, const S
   std::optional<Vec3> moved_b;
   const Vec3& pa = a.position_view(va, moved_a);
   const Vec3& pb = b.position_view(vb, moved_b);
-  for (int i = 0; i < 3; ++i) mpq_sub(out[i].get_mpq_t(), pa[i].get_mpq_t(), pb[i].get_mpq_t());
+  for (int i = 0; i < 3; ++i) subtract_into(out[i], pa[i], pb[i]);  // no gcd for dyadic coordinates
 }
 
 }  // namespace cvms::detail
