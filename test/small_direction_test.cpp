@@ -70,5 +70,31 @@ TEST(SmallDirection, CrossMatchesRationalPrimitiveCross) {
   }
 }
 
+// Cross products with large common factors, odd and even: the gcd that
+// makes them primitive runs the 128-bit binary gcd and, once both operands
+// fit in 64 bits, its 64-bit tail; a common factor beyond 2^64 stays in 128
+// bits to the end.
+TEST(SmallDirection, CrossRemovesLargeCommonFactors) {
+  const std::uint64_t seed = 1414;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::int64_t> small(-(std::int64_t{1} << 20), std::int64_t{1} << 20);
+  std::uniform_int_distribution<int> bits(0, 40);
+  for (int i = 0; i < 2000; ++i) {
+    // u = k 2^s u', v = m v': cross(u, v) = k m 2^s cross(u', v').
+    const std::int64_t k = (static_cast<std::int64_t>(rng() >> (28 + bits(rng))) | 1);
+    const std::int64_t m = (static_cast<std::int64_t>(rng() >> (28 + bits(rng))) | 1);
+    const int s = bits(rng) % 4;
+    SmallDirection u{{small(rng), small(rng), small(rng)}};
+    SmallDirection v{{small(rng), small(rng), small(rng)}};
+    for (std::int64_t& x : u.c) x *= k << s;
+    for (std::int64_t& x : v.c) x *= m;
+    const Vec3 expected_cross = cross(u.to_vec3(), v.to_vec3());
+    if (is_zero(expected_cross)) continue;
+    Vec3 c;
+    primitive_cross(u, v, c);
+    ASSERT_EQ(c, primitive_direction(expected_cross)) << "seed " << seed << " i " << i;
+  }
+}
+
 }  // namespace
 }  // namespace cvms::detail
