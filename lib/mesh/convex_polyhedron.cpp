@@ -479,20 +479,18 @@ PolygonSoup facet_corners(const Regions& regions, const BoundaryCycles& cycle, c
   return corners;
 }
 
-// 7. The result: extreme vertices in input order, facets ordered by their
-// smallest input face, each starting at its smallest vertex index.
-Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners,
-                 const FacetsAtVertices& facets_at, bool flip) {
-  PolygonSoup out;
+// 7. The result's facets: extreme vertices renumbered in input order, facets
+// ordered by their smallest input face, each starting at its smallest vertex
+// index, as index lists (the soup has no points yet).
+PolygonSoup merged_faces(const Mesh& mesh, const PolygonSoup& facet_corners, const FacetsAtVertices& facets_at,
+                         bool flip) {
   std::vector<std::uint32_t> new_index(mesh.num_vertices(), no_index);
-  // Reserved: growing would copy every Rational (their moves are not noexcept).
-  out.points.reserve(static_cast<std::size_t>(
-      std::count_if(facets_at.count.begin(), facets_at.count.end(), [](std::uint32_t c) { return c >= 3; })));
+  std::uint32_t kept = 0;
   for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
-    if (facets_at.extreme(v)) {
-      new_index[v] = static_cast<std::uint32_t>(out.points.size());
-      out.points.push_back(mesh.position(VertexId(v)));
-    }
+    if (facets_at.extreme(v)) new_index[v] = kept++;
+  PolygonSoup out;
+  out.face_offsets.reserve(facet_corners.face_offsets.size());
+  out.face_indices.reserve(facet_corners.face_indices.size());
   std::vector<std::uint32_t> facet;
   for (std::size_t r = 0; r < facet_corners.num_faces(); ++r) {
     facet.clear();
@@ -501,9 +499,37 @@ Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners,
     std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
     out.add_face(facet);
   }
+  return out;
+}
+
+// The result's points: the extreme vertices in input order. Copied, or,
+// when every vertex is extreme and the caller hands the input over
+// (`owned`: from_soup's own mesh, which is not const, so writing through the
+// const accessor is defined), moved as one vector: the input mesh has no
+// positions afterwards.
+std::vector<Vec3> kept_points(const Mesh& mesh, const FacetsAtVertices& facets_at, Mesh* owned) {
+  const auto kept = static_cast<std::size_t>(
+      std::count_if(facets_at.count.begin(), facets_at.count.end(), [](std::uint32_t c) { return c >= 3; }));
+  if (owned != nullptr && kept == mesh.num_vertices())
+    return std::move(const_cast<std::vector<Vec3>&>(owned->positions()));
+  std::vector<Vec3> points;
+  points.reserve(kept);  // growing would copy every Rational (their moves are not noexcept)
+  for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
+    if (facets_at.extreme(v)) points.push_back(mesh.position(VertexId(v)));
+  return points;
+}
+
+// The result's mesh. The points of from_soup's own mesh were checked when it
+// was built (canonical and distinct), so then only the topology is; a
+// caller's mesh may come from Mesh::with_positions, which checks nothing.
+Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners, const FacetsAtVertices& facets_at, bool flip,
+                 Mesh* owned) {
+  PolygonSoup out = merged_faces(mesh, facet_corners, facets_at, flip);
+  out.points = kept_points(mesh, facets_at, owned);
   Mesh merged;
   try {
-    merged = Mesh::from_soup(std::move(out));
+    merged = owned != nullptr ? Mesh::from_soup(std::move(out), detail::DistinctPoints{})
+                              : Mesh::from_soup(std::move(out));
   } catch (const Error& e) {
     not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
   }
@@ -531,12 +557,14 @@ void keep_first_faces(FacePlanes& faces, const std::vector<std::uint32_t>& first
 // that plane), so its outward primitive normal is that of its first face,
 // negated when the mesh is flipped, and its offset the normal's dot product
 // with any of its corners: the planes detail::parts_with_planes would find.
-ConvexPolyhedron merged_polyhedron(const Mesh& input, Mesh merged, const Points& points, FacePlanes&& faces,
-                                   const Regions& regions, const FacetsAtVertices& facets_at, bool flip) {
+// The input's positions may have moved into `merged`: its vertices are
+// counted by facets_at.
+ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, FacePlanes&& faces, const Regions& regions,
+                                   const FacetsAtVertices& facets_at, bool flip) {
   std::vector<ApproxVec3> vertex_approx;
   vertex_approx.reserve(merged.num_vertices());
-  for (VertexId v : input.vertices())
-    if (facets_at.extreme(v.index())) vertex_approx.push_back(points.approx(v));
+  for (std::uint32_t v = 0; v < facets_at.count.size(); ++v)
+    if (facets_at.extreme(v)) vertex_approx.push_back(points.approx(VertexId(v)));
   keep_first_faces(faces, regions.first_face);
   detail::FacetPlanes planes;
   planes.normals = std::move(faces.normal);
@@ -598,6 +626,30 @@ void check_global(const ConvexPolyhedron& p, const Regions& regions) {
   }
 }
 
+// from_mesh; `owned` is the mesh itself when the caller hands it over
+// (from_soup), whose points may then move into the result (kept_points).
+ConvexPolyhedron checked_polyhedron(const Mesh& mesh, Mesh* owned) {
+  if (mesh.num_faces() == 0 || mesh.num_vertices() == 0) throw Error(ErrorCategory::topology, "empty mesh");
+  // Steps 1-6 check the input, step 7 builds the result and step 8 checks it
+  // globally (the file comment says why that suffices).
+  check_sphere(mesh);
+  const Points points(mesh);
+  FacePlanes faces = face_planes(mesh, points);
+  check_not_flat(mesh, points, faces.ref(0));
+  EdgeClasses edges = classify_edges(mesh, points, faces);
+  const Regions regions(mesh, edges.coplanar);
+  const BoundaryCycles cycles = boundary_cycles(regions);
+  const FacetsAtVertices facets_at = facets_at_vertices(regions);
+  const PolygonSoup corners = facet_corners(regions, cycles, points, faces, facets_at);
+  // From here on `mesh` may have no positions (kept_points): only counts and
+  // approximations of the input are read.
+  Mesh merged = merged_mesh(mesh, corners, facets_at, edges.flip, owned);
+  ConvexPolyhedron p = merged_polyhedron(std::move(merged), points, std::move(faces), regions, facets_at, edges.flip);
+  check_global(p, regions);
+  return p;
+}
+
+
 }  // namespace
 
 Vec3 primitive_direction(const Vec3& v) {
@@ -617,7 +669,10 @@ Vec3 ConvexPolyhedron::edge_vector(HalfedgeId h) const {
   return detail::subtract(vertex(mesh_.to(h)), vertex(mesh_.from(h)));
 }
 
-ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) { return from_mesh(Mesh::from_soup(std::move(soup))); }
+ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
+  Mesh mesh = Mesh::from_soup(std::move(soup));
+  return checked_polyhedron(mesh, &mesh);
+}
 
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
@@ -632,24 +687,8 @@ ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
       offsets_(std::move(parts.offsets)),
       approx_(std::make_shared<const detail::PolyhedronApproximations>(std::move(parts.approx))) {}
 
-ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
-  if (mesh.num_faces() == 0 || mesh.num_vertices() == 0) throw Error(ErrorCategory::topology, "empty mesh");
-  // Steps 1-6 check the input, step 7 builds the result and step 8 checks it
-  // globally (the file comment says why that suffices).
-  check_sphere(mesh);
-  const Points points(mesh);
-  FacePlanes faces = face_planes(mesh, points);
-  check_not_flat(mesh, points, faces.ref(0));
-  EdgeClasses edges = classify_edges(mesh, points, faces);
-  const Regions regions(mesh, edges.coplanar);
-  const BoundaryCycles cycles = boundary_cycles(regions);
-  const FacetsAtVertices facets_at = facets_at_vertices(regions);
-  const PolygonSoup corners = facet_corners(regions, cycles, points, faces, facets_at);
-  ConvexPolyhedron p = merged_polyhedron(mesh, merged_mesh(mesh, corners, facets_at, edges.flip), points,
-                                         std::move(faces), regions, facets_at, edges.flip);
-  check_global(p, regions);
-  return p;
-}
+ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) { return checked_polyhedron(mesh, nullptr); }
+
 
 bool ConvexPolyhedron::is_convex() const {
   const Mesh& m = mesh_;
