@@ -20,33 +20,38 @@ int countr_zero(Uint128 x) noexcept {
 
 Uint128 magnitude(Int128 x) noexcept { return x < 0 ? -static_cast<Uint128>(x) : static_cast<Uint128>(x); }
 
-// The binary gcd's loop in 64 bits. \pre a odd, b != 0.
+// The binary gcd's loop in 64 bits: replace (a, b) by (min, |b - a| without
+// its factors 2), which keeps a odd and the gcd unchanged. Written without
+// branches on the comparison (conditional moves): its outcome is a coin toss
+// that a branch predictor keeps losing. \pre a odd, b != 0.
 std::uint64_t odd_gcd64(std::uint64_t a, std::uint64_t b) noexcept {
-  do {
-    b >>= std::countr_zero(b);
-    if (a > b) std::swap(a, b);
-    b -= a;
-  } while (b != 0);
+  b >>= std::countr_zero(b);
+  while (b != a) {
+    const std::uint64_t low = std::min(a, b), high = std::max(a, b);
+    a = low;
+    b = (high - low) >> std::countr_zero(high - low);  // high - low > 0 and even
+  }
   return a;
 }
 
 // Binary gcd; gcd(0, x) = x. gcd(1, x) = 1 at once: the loop would take a
 // step per bit of x, and a primitive vector's partial gcd is usually 1.
-// The loop keeps a odd and b != 0 and never increases max(a, b), so once
-// both fit in 64 bits the rest runs in 64-bit arithmetic (odd_gcd64).
+// The loop keeps a odd and b odd and never increases max(a, b), so once both
+// fit in 64 bits the rest runs in 64-bit arithmetic (odd_gcd64).
 Uint128 gcd(Uint128 a, Uint128 b) noexcept {
   if (a == 0) return b;
   if (b == 0) return a;
   if (a == 1 || b == 1) return 1;
   const int shift = countr_zero(a | b);
   a >>= countr_zero(a);
-  do {
-    if ((a >> 64) == 0 && (b >> 64) == 0)
+  b >>= countr_zero(b);
+  while (b != a) {
+    if (((a | b) >> 64) == 0)
       return Uint128{odd_gcd64(static_cast<std::uint64_t>(a), static_cast<std::uint64_t>(b))} << shift;
-    b >>= countr_zero(b);
-    if (a > b) std::swap(a, b);
-    b -= a;
-  } while (b != 0);
+    const Uint128 low = a < b ? a : b, high = a < b ? b : a;
+    a = low;
+    b = (high - low) >> countr_zero(high - low);  // high - low > 0 and even
+  }
   return a << shift;
 }
 
