@@ -463,8 +463,10 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
     if (a > 0) {
       mpz_tdiv_q_2exp(num, num, a);
     } else if (mpz_divisible_ui_p(num, 5)) {
-      mpz_class five(5);
-      b = mpz_remove(num, num, five.get_mpz_t());
+      // A read-only 5 on the stack: an mpz_class would allocate per number.
+      const mp_limb_t five_limb = 5;
+      mpz_t five;
+      b = mpz_remove(num, num, mpz_roinit_n(five, &five_limb, 1));
       if (b > k) {  // keep the fives the denominator cannot take
         mpz_class extra;
         mpz_ui_pow_ui(extra.get_mpz_t(), 5, b - k);
