@@ -157,12 +157,15 @@ std::uint64_t remove_fives(SmallNatural& m, std::uint64_t cap) {
   return removed;
 }
 
+// Asks for a second limb only when the value needs it: a one-limb
+// denominator (that of every double) then fits the limb mpq_init gave it,
+// without a reallocation per number.
 void set_u128(mpz_ptr z, Uint128 value) {
   const auto low = static_cast<mp_limb_t>(value);
   const auto high = static_cast<mp_limb_t>(value >> 64);
-  mp_limb_t* out = mpz_limbs_write(z, 2);
+  mp_limb_t* out = mpz_limbs_write(z, high != 0 ? 2 : 1);
   out[0] = low;
-  out[1] = high;
+  if (high != 0) out[1] = high;
   mpz_limbs_finish(z, high != 0 ? 2 : (low != 0 ? 1 : 0));
 }
 
