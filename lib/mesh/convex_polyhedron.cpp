@@ -158,14 +158,19 @@ struct FaceCorners {
 };
 
 // out = the primitive integer normal of cross(b - a, c - a) (nonzero): in
-// 128-bit integers when the points are doubles of close exponents, else
-// rational. Written into out's storage (a moved mpq_class allocates anew).
+// 128-bit integers when the points are doubles of close exponents or small
+// fractions (short decimals), else rational. Written into out's storage (a
+// moved mpq_class allocates anew).
 void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3& out) {
   const std::optional<detail::SmallDirection> u = detail::small_integer_direction(a.approx, b.approx);
   const std::optional<detail::SmallDirection> v =
       u ? detail::small_integer_direction(a.approx, c.approx) : std::nullopt;
   if (u && v) {
     detail::primitive_cross(*u, *v, out);
+    return;
+  }
+  if (const auto d = detail::small_fraction_directions(a.exact, b.exact, c.exact)) {
+    detail::primitive_cross((*d)[0], (*d)[1], out);
     return;
   }
   out = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));

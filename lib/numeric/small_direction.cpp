@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 #include <gmp.h>
@@ -143,6 +144,65 @@ std::optional<SmallDirection> small_integer_direction(const ApproxVec3& from, co
     result.c[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(c);
   }
   return result;
+}
+
+namespace {
+
+// The limits of small_fraction_directions: scaled coordinates below 2^61 in
+// magnitude make differences below 2^62 (SmallDirection's bound); a common
+// denominator below 2^40 keeps the lcm and the scaling in 128-bit products.
+constexpr std::uint64_t max_denominator = std::uint64_t{1} << 40;
+constexpr Int128 max_scaled = Int128{1} << 61;
+
+// The lcm of the nine denominators, or 0 when one is not one limb or the lcm
+// reaches max_denominator.
+std::uint64_t common_denominator(const Vec3* const (&points)[3]) {
+  std::uint64_t l = 1;
+  for (const Vec3* p : points)
+    for (int i = 0; i < 3; ++i) {
+      mpz_srcptr den = (*p)[i].get_den_mpz_t();
+      if (mpz_size(den) != 1) return 0;
+      const std::uint64_t d = mpz_getlimbn(den, 0);
+      if (l % d == 0) continue;
+      const Uint128 next = Uint128{l / std::gcd(l, d)} * d;
+      if (next >= max_denominator) return 0;
+      l = static_cast<std::uint64_t>(next);
+    }
+  return l;
+}
+
+// x * l as an integer (l a multiple of x's denominator), when it is below
+// max_scaled in magnitude.
+std::optional<Int128> scaled(const Rational& x, std::uint64_t l) {
+  mpz_srcptr num = x.get_num_mpz_t();
+  if (mpz_size(num) > 1) return std::nullopt;
+  const Uint128 factor = l / mpz_getlimbn(x.get_den_mpz_t(), 0);  // exact: the den divides l
+  const Uint128 magnitude = factor * mpz_getlimbn(num, 0);       // both below 2^64: no overflow
+  if (magnitude >= static_cast<Uint128>(max_scaled)) return std::nullopt;
+  return mpz_sgn(num) < 0 ? -static_cast<Int128>(magnitude) : static_cast<Int128>(magnitude);
+}
+
+}  // namespace
+
+std::optional<std::array<SmallDirection, 2>> small_fraction_directions(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3* const points[3] = {&a, &b, &c};
+  const std::uint64_t l = common_denominator(points);
+  if (l == 0) return std::nullopt;
+  Int128 coordinates[3][3];
+  for (int p = 0; p < 3; ++p)
+    for (int i = 0; i < 3; ++i) {
+      const std::optional<Int128> x = scaled((*points[p])[i], l);
+      if (!x) return std::nullopt;
+      coordinates[p][i] = *x;
+    }
+  std::array<SmallDirection, 2> d{};
+  for (int p = 1; p < 3; ++p) {
+    for (std::size_t i = 0; i < 3; ++i)  // below 2^62: both terms are below 2^61
+      d[static_cast<std::size_t>(p - 1)].c[i] = static_cast<std::int64_t>(coordinates[p][i] - coordinates[0][i]);
+    const auto& v = d[static_cast<std::size_t>(p - 1)].c;
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) return std::nullopt;
+  }
+  return d;
 }
 
 void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out) {
