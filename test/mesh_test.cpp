@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "cvms/error.hpp"
 #include "support/hand_solids.hpp"
@@ -236,6 +238,71 @@ TEST(MeshBadInput, DuplicatePointsWrittenDifferently) {
   s.points.push_back(Vec3{Rational(0, 3), Rational(2, 2), Rational(0)});  // equal to vertex 2
   s.add_face({4, 1, 3});
   expect_error(s, ErrorCategory::topology, {"vertices 2 and 4", "same point"});
+}
+
+// The duplicate check sorts on the coordinates' doubles first and tells
+// points with equal doubles apart exactly. Here a distinct point whose
+// doubles equal those of a duplicated one sits between its two copies in
+// index order: a check that took equal doubles for equal points, or that
+// ordered them by index alone, would miss the pair (or name the wrong one).
+TEST(MeshBadInput, DuplicatePointsAmongDistinctPointsWithEqualDoubles) {
+  const Rational third(1, 3);
+  const Rational a = third + Rational(1, mpz_class(1) << 200);
+  const Rational b = third + Rational(1, mpz_class(1) << 199);
+  ASSERT_NE(a, b);
+  ASSERT_EQ(a.get_d(), b.get_d());
+  ASSERT_EQ(to_double_nearest(a), to_double_nearest(b));
+  PolygonSoup s = test::tetrahedron();
+  s.points.push_back(Vec3{a, 7, b});  // 4
+  s.points.push_back(Vec3{b, 7, a});  // 5: same doubles as 4, and distinct
+  s.points.push_back(Vec3{a, 7, a});  // 6: same doubles, and distinct
+  s.points.push_back(Vec3{a, 7, b});  // 7: equal to 4
+  s.add_face({4, 5, 6});
+  s.add_face({5, 6, 7});
+  expect_error(s, ErrorCategory::topology, {"vertices 4 and 7 are at the same point"});
+}
+
+// Against a brute-force oracle: points drawn from a few values whose doubles
+// coincide (within each group) or nearly do, in many orders; from_soup must
+// name the first pair the quadratic scan finds, or no duplicate at all.
+TEST(MeshBadInput, DuplicatePointsMatchABruteForceScan) {
+  const Rational third(1, 3), tenth(1, 10);
+  const std::vector<Rational> pool = {third,
+                                      third + Rational(1, mpz_class(1) << 200),
+                                      third + Rational(1, mpz_class(1) << 199),
+                                      third - Rational(1, mpz_class(1) << 300),
+                                      tenth,
+                                      tenth + Rational(1, mpz_class(1) << 120),
+                                      Rational(0),
+                                      Rational(1, mpz_class(1) << 2000),
+                                      -Rational(1, mpz_class(1) << 2000)};
+  std::mt19937 rng(14);
+  std::uniform_int_distribution<std::size_t> pick(0, pool.size() - 1);
+  int with_duplicate = 0;
+  for (int round = 0; round < 300; ++round) {
+    PolygonSoup s;
+    const std::uint32_t n = 3 + static_cast<std::uint32_t>(round % 40);
+    for (std::uint32_t i = 0; i < n; ++i) s.points.push_back(Vec3{pool[pick(rng)], pool[pick(rng)], pool[pick(rng) % 3]});
+    for (std::uint32_t i = 0; i < n; ++i) s.add_face({i, (i + 1) % n, (i + 2) % n});
+    std::string expected;
+    for (std::uint32_t j = 0; j < n && expected.empty(); ++j)
+      for (std::uint32_t i = 0; i < j && expected.empty(); ++i)
+        if (s.points[i] == s.points[j])
+          expected = "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are at the same point";
+    with_duplicate += !expected.empty();
+    try {
+      (void)Mesh::from_soup(s);
+      EXPECT_TRUE(expected.empty()) << "round " << round << ": no error, expected " << expected;
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      if (expected.empty())
+        EXPECT_EQ(message.find("same point"), std::string::npos) << "round " << round << ": " << message;
+      else
+        EXPECT_NE(message.find(expected), std::string::npos) << "round " << round << ": " << message;
+    }
+  }
+  EXPECT_GT(with_duplicate, 100);
+  EXPECT_LT(with_duplicate, 300);
 }
 
 TEST(MeshBadInput, UnreferencedVertex) {

@@ -70,5 +70,85 @@ TEST(SmallDirection, CrossMatchesRationalPrimitiveCross) {
   }
 }
 
+// Cross products with large common factors, odd and even: the gcd that
+// makes them primitive runs the 128-bit binary gcd and, once both operands
+// fit in 64 bits, its 64-bit tail; a common factor beyond 2^64 stays in 128
+// bits to the end.
+TEST(SmallDirection, CrossRemovesLargeCommonFactors) {
+  const std::uint64_t seed = 1414;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::int64_t> small(-(std::int64_t{1} << 20), std::int64_t{1} << 20);
+  std::uniform_int_distribution<int> bits(0, 35);  // shifts of 28 to 63 bits: factors of 1 to 36 bits
+  for (int i = 0; i < 2000; ++i) {
+    // u = k 2^s u', v = m v': cross(u, v) = k m 2^s cross(u', v').
+    const std::int64_t k = (static_cast<std::int64_t>(rng() >> (28 + bits(rng))) | 1);
+    const std::int64_t m = (static_cast<std::int64_t>(rng() >> (28 + bits(rng))) | 1);
+    const int s = bits(rng) % 4;
+    SmallDirection u{{small(rng), small(rng), small(rng)}};
+    SmallDirection v{{small(rng), small(rng), small(rng)}};
+    for (std::int64_t& x : u.c) x *= k << s;
+    for (std::int64_t& x : v.c) x *= m;
+    const Vec3 expected_cross = cross(u.to_vec3(), v.to_vec3());
+    if (is_zero(expected_cross)) continue;
+    Vec3 c;
+    primitive_cross(u, v, c);
+    ASSERT_EQ(c, primitive_direction(expected_cross)) << "seed " << seed << " i " << i;
+  }
+}
+
+// Short decimals and small fractions with different denominators: the two
+// directions are the same positive multiple of b - a and c - a, so their
+// primitive cross product is the rational one (the oracle).
+TEST(SmallDirection, FractionDirectionsMatchRationalDifferences) {
+  const std::uint64_t seed = 606;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long> numerator(-1000000, 1000000);
+  const long denominators[] = {1, 3, 7, 10, 1000000, 1 << 20, 999983};
+  std::uniform_int_distribution<std::size_t> pick(0, std::size(denominators) - 1);
+  int small = 0;
+  for (int i = 0; i < 3000; ++i) {
+    Vec3 p[3];
+    for (Vec3& q : p)
+      for (int k = 0; k < 3; ++k) q[k] = Rational(numerator(rng), denominators[i % 5 == 0 ? pick(rng) : 4]);
+    for (Vec3& q : p)
+      for (int k = 0; k < 3; ++k) q[k].canonicalize();
+    if (i % 11 == 0) p[2] = p[0];  // coincident: no direction
+    const auto d = small_fraction_directions(p[0], p[1], p[2]);
+    if (p[0] == p[1] || p[0] == p[2]) {
+      EXPECT_FALSE(d) << "seed " << seed << " i " << i;
+      continue;
+    }
+    if (!d) continue;  // a fallback is always allowed; a wrong answer never
+    ++small;
+    const Vec3 u = (*d)[0].to_vec3(), v = (*d)[1].to_vec3();
+    const Vec3 ab = p[1] - p[0], ac = p[2] - p[0];
+    ASSERT_EQ(primitive_direction(u), primitive_direction(ab)) << "seed " << seed << " i " << i;
+    ASSERT_EQ(primitive_direction(v), primitive_direction(ac)) << "seed " << seed << " i " << i;
+    // The same multiple of both: u ab-component ratios agree with v's.
+    ASSERT_EQ(u.x * ac.x, v.x * ab.x) << "seed " << seed << " i " << i;
+    const Vec3 n = cross(ab, ac);
+    if (is_zero(n)) continue;
+    Vec3 c;
+    primitive_cross((*d)[0], (*d)[1], c);
+    ASSERT_EQ(c, primitive_direction(n)) << "seed " << seed << " i " << i;
+  }
+  EXPECT_GT(small, 2000) << "short decimals should take the fast path";
+}
+
+TEST(SmallDirection, FractionDirectionsFallBackBeyondTheirLimits) {
+  const Vec3 a{Rational(0), Rational(0), Rational(0)};
+  const Vec3 b{Rational(1), Rational(0), Rational(0)};
+  const Vec3 c{Rational(0), Rational(1), Rational(0)};
+  EXPECT_TRUE(small_fraction_directions(a, b, c));
+  // A denominator of two limbs, a common denominator of 2^40 and more, and a
+  // numerator that scales beyond 2^61.
+  const Vec3 huge_den{Rational(1, mpz_class(1) << 70), Rational(0), Rational(0)};
+  EXPECT_FALSE(small_fraction_directions(a, huge_den, c));
+  const Vec3 coprime{Rational(1, (1L << 20) + 7), Rational(1, (1L << 20) + 9), Rational(0)};
+  EXPECT_FALSE(small_fraction_directions(a, coprime, c));
+  const Vec3 big{Rational(mpz_class(1) << 62), Rational(0), Rational(0)};
+  EXPECT_FALSE(small_fraction_directions(a, big, c));
+}
+
 }  // namespace
 }  // namespace cvms::detail

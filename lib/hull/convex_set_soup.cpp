@@ -9,6 +9,7 @@
 // convex cycle C, the chain covers every point inside C with the same
 // winding number as C (1) and nothing outside, so the union of the faces is
 // exactly the convex polygon bounded by C: the polygon returned.
+#include <algorithm>
 #include <map>
 #include <span>
 #include <string>
@@ -34,7 +35,10 @@ std::vector<std::uint32_t> first_copies(const PolygonSoup& soup) {
   return copy;
 }
 
-std::vector<Vec3> used_points(const PolygonSoup& soup) {
+// The dimension of the affine hull of the points some face uses. When every
+// point is used (the usual soup: Mesh::from_soup rejects unused points),
+// soup.points is read in place instead of a copy of every exact coordinate.
+int used_dimension(const PolygonSoup& soup) {
   std::vector<bool> used(soup.points.size(), false);
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     for (std::uint32_t i : soup.face(f)) {
@@ -44,10 +48,11 @@ std::vector<Vec3> used_points(const PolygonSoup& soup) {
                                                  " points)");
       used[i] = true;
     }
+  if (std::find(used.begin(), used.end(), false) == used.end()) return detail::affine_span(soup.points).dimension;
   std::vector<Vec3> points;
   for (std::size_t i = 0; i < used.size(); ++i)
     if (used[i]) points.push_back(soup.points[i]);
-  return points;
+  return detail::affine_span(points).dimension;
 }
 
 std::vector<Vec3> face_points(const PolygonSoup& soup, std::size_t f) {
@@ -141,7 +146,7 @@ ConvexSet tiled_polygon(const PolygonSoup& soup) {
 
 ConvexSet convex_set_from_soup(PolygonSoup soup) {
   if (soup.num_faces() == 0) return convex_hull_set(soup.points);
-  const int dimension = detail::affine_span(used_points(soup)).dimension;
+  const int dimension = used_dimension(soup);
   if (dimension == 3 && soup.num_faces() == 1) throw_not_planar_face(soup);
   if (dimension == 3) return ConvexSet(ConvexPolyhedron::from_soup(std::move(soup)));
   if (dimension < 2)

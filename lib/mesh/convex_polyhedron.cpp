@@ -52,6 +52,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -157,14 +158,19 @@ struct FaceCorners {
 };
 
 // out = the primitive integer normal of cross(b - a, c - a) (nonzero): in
-// 128-bit integers when the points are doubles of close exponents, else
-// rational. Written into out's storage (a moved mpq_class allocates anew).
+// 128-bit integers when the points are doubles of close exponents or small
+// fractions (short decimals), else rational. Written into out's storage (a
+// moved mpq_class allocates anew).
 void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3& out) {
   const std::optional<detail::SmallDirection> u = detail::small_integer_direction(a.approx, b.approx);
   const std::optional<detail::SmallDirection> v =
       u ? detail::small_integer_direction(a.approx, c.approx) : std::nullopt;
   if (u && v) {
     detail::primitive_cross(*u, *v, out);
+    return;
+  }
+  if (const auto d = detail::small_fraction_directions(a.exact, b.exact, c.exact)) {
+    detail::primitive_cross((*d)[0], (*d)[1], out);
     return;
   }
   out = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
@@ -176,33 +182,34 @@ void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3& out) {
 // vertices in cyclic order, not collinear) turns like the polygon, so the
 // normal of that triangle is a positive multiple of the area vector and the
 // polygon check against it decides as the check against the area vector
-// would. Writes that plane into `plane` and, for a face that passes, the
-// corner flags into `corner`.
+// would. Writes that plane into `normal` and `approx` and, for a face that
+// passes, the corner flags into `corner`.
 enum class FaceVerdict {
   passed,
-  failed_in_plane,  // planar (in `plane`), but not a convex polygon
+  failed_in_plane,  // planar (in `normal`), but not a convex polygon
   failed            // collinear or not planar
 };
 
-FaceVerdict fast_face_plane(const FaceCorners& face, FacePlane& plane, std::vector<char>& corner) {
+FaceVerdict fast_face_plane(const FaceCorners& face, Vec3& normal, ApproxVec3& approx, std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
   std::size_t k = 2;
   while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
   if (k == m) return FaceVerdict::failed;
-  primitive_normal(pts[0], pts[1], pts[k], plane.normal);
-  plane.approx = ApproxVec3::of(plane.normal);
+  primitive_normal(pts[0], pts[1], pts[k], normal);
+  approx = ApproxVec3::of(normal);
+  const Vec3Ref plane{normal, approx};
   if (m == 3) {
     corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
     return FaceVerdict::passed;
   }
   thread_local detail::DotScratch scratch;
   thread_local Rational offset;
-  detail::integer_dot(plane.normal, pts[0].exact, scratch, offset);
+  detail::integer_dot(normal, pts[0].exact, scratch, offset);
   const Approx offset_approx = Approx::of(offset);
   for (std::size_t i = 2; i < m; ++i)
-    if (i != k && side_of_plane(pts[i], plane.ref(), offset, offset_approx) != Sign::zero) return FaceVerdict::failed;
-  PolygonCheck c = check_convex_polygon(pts, plane.ref());
+    if (i != k && side_of_plane(pts[i], plane, offset, offset_approx) != Sign::zero) return FaceVerdict::failed;
+  PolygonCheck c = check_convex_polygon(pts, plane);
   if (c.fault != PolygonFault::none) return FaceVerdict::failed_in_plane;
   corner = std::move(c.corner);
   return FaceVerdict::passed;
@@ -242,17 +249,22 @@ FaceVerdict fast_face_plane(const FaceCorners& face, FacePlane& plane, std::vect
   throw Error(ErrorCategory::not_convex, name + " could not be checked");
 }
 
-// What step 2 finds: each face's plane, and per halfedge whether its origin
-// is a corner of its face (a strict turn).
+// What step 2 finds: each face's plane (normals and approximations apart,
+// so that the normals move into the result as a whole: see
+// merged_polyhedron), and per halfedge whether its origin is a corner of its
+// face (a strict turn).
 struct FacePlanes {
-  std::vector<FacePlane> plane;
+  std::vector<Vec3> normal;
+  std::vector<ApproxVec3> approx;
   std::vector<char> corner;
+  [[nodiscard]] Vec3Ref ref(std::uint32_t f) const { return {normal[f], approx[f]}; }
 };
 
 // 2. Faces: orientation normal, zero area, planarity, convexity.
 FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   FacePlanes out;
-  out.plane.resize(mesh.num_faces());
+  out.normal.resize(mesh.num_faces());
+  out.approx.resize(mesh.num_faces());
   out.corner.assign(mesh.num_halfedges(), 0);
   FaceCorners face{FaceId(0), {}, {}};
   std::vector<char> corner;
@@ -264,10 +276,12 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
       face.pts.push_back(points[mesh.from(h)]);
       face.ids.push_back(mesh.from(h).index());
     }
-    FacePlane& plane = out.plane[f.index()];
-    const FaceVerdict verdict = fast_face_plane(face, plane, corner);
-    if (verdict != FaceVerdict::passed)
-      report_face_fault(face, verdict == FaceVerdict::failed_in_plane ? &plane : nullptr);
+    const FaceVerdict verdict = fast_face_plane(face, out.normal[f.index()], out.approx[f.index()], corner);
+    if (verdict == FaceVerdict::failed_in_plane) {
+      const FacePlane plane{out.normal[f.index()], out.approx[f.index()]};
+      report_face_fault(face, &plane);
+    }
+    if (verdict == FaceVerdict::failed) report_face_fault(face, nullptr);
     std::size_t i = 0;
     for (HalfedgeId h : mesh.face_halfedges(f)) out.corner[h.index()] = corner[i++];
   }
@@ -307,8 +321,8 @@ EdgeClasses classify_edges(const Mesh& mesh, const Points& points, const FacePla
   for (EdgeId e : mesh.edges()) {
     const HalfedgeId h = Mesh::halfedge(e);
     const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
-    const Vec3Ref n_f = faces.plane[f].ref();
-    const Vec3Ref n_g = faces.plane[g].ref();
+    const Vec3Ref n_f = faces.ref(f);
+    const Vec3Ref n_g = faces.ref(g);
     EdgeKind k;
     if (is_parallel(n_f, n_g)) {
       k = sign_dot(n_f, n_g) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
@@ -367,30 +381,42 @@ struct Regions {
 // Boundary cycles: from a border halfedge h, the next border halfedge of the
 // same region leaves to(h); rotate clockwise around to(h) through the
 // region's faces until the face across is outside the region.
-std::vector<std::vector<HalfedgeId>> boundary_cycles(const Regions& regions) {
+// The cycles are stored one after the other in the order found (one array,
+// not a vector per region: a load makes one region per face).
+struct BoundaryCycles {
+  std::vector<HalfedgeId> halfedges;
+  std::vector<std::uint32_t> begin, size;  // per region; size 0: none found
+  [[nodiscard]] std::span<const HalfedgeId> operator[](std::uint32_t r) const {
+    return {halfedges.data() + begin[r], size[r]};
+  }
+};
+
+BoundaryCycles boundary_cycles(const Regions& regions) {
   const Mesh& mesh = regions.mesh;
   const std::uint32_t nh = mesh.num_halfedges();
-  std::vector<std::vector<HalfedgeId>> cycle(regions.size());
+  BoundaryCycles cycle{{}, std::vector<std::uint32_t>(regions.size(), 0), std::vector<std::uint32_t>(regions.size(), 0)};
   std::vector<char> visited(nh, 0);
   for (HalfedgeId start : mesh.halfedges()) {
     if (visited[start.index()] || !regions.is_border(start)) continue;
     const std::uint32_t r = regions.of(start);
-    if (!cycle[r].empty())
+    if (cycle.size[r] != 0)
       not_convex(regions.facet_name(r) +
                  " (coplanar faces merged) has more than one boundary cycle (a hole)");
+    cycle.begin[r] = static_cast<std::uint32_t>(cycle.halfedges.size());
     HalfedgeId h = start;
     std::uint32_t steps = 0;
     do {
       visited[h.index()] = 1;
-      cycle[r].push_back(h);
+      cycle.halfedges.push_back(h);
       HalfedgeId n = mesh.next(h);
       while (!regions.is_border(n) && ++steps <= nh) n = mesh.next(Mesh::twin(n));
       h = n;
     } while (h != start && ++steps <= 2 * nh);
     if (h != start) throw Error(ErrorCategory::topology, "corrupt mesh: a facet boundary does not close");
+    cycle.size[r] = static_cast<std::uint32_t>(cycle.halfedges.size()) - cycle.begin[r];
   }
   for (std::uint32_t r = 0; r < regions.size(); ++r)
-    if (cycle[r].size() < 3) not_convex(regions.facet_name(r) + " has no proper boundary");
+    if (cycle.size[r] < 3) not_convex(regions.facet_name(r) + " has no proper boundary");
   return cycle;
 }
 
@@ -411,33 +437,36 @@ FacetsAtVertices facets_at_vertices(const Regions& regions) {
 // facet is one face (the cycle is that face's, perhaps from another start:
 // the check of step 2 against the same plane decided them, and a strictly
 // convex polygon stays one from any start), else from the polygon check.
-PolygonCheck cycle_corners(const Regions& regions, const std::vector<HalfedgeId>& cycle, const Points& points,
-                           const FacePlanes& faces, std::uint32_t r) {
+// Written into c, whose storage the caller reuses from facet to facet.
+void cycle_corners(const Regions& regions, std::span<const HalfedgeId> cycle, const Points& points,
+                   const FacePlanes& faces, std::uint32_t r, PolygonCheck& c) {
   const Mesh& mesh = regions.mesh;
-  PolygonCheck c;
   if (regions.num_faces[r] == 1) {
-    c.corner.reserve(cycle.size());
+    c.fault = PolygonFault::none;
+    c.corner.clear();
     for (HalfedgeId h : cycle) c.corner.push_back(faces.corner[h.index()]);
-    return c;
+    return;
   }
   std::vector<Vec3Ref> pts;
   pts.reserve(cycle.size());
   for (HalfedgeId h : cycle) pts.push_back(points[mesh.from(h)]);
-  return check_convex_polygon(pts, faces.plane[regions.first_face[r]].ref());
+  c = check_convex_polygon(pts, faces.ref(regions.first_face[r]));
 }
 
-// Facet polygons, and corners agree with extremality.
-std::vector<std::vector<std::uint32_t>> facet_corners(const Regions& regions,
-                                                      const std::vector<std::vector<HalfedgeId>>& cycle,
-                                                      const Points& points, const FacePlanes& faces,
-                                                      const FacetsAtVertices& facets_at) {
+// Facet polygons, and corners agree with extremality. The corners of facet
+// r, as input vertex indices, are face r of the returned soup (which has no
+// points).
+PolygonSoup facet_corners(const Regions& regions, const BoundaryCycles& cycle, const Points& points,
+                          const FacePlanes& faces, const FacetsAtVertices& facets_at) {
   const Mesh& mesh = regions.mesh;
-  std::vector<std::vector<std::uint32_t>> corners(regions.size());
+  PolygonSoup corners;
+  corners.face_offsets.reserve(regions.size() + 1);
   std::vector<std::uint32_t> ids;
+  PolygonCheck c;
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
     ids.clear();
     for (HalfedgeId h : cycle[r]) ids.push_back(mesh.from(h).index());
-    PolygonCheck c = cycle_corners(regions, cycle[r], points, faces, r);
+    cycle_corners(regions, cycle[r], points, faces, r, c);
     if (c.fault != PolygonFault::none)
       not_convex(regions.facet_name(r) + " (coplanar faces merged) is not a convex polygon: it " +
                  describe_fault(c, ids));
@@ -448,41 +477,84 @@ std::vector<std::vector<std::uint32_t>> facet_corners(const Regions& regions,
       if (c.corner[i] == 0 && facets_at.extreme(ids[i]))
         not_convex("vertex " + str(ids[i]) + " lies on " + str(facets_at.count[ids[i]]) +
                    " facets but on a straight side of " + regions.facet_name(r));
-      if (c.corner[i] != 0) corners[r].push_back(ids[i]);
+      if (c.corner[i] != 0) corners.face_indices.push_back(ids[i]);
     }
+    corners.face_offsets.push_back(static_cast<std::uint32_t>(corners.face_indices.size()));
   }
   return corners;
 }
 
-// 7. The result: extreme vertices in input order, facets ordered by their
-// smallest input face, each starting at its smallest vertex index.
-Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>& facet_corners,
-                 const FacetsAtVertices& facets_at, bool flip) {
-  PolygonSoup out;
+// 7. The result's facets: extreme vertices renumbered in input order, facets
+// ordered by their smallest input face, each starting at its smallest vertex
+// index, as index lists (the soup has no points yet).
+PolygonSoup merged_faces(const Mesh& mesh, const PolygonSoup& facet_corners, const FacetsAtVertices& facets_at,
+                         bool flip) {
   std::vector<std::uint32_t> new_index(mesh.num_vertices(), no_index);
-  // Reserved: growing would copy every Rational (their moves are not noexcept).
-  out.points.reserve(static_cast<std::size_t>(
-      std::count_if(facets_at.count.begin(), facets_at.count.end(), [](std::uint32_t c) { return c >= 3; })));
+  std::uint32_t kept = 0;
   for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
-    if (facets_at.extreme(v)) {
-      new_index[v] = static_cast<std::uint32_t>(out.points.size());
-      out.points.push_back(mesh.position(VertexId(v)));
-    }
+    if (facets_at.extreme(v)) new_index[v] = kept++;
+  PolygonSoup out;
+  out.face_offsets.reserve(facet_corners.face_offsets.size());
+  out.face_indices.reserve(facet_corners.face_indices.size());
   std::vector<std::uint32_t> facet;
-  for (const std::vector<std::uint32_t>& corners : facet_corners) {
+  for (std::size_t r = 0; r < facet_corners.num_faces(); ++r) {
     facet.clear();
-    for (std::uint32_t v : corners) facet.push_back(new_index[v]);
+    for (std::uint32_t v : facet_corners.face(r)) facet.push_back(new_index[v]);
     if (flip) std::reverse(facet.begin(), facet.end());
     std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
     out.add_face(facet);
   }
+  return out;
+}
+
+// The result's points: the extreme vertices in input order. Copied, or,
+// when every vertex is extreme and the caller hands the input over
+// (`owned`: from_soup's own mesh, which is not const, so writing through the
+// const accessor is defined), moved as one vector: the input mesh has no
+// positions afterwards.
+std::vector<Vec3> kept_points(const Mesh& mesh, const FacetsAtVertices& facets_at, Mesh* owned) {
+  const auto kept = static_cast<std::size_t>(
+      std::count_if(facets_at.count.begin(), facets_at.count.end(), [](std::uint32_t c) { return c >= 3; }));
+  if (owned != nullptr && kept == mesh.num_vertices())
+    return std::move(const_cast<std::vector<Vec3>&>(owned->positions()));
+  std::vector<Vec3> points;
+  points.reserve(kept);  // growing would copy every Rational (their moves are not noexcept)
+  for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
+    if (facets_at.extreme(v)) points.push_back(mesh.position(VertexId(v)));
+  return points;
+}
+
+// The result's mesh. The points of from_soup's own mesh were checked when it
+// was built (canonical and distinct), so then only the topology is; a
+// caller's mesh may come from Mesh::with_positions, which checks nothing.
+Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners, const FacetsAtVertices& facets_at, bool flip,
+                 Mesh* owned) {
+  PolygonSoup out = merged_faces(mesh, facet_corners, facets_at, flip);
+  out.points = kept_points(mesh, facets_at, owned);
   Mesh merged;
   try {
-    merged = Mesh::from_soup(std::move(out));
+    merged = owned != nullptr ? Mesh::from_soup(std::move(out), detail::DistinctPoints{})
+                              : Mesh::from_soup(std::move(out));
   } catch (const Error& e) {
     not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
   }
   return merged;
+}
+
+// Moves the planes of the regions' first faces to the front, region by
+// region, and drops the rest: first_face increases, so first_face[r] >= r
+// and the plane moved to r was never moved before. Swaps, not moves: a
+// moved-from mpq_class allocates anew, and without merging (every facet one
+// face) nothing moves at all.
+void keep_first_faces(FacePlanes& faces, const std::vector<std::uint32_t>& first_face) {
+  for (std::uint32_t r = 0; r < first_face.size(); ++r) {
+    const std::uint32_t f = first_face[r];
+    if (f == r) continue;
+    for (int i = 0; i < 3; ++i) mpq_swap(faces.normal[r][i].get_mpq_t(), faces.normal[f][i].get_mpq_t());
+    faces.approx[r] = faces.approx[f];
+  }
+  faces.normal.resize(first_face.size());
+  faces.approx.resize(first_face.size());
 }
 
 // The result's planes, with nothing recomputed: facet r lies in the plane
@@ -490,27 +562,28 @@ Mesh merged_mesh(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>
 // that plane), so its outward primitive normal is that of its first face,
 // negated when the mesh is flipped, and its offset the normal's dot product
 // with any of its corners: the planes detail::parts_with_planes would find.
-ConvexPolyhedron merged_polyhedron(const Mesh& input, Mesh merged, const Points& points, FacePlanes&& faces,
-                                   const Regions& regions, const FacetsAtVertices& facets_at, bool flip) {
+// The input's positions may have moved into `merged`: its vertices are
+// counted by facets_at.
+ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, FacePlanes&& faces, const Regions& regions,
+                                   const FacetsAtVertices& facets_at, bool flip) {
   std::vector<ApproxVec3> vertex_approx;
   vertex_approx.reserve(merged.num_vertices());
-  for (VertexId v : input.vertices())
-    if (facets_at.extreme(v.index())) vertex_approx.push_back(points.approx(v));
+  for (std::uint32_t v = 0; v < facets_at.count.size(); ++v)
+    if (facets_at.extreme(v)) vertex_approx.push_back(points.approx(VertexId(v)));
+  keep_first_faces(faces, regions.first_face);
   detail::FacetPlanes planes;
-  planes.normals.reserve(regions.size());
-  planes.normal_approx.reserve(regions.size());
+  planes.normals = std::move(faces.normal);
+  planes.normal_approx = std::move(faces.approx);
   planes.offsets.resize(regions.size());
   detail::DotScratch scratch;
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    // Each face is the first face of at most one region: its normal moves.
-    FacePlane& plane = faces.plane[regions.first_face[r]];
-    if (flip)
-      for (int i = 0; i < 3; ++i) mpq_neg(plane.normal[i].get_mpq_t(), plane.normal[i].get_mpq_t());
-    planes.normals.emplace_back();
-    for (int i = 0; i < 3; ++i) mpq_swap(planes.normals.back()[i].get_mpq_t(), plane.normal[i].get_mpq_t());
-    planes.normal_approx.push_back(flip ? ApproxVec3::of(planes.normals.back()) : plane.approx);
+    Vec3& normal = planes.normals[r];
+    if (flip) {
+      for (int i = 0; i < 3; ++i) mpq_neg(normal[i].get_mpq_t(), normal[i].get_mpq_t());
+      planes.normal_approx[r] = ApproxVec3::of(normal);
+    }
     const Vec3& corner = merged.position(merged.from(merged.halfedge(FaceId(r))));
-    detail::integer_dot(planes.normals.back(), corner, scratch, planes.offsets[r]);
+    detail::integer_dot(normal, corner, scratch, planes.offsets[r]);
   }
   return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes));
 }
@@ -558,6 +631,30 @@ void check_global(const ConvexPolyhedron& p, const Regions& regions) {
   }
 }
 
+// from_mesh; `owned` is the mesh itself when the caller hands it over
+// (from_soup), whose points may then move into the result (kept_points).
+ConvexPolyhedron checked_polyhedron(const Mesh& mesh, Mesh* owned) {
+  if (mesh.num_faces() == 0 || mesh.num_vertices() == 0) throw Error(ErrorCategory::topology, "empty mesh");
+  // Steps 1-6 check the input, step 7 builds the result and step 8 checks it
+  // globally (the file comment says why that suffices).
+  check_sphere(mesh);
+  const Points points(mesh);
+  FacePlanes faces = face_planes(mesh, points);
+  check_not_flat(mesh, points, faces.ref(0));
+  EdgeClasses edges = classify_edges(mesh, points, faces);
+  const Regions regions(mesh, edges.coplanar);
+  const BoundaryCycles cycles = boundary_cycles(regions);
+  const FacetsAtVertices facets_at = facets_at_vertices(regions);
+  const PolygonSoup corners = facet_corners(regions, cycles, points, faces, facets_at);
+  // From here on `mesh` may have no positions (kept_points): only counts and
+  // approximations of the input are read.
+  Mesh merged = merged_mesh(mesh, corners, facets_at, edges.flip, owned);
+  ConvexPolyhedron p = merged_polyhedron(std::move(merged), points, std::move(faces), regions, facets_at, edges.flip);
+  check_global(p, regions);
+  return p;
+}
+
+
 }  // namespace
 
 Vec3 primitive_direction(const Vec3& v) {
@@ -577,7 +674,10 @@ Vec3 ConvexPolyhedron::edge_vector(HalfedgeId h) const {
   return detail::subtract(vertex(mesh_.to(h)), vertex(mesh_.from(h)));
 }
 
-ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) { return from_mesh(Mesh::from_soup(std::move(soup))); }
+ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
+  Mesh mesh = Mesh::from_soup(std::move(soup));
+  return checked_polyhedron(mesh, &mesh);
+}
 
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
@@ -592,24 +692,8 @@ ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
       offsets_(std::move(parts.offsets)),
       approx_(std::make_shared<const detail::PolyhedronApproximations>(std::move(parts.approx))) {}
 
-ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) {
-  if (mesh.num_faces() == 0 || mesh.num_vertices() == 0) throw Error(ErrorCategory::topology, "empty mesh");
-  // Steps 1-6 check the input, step 7 builds the result and step 8 checks it
-  // globally (the file comment says why that suffices).
-  check_sphere(mesh);
-  const Points points(mesh);
-  FacePlanes faces = face_planes(mesh, points);
-  check_not_flat(mesh, points, faces.plane[0].ref());
-  EdgeClasses edges = classify_edges(mesh, points, faces);
-  const Regions regions(mesh, edges.coplanar);
-  const std::vector<std::vector<HalfedgeId>> cycles = boundary_cycles(regions);
-  const FacetsAtVertices facets_at = facets_at_vertices(regions);
-  const std::vector<std::vector<std::uint32_t>> corners = facet_corners(regions, cycles, points, faces, facets_at);
-  ConvexPolyhedron p = merged_polyhedron(mesh, merged_mesh(mesh, corners, facets_at, edges.flip), points,
-                                         std::move(faces), regions, facets_at, edges.flip);
-  check_global(p, regions);
-  return p;
-}
+ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) { return checked_polyhedron(mesh, nullptr); }
+
 
 bool ConvexPolyhedron::is_convex() const {
   const Mesh& m = mesh_;

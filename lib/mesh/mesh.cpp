@@ -4,9 +4,12 @@
 #include "cvms/mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
+#include "approx.hpp"
 #include "cvms/error.hpp"
 #include "element_names.hpp"
 #include "no_index.hpp"
@@ -74,27 +77,59 @@ void canonicalize_points(std::vector<Vec3>& points) {
     for (int i = 0; i < 3; ++i) p[i].canonicalize();
 }
 
-// Duplicate points: indices sorted by exact position (ties by index), so the
-// cost is O(n log n) whatever the values (a hash set went quadratic on
-// points that share one hash, issue 18). Reports the same pair a scan in
-// index order would find first: the earliest second occurrence of any
-// position, with the first occurrence of that position.
+// A point's sort key for the duplicate check: its coordinates' doubles
+// (Approx::of, a function of the canonical value: equal points get equal
+// keys; distinct points may too, and are then told apart exactly), and its
+// index. A NaN key (Approx::of gives none, but a total order must not depend
+// on it) counts as infinity.
+struct KeyedPoint {
+  double key[3];
+  std::uint32_t index;
+};
+
+KeyedPoint keyed_point(const Vec3& p, std::uint32_t index) noexcept {
+  KeyedPoint k{{}, index};
+  for (int i = 0; i < 3; ++i) {
+    const double d = Approx::of(p[i]).value;
+    k.key[i] = std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
+  }
+  return k;
+}
+
+// Duplicate points: indices sorted lexicographically by (the doubles of the
+// coordinates, the exact position in the representation order, the index).
+// The doubles decide almost every comparison without reading a limb; the
+// exact order only splits points with equal doubles. The tuple order is a
+// strict weak order whose first two parts are equal exactly for equal
+// points, so equal points form one run, in index order, and the cost is
+// O(n log n) whatever the values (a hash set went quadratic on points that
+// share one hash, issue 18). Reports the same pair a scan in index order
+// would find first: the earliest second occurrence of any position, with the
+// first occurrence of that position.
 // \pre the coordinates are canonical.
 void check_distinct_points(const std::vector<Vec3>& pts) {
   const auto n = static_cast<std::uint32_t>(pts.size());
-  std::vector<std::uint32_t> order(n);
-  for (std::uint32_t v = 0; v < n; ++v) order[v] = v;
+  std::vector<KeyedPoint> order;
+  order.reserve(n);
+  for (std::uint32_t v = 0; v < n; ++v) order.push_back(keyed_point(pts[v], v));
   const detail::RepresentationLess less;
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    if (less(pts[a], pts[b])) return true;
-    return !less(pts[b], pts[a]) && a < b;
+  std::sort(order.begin(), order.end(), [&](const KeyedPoint& a, const KeyedPoint& b) {
+    for (int i = 0; i < 3; ++i)
+      if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
+    if (less(pts[a.index], pts[b.index])) return true;
+    return !less(pts[b.index], pts[a.index]) && a.index < b.index;
   });
+  // Equal points have equal keys: comparing the keys first skips the exact
+  // test for nearly every neighbour.
+  const auto same = [&](const KeyedPoint& a, const KeyedPoint& b) {
+    return a.key[0] == b.key[0] && a.key[1] == b.key[1] && a.key[2] == b.key[2] && pts[a.index] == pts[b.index];
+  };
   std::uint32_t first = no_index, second = no_index;
   for (std::uint32_t k = 0; k + 1 < n; ++k) {
-    const std::uint32_t a = order[k], b = order[k + 1];
+    const std::uint32_t a = order[k].index, b = order[k + 1].index;
     // Within a run of equal points, a is the first occurrence exactly when
     // the run starts at k; b, its successor, is the run's second occurrence.
-    if (b < second && pts[a] == pts[b] && (k == 0 || !(pts[order[k - 1]] == pts[a]))) {
+    if (b < second && same(order[k], order[k + 1]) && (k == 0 || !same(order[k - 1], order[k]))) {
       first = a;
       second = b;
     }

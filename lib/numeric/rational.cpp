@@ -157,12 +157,15 @@ std::uint64_t remove_fives(SmallNatural& m, std::uint64_t cap) {
   return removed;
 }
 
+// Asks for a second limb only when the value needs it: a one-limb
+// denominator (that of every double) then fits the limb mpq_init gave it,
+// without a reallocation per number.
 void set_u128(mpz_ptr z, Uint128 value) {
   const auto low = static_cast<mp_limb_t>(value);
   const auto high = static_cast<mp_limb_t>(value >> 64);
-  mp_limb_t* out = mpz_limbs_write(z, 2);
+  mp_limb_t* out = mpz_limbs_write(z, high != 0 ? 2 : 1);
   out[0] = low;
-  out[1] = high;
+  if (high != 0) out[1] = high;
   mpz_limbs_finish(z, high != 0 ? 2 : (low != 0 ? 1 : 0));
 }
 
@@ -463,8 +466,10 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
     if (a > 0) {
       mpz_tdiv_q_2exp(num, num, a);
     } else if (mpz_divisible_ui_p(num, 5)) {
-      mpz_class five(5);
-      b = mpz_remove(num, num, five.get_mpz_t());
+      // A read-only 5 on the stack: an mpz_class would allocate per number.
+      const mp_limb_t five_limb = 5;
+      mpz_t five;
+      b = mpz_remove(num, num, mpz_roinit_n(five, &five_limb, 1));
       if (b > k) {  // keep the fives the denominator cannot take
         mpz_class extra;
         mpz_ui_pow_ui(extra.get_mpz_t(), 5, b - k);

@@ -31,6 +31,15 @@ struct SmallDirection {
 [[nodiscard]] std::optional<SmallDirection> small_integer_direction(const ApproxVec3& from,
                                                                     const ApproxVec3& to) noexcept;
 
+/// Positive integer multiples of b - a and c - a (the same multiple of both),
+/// when every coordinate of a, b and c is a fraction of one-limb integers
+/// (small decimals like 0.123456) whose common denominator L and scaled
+/// numerators are small: the differences of the points times L. nullopt
+/// otherwise (the caller then uses the general rational path), and when
+/// b == a or c == a.
+[[nodiscard]] std::optional<std::array<SmallDirection, 2>> small_fraction_directions(const Vec3& a, const Vec3& b,
+                                                                                     const Vec3& c);
+
 /// out = primitive_direction(cross(u, v)), computed in 128-bit integers and
 /// written into out's existing storage. \pre u and v are not parallel.
 void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out);

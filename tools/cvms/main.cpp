@@ -15,6 +15,7 @@
 #include "machine_memory.hpp"
 #include "cvms/error.hpp"
 #include "files.hpp"
+#include "heap_pages.hpp"
 #include "sizes.hpp"
 #include "halfspace_commands.hpp"
 #include "proximity_commands.hpp"
@@ -110,6 +111,7 @@ void add_sum_limit_options(CLI::App& command, cvms::SumLimits& limits) {
 
 int main(int argc, char** argv) {
   using namespace cvms::cli;
+  prefer_huge_heap_pages();
   CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL; '-' is OFF on stdin/stdout)"};
   app.require_subcommand(1);
   app.fallthrough();  // the read limits may follow the command name too
