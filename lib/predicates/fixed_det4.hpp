@@ -105,11 +105,12 @@ Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, cons
   constexpr int column[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
   constexpr int minor[4][3] = {{5, 4, 3}, {5, 2, 1}, {4, 2, 0}, {3, 1, 0}};
   Cofactors<E> cof;
+  // Each product with the minor first, for the reason in fixed_det4 below.
   for (int k = 0; k < 4; ++k) {
     FixedInt<3 * E + 1>& d = cof[k];
-    add_to(d, multiply(a[column[k][0]], m[minor[k][0]]).template widened<3 * E + 1>());
-    subtract_from(d, multiply(a[column[k][1]], m[minor[k][1]]).template widened<3 * E + 1>());
-    add_to(d, multiply(a[column[k][2]], m[minor[k][2]]).template widened<3 * E + 1>());
+    add_to(d, multiply(m[minor[k][0]], a[column[k][0]]).template widened<3 * E + 1>());
+    subtract_from(d, multiply(m[minor[k][1]], a[column[k][1]]).template widened<3 * E + 1>());
+    add_to(d, multiply(m[minor[k][2]], a[column[k][2]]).template widened<3 * E + 1>());
     if (k % 2 == 0) d.negate();
   }
   return cof;
@@ -119,7 +120,9 @@ Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, cons
 template <int E>
 FixedInt<4 * E + 1> fixed_det4(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
   FixedInt<4 * E + 1> det;
-  for (int k = 0; k < 4; ++k) add_to(det, multiply(d[k], cof[k]));
+  // The long operand first: multiply skips its zero limbs (the top limbs
+  // of a cofactor's magnitude are often zero), each costing E products.
+  for (int k = 0; k < 4; ++k) add_to(det, multiply(cof[k], d[k]));
   return det;
 }
 
