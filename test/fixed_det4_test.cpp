@@ -6,7 +6,9 @@
 // width from 1 to 255 bits (seeded), singular matrices (a row a combination
 // of the others), the extreme entries ±(2^b − 1) at each limb boundary in
 // Hadamard sign patterns (the largest determinants ±1 patterns reach), and
-// the refusal of entries of 256 bits and more.
+// the refusal of entries of 256 bits and more; and the sign of
+// det[a; b; c; p] q_3 − det[a; b; c; q] p_3 (fixed_det4_cross_sign, the dual
+// hull's farther-point test) the same way, with ties.
 #include "fixed_det4.hpp"
 
 #include <gtest/gtest.h>
@@ -24,7 +26,7 @@ namespace {
 using Rng = std::mt19937_64;
 using Matrix = std::array<std::array<mpz_class, 4>, 4>;
 
-int oracle_sign(const Matrix& m) {
+mpz_class oracle_det(const Matrix& m) {
   mpz_class det = 0;
   for (int c = 0; c < 4; ++c) {
     int col[3], n = 0;
@@ -36,8 +38,10 @@ int oracle_sign(const Matrix& m) {
                             e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0));
     det += (c % 2 == 0 ? 1 : -1) * m[0][c] * minor;
   }
-  return sgn(det);
+  return det;
 }
+
+int oracle_sign(const Matrix& m) { return sgn(oracle_det(m)); }
 
 template <int E>
 int cofactor_sign(const std::array<std::array<mpz_srcptr, 4>, 4>& p) {
@@ -131,6 +135,95 @@ TEST(FixedDet4, ExtremeEntriesAtEveryLimbBoundary) {
     EXPECT_EQ(fixed_sign(diag), std::optional<int>(1));
     diag[2][2] = -big;
     EXPECT_EQ(fixed_sign(diag), std::optional<int>(-1));
+  }
+}
+
+// det[a; b; c; p] · q_3 − det[a; b; c; q] · p_3 by the oracle's expansion.
+int oracle_cross_sign(const Matrix& abc, const std::array<mpz_class, 4>& p, const std::array<mpz_class, 4>& q) {
+  auto det = [&](const std::array<mpz_class, 4>& last) {
+    Matrix m = abc;
+    m[3] = last;
+    return oracle_det(m);
+  };
+  return sgn(mpz_class(det(p) * q[3] - det(q) * p[3]));
+}
+
+template <int E>
+int cross_sign(const Matrix& abc, const std::array<mpz_class, 4>& p, const std::array<mpz_class, 4>& q) {
+  auto row = [](const std::array<mpz_class, 4>& r) {
+    return detail::fixed_row<E>({r[0].get_mpz_t(), r[1].get_mpz_t(), r[2].get_mpz_t(), r[3].get_mpz_t()});
+  };
+  const detail::Cofactors<E> cof = detail::last_row_cofactors<E>(row(abc[0]), row(abc[1]), row(abc[2]));
+  return detail::fixed_det4_cross_sign<E>(cof, row(p), row(q));
+}
+
+int cross_sign_in(int limbs, const Matrix& abc, const std::array<mpz_class, 4>& p, const std::array<mpz_class, 4>& q) {
+  return limbs == 1   ? cross_sign<1>(abc, p, q)
+         : limbs == 2 ? cross_sign<2>(abc, p, q)
+         : limbs == 3 ? cross_sign<3>(abc, p, q)
+                      : cross_sign<4>(abc, p, q);
+}
+
+int limbs_of(const Matrix& abc, const std::array<mpz_class, 4>& p, const std::array<mpz_class, 4>& q) {
+  int limbs = 1;
+  for (const auto* r : {&abc[0], &abc[1], &abc[2], &p, &q})
+    for (const mpz_class& x : *r) limbs = std::max(limbs, detail::signed_limbs(x.get_mpz_t()));
+  return limbs;
+}
+
+TEST(FixedDet4, CrossSignMatchesMpz) {
+  // fixed_det4_cross_sign, the farther-point comparison of the dual hull
+  // (homogeneous_orient.hpp), on random rows of every width, with ties:
+  // q = k p (both products equal k det(p) p_3) when that fits the width.
+  Rng rng(1605);
+  int ties = 0;
+  for (int round = 0; round < 6000; ++round) {
+    const int bits = 1 + round % 255;
+    SCOPED_TRACE("seed 1605 round " + std::to_string(round) + " bits " + std::to_string(bits));
+    Matrix abc;
+    std::array<mpz_class, 4> p, q;
+    for (auto* r : {&abc[0], &abc[1], &abc[2], &p, &q})
+      for (mpz_class& x : *r) x = random_integer(rng, 1 + static_cast<int>(rng() % static_cast<unsigned>(bits)));
+    abc[0][0] = random_integer(rng, bits);
+    if (round % 3 == 0) {
+      const long k = static_cast<long>(rng() % 5) - 2;
+      bool fits = true;
+      for (int c = 0; c < 4; ++c) {
+        q[c] = k * p[c];
+        fits = fits && mpz_sizeinbase(q[c].get_mpz_t(), 2) <= detail::max_fixed_entry_bits;
+      }
+      if (!fits) q = p;
+    }
+    const int expected = oracle_cross_sign(abc, p, q);
+    ties += expected == 0;
+    EXPECT_EQ(cross_sign_in(limbs_of(abc, p, q), abc, p, q), expected);
+    EXPECT_EQ(cross_sign_in(limbs_of(abc, p, q), abc, q, p), -expected);
+  }
+  EXPECT_GE(ties, 1900);
+}
+
+TEST(FixedDet4, CrossSignOfExtremeEntries) {
+  // Entries ±(2^b − 1) in Hadamard patterns for a, b, c, p (the largest
+  // determinants) and q = p with its weight changed: the largest products
+  // the bound allows, of both signs.
+  const int hadamard[4][4] = {{1, 1, 1, 1}, {1, -1, 1, -1}, {1, 1, -1, -1}, {1, -1, -1, 1}};
+  for (const int bits : {1, 2, 63, 64, 127, 128, 191, 192, 254, 255}) {
+    SCOPED_TRACE("bits " + std::to_string(bits));
+    mpz_class big = 1;
+    big = (big << bits) - 1;
+    for (int flip = 0; flip < 32; ++flip) {
+      Matrix abc;
+      std::array<mpz_class, 4> p, q;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) abc[r][c] = ((flip >> r) & 1 ? -1 : 1) * hadamard[r][c] * big;
+      for (int c = 0; c < 4; ++c) {
+        p[c] = ((flip >> 3) & 1 ? -1 : 1) * hadamard[3][c] * big;
+        q[c] = (c == 3) != ((flip >> 4) & 1) ? -p[c] : p[c];
+      }
+      const int limbs = limbs_of(abc, p, q);
+      EXPECT_EQ(cross_sign_in(limbs, abc, p, q), oracle_cross_sign(abc, p, q));
+      EXPECT_EQ(cross_sign_in(limbs, abc, p, p), 0);
+    }
   }
 }
 

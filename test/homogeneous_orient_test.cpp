@@ -2,7 +2,8 @@
 // Tests of the integer orient3d on homogeneous points
 // (lib/predicates/homogeneous_orient.hpp) against the rational evaluation of
 // the points they stand for: random weights and coordinates of up to ~190
-// bits, exactly coplanar points, and every permutation's sign.
+// bits, exactly coplanar points, and every permutation's sign; the
+// farther-point comparison the same way, with ties.
 #include "homogeneous_orient.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <array>
 #include <random>
 
+#include "fixed_det4.hpp"
 #include "predicates_exact.hpp"
 
 namespace cvms {
@@ -65,6 +67,60 @@ TEST(HomogeneousOrient, MatchesRationalEvaluation) {
     EXPECT_EQ(homogeneous_orient3d(p[0], p[1], scaled, p[3]), expected);
   }
   EXPECT_GE(zeros, 1000);
+}
+
+template <int E>
+int fixed_compare(const std::array<HomogeneousPoint, 5>& p) {
+  auto row = [](const HomogeneousPoint& x) {
+    return detail::fixed_row<E>({x.x.get_mpz_t(), x.y.get_mpz_t(), x.z.get_mpz_t(), x.w.get_mpz_t()});
+  };
+  const detail::Cofactors<E> cof = detail::last_row_cofactors<E>(row(p[0]), row(p[1]), row(p[2]));
+  return detail::fixed_det4_cross_sign<E>(cof, row(p[3]), row(p[4]));
+}
+
+// The farther-point comparison (homogeneous_compare_orient3d) against the
+// rational compare_dot of the points with the triangle's normal, with ties:
+// q = p + s (b − a) + t (c − a) lies as far above the plane as p. The
+// fixed-width form the dual hull uses (fixed_det4_cross_sign on the
+// cofactors of a, b, c, negated) must agree with both.
+TEST(HomogeneousOrient, CompareMatchesRationalCompareDot) {
+  Rng rng(1606);
+  int ties = 0, fixed = 0;
+  for (int round = 0; round < 2000; ++round) {
+    SCOPED_TRACE("round " + std::to_string(round));
+    const int words = 1 + round % 3;
+    std::array<HomogeneousPoint, 5> p;
+    for (HomogeneousPoint& q : p) q = random_point(rng, words);
+    if (round % 2 == 0) {
+      const long s = static_cast<long>(rng() % 7) - 3, t = static_cast<long>(rng() % 7) - 3;
+      const mpz_class wa = p[0].w, wb = p[1].w, wc = p[2].w, wp = p[3].w, w = wa * wb * wc * wp;
+      auto coord = [&](const mpz_class& a, const mpz_class& b, const mpz_class& c, const mpz_class& x) {
+        return mpz_class(x * wa * wb * wc + (s * (b * wa - a * wb) * wc + t * (c * wa - a * wc) * wb) * wp);
+      };
+      p[4] = {coord(p[0].x, p[1].x, p[2].x, p[3].x), coord(p[0].y, p[1].y, p[2].y, p[3].y),
+              coord(p[0].z, p[1].z, p[2].z, p[3].z), w};
+    }
+    Vec3 q[5];
+    for (int k = 0; k < 5; ++k) q[k] = standing_for(p[k]);
+    const Sign expected = exact::compare_dot(q[3], q[4], cross(q[1] - q[0], q[2] - q[0]));
+    ties += expected == Sign::zero;
+    EXPECT_EQ(homogeneous_compare_orient3d(p[0], p[1], p[2], p[3], p[4]), expected);
+    EXPECT_EQ(homogeneous_compare_orient3d(p[0], p[1], p[2], p[4], p[3]), -expected);
+    EXPECT_EQ(homogeneous_compare_orient3d(p[1], p[0], p[2], p[3], p[4]), -expected);
+    int limbs = 1;
+    for (const HomogeneousPoint& x : p)
+      for (const mpz_class* v : {&x.x, &x.y, &x.z, &x.w}) limbs = std::max(limbs, detail::signed_limbs(v->get_mpz_t()));
+    if (limbs <= 4) {
+      ++fixed;
+      const int got = limbs == 1   ? fixed_compare<1>(p)
+                      : limbs == 2 ? fixed_compare<2>(p)
+                      : limbs == 3 ? fixed_compare<3>(p)
+                                   : fixed_compare<4>(p);
+      EXPECT_EQ(sign_of(-got), expected);
+    }
+  }
+  EXPECT_GE(ties, 1000);
+  EXPECT_GE(fixed, 1000);
 }
 
 TEST(HomogeneousOrient, UnitWeightsAreTheIntegerPoints) {

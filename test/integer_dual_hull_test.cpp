@@ -23,6 +23,9 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/halfspaces.hpp"
 #include "cvms/shapes.hpp"
+#include "filtered_predicates.hpp"
+#include "homogeneous_hull.hpp"
+#include "hull_soup.hpp"
 #include "intersection_polyhedron.hpp"
 #include "support/halfspace_oracle.hpp"
 
@@ -176,6 +179,47 @@ void expect_matches_oracles(const std::vector<HalfspaceRow>& rows, const Vec3& x
   expect_tight_rows_hold(*v, rows);
   expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
   expect_same_polyhedron(from_halfspaces(rows).polyhedron(), convex_hull(v->vertices));
+}
+
+// The integer hull decides as the quickhull on the rational points a/s
+// (homogeneous_hull.hpp): the same soup, face by face, and the same source
+// points. On a geodesic sphere's facet planes the dual points are coplanar
+// in fives and sixes, so the farthest-point choice meets exact ties that its
+// integer comparison must break as compare_dot does.
+// Returns the number of exact evaluations the integer hull made.
+std::uint64_t expect_same_soup_as_rational_hull(const std::vector<HalfspaceRow>& rows, const Vec3& x0) {
+  const detail::HomogeneousDual dual = detail::homogeneous_dual(lp_rows(rows), chart_point(x0));
+  std::vector<Vec3> q;
+  for (const HomogeneousPoint& p : dual.points) q.push_back(detail::standing_for(p));
+  std::vector<std::uint32_t> source, homogeneous_source;
+  const PolygonSoup expected = hull_soup(q, &source);
+  const std::uint64_t exact_before = predicate_counters().exact;
+  const PolygonSoup got = detail::homogeneous_hull(
+      dual.points, [&](std::uint32_t i) { return q[i]; }, homogeneous_source);
+  const std::uint64_t exact = predicate_counters().exact - exact_before;
+  EXPECT_EQ(got.face_offsets, expected.face_offsets);
+  EXPECT_EQ(got.face_indices, expected.face_indices);
+  EXPECT_EQ(homogeneous_source, source);
+  return exact;
+}
+
+TEST(IntegerDualHull, DecidesAsTheRationalHull) {
+  for (int k = 1; k <= 3; ++k) {
+    SCOPED_TRACE("sphere " + std::to_string(k));
+    const HalfspaceSystem h = to_halfspaces(ConvexSet(shapes::geodesic_sphere(k)));
+    // The coplanar dual points leave many decisions to the exact stages.
+    EXPECT_GT(expect_same_soup_as_rational_hull(h.inequalities, Vec3{0, 0, 0}), 50u);
+    EXPECT_GT(expect_same_soup_as_rational_hull(h.inequalities, Vec3{fraction(1, 7), fraction(-1, 9), fraction(1, 11)}),
+              50u);
+  }
+  Rng rng(1607);
+  for (int round = 0; round < 40; ++round) {
+    SCOPED_TRACE("seed 1607 round " + std::to_string(round));
+    const Vec3 x0{fraction(1, 3), fraction(-2, 7), fraction(5, 11)};
+    const std::vector<HalfspaceRow> rows = random_rows(rng, x0, 12 + round);
+    if (!bounded_by_box(rows)) continue;
+    expect_same_soup_as_rational_hull(rows, x0);
+  }
 }
 
 TEST(IntegerDualHull, ManyRowsThroughOneApex) {

@@ -84,15 +84,30 @@ class Simplex {
   const Rational* a(std::size_t i, std::size_t k) const { return i < rows_.size() ? &rows_[i].a[k] : nullptr; }
   Rational right_side(std::size_t i) const { return (i < rows_.size() ? rows_[i].b : Rational(1)) + shift_; }
 
+  // The constraint times L_i, the lcm of its denominators.
   IntegerConstraint integer_constraint(std::size_t i) const {
-    mpz_class l = 1;
     const Rational b = right_side(i);
-    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), b.get_den_mpz_t());
+    IntegerConstraint c{{}, b.get_den(), 0};
     for (std::size_t k = 0; k < d_; ++k)
-      if (const Rational* ak = a(i, k)) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), ak->get_den_mpz_t());
-    IntegerConstraint c{{}, l, mpz_class(b * l)};
-    for (std::size_t k = 0; k < d_; ++k) c.a.push_back(a(i, k) ? mpz_class(*a(i, k) * l) : mpz_class(0));
+      if (const Rational* ak = a(i, k); ak && mpz_cmp_ui(ak->get_den_mpz_t(), 1) != 0)
+        mpz_lcm(c.t.get_mpz_t(), c.t.get_mpz_t(), ak->get_den_mpz_t());
+    times(b, c.t, c.b);
+    c.a.resize(d_);
+    for (std::size_t k = 0; k < d_; ++k)
+      if (const Rational* ak = a(i, k)) times(*ak, c.t, c.a[k]);
     return c;
+  }
+
+  // out = q · l, an integer as q's denominator d divides l: the numerator
+  // times the exact quotient l / d, or the numerator itself when d == l
+  // (integer rows: no product, division or gcd).
+  static void times(const Rational& q, const mpz_class& l, mpz_class& out) {
+    if (mpz_cmp(l.get_mpz_t(), q.get_den_mpz_t()) == 0) {
+      out = q.get_num();
+      return;
+    }
+    mpz_divexact(out.get_mpz_t(), l.get_mpz_t(), q.get_den_mpz_t());
+    out *= q.get_num();
   }
 
   // The column-j entry (or, for j == none, the constant) of structural x_s.

@@ -51,13 +51,23 @@ PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t
 /// The sign of orient3d (predicates.hpp) of the exact input points with the
 /// given indices.
 using ExactOrient = std::function<Sign(std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t)>;
+/// The sign of orient3d(a, b, c, p) − orient3d(a, b, c, q) (the values, not
+/// their signs) of the exact input points with the given indices, i.e.
+/// compare_dot(p, q, cross(b − a, c − a)): which of two points is farther
+/// above the triangle (a, b, c).
+using ExactCompareOrient =
+    std::function<Sign(std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t)>;
 /// The same, with every orient3d that the filters leave undecided answered
 /// by `orient` instead of by the exact points (from_halfspaces' dual points
-/// have an integer predicate that needs no rational), and the soup's points
-/// left empty: the caller knows them by index, from source_index, and
-/// builds only those it needs. points.exact is still used for the few other
-/// exact decisions (the initial simplex, ties of the farthest point).
-/// \pre orient agrees with orient3d of points.exact.
-PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>& source_index);
+/// have an integer predicate that needs no rational), every undecided
+/// comparison of the farthest point by `compare` (when given), and the
+/// soup's points left empty: the caller knows them by index, from
+/// source_index, and builds only those it needs. points.exact is still used
+/// for the few other exact decisions (the initial simplex, and the farthest
+/// point when `compare` is empty).
+/// \pre orient agrees with orient3d of points.exact, compare (if given) with
+///   compare_dot as above.
+PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, ExactCompareOrient compare,
+                      std::vector<std::uint32_t>& source_index);
 
 }  // namespace cvms

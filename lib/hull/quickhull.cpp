@@ -122,10 +122,11 @@ class Quickhull {
 
   // Approximations only (double input is exact, with error 0): only the
   // points that an exact fallback or the output needs become rationals.
-  explicit Quickhull(const ApproximatePoints& points, ExactOrient orient = {})
+  explicit Quickhull(const ApproximatePoints& points, ExactOrient orient = {}, ExactCompareOrient compare = {})
       : coords_(points.approx),
         make_exact_(points.exact),
         exact_orient_(std::move(orient)),
+        exact_compare_(std::move(compare)),
         copy_points_(!exact_orient_) {
     n_ = checked_size(coords_.size());
     double max_abs = 0;
@@ -383,6 +384,11 @@ class Quickhull {
     if (diff > margin || -diff > margin) {
       ++plane_decisions_;
       return diff > 0;
+    }
+    // The caller's predicate, when given, needs no exact point or normal.
+    if (exact_compare_) {
+      const Triangle& tr = tris_[t];
+      return exact_compare_(tr.v[0], tr.v[1], tr.v[2], p, q) == Sign::positive;
     }
     return compare_dot(ref(p), ref(q), normal_ref(t)) == Sign::positive;
   }
@@ -668,6 +674,7 @@ class Quickhull {
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
   ExactOrient exact_orient_;  // the caller's exact orient3d, if any
+  ExactCompareOrient exact_compare_;  // the caller's exact farther-point test, if any
   bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
   std::vector<PlaneFilter> planes_;    // per triangle slot
@@ -718,8 +725,9 @@ PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t
   return qh.run(source_index);
 }
 
-PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, std::vector<std::uint32_t>& source_index) {
-  Quickhull qh(points, std::move(orient));
+PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, ExactCompareOrient compare,
+                      std::vector<std::uint32_t>& source_index) {
+  Quickhull qh(points, std::move(orient), std::move(compare));
   return qh.run(&source_index);
 }
 

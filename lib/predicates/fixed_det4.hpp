@@ -105,22 +105,45 @@ Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, cons
   constexpr int column[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
   constexpr int minor[4][3] = {{5, 4, 3}, {5, 2, 1}, {4, 2, 0}, {3, 1, 0}};
   Cofactors<E> cof;
+  // Each product with the minor first, for the reason in fixed_det4 below.
   for (int k = 0; k < 4; ++k) {
     FixedInt<3 * E + 1>& d = cof[k];
-    add_to(d, multiply(a[column[k][0]], m[minor[k][0]]).template widened<3 * E + 1>());
-    subtract_from(d, multiply(a[column[k][1]], m[minor[k][1]]).template widened<3 * E + 1>());
-    add_to(d, multiply(a[column[k][2]], m[minor[k][2]]).template widened<3 * E + 1>());
+    add_to(d, multiply(m[minor[k][0]], a[column[k][0]]).template widened<3 * E + 1>());
+    subtract_from(d, multiply(m[minor[k][1]], a[column[k][1]]).template widened<3 * E + 1>());
+    add_to(d, multiply(m[minor[k][2]], a[column[k][2]]).template widened<3 * E + 1>());
     if (k % 2 == 0) d.negate();
   }
   return cof;
 }
 
-/// The sign (−1, 0 or 1) of det[a; b; c; d] from the cofactors of a, b, c.
+/// det[a; b; c; d] from the cofactors of a, b, c.
+template <int E>
+FixedInt<4 * E + 1> fixed_det4(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
+  FixedInt<4 * E + 1> det;
+  // The long operand first: multiply skips its zero limbs (the top limbs
+  // of a cofactor's magnitude are often zero), each costing E products.
+  for (int k = 0; k < 4; ++k) add_to(det, multiply(cof[k], d[k]));
+  return det;
+}
+
+/// Its sign (−1, 0 or 1).
 template <int E>
 int fixed_det4_sign(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
-  FixedInt<4 * E + 1> det;
-  for (int k = 0; k < 4; ++k) add_to(det, multiply(d[k], cof[k]));
-  return det.sign();
+  return fixed_det4<E>(cof, d).sign();
+}
+
+/// The sign (−1, 0 or 1) of det[a; b; c; p] · q_3 − det[a; b; c; q] · p_3
+/// (the last entries p_3, q_3 are the homogeneous weights of
+/// homogeneous_orient.hpp), from the cofactors of a, b, c. Bound: each
+/// determinant is below 2^(256E + 1) (above) and each weight below
+/// 2^(64E − 1), so each product is below 2^(320E) and their difference
+/// below 2^(320E + 1), inside the signed range of 5E + 1 limbs
+/// (2^(320E + 63)).
+template <int E>
+int fixed_det4_cross_sign(const Cofactors<E>& cof, const FixedRow<E>& p, const FixedRow<E>& q) noexcept {
+  FixedInt<5 * E + 1> d = multiply(fixed_det4<E>(cof, p), q[3]);
+  subtract_from(d, multiply(fixed_det4<E>(cof, q), p[3]));
+  return d.sign();
 }
 
 /// The sign (−1, 0 or 1) of det[m], or nothing if an entry has more than

@@ -84,4 +84,35 @@ Sign homogeneous_orient3d(const HomogeneousPoint& a, const HomogeneousPoint& b, 
   return sign_of(-mpz_sgn(s.det));
 }
 
+namespace {
+
+// det of the rows with minors `top` of (a, b), and c, x: the 2×2 minors of
+// (c, x) taken on the fly.
+void det_with(const mpz_t top[6], const HomogeneousPoint& c, const HomogeneousPoint& x, mpz_t bottom[6], mpz_t det) {
+  minors(c, x, bottom);
+  mpz_set_ui(det, 0);
+  for (int m = 0; m < 6; ++m) {
+    if (m == 1 || m == 4)
+      mpz_submul(det, top[m], bottom[5 - m]);
+    else
+      mpz_addmul(det, top[m], bottom[5 - m]);
+  }
+}
+
+}  // namespace
+
+Sign homogeneous_compare_orient3d(const HomogeneousPoint& a, const HomogeneousPoint& b, const HomogeneousPoint& c,
+                                  const HomogeneousPoint& p, const HomogeneousPoint& q) {
+  ++predicate_counters().exact;
+  thread_local Scratch s;
+  thread_local mpz_class det_p, det_q;
+  minors(a, b, s.top);
+  det_with(s.top, c, p, s.bottom, det_p.get_mpz_t());
+  det_with(s.top, c, q, s.bottom, det_q.get_mpz_t());
+  // Δ_p q.w − Δ_q p.w, its sign negated (homogeneous_orient.hpp).
+  mpz_mul(s.det, det_p.get_mpz_t(), q.w.get_mpz_t());
+  mpz_submul(s.det, det_q.get_mpz_t(), p.w.get_mpz_t());
+  return sign_of(-mpz_sgn(s.det));
+}
+
 }  // namespace cvms
