@@ -8,25 +8,17 @@
 
 #include <array>
 
+#include "common_denominator.hpp"
+
 namespace cvms::detail {
 namespace {
 
 // The integers (n_k) and the positive factor L with n_k = L q_k, L the lcm
-// of the denominators. An entry whose denominator is the lcm (every entry of
-// an integer row) is its numerator, with no quotient or product.
+// of the denominators (scale_to_common_denominator: an entry whose
+// denominator is L, every entry of an integer row, is its numerator).
 std::array<mpz_class, 4> over_common_denominator(const std::array<const Rational*, 4>& q, mpz_class& lcm) {
-  lcm = q[0]->get_den();
-  for (std::size_t k = 1; k < 4; ++k)
-    if (mpz_cmp_ui(q[k]->get_den_mpz_t(), 1) != 0) mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), q[k]->get_den_mpz_t());
   std::array<mpz_class, 4> n;
-  for (std::size_t k = 0; k < 4; ++k) {
-    if (mpz_cmp(lcm.get_mpz_t(), q[k]->get_den_mpz_t()) == 0) {
-      n[k] = q[k]->get_num();
-      continue;
-    }
-    mpz_divexact(n[k].get_mpz_t(), lcm.get_mpz_t(), q[k]->get_den_mpz_t());
-    n[k] *= q[k]->get_num();
-  }
+  lcm = scale_to_common_denominator(q.data(), q.size(), n.data());
   return n;
 }
 

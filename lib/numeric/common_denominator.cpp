@@ -33,8 +33,14 @@ mpz_class scale_to_common_denominator(const Rational* const values[], std::size_
                    exponent - log2_of_power_of_two(values[i]->get_den_mpz_t()));
     return l;
   }
-  for (std::size_t i = 0; i < count; ++i) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), values[i]->get_den_mpz_t());
+  for (std::size_t i = 0; i < count; ++i)
+    if (mpz_cmp_ui(values[i]->get_den_mpz_t(), 1) != 0)
+      mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), values[i]->get_den_mpz_t());
   for (std::size_t i = 0; i < count; ++i) {
+    if (mpz_cmp(l.get_mpz_t(), values[i]->get_den_mpz_t()) == 0) {  // no quotient or product
+      out[i] = values[i]->get_num();
+      continue;
+    }
     mpz_divexact(out[i].get_mpz_t(), l.get_mpz_t(), values[i]->get_den_mpz_t());
     out[i] *= values[i]->get_num();
   }
