@@ -35,6 +35,7 @@ namespace detail {
 // instance (see the constructor that takes them).
 struct PolyhedronParts;
 struct PolyhedronApproximations;
+class LimbArena;
 }  // namespace detail
 
 /// A convex polyhedron with maximal facets, extreme vertices and cached
@@ -58,7 +59,8 @@ class ConvexPolyhedron {
   /// The empty polyhedron (no vertices; not a valid operand).
   ConvexPolyhedron();
   ~ConvexPolyhedron();
-  /// Copies share the (immutable) internal approximations.
+  /// Copies share the (immutable) internal approximations; their exact
+  /// values are their own.
   ConvexPolyhedron(const ConvexPolyhedron&);
   /// Moves leave `other` empty.
   ConvexPolyhedron(ConvexPolyhedron&& other) noexcept;
@@ -138,6 +140,10 @@ class ConvexPolyhedron {
   /// \endcond
 
  private:
+  // The limbs of the exact values below when the library built them in one
+  // arena (lib/numeric/limb_arena.hpp); null when they own their limbs.
+  // Declared first so that it outlives every value that points into it.
+  std::shared_ptr<const detail::LimbArena> exact_limbs_;
   Mesh mesh_;
   std::vector<Vec3> normals_;
   std::vector<Rational> offsets_;

@@ -681,13 +681,21 @@ ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
 
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
-ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron&) = default;
+// A copy's exact values own their limbs (copying a rational allocates them),
+// so it does not keep the original's arena alive.
+ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other)
+    : mesh_(other.mesh_), normals_(other.normals_), offsets_(other.offsets_), approx_(other.approx_) {}
 ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&&) noexcept = default;
-ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron&) = default;
+ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
+  ConvexPolyhedron copy(other);
+  return *this = std::move(copy);
+}
 ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&&) noexcept = default;
 
 ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
-    : mesh_(std::move(parts.mesh)),
+    : exact_limbs_(parts.limbs.capacity_bytes() > 0 ? std::make_shared<const detail::LimbArena>(std::move(parts.limbs))
+                                                    : nullptr),
+      mesh_(std::move(parts.mesh)),
       normals_(std::move(parts.normals)),
       offsets_(std::move(parts.offsets)),
       approx_(std::make_shared<const detail::PolyhedronApproximations>(std::move(parts.approx))) {}

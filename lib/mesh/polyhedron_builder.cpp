@@ -43,7 +43,7 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup) {
 
 Mesh output_mesh(PolygonSoup soup) { return Mesh::from_soup(std::move(soup), DistinctPoints{}); }
 
-ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes) {
+ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes, LimbArena limbs) {
   const std::size_t faces = planes.normals.size();
   if (planes.normal_approx.size() != faces || planes.offsets.size() != faces || faces != mesh.num_faces() ||
       vertex_approx.size() != mesh.num_vertices())
@@ -52,7 +52,8 @@ ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, Face
                     " approximations for " + std::to_string(mesh.num_faces()) + " faces and " +
                     std::to_string(mesh.num_vertices()) + " vertices");
   PolyhedronParts parts{std::move(mesh), std::move(planes.normals), std::move(planes.offsets),
-                        {std::move(vertex_approx), std::move(planes.normal_approx)}};
+                        {std::move(vertex_approx), std::move(planes.normal_approx)},
+                        std::move(limbs)};
   return ConvexPolyhedron(std::move(parts));
 }
 

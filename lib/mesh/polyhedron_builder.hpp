@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "approx.hpp"
+#include "limb_arena.hpp"
 #include "cvms/convex_polyhedron.hpp"
 
 namespace cvms::detail {
@@ -38,6 +39,7 @@ struct PolyhedronParts {
   std::vector<Vec3> normals;      ///< outward primitive integer normals
   std::vector<Rational> offsets;  ///< dot(normal, x) for x on the facet
   PolyhedronApproximations approx;
+  LimbArena limbs;  ///< where the exact values above keep their limbs, if they do
 };
 
 /// The planes of the output facets, index by index.
@@ -60,10 +62,12 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
 Mesh output_mesh(PolygonSoup soup);
 
 /// The polyhedron from its mesh, the approximations of its vertices and the
-/// planes of its faces (index by index). Geometry is not checked.
+/// planes of its faces (index by index), with the arena of every value
+/// stored in one (the polyhedron keeps it). Geometry is not checked.
 /// \pre the guarantee holds and the planes are exact.
 /// \throw Error(invalid_argument) if the counts do not match.
-ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes);
+ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes,
+                          LimbArena limbs = {});
 
 inline const ApproxVec3& vertex_approx(const ConvexPolyhedron& p, VertexId v) noexcept {
   return p.approximations().vertices[v.index()];

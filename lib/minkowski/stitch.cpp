@@ -241,9 +241,9 @@ void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, st
   normals_.append(other.normals_.begin() + begin, other.normals_.begin() + end);
 }
 
-PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr); }
+PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr, nullptr); }
 
-PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
+PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
   PolygonSoup soup;
@@ -253,11 +253,14 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx) const {
   soup.points.reserve(corners / 3 + 1);  // each vertex is in at least three facets
 
   if (approx != nullptr) approx->reserve(soup.points.capacity());
+  Vec3 arena_sum;  // reused: only its copy in the arena is kept
   auto new_vertex = [&](const VertexPair& p) {
     const VertexId va(p.a), vb(p.b);
     // Built in place: moving an mpq_class re-initialises the source, which allocates.
-    Vec3& sum = soup.points.emplace_back();
+    Vec3& point = soup.points.emplace_back();
+    Vec3& sum = limbs != nullptr ? arena_sum : point;
     for (int i = 0; i < 3; ++i) add_into(sum[i], a_.vertex(va)[i], b_.vertex(vb)[i]);
+    if (limbs != nullptr) limbs->store(point, sum);
     if (approx != nullptr) {
       const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
       approx->push_back(
@@ -298,13 +301,17 @@ struct SumFacetBuilder::PlaneScratch {
   EdgeDirections directions_a;
   EdgeDirections directions_b;
   Vec3 first_vertex_sum;
+  Vec3 normal;
+  Rational offset;
   DotScratch dot;
+  LimbArena limbs;  // of the planes this thread writes
 };
 
 FacetPlanes SumFacetBuilder::sized_planes() const {
   // Default-constructed rationals (each allocates its denominator) that
-  // write_planes overwrites in place: moving a rational into place would
-  // re-initialise the source, which allocates again.
+  // write_planes turns into views of its arena (freeing that denominator
+  // again): moving a rational into place would re-initialise the source,
+  // which allocates.
   const std::size_t n = num_facets();
   FacetPlanes planes;
   planes.normals.resize(n);
@@ -316,33 +323,7 @@ FacetPlanes SumFacetBuilder::sized_planes() const {
 void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
                                    PlaneScratch& scratch) const {
   for (std::size_t i = begin; i < end; ++i) {
-    const NormalSource& source = normals_[i];
-    Vec3& normal = planes.normals[i];
-    switch (source.kind) {
-      case NormalKind::facet_a:
-        normal = a_.normal(FaceId(source.index));
-        break;
-      case NormalKind::facet_b:
-        normal = b_.normal(FaceId(source.index));
-        break;
-      case NormalKind::edges_positive:
-      case NormalKind::edges_negative: {
-        // The directions belong to the even halfedge of each edge.
-        const HalfedgeId ha(source.index), hb(source.other);
-        const SmallDirection* da = scratch.directions_a.small(ha);
-        const SmallDirection* db = scratch.directions_b.small(hb);
-        if (da != nullptr && db != nullptr)
-          primitive_cross(*da, *db, normal);
-        else
-          primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), normal);
-        const bool flip =
-            (source.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
-        if (flip)
-          for (int k = 0; k < 3; ++k) mpq_neg(normal[k].get_mpq_t(), normal[k].get_mpq_t());
-        break;
-      }
-    }
-    planes.normal_approx[i] = ApproxVec3::of(normal);
+    const Vec3& normal = write_normal(planes, i, scratch);
     // The offset is taken at the facet's first vertex a_i + b_j: read from
     // the output mesh once it exists, else summed here (6 % more
     // instructions, but it lets this run while another thread builds the mesh).
@@ -355,20 +336,56 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
       const Vec3 &va = a_.vertex(VertexId(first.a)), &vb = b_.vertex(VertexId(first.b));
       for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
     }
-    integer_dot(normal, *first_vertex, scratch.dot, planes.offsets[i]);
+    integer_dot(normal, *first_vertex, scratch.dot, scratch.offset);
+    scratch.limbs.store(planes.offsets[i], scratch.offset);
   }
 }
 
+const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const {
+  const NormalSource& source = normals_[i];
+  const Vec3* normal = &scratch.normal;
+  switch (source.kind) {
+    case NormalKind::facet_a:
+    case NormalKind::facet_b: {
+      const ConvexPolyhedron& p = source.kind == NormalKind::facet_a ? a_ : b_;
+      normal = &p.normal(FaceId(source.index));
+      break;
+    }
+    case NormalKind::edges_positive:
+    case NormalKind::edges_negative: {
+      // The directions belong to the even halfedge of each edge.
+      const HalfedgeId ha(source.index), hb(source.other);
+      const SmallDirection* da = scratch.directions_a.small(ha);
+      const SmallDirection* db = scratch.directions_b.small(hb);
+      if (da != nullptr && db != nullptr)
+        primitive_cross(*da, *db, scratch.normal);
+      else
+        primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), scratch.normal);
+      const bool flip = (source.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
+      if (flip)
+        for (int k = 0; k < 3; ++k) mpq_neg(scratch.normal[k].get_mpq_t(), scratch.normal[k].get_mpq_t());
+      break;
+    }
+  }
+  planes.normal_approx[i] = ApproxVec3::of(*normal);
+  scratch.limbs.store(planes.normals[i], *normal);
+  return *normal;
+}
+
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
+  // Every exact value of the output keeps its limbs in an arena of the
+  // thread that computed it; the result keeps them all.
+  LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
   Mesh mesh;
-  auto build_mesh = [&] { mesh = output_mesh(soup(&vertex_approx)); };
+  auto build_mesh = [&] { mesh = output_mesh(soup(&vertex_approx, &limbs)); };
   if (threads <= 1) {
     build_mesh();
     FacetPlanes planes = sized_planes();
     PlaneScratch scratch(*this);
     write_planes(planes, 0, num_facets(), &mesh, scratch);
-    return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
+    limbs.absorb(std::move(scratch.limbs));
+    return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
   }
   // Two parts: the vertices with the mesh (one thread), and the facet planes
   // (the larger part, shared). A worker starts on the planes at once; this
@@ -377,13 +394,15 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   // the same exact planes.
   constexpr std::size_t chunk = 256;
   const std::size_t n = num_facets();
+  LimbArena worker_limbs;
   FacetPlanes planes;
   std::atomic<std::size_t> next{0};
   std::latch sized(1);
-  auto take_chunks = [&](const Mesh* with_mesh) {
+  auto take_chunks = [&](const Mesh* with_mesh, LimbArena& kept) {
     PlaneScratch scratch(*this);
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
       write_planes(planes, begin, std::min(begin + chunk, n), with_mesh, scratch);
+    kept = std::move(scratch.limbs);
   };
   {
     Worker worker;
@@ -396,14 +415,17 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
         throw;
       }
       sized.count_down();
-      take_chunks(nullptr);
+      take_chunks(nullptr, worker_limbs);
     });
     build_mesh();  // if this throws, the worker joins before the exception leaves
     sized.wait();
-    take_chunks(&mesh);
+    LimbArena own_limbs;
+    take_chunks(&mesh, own_limbs);
+    limbs.absorb(std::move(own_limbs));
     worker.join();  // rethrows the worker's exception
   }
-  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes));
+  limbs.absorb(std::move(worker_limbs));
+  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
 }
 
 }  // namespace cvms::detail

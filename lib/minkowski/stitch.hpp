@@ -81,8 +81,12 @@ class SumFacetBuilder {
   [[nodiscard]] FacetPlanes sized_planes() const;
   void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
                     PlaneScratch& scratch) const;
-  // soup(), and if approx is not null the approximations of its points.
-  [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx) const;
+  // Facet i's normal and its approximation into planes; returns the exact
+  // normal (the arena's copy must not be read back before the offset is done).
+  const Vec3& write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const;
+  // soup(), and if approx is not null the approximations of its points; if
+  // limbs is not null, the points keep their limbs there.
+  [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const;
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
   // Where the normal of an output facet comes from: facet `index` of A or B,
   // or the edges of halfedges (index, other) with the given orientation.

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+// Compact exact storage: rationals whose limbs live in shared blocks (see the header).
+#include "limb_arena.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <iterator>
+
+namespace cvms::detail {
+namespace {
+
+// Zero's (unread) limb and 1's: views of them take no arena space.
+constexpr mp_limb_t zero_limb = 0;
+constexpr mp_limb_t one_limb = 1;
+
+// Blocks double from 4 KiB up to 1 MiB: small results stay small, large ones
+// take about ten blocks.
+constexpr std::size_t max_block_limbs = std::size_t{1} << 17;
+
+bool is_one(mpz_srcptr z) noexcept { return mpz_size(z) == 1 && mpz_sgn(z) > 0 && mpz_limbs_read(z)[0] == 1; }
+
+std::size_t limbs_needed(mpz_srcptr z) noexcept { return is_one(z) ? 0 : mpz_size(z); }
+
+// out = a view of the n limbs at `limbs` with value's sign; out owns nothing.
+void view(mpz_ptr out, const mp_limb_t* limbs, mpz_srcptr value) {
+  const auto n = static_cast<mp_size_t>(mpz_size(value));
+  mpz_roinit_n(out, n == 0 ? &zero_limb : limbs, mpz_sgn(value) < 0 ? -n : n);
+}
+
+}  // namespace
+
+mp_limb_t* LimbArena::allocate(std::size_t limbs) {
+  if (limbs > free_limbs_) {
+    const std::size_t size = std::max(limbs, next_block_limbs_);
+    blocks_.reserve(blocks_.size() + 1);  // so that push_back below cannot throw and leak the block
+    blocks_.push_back(std::make_unique_for_overwrite<mp_limb_t[]>(size));
+    free_ = blocks_.back().get();
+    free_limbs_ = size;
+    capacity_limbs_ += size;
+    next_block_limbs_ = std::min(next_block_limbs_ * 2, max_block_limbs);
+  }
+  mp_limb_t* result = free_;
+  free_ += limbs;
+  free_limbs_ -= limbs;
+  return result;
+}
+
+void LimbArena::store(Rational& out, const Rational& value) {
+  if constexpr (!holds_limbs) {
+    out = value;
+    return;
+  }
+  mpz_srcptr num = mpq_numref(value.get_mpq_t());
+  const std::size_t num_limbs = limbs_needed(num);
+  // Everything that can throw comes before out's numerator is given up.
+  mp_limb_t* limbs = num_limbs > 0 ? allocate(num_limbs) : nullptr;
+  mpq_ptr o = out.get_mpq_t();
+  mpz_set(mpq_denref(o), mpq_denref(value.get_mpq_t()));
+  if (num_limbs > 0) std::memcpy(limbs, mpz_limbs_read(num), num_limbs * sizeof(mp_limb_t));
+  mpz_clear(mpq_numref(o));
+  view(mpq_numref(o), num_limbs > 0 ? limbs : &one_limb, num);
+}
+
+void LimbArena::store(Vec3& out, const Vec3& value) {
+  for (int i = 0; i < 3; ++i) store(out[i], value[i]);
+}
+
+void LimbArena::absorb(LimbArena&& other) {
+  blocks_.reserve(blocks_.size() + other.blocks_.size());
+  std::move(other.blocks_.begin(), other.blocks_.end(), std::back_inserter(blocks_));
+  capacity_limbs_ += other.capacity_limbs_;
+  other = LimbArena();
+}
+
+}  // namespace cvms::detail

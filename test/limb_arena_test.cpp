@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// LimbArena (lib/numeric/limb_arena.hpp): a stored value equals the original
+// (compared with independent copies made before storing), reads and copies
+// of it behave like any rational, it stays valid while the arena (or one
+// that absorbed it) lives, and destroying values and arenas in either order
+// frees everything once (ASan and valgrind check the last two). The
+// polyhedra that keep their values in arenas: arena_storage_test.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "limb_arena.hpp"
+
+namespace cvms::detail {
+namespace {
+
+Rational random_value(std::mt19937_64& rng) {
+  switch (rng() % 6) {
+    case 0:
+      return 0;
+    case 1:
+      return rng() % 2 == 0 ? 1 : -1;
+    case 2:  // a double of any exponent, subnormals included
+      return Rational(std::ldexp(static_cast<double>(rng() >> 11) * (rng() % 2 == 0 ? 1 : -1),
+                                 static_cast<int>(rng() % 2000) - 1100));
+    case 3: {  // several limbs over several limbs
+      mpz_class num, den;
+      mpz_ui_pow_ui(num.get_mpz_t(), 3 + rng() % 5, 40 + rng() % 200);
+      mpz_ui_pow_ui(den.get_mpz_t(), 7, 1 + rng() % 120);
+      Rational q(rng() % 2 == 0 ? num : mpz_class(-num), den);
+      q.canonicalize();
+      return q;
+    }
+    case 4: {  // a power-of-two denominator beyond one limb
+      Rational q(mpz_class(static_cast<unsigned long>(rng() | 1)));
+      mpz_mul_2exp(q.get_den_mpz_t(), q.get_den_mpz_t(), 64 + rng() % 100);
+      return q;
+    }
+    default:
+      return Rational(static_cast<long>(rng() % 2000001) - 1000000, 1 + static_cast<long>(rng() % 999));
+  }
+}
+
+std::vector<Rational> random_values(std::uint64_t seed, std::size_t n) {
+  std::mt19937_64 rng(seed);
+  std::vector<Rational> values;
+  for (std::size_t i = 0; i < n; ++i) {
+    values.push_back(random_value(rng));
+    values.back().canonicalize();
+  }
+  return values;
+}
+
+TEST(LimbArena, StoredValuesEqualTheOriginalsAndBehaveAsRationals) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::vector<Rational> originals = random_values(seed, 3000);
+    LimbArena arena;
+    std::vector<Rational> stored(originals.size());
+    for (std::size_t i = 0; i < originals.size(); ++i) arena.store(stored[i], originals[i]);
+    for (std::size_t i = 0; i < originals.size(); ++i) {
+      ASSERT_EQ(stored[i], originals[i]) << i;
+      ASSERT_EQ(to_string(stored[i]), to_string(originals[i])) << i;
+      ASSERT_EQ(sgn(stored[i]), sgn(originals[i]));
+      Rational copy = stored[i];  // owns its limbs
+      copy += 1;
+      ASSERT_EQ(copy, originals[i] + 1);
+      ASSERT_EQ(stored[i] * 3 - stored[i], 2 * originals[i]);  // read as an operand, unchanged
+    }
+    if (LimbArena::holds_limbs) {
+      EXPECT_GT(arena.capacity_bytes(), 0u);
+    } else {
+      EXPECT_EQ(arena.capacity_bytes(), 0u);
+    }
+  }
+}
+
+TEST(LimbArena, ValuesStayValidInAnArenaThatAbsorbedTheirs) {
+  const std::vector<Rational> originals = random_values(99, 5000);
+  LimbArena kept;
+  std::vector<Rational> stored(originals.size());
+  {
+    LimbArena first, second;
+    for (std::size_t i = 0; i < originals.size(); ++i) (i % 2 == 0 ? first : second).store(stored[i], originals[i]);
+    kept.absorb(std::move(first));
+    kept.absorb(std::move(second));
+    EXPECT_EQ(first.capacity_bytes(), 0u);  // NOLINT(bugprone-use-after-move): absorb empties it
+  }
+  for (std::size_t i = 0; i < originals.size(); ++i) ASSERT_EQ(stored[i], originals[i]) << i;
+  LimbArena moved = std::move(kept);
+  for (std::size_t i = 0; i < originals.size(); ++i) ASSERT_EQ(stored[i], originals[i]) << i;
+}
+
+TEST(LimbArena, ValuesMayDieAfterTheirArena) {
+  // Destroying a stored value never touches the arena's limbs, so this
+  // order is fine too (the polyhedra destroy their values first anyway).
+  std::vector<Rational> stored(100);
+  {
+    LimbArena arena;
+    const std::vector<Rational> originals = random_values(7, stored.size());
+    for (std::size_t i = 0; i < stored.size(); ++i) arena.store(stored[i], originals[i]);
+  }
+  stored.clear();
+  SUCCEED();
+}
+
+TEST(LimbArena, StoresVectorsAndReusesScratch) {
+  LimbArena arena;
+  const Vec3 a{Rational(1, 3), Rational(-5, 1), Rational(0.125)};
+  Vec3 scratch = a;
+  Vec3 out;
+  arena.store(out, scratch);
+  scratch.x = 7;  // the stored copy does not follow its source
+  EXPECT_EQ(out, a);
+  arena.store(out, scratch);  // storing again into a stored value is allowed
+  EXPECT_EQ(out, (Vec3{7, -5, Rational(0.125)}));
+}
+
+}  // namespace
+}  // namespace cvms::detail
