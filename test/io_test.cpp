@@ -19,6 +19,8 @@
 #include <random>
 #include <sstream>
 
+#include "cvms/minkowski.hpp"
+#include "cvms/shapes.hpp"
 #include "support/io_expect.hpp"
 
 namespace cvms {
@@ -411,6 +413,39 @@ TEST(ErrorMessage, IsWhatWithoutTheCategoryPrefix) {
   EXPECT_STREQ(e.what(), "not_convex: cube.off: reflex edge (0, 4)");
   EXPECT_STREQ(e.message(), "cube.off: reflex edge (0, 4)");
   EXPECT_STREQ(Error(ErrorCategory::invalid_argument, "").message(), "");
+}
+
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// write_file of a polyhedron writes from its mesh without copying it into a
+// soup; the oracle is the soup writer on to_soup(), byte for byte, for every
+// format and both coordinate modes, on a sum (whose values live in an arena)
+// and on a polyhedron with rational, non-dyadic coordinates.
+TEST(Write, PolyhedronIsWrittenAsItsSoup) {
+  TempDir dir;
+  const ConvexPolyhedron sphere = shapes::geodesic_sphere(2);
+  const ConvexPolyhedron sum = minkowski_sum(sphere, shapes::rotated_geodesic_sphere(2)).polyhedron;
+  Mat3 skew = Mat3::identity();
+  skew.m[0][1] = Rational(1, 3);
+  skew.m[2][0] = Rational(-2, 7);
+  const ConvexPolyhedron rational = sphere.transformed(skew, {Rational(1, 10), 0, 5});
+  for (const ConvexPolyhedron* p : {&sum, &rational}) {
+    for (const char* ext : {".off", ".obj", ".stl"}) {
+      for (Coordinates c : {Coordinates::exact, Coordinates::double_}) {
+        SCOPED_TRACE(std::string(ext) + (c == Coordinates::exact ? " exact" : " double"));
+        const auto direct = dir.path / (std::string("direct") + ext);
+        const auto via_soup = dir.path / (std::string("soup") + ext);
+        write_file(direct, *p, c);
+        write_file(via_soup, p->to_soup(), c);
+        const std::string bytes = file_bytes(direct);
+        EXPECT_GT(bytes.size(), 100u);
+        EXPECT_EQ(bytes, file_bytes(via_soup));
+      }
+    }
+  }
 }
 
 TEST(ReadPolyhedron, IsReadFileThenFromSoup) {

@@ -87,22 +87,24 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
   return points.take();
 }
 
-void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {
+namespace {
+
+void write_view(std::ostream& out, const io_detail::SoupView& soup, FileFormat format, Coordinates coordinates) {
   switch (format) {
     case FileFormat::off:
-      return write_off(out, soup, coordinates);
+      return io_detail::write_off_view(out, soup, coordinates);
     case FileFormat::obj:
-      return write_obj(out, soup, coordinates);
+      return io_detail::write_obj_view(out, soup, coordinates);
     case FileFormat::stl:
-      return write_stl(out, soup);
+      return io_detail::write_stl_view(out, soup);
   }
   throw Error(ErrorCategory::invalid_argument, "unknown file format");
 }
 
-void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,
-                Coordinates coordinates) {
+void write_view_to_file(const std::filesystem::path& path, const io_detail::SoupView& soup, FileFormat format,
+                        Coordinates coordinates) {
   try {
-    io_detail::write_atomically(path, [&](std::ostream& out) { write(out, soup, format, coordinates); });
+    io_detail::write_atomically(path, [&](std::ostream& out) { write_view(out, soup, format, coordinates); });
   } catch (const Error& e) {
     // write_atomically names the file in its io errors; the stream writers
     // name a face, index or coordinate, never the file.
@@ -111,17 +113,36 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
   }
 }
 
+// The polyhedron's own points with its faces' index lists: no copy of an
+// exact coordinate.
+void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
+                              Coordinates coordinates) {
+  const io_detail::FaceLists faces = io_detail::face_lists(p.mesh());
+  write_view_to_file(path, {p.mesh().positions(), faces.offsets, faces.indices}, format, coordinates);
+}
+
+}  // namespace
+
+void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {
+  write_view(out, io_detail::SoupView::of(soup), format, coordinates);
+}
+
+void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,
+                Coordinates coordinates) {
+  write_view_to_file(path, io_detail::SoupView::of(soup), format, coordinates);
+}
+
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coordinates coordinates) {
   write_file(path, soup, format_from_extension(path), coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, Coordinates coordinates) {
-  write_file(path, p.to_soup(), format_from_extension(path), coordinates);
+  write_polyhedron_to_file(path, p, format_from_extension(path), coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                 Coordinates coordinates) {
-  write_file(path, p.to_soup(), format, coordinates);
+  write_polyhedron_to_file(path, p, format, coordinates);
 }
 
 ConvexPolyhedron to_polyhedron(PolygonSoup soup, std::string_view source) {

@@ -156,6 +156,10 @@ PolygonSoup read_obj(std::istream& in, std::string_view source, const ReadLimits
 }
 
 void write_obj(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates) {
+  io_detail::write_obj_view(out, io_detail::SoupView::of(soup), coordinates);
+}
+
+void io_detail::write_obj_view(std::ostream& out, const SoupView& soup, Coordinates coordinates) {
   io_detail::check_soup_for_writing(soup, 3);
   io_detail::TextWriter w(out);
   for (const Vec3& p : soup.points) {

@@ -214,6 +214,10 @@ PolygonSoup read_off(std::istream& in, std::string_view source, const ReadLimits
 }
 
 void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates) {
+  io_detail::write_off_view(out, io_detail::SoupView::of(soup), coordinates);
+}
+
+void io_detail::write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates) {
   io_detail::check_soup_for_writing(soup, 3);
   io_detail::TextWriter w(out);
   w.text("OFF\n").integer(soup.points.size()).byte(' ').integer(soup.num_faces()).text(" 0\n");

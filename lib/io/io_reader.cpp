@@ -363,7 +363,7 @@ void check_face_limit(const LineReader& reader, std::uint64_t faces, std::uint64
     reader.fail("more than 2^32-1 face indices in total", ErrorCategory::limit);
 }
 
-void check_soup_for_writing(const PolygonSoup& soup, std::size_t min_size) {
+void check_soup_for_writing(const SoupView& soup, std::size_t min_size) {
   if (soup.face_offsets.empty() || soup.face_offsets.front() != 0 ||
       soup.face_offsets.back() != soup.face_indices.size())
     throw Error(ErrorCategory::invalid_argument, "polygon soup has inconsistent face offsets");

@@ -18,6 +18,7 @@
 #include "cvms/io.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/rational.hpp"
+#include "soup_view.hpp"
 
 namespace cvms::io_detail {
 
@@ -222,6 +223,6 @@ PolygonSoup parse_obj(LineReader& reader);
 bool is_off_keyword(std::string_view token);
 
 /// Validation for writers: every face has >= min_size indices, each < points.size().
-void check_soup_for_writing(const PolygonSoup& soup, std::size_t min_size);
+void check_soup_for_writing(const SoupView& soup, std::size_t min_size);
 
 }  // namespace cvms::io_detail

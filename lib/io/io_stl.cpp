@@ -404,7 +404,9 @@ PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits
   }
 }
 
-void write_stl(std::ostream& out, const PolygonSoup& soup) {
+void write_stl(std::ostream& out, const PolygonSoup& soup) { io_detail::write_stl_view(out, io_detail::SoupView::of(soup)); }
+
+void io_detail::write_stl_view(std::ostream& out, const SoupView& soup) {
   using namespace io_detail;
   check_soup_for_writing(soup, 3);
   std::uint64_t triangles = 0;

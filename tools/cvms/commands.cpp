@@ -85,7 +85,12 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   // Flat operands, or more than two: the sum of convex sets.
   if (std::count(args.more.begin(), args.more.end(), "-") + (args.a == "-") + (args.b == "-") > 1)
     throw UsageError("only one input can be read from stdin");
-  std::vector<ConvexSet> sets{read_set(args.a), read_set(args.b)};
+  // Moved in one by one: a braced list would copy every operand (its
+  // elements are const), which cost as much as the sum itself on Sphere6.
+  std::vector<ConvexSet> sets;
+  sets.reserve(2 + args.more.size());
+  sets.push_back(read_set(args.a));
+  sets.push_back(read_set(args.b));
   for (const std::string& path : args.more) sets.push_back(read_set(path));
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
     return run_set_sum(sets, args.options(), args.output, args.format, coordinates_of(args.float_output),

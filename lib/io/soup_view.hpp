@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// What the writers read: a polygon soup's points and faces, not owned, so that
+// a polyhedron is written straight from its own mesh. Copying its exact
+// coordinates into a PolygonSoup first, and destroying the copy, was a third
+// of writing Sphere6 + rotated Sphere6 (issue 14).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <ostream>
+#include <span>
+#include <vector>
+
+#include "cvms/io.hpp"
+#include "cvms/mesh.hpp"
+#include "cvms/polygon_soup.hpp"
+
+namespace cvms::io_detail {
+
+struct SoupView {
+  std::span<const Vec3> points;
+  std::span<const std::uint32_t> face_offsets;  ///< as PolygonSoup's: faces + 1 entries from 0
+  std::span<const std::uint32_t> face_indices;
+
+  static SoupView of(const PolygonSoup& soup) noexcept {
+    return {soup.points, soup.face_offsets, soup.face_indices};
+  }
+  /// \pre face_offsets is not empty (check_soup_for_writing checks it).
+  [[nodiscard]] std::size_t num_faces() const noexcept { return face_offsets.size() - 1; }
+  /// \pre f < num_faces() and the offsets are consistent.
+  [[nodiscard]] std::span<const std::uint32_t> face(std::size_t f) const noexcept {
+    return face_indices.subspan(face_offsets[f], face_offsets[f + 1] - face_offsets[f]);
+  }
+};
+
+/// A mesh's faces as index lists, numbered as Mesh::to_soup numbers them.
+struct FaceLists {
+  std::vector<std::uint32_t> offsets{0};
+  std::vector<std::uint32_t> indices;
+};
+FaceLists face_lists(const Mesh& mesh);
+
+/// The writers behind write_off, write_obj and write_stl.
+void write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);
+void write_obj_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);
+void write_stl_view(std::ostream& out, const SoupView& soup);
+
+}  // namespace cvms::io_detail
