@@ -296,15 +296,23 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
 // What one thread needs to write planes: reused scratch and its own lazy
 // caches of edge directions.
 struct SumFacetBuilder::PlaneScratch {
-  explicit PlaneScratch(const SumFacetBuilder& builder)
-      : directions_a(builder.a_), directions_b(builder.b_) {}
+  PlaneScratch(const SumFacetBuilder& builder, LimbArena* arena)
+      : directions_a(builder.a_), directions_b(builder.b_), limbs(arena) {}
+  // out = value, in the arena if there is one.
+  template <class Exact>
+  void keep(Exact& out, const Exact& value) {
+    if (limbs != nullptr)
+      limbs->store(out, value);
+    else
+      out = value;
+  }
   EdgeDirections directions_a;
   EdgeDirections directions_b;
   Vec3 first_vertex_sum;
   Vec3 normal;
   Rational offset;
   DotScratch dot;
-  LimbArena limbs;  // of the planes this thread writes
+  LimbArena* limbs;  // where the planes keep their numerators; null: on the heap
 };
 
 FacetPlanes SumFacetBuilder::sized_planes() const {
@@ -337,7 +345,7 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
       for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
     }
     integer_dot(normal, *first_vertex, scratch.dot, scratch.offset);
-    scratch.limbs.store(planes.offsets[i], scratch.offset);
+    scratch.keep(planes.offsets[i], scratch.offset);
   }
 }
 
@@ -368,13 +376,13 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
     }
   }
   planes.normal_approx[i] = ApproxVec3::of(*normal);
-  scratch.limbs.store(planes.normals[i], *normal);
+  scratch.keep(planes.normals[i], *normal);
   return *normal;
 }
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
-  // Every exact value of the output keeps its limbs in an arena of the
-  // thread that computed it; the result keeps them all.
+  // Each thread keeps the numerators it computes in an arena of its own;
+  // the result keeps both.
   LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
   Mesh mesh;
@@ -382,9 +390,8 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   if (threads <= 1) {
     build_mesh();
     FacetPlanes planes = sized_planes();
-    PlaneScratch scratch(*this);
+    PlaneScratch scratch(*this, &limbs);
     write_planes(planes, 0, num_facets(), &mesh, scratch);
-    limbs.absorb(std::move(scratch.limbs));
     return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
   }
   // Two parts: the vertices with the mesh (one thread), and the facet planes
@@ -398,11 +405,10 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   FacetPlanes planes;
   std::atomic<std::size_t> next{0};
   std::latch sized(1);
-  auto take_chunks = [&](const Mesh* with_mesh, LimbArena& kept) {
-    PlaneScratch scratch(*this);
+  auto take_chunks = [&](const Mesh* with_mesh, LimbArena* arena) {
+    PlaneScratch scratch(*this, arena);
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
       write_planes(planes, begin, std::min(begin + chunk, n), with_mesh, scratch);
-    kept = std::move(scratch.limbs);
   };
   {
     Worker worker;
@@ -415,13 +421,11 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
         throw;
       }
       sized.count_down();
-      take_chunks(nullptr, worker_limbs);
+      take_chunks(nullptr, &worker_limbs);
     });
     build_mesh();  // if this throws, the worker joins before the exception leaves
     sized.wait();
-    LimbArena own_limbs;
-    take_chunks(&mesh, own_limbs);
-    limbs.absorb(std::move(own_limbs));
+    take_chunks(&mesh, &limbs);
     worker.join();  // rethrows the worker's exception
   }
   limbs.absorb(std::move(worker_limbs));
