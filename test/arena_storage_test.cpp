@@ -12,6 +12,8 @@
 
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "limb_arena.hpp"
+#include "research_options.hpp"
 
 namespace cvms {
 namespace {
@@ -32,6 +34,23 @@ ExactValues copies_of(const ConvexPolyhedron& p) {
   return out;
 }
 
+// Whether every nonzero numerator of p's values is a view (owns no limb) or
+// every one owns its limbs: a sum's are views, a copy's are its own.
+bool numerators_are_views(const ConvexPolyhedron& p, bool views) {
+  auto matches = [views](const Rational& q) {
+    return sgn(q) == 0 || (mpq_numref(q.get_mpq_t())->_mp_alloc == 0) == views;
+  };
+  for (VertexId v : p.mesh().vertices())
+    for (int i = 0; i < 3; ++i)
+      if (!matches(p.vertex(v)[i])) return false;
+  for (FaceId f : p.mesh().faces()) {
+    for (int i = 0; i < 3; ++i)
+      if (!matches(p.normal(f)[i])) return false;
+    if (!matches(p.plane_offset(f))) return false;
+  }
+  return true;
+}
+
 void expect_values(const ConvexPolyhedron& p, const ExactValues& expected) {
   ASSERT_EQ(p.num_vertices(), expected.vertices.size());
   ASSERT_EQ(p.num_facets(), expected.normals.size());
@@ -49,13 +68,22 @@ TEST_P(ArenaStorage, SumsCopiesAndMovesKeepTheirValues) {
   const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(3);
   Options options;
   options.threads = GetParam();
-  const ConvexPolyhedron sum = minkowski_sum(a, b, options).polyhedron;
+  detail::ResearchOptions research;  // the worker runs even on a one-core machine
+  research.worker_minimums.oversubscribe = true;
+  auto sum_of = [&](const ConvexPolyhedron& x, const ConvexPolyhedron& y) {
+    return detail::minkowski_sum(x, y, options, research).polyhedron;
+  };
+  const ConvexPolyhedron sum = sum_of(a, b);
   const ExactValues expected = copies_of(sum);
+  if (detail::LimbArena::holds_limbs()) {
+    EXPECT_TRUE(numerators_are_views(sum, true));
+  }
 
   ConvexPolyhedron copy;
   {
-    ConvexPolyhedron original = minkowski_sum(a, b, options).polyhedron;
+    ConvexPolyhedron original = sum_of(a, b);
     copy = original;
+    EXPECT_TRUE(numerators_are_views(copy, false));
     ConvexPolyhedron moved = std::move(original);
     expect_values(moved, expected);
     ConvexPolyhedron assigned;
@@ -71,7 +99,7 @@ TEST_P(ArenaStorage, SumsCopiesAndMovesKeepTheirValues) {
   for (VertexId v : shifted.mesh().vertices())
     ASSERT_EQ(shifted.vertex(v), expected.vertices[v.index()] + shift);
   // A sum of sums reads the first sum's values as operands.
-  const ConvexPolyhedron twice = minkowski_sum(sum, sum.reflected(), options).polyhedron;
+  const ConvexPolyhedron twice = sum_of(sum, sum.reflected());
   EXPECT_TRUE(twice.is_convex());
   const PolygonSoup soup = twice.to_soup();
   EXPECT_EQ(soup.points.size(), twice.num_vertices());

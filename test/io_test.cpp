@@ -316,7 +316,13 @@ TEST(Write, RejectsInvalidSoupsAndUnrepresentableValues) {
   PolygonSoup two_gon = make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0)}, {{0, 1}});
   PolygonSoup broken_offsets = make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0)}, {{0, 1, 2}});
   broken_offsets.face_offsets.back() = 7;
+  // Offsets that rise past the indices and come back to their count: the
+  // first face would read beyond them (ASan checks that nothing is read).
+  PolygonSoup overshooting = make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0)}, {{0, 1, 2}, {0, 2, 1}});
+  overshooting.face_offsets = {0, 10, 6};
   for (FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::stl}) {
+    EXPECT_TRUE(
+        throws_error([&] { written(overshooting, format); }, ErrorCategory::invalid_argument, {"offsets"}));
     EXPECT_TRUE(throws_error([&] { written(out_of_range, format); }, ErrorCategory::invalid_argument,
                              {"face 0 has index 3 but there are 3 vertices"}));
     EXPECT_TRUE(

@@ -71,7 +71,7 @@ TEST(LimbArena, StoredValuesEqualTheOriginalsAndBehaveAsRationals) {
       ASSERT_EQ(copy, originals[i] + 1);
       ASSERT_EQ(stored[i] * 3 - stored[i], 2 * originals[i]);  // read as an operand, unchanged
     }
-    if (LimbArena::holds_limbs) {
+    if (LimbArena::holds_limbs()) {
       EXPECT_GT(arena.capacity_bytes(), 0u);
     } else {
       EXPECT_EQ(arena.capacity_bytes(), 0u);
@@ -93,6 +93,15 @@ TEST(LimbArena, ValuesStayValidInAnArenaThatAbsorbedTheirs) {
   for (std::size_t i = 0; i < originals.size(); ++i) ASSERT_EQ(stored[i], originals[i]) << i;
   LimbArena moved = std::move(kept);
   for (std::size_t i = 0; i < originals.size(); ++i) ASSERT_EQ(stored[i], originals[i]) << i;
+  // The moved-from arena is empty and stores into blocks of its own, which
+  // overwrite none of the values above.
+  EXPECT_EQ(kept.capacity_bytes(), 0u);  // NOLINT(bugprone-use-after-move)
+  std::vector<Rational> more(originals.size());
+  for (std::size_t i = 0; i < originals.size(); ++i) kept.store(more[i], -originals[i]);
+  for (std::size_t i = 0; i < originals.size(); ++i) {
+    ASSERT_EQ(stored[i], originals[i]) << i;
+    ASSERT_EQ(more[i], -originals[i]) << i;
+  }
 }
 
 TEST(LimbArena, ValuesMayDieAfterTheirArena) {

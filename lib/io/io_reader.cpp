@@ -368,7 +368,9 @@ void check_soup_for_writing(const SoupView& soup, std::size_t min_size) {
       soup.face_offsets.back() != soup.face_indices.size())
     throw Error(ErrorCategory::invalid_argument, "polygon soup has inconsistent face offsets");
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    if (soup.face_offsets[f + 1] < soup.face_offsets[f])
+    // Checked before face(f) reads the indices: offsets that rise past the
+    // end and come back down ({0, 10, 5} with 5 indices) must not be read.
+    if (soup.face_offsets[f + 1] < soup.face_offsets[f] || soup.face_offsets[f + 1] > soup.face_indices.size())
       throw Error(ErrorCategory::invalid_argument,
                   "polygon soup has decreasing face offsets at face " + std::to_string(f));
     auto face = soup.face(f);

@@ -690,7 +690,16 @@ ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
   ConvexPolyhedron copy(other);
   return *this = std::move(copy);
 }
-ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&&) noexcept = default;
+// By hand, so that the old arena goes only after the old values that point
+// into it (destroying a view reads no limb, but the order keeps the rule simple).
+ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&& other) noexcept {
+  mesh_ = std::move(other.mesh_);
+  normals_ = std::move(other.normals_);
+  offsets_ = std::move(other.offsets_);
+  approx_ = std::move(other.approx_);
+  exact_limbs_ = std::move(other.exact_limbs_);
+  return *this;
+}
 
 ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
     : exact_limbs_(parts.limbs.capacity_bytes() > 0 ? std::make_shared<const detail::LimbArena>(std::move(parts.limbs))

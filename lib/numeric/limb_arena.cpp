@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iterator>
+#include <utility>
 
 namespace cvms::detail {
 namespace {
@@ -13,8 +14,8 @@ namespace {
 constexpr mp_limb_t zero_limb = 0;
 constexpr mp_limb_t one_limb = 1;
 
-// Blocks double from 4 KiB up to 1 MiB: small results stay small, large ones
-// take about ten blocks.
+// Blocks double from 4 KiB (first_block_limbs) up to 1 MiB: small results
+// stay small, large ones take about ten blocks.
 constexpr std::size_t max_block_limbs = std::size_t{1} << 17;
 
 bool is_one(mpz_srcptr z) noexcept { return mpz_size(z) == 1 && mpz_sgn(z) > 0 && mpz_limbs_read(z)[0] == 1; }
@@ -27,7 +28,52 @@ void view(mpz_ptr out, const mp_limb_t* limbs, mpz_srcptr value) {
   mpz_roinit_n(out, n == 0 ? &zero_limb : limbs, mpz_sgn(value) < 0 ? -n : n);
 }
 
+#if defined(__GNU_MP_RELEASE) && __GNU_MP_RELEASE >= 60200
+// GMP's version string is "major.minor[.patch]"; a function-local constant,
+// computed once (thread-safe), so that no store parses it.
+bool loaded_gmp_frees_lazily() noexcept {
+  static const bool lazily = [] {
+    int major = 0, minor = 0;
+    const char* v = gmp_version;
+    while (*v >= '0' && *v <= '9') major = major * 10 + (*v++ - '0');
+    if (*v == '.') ++v;
+    while (*v >= '0' && *v <= '9') minor = minor * 10 + (*v++ - '0');
+    return major > 6 || (major == 6 && minor >= 2);
+  }();
+  return lazily;
+}
+#endif
+
 }  // namespace
+
+bool LimbArena::holds_limbs() noexcept {
+#if defined(__GNU_MP_RELEASE) && __GNU_MP_RELEASE >= 60200
+  return loaded_gmp_frees_lazily();
+#else
+  return false;
+#endif
+}
+
+LimbArena::LimbArena(LimbArena&& other) noexcept
+    : blocks_(std::move(other.blocks_)),
+      free_(std::exchange(other.free_, nullptr)),
+      free_limbs_(std::exchange(other.free_limbs_, 0)),
+      next_block_limbs_(std::exchange(other.next_block_limbs_, first_block_limbs)),
+      capacity_limbs_(std::exchange(other.capacity_limbs_, 0)) {
+  other.blocks_.clear();
+}
+
+LimbArena& LimbArena::operator=(LimbArena&& other) noexcept {
+  if (this != &other) {
+    blocks_ = std::move(other.blocks_);
+    other.blocks_.clear();
+    free_ = std::exchange(other.free_, nullptr);
+    free_limbs_ = std::exchange(other.free_limbs_, 0);
+    next_block_limbs_ = std::exchange(other.next_block_limbs_, first_block_limbs);
+    capacity_limbs_ = std::exchange(other.capacity_limbs_, 0);
+  }
+  return *this;
+}
 
 mp_limb_t* LimbArena::allocate(std::size_t limbs) {
   if (limbs > free_limbs_) {
@@ -46,7 +92,7 @@ mp_limb_t* LimbArena::allocate(std::size_t limbs) {
 }
 
 void LimbArena::store(Rational& out, const Rational& value) {
-  if constexpr (!holds_limbs) {
+  if (!holds_limbs()) {
     out = value;
     return;
   }

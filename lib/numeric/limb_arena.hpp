@@ -42,25 +42,24 @@ namespace cvms::detail {
 class LimbArena {
  public:
   LimbArena() = default;
-  LimbArena(LimbArena&&) noexcept = default;
-  LimbArena& operator=(LimbArena&&) noexcept = default;
+  /// Moves leave `other` empty (it may store again, into blocks of its own).
+  LimbArena(LimbArena&& other) noexcept;
+  LimbArena& operator=(LimbArena&& other) noexcept;
   LimbArena(const LimbArena&) = delete;
   LimbArena& operator=(const LimbArena&) = delete;
   ~LimbArena() = default;
 
-  /// Whether stored values point into the arena (GMP >= 6.2) rather than
-  /// owning heap limbs.
-  static constexpr bool holds_limbs =
-#if defined(__GNU_MP_RELEASE) && __GNU_MP_RELEASE >= 60200
-      true;
-#else
-      false;
-#endif
+  /// Whether stored values point into the arena rather than owning heap
+  /// limbs: GMP >= 6.2, both in the headers compiled against and in the
+  /// library loaded at run time (both install as libgmp.so.10, and a 6.1
+  /// library would free the arena's limbs one by one).
+  [[nodiscard]] static bool holds_limbs() noexcept;
 
   /// out = value, with out's numerator here (its denominator stays in out's
   /// own limb). out's own numerator limbs are freed.
-  /// \pre out does not alias value, and is never written again: it may be
-  ///   read, copied from and destroyed, but only while this arena lives.
+  /// \pre out does not alias value. Afterwards out is never the output of
+  ///   a GMP operation (storing into it again is fine): it may be read,
+  ///   copied from and destroyed, but read only while this arena lives.
   void store(Rational& out, const Rational& value);
   /// store() per coordinate.
   void store(Vec3& out, const Vec3& value);
@@ -78,7 +77,8 @@ class LimbArena {
   std::vector<std::unique_ptr<mp_limb_t[]>> blocks_;
   mp_limb_t* free_ = nullptr;  ///< the unused tail of the newest block
   std::size_t free_limbs_ = 0;
-  std::size_t next_block_limbs_ = 512;
+  static constexpr std::size_t first_block_limbs = 512;
+  std::size_t next_block_limbs_ = first_block_limbs;
   std::size_t capacity_limbs_ = 0;
 };
 
