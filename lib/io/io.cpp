@@ -7,6 +7,7 @@
 #include <system_error>
 #include <utility>
 
+#include "face_lists.hpp"
 #include "file_output.hpp"
 #include "io_reader.hpp"
 
@@ -117,7 +118,7 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
 // exact coordinate.
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                               Coordinates coordinates) {
-  const io_detail::FaceLists faces = io_detail::face_lists(p.mesh());
+  const detail::FaceLists faces = detail::face_lists(p.mesh());
   write_view_to_file(path, {p.mesh().positions(), faces.offsets, faces.indices}, format, coordinates);
 }
 

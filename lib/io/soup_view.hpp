@@ -9,10 +9,8 @@
 #include <cstdint>
 #include <ostream>
 #include <span>
-#include <vector>
 
 #include "cvms/io.hpp"
-#include "cvms/mesh.hpp"
 #include "cvms/polygon_soup.hpp"
 
 namespace cvms::io_detail {
@@ -32,13 +30,6 @@ struct SoupView {
     return face_indices.subspan(face_offsets[f], face_offsets[f + 1] - face_offsets[f]);
   }
 };
-
-/// A mesh's faces as index lists, numbered as Mesh::to_soup numbers them.
-struct FaceLists {
-  std::vector<std::uint32_t> offsets{0};
-  std::vector<std::uint32_t> indices;
-};
-FaceLists face_lists(const Mesh& mesh);
 
 /// The writers behind write_off, write_obj and write_stl.
 void write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);

@@ -12,6 +12,7 @@
 #include "approx.hpp"
 #include "cvms/error.hpp"
 #include "element_names.hpp"
+#include "face_lists.hpp"
 #include "no_index.hpp"
 #include "representation_order.hpp"
 
@@ -440,14 +441,11 @@ void Mesh::validate() const {
 }
 
 PolygonSoup Mesh::to_soup() const {
+  detail::FaceLists faces = detail::face_lists(*this);
   PolygonSoup soup;
   soup.points = positions_;
-  soup.face_indices.reserve(num_halfedges());
-  soup.face_offsets.reserve(num_faces() + 1);
-  for (FaceId f : faces()) {
-    for (HalfedgeId h : face_halfedges(f)) soup.face_indices.push_back(from(h).index());
-    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
-  }
+  soup.face_offsets = std::move(faces.offsets);
+  soup.face_indices = std::move(faces.indices);
   return soup;
 }
 

@@ -296,30 +296,21 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
 // What one thread needs to write planes: reused scratch and its own lazy
 // caches of edge directions.
 struct SumFacetBuilder::PlaneScratch {
-  PlaneScratch(const SumFacetBuilder& builder, LimbArena* arena)
+  PlaneScratch(const SumFacetBuilder& builder, LimbArena& arena)
       : directions_a(builder.a_), directions_b(builder.b_), limbs(arena) {}
-  // out = value, in the arena if there is one.
-  template <class Exact>
-  void keep(Exact& out, const Exact& value) {
-    if (limbs != nullptr)
-      limbs->store(out, value);
-    else
-      out = value;
-  }
   EdgeDirections directions_a;
   EdgeDirections directions_b;
   Vec3 first_vertex_sum;
   Vec3 normal;
   Rational offset;
   DotScratch dot;
-  LimbArena* limbs;  // where the planes keep their numerators; null: on the heap
+  LimbArena& limbs;  // where this thread's planes keep their numerators
 };
 
 FacetPlanes SumFacetBuilder::sized_planes() const {
-  // Default-constructed rationals (each allocates its denominator) that
-  // write_planes turns into views of its arena (freeing that denominator
-  // again): moving a rational into place would re-initialise the source,
-  // which allocates.
+  // Default-constructed rationals (each allocates its denominator, which it
+  // keeps) whose numerators write_planes makes views of its arena: moving a
+  // rational into place would re-initialise the source, which allocates.
   const std::size_t n = num_facets();
   FacetPlanes planes;
   planes.normals.resize(n);
@@ -345,7 +336,7 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
       for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
     }
     integer_dot(normal, *first_vertex, scratch.dot, scratch.offset);
-    scratch.keep(planes.offsets[i], scratch.offset);
+    scratch.limbs.store(planes.offsets[i], scratch.offset);
   }
 }
 
@@ -376,7 +367,7 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
     }
   }
   planes.normal_approx[i] = ApproxVec3::of(*normal);
-  scratch.keep(planes.normals[i], *normal);
+  scratch.limbs.store(planes.normals[i], *normal);
   return *normal;
 }
 
@@ -390,7 +381,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   if (threads <= 1) {
     build_mesh();
     FacetPlanes planes = sized_planes();
-    PlaneScratch scratch(*this, &limbs);
+    PlaneScratch scratch(*this, limbs);
     write_planes(planes, 0, num_facets(), &mesh, scratch);
     return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
   }
@@ -405,7 +396,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   FacetPlanes planes;
   std::atomic<std::size_t> next{0};
   std::latch sized(1);
-  auto take_chunks = [&](const Mesh* with_mesh, LimbArena* arena) {
+  auto take_chunks = [&](const Mesh* with_mesh, LimbArena& arena) {
     PlaneScratch scratch(*this, arena);
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
       write_planes(planes, begin, std::min(begin + chunk, n), with_mesh, scratch);
@@ -421,11 +412,11 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
         throw;
       }
       sized.count_down();
-      take_chunks(nullptr, &worker_limbs);
+      take_chunks(nullptr, worker_limbs);
     });
     build_mesh();  // if this throws, the worker joins before the exception leaves
     sized.wait();
-    take_chunks(&mesh, &limbs);
+    take_chunks(&mesh, limbs);
     worker.join();  // rethrows the worker's exception
   }
   limbs.absorb(std::move(worker_limbs));

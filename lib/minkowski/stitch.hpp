@@ -81,8 +81,8 @@ class SumFacetBuilder {
   [[nodiscard]] FacetPlanes sized_planes() const;
   void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
                     PlaneScratch& scratch) const;
-  // Facet i's normal and its approximation into planes; returns the exact
-  // normal (the arena's copy must not be read back before the offset is done).
+  // Facet i's normal and its approximation into planes; returns the normal
+  // it stored from (an operand's or the scratch's), for the offset.
   const Vec3& write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const;
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// A mesh's faces as index lists (see soup_view.hpp).
-#include "soup_view.hpp"
+// A mesh's faces as index lists (see the header).
+#include "face_lists.hpp"
 
-namespace cvms::io_detail {
+namespace cvms::detail {
 
 FaceLists face_lists(const Mesh& mesh) {
   FaceLists lists;
@@ -15,4 +15,4 @@ FaceLists face_lists(const Mesh& mesh) {
   return lists;
 }
 
-}  // namespace cvms::io_detail
+}  // namespace cvms::detail
