@@ -53,6 +53,7 @@ HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vect
     p.z = std::move(n[2]);
     dual.offsets.push_back(std::move(n[3]));
   }
+  dual.origin = {xd[0], xd[1], xd[2], d};
   return dual;
 }
 

@@ -29,6 +29,7 @@ struct HomogeneousDual {
   /// normal is a_i / c_i and its offset b_i / c_i, with no gcd to compute
   /// later (the gcd of the four entries is taken through it anyway).
   std::vector<mpz_class> normal_contents;
+  HomogeneousPoint origin;  ///< x0 = X / D as (X, D)
 };
 
 /// The dual of rows in 3 unknowns (no zero normal) around x0.

@@ -112,9 +112,23 @@ class CofactorCache {
 // The hull with every undecided orient3d as the integer determinant of
 // homogeneous_orient.cpp (sign orient3d = −sign det), each point converted
 // to E limbs once instead of at every call.
+// The pole of the plane of points i, j, k from their cofactors
+// (homogeneous_hull.hpp).
+template <int E>
+HomogeneousPoint pole_from(const Cofactors<E>& c) {
+  HomogeneousPoint y;
+  mpz_class* coordinate[4] = {&y.x, &y.y, &y.z, &y.w};
+  for (int m = 0; m < 4; ++m) {
+    FixedInt<3 * E + 1> v = c[static_cast<std::size_t>(m)];
+    if (m < 3) v.negate();
+    assign_to(coordinate[m]->get_mpz_t(), v);
+  }
+  return y;
+}
+
 template <int E>
 PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const ApproximatePoints& approx,
-                          std::vector<std::uint32_t>& source_index) {
+                          std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles) {
   std::vector<FixedRow<E>> rows;
   rows.reserve(points.size());
   for (const HomogeneousPoint& p : points)
@@ -131,20 +145,44 @@ PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const App
     ++predicate_counters().exact;
     return sign_of(-fixed_det4_cross_sign<E>(cache.cofactors(a, b, c, rows), rows[p], rows[q]));
   };
-  return hull_soup(approx, orient, compare, source_index);
+  if (!face_poles) return hull_soup(approx, orient, compare, source_index);
+  std::vector<std::array<std::uint32_t, 3>> planes;
+  PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes);
+  face_poles->clear();
+  face_poles->reserve(planes.size());
+  for (const auto& [i, j, k] : planes) face_poles->push_back(pole_from<E>(cache.cofactors(i, j, k, rows)));
+  return soup;
+}
+
+mpz_class dot(const std::array<mpz_class, 3>& u, const HomogeneousPoint& p) { return u[0] * p.x + u[1] * p.y + u[2] * p.z; }
+
+std::array<mpz_class, 3> cross(const HomogeneousPoint& p, const HomogeneousPoint& q) {
+  return {p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x};
+}
+
+// The pole of the plane of points i, j, k by Cramer's rule in mpz
+// (homogeneous_hull.hpp), for entries too long for the fixed widths.
+HomogeneousPoint mpz_pole(const std::vector<HomogeneousPoint>& points, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+  const HomogeneousPoint &a = points[i], &b = points[j], &c = points[k];
+  const std::array<mpz_class, 3> bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
+  HomogeneousPoint y;
+  y.w = dot(bc, a);
+  mpz_class* coordinate[3] = {&y.x, &y.y, &y.z};
+  for (std::size_t m = 0; m < 3; ++m) *coordinate[m] = a.w * bc[m] + b.w * ca[m] + c.w * ab[m];
+  return y;
 }
 
 }  // namespace
 
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>& source_index) {
+                             std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles) {
   const Approximation approx = approximate(points);
   const ApproximatePoints approximate_points{approx.coords, approx.max_error, exact};
   switch (width(points)) {
-    case 1: return hull_in_width<1>(points, approximate_points, source_index);
-    case 2: return hull_in_width<2>(points, approximate_points, source_index);
-    case 3: return hull_in_width<3>(points, approximate_points, source_index);
-    case 4: return hull_in_width<4>(points, approximate_points, source_index);
+    case 1: return hull_in_width<1>(points, approximate_points, source_index, face_poles);
+    case 2: return hull_in_width<2>(points, approximate_points, source_index, face_poles);
+    case 3: return hull_in_width<3>(points, approximate_points, source_index, face_poles);
+    case 4: return hull_in_width<4>(points, approximate_points, source_index, face_poles);
     default: break;
   }
   const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
@@ -154,7 +192,13 @@ PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const 
                                          std::uint32_t q) {
     return homogeneous_compare_orient3d(points[a], points[b], points[c], points[p], points[q]);
   };
-  return hull_soup(approximate_points, orient, compare, source_index);
+  if (!face_poles) return hull_soup(approximate_points, orient, compare, source_index);
+  std::vector<std::array<std::uint32_t, 3>> planes;
+  PolygonSoup soup = hull_soup(approximate_points, orient, compare, source_index, &planes);
+  face_poles->clear();
+  face_poles->reserve(planes.size());
+  for (const auto& [i, j, k] : planes) face_poles->push_back(mpz_pole(points, i, j, k));
+  return soup;
 }
 
 }  // namespace cvms::detail

@@ -9,8 +9,10 @@
 // tight; any three corners of the strictly convex facet are affinely
 // independent, and the facet's plane misses the origin exactly when the set
 // is bounded there, so their normals a_i, a_j, a_k are linearly independent
-// and x is their Cramer solution in integers:
-//   x = (b_i (a_j × a_k) + b_j (a_k × a_i) + b_k (a_i × a_j)) / det[a_i; a_j; a_k].
+// and x solves their three equations. With y the Cramer solution of
+// a·y == s at those rows (the pole of the facet's plane, homogeneous_hull.hpp),
+//   y = (s_i (a_j × a_k) + s_j (a_k × a_i) + s_k (a_i × a_j)) / det[a_i; a_j; a_k],
+// and s = D b − a·X for x0 = X / D, x = (X + y) / D.
 // With the corners counterclockwise from outside, orient3d(q_i, q_j, q_k, 0)
 // = −sign det[(a_i, s_i); (a_j, s_j); (a_k, s_k); (0, 0, 0, 1)] = −sign
 // det[a_i; a_j; a_k] (homogeneous_orient.cpp), so the origin is strictly

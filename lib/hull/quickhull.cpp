@@ -67,17 +67,26 @@ namespace {
 
 constexpr std::uint32_t none = detail::no_index;
 
+using FacePlane = std::array<std::uint32_t, 3>;
+
 constexpr std::uint32_t next3(std::uint32_t i) { return i == 2 ? 0 : i + 1; }
 constexpr std::uint32_t prev3(std::uint32_t i) { return i == 0 ? 2 : i - 1; }
 
 struct Triangle {
   std::uint32_t v[3];   // point indices, counterclockwise seen from outside
+  // Three points spanning the triangle's plane, counterclockwise seen from
+  // outside: its own corners, or those of the coplanar triangle it was built
+  // against (see expand). Equal triples mean one plane, proven when the
+  // triangle was made; the exact fallbacks ask about this triple, so that
+  // every triangle of a plane shares the caller's cached work for it.
+  std::uint32_t plane[3];
   std::uint32_t nb[3];  // nb[i]: the triangle across edge v[i] -> v[i+1]
   std::uint32_t begin;  // conflict list: pool_[begin, end)
   std::uint32_t end;
   std::uint32_t farthest;  // the farthest conflict is pool_[begin + farthest]
   std::uint32_t stamp;     // iteration in which `visible` was decided
   bool visible;
+  bool eye_in_plane;  // decided with `visible`: the eye lies in this plane
   bool alive;
   bool has_normal;  // normals_[t] is the exact normal of this triangle
 };
@@ -137,12 +146,12 @@ class Quickhull {
     lazy_.assign(n_, none);
   }
 
-  PolygonSoup run(std::vector<std::uint32_t>* source_index) {
+  PolygonSoup run(std::vector<std::uint32_t>* source_index, std::vector<FacePlane>* face_planes = nullptr) {
     std::uint32_t simplex[4];
     initial_simplex(simplex);
     build_simplex(simplex);
     expand();
-    PolygonSoup soup = extract(source_index);
+    PolygonSoup soup = extract(source_index, face_planes);
     predicate_counters().filtered += plane_decisions_;
     return soup;
   }
@@ -217,8 +226,19 @@ class Quickhull {
       ++plane_decisions_;
       return s > 0 ? Sign::positive : Sign::negative;
     }
+    return plane_orient(t, p);
+  }
+
+  // orient3d of the plane points of t and p (the sign of orient3d of t's
+  // corners and p: the same oriented plane).
+  [[nodiscard]] Sign plane_orient(std::uint32_t t, std::uint32_t p) {
     const Triangle& tr = tris_[t];
-    return orient(tr.v[0], tr.v[1], tr.v[2], p);
+    return orient(tr.plane[0], tr.plane[1], tr.plane[2], p);
+  }
+
+  [[nodiscard]] bool same_plane(std::uint32_t t, std::uint32_t u) const {
+    const Triangle &a = tris_[t], &b = tris_[u];
+    return a.plane[0] == b.plane[0] && a.plane[1] == b.plane[1] && a.plane[2] == b.plane[2];
   }
 
   // ---- initial simplex ------------------------------------------------------
@@ -346,7 +366,7 @@ class Quickhull {
       planes_.emplace_back();
       normal_slot_.push_back(none);
     }
-    tris_[t] = Triangle{{a, b, c}, {none, none, none}, 0, 0, 0, 0, false, true, false};
+    tris_[t] = Triangle{{a, b, c}, {a, b, c}, {none, none, none}, 0, 0, 0, 0, false, false, true, false};
     planes_[t] = PlaneFilter::of(coords_[a], coords_[b], coords_[c], scale_);
     return t;
   }
@@ -388,7 +408,7 @@ class Quickhull {
     // The caller's predicate, when given, needs no exact point or normal.
     if (exact_compare_) {
       const Triangle& tr = tris_[t];
-      return exact_compare_(tr.v[0], tr.v[1], tr.v[2], p, q) == Sign::positive;
+      return exact_compare_(tr.plane[0], tr.plane[1], tr.plane[2], p, q) == Sign::positive;
     }
     return compare_dot(ref(p), ref(q), normal_ref(t)) == Sign::positive;
   }
@@ -422,9 +442,8 @@ class Quickhull {
           }
           if (plane.above(s)) {
             ++decided;
-          } else {
-            const Triangle& tr = tris_[t];
-            if (orient(tr.v[0], tr.v[1], tr.v[2], p) != Sign::positive) continue;
+          } else if (plane_orient(t, p) != Sign::positive) {
+            continue;
           }
           moves_.push_back({j, i});
           ++count_[j];
@@ -532,7 +551,9 @@ class Quickhull {
           std::uint32_t u = tris_[t].nb[i];
           if (tris_[u].stamp != stamp) {
             tris_[u].stamp = stamp;
-            tris_[u].visible = side(u, eye) == Sign::positive;
+            const Sign s = side(u, eye);
+            tris_[u].visible = s == Sign::positive;
+            tris_[u].eye_in_plane = s == Sign::zero;
             if (tris_[u].visible) stack_.push_back(u);
           }
           if (!tris_[u].visible) horizon_.push_back({tris_[t].v[i], tris_[t].v[next3(i)], u});
@@ -546,10 +567,14 @@ class Quickhull {
         if (tris_[t].begin != tris_[t].end) sources_.push_back({tris_[t].begin, tris_[t].end});
 
       // The cone from the horizon to the eye. start_of_[a] is the new
-      // triangle whose horizon edge starts at a.
+      // triangle whose horizon edge starts at a. A new triangle against a
+      // hidden neighbour whose plane holds the eye lies in that plane, with
+      // the same outward side (the neighbour's third corner is below both).
       cone_.clear();
       for (const HorizonEdge& h : horizon_) {
         std::uint32_t t = new_triangle(h.a, h.b, eye);
+        if (tris_[h.neighbour].eye_in_plane)
+          std::copy(std::begin(tris_[h.neighbour].plane), std::end(tris_[h.neighbour].plane), tris_[t].plane);
         tris_[t].nb[0] = h.neighbour;
         tris_[h.neighbour].nb[edge_index(h.neighbour, h.b, h.a)] = t;
         start_of_at(h.a) = t;
@@ -579,7 +604,7 @@ class Quickhull {
   // Merges coplanar neighbouring triangles into one polygon per plane, drops
   // polygon corners collinear with their neighbours, and numbers the
   // remaining (extreme) points.
-  PolygonSoup extract(std::vector<std::uint32_t>* source_index) {
+  PolygonSoup extract(std::vector<std::uint32_t>* source_index, std::vector<FacePlane>* face_planes) {
     const auto num_tris = static_cast<std::uint32_t>(tris_.size());
     std::vector<std::uint32_t> group(num_tris, none);
     std::vector<std::uint32_t> out_index(n_, none);
@@ -609,7 +634,7 @@ class Quickhull {
           std::uint32_t u = tris_[t].nb[i];
           if (group[u] == g) continue;
           std::uint32_t o = opposite(t, i);
-          if (group[u] == none && side(seed, o) == Sign::zero) {
+          if (group[u] == none && (same_plane(seed, u) || side(seed, o) == Sign::zero)) {
             group[u] = g;
             stack_.push_back(u);
           } else {
@@ -650,6 +675,10 @@ class Quickhull {
         corners.push_back(out_index[q]);
       }
       soup.add_face(corners);
+      if (face_planes) {
+        const Triangle& tr = tris_[seed];
+        face_planes->push_back({tr.plane[0], tr.plane[1], tr.plane[2]});
+      }
     }
     // Copied once, in order of first use (growing a vector of rationals
     // would copy them on every reallocation).
@@ -726,9 +755,10 @@ PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t
 }
 
 PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, ExactCompareOrient compare,
-                      std::vector<std::uint32_t>& source_index) {
+                      std::vector<std::uint32_t>& source_index, std::vector<FacePlane>* face_planes) {
   Quickhull qh(points, std::move(orient), std::move(compare));
-  return qh.run(&source_index);
+  if (face_planes) face_planes->clear();
+  return qh.run(&source_index, face_planes);
 }
 
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {

@@ -61,6 +61,15 @@ struct FixedInt {
   }
 };
 
+/// out = x. \pre |x| < 2^(64 L − 1) (the invariant above).
+template <int L>
+void assign_to(mpz_ptr out, FixedInt<L> x) noexcept {
+  const bool negative = x.negative();
+  if (negative) x.negate();
+  mpz_import(out, L, -1, sizeof(std::uint64_t), 0, 0, x.limb.data());
+  if (negative) mpz_neg(out, out);
+}
+
 /// a + b modulo 2^(64 L) (exact when the true sum fits the signed range).
 template <int L>
 void add_to(FixedInt<L>& a, const FixedInt<L>& b) noexcept {
