@@ -22,6 +22,7 @@
 // the same direction as always) and in the plane.
 #include "cvms/halfspaces.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -181,6 +182,12 @@ DualAnswer interval(const std::vector<detail::LpRow>& rows) {
   return {{Vec3{*low, 0, 0}, Vec3{*high, 0, 0}}, std::nullopt};
 }
 
+// Whether every row holds strictly at the origin (then the set has
+// interior there: no LP is needed to find a strict interior point).
+bool origin_strictly_inside(const std::vector<detail::LpRow>& rows) {
+  return std::all_of(rows.begin(), rows.end(), [](const detail::LpRow& row) { return sgn(row.b) > 0; });
+}
+
 std::string text(const Vec3& v) {
   return "(" + to_string(v.x) + ", " + to_string(v.y) + ", " + to_string(v.z) + ")";
 }
@@ -195,6 +202,14 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
     const std::size_t dimension = chart.axes.size();
     if (dimension == 0) return {ConvexSet::point(chart.origin), std::nullopt};
     if (rows.empty()) return {ConvexSet(), direction_to_space(chart, chart_vector(Vec3{1, 0, 0}, dimension))};
+    // Any strict interior point gives the same bounded set, in the
+    // documented order (halfspaces.hpp), so when the origin is one the LP
+    // is skipped; an unbounded set still names its direction
+    // from the LP's point below, as always.
+    if (dimension == 3 && origin_strictly_inside(rows)) {
+      if (const std::optional<detail::DualVertices> v = detail::bounded_vertices(rows, {Rational(0), Rational(0), Rational(0)}))
+        return {ConvexSet(detail::intersection_polyhedron(*v)), std::nullopt};
+    }
     const detail::MaxSlack lp = detail::max_slack(rows, static_cast<int>(dimension));
     if (sgn(lp.slack) < 0) return {};
     if (sgn(lp.slack) == 0) {
