@@ -28,6 +28,7 @@
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
+#include "homogeneous_dual.hpp"
 #include "intersection_polyhedron.hpp"
 #include "max_slack_lp.hpp"
 #include "short_interior_point.hpp"
@@ -182,10 +183,12 @@ DualAnswer interval(const std::vector<detail::LpRow>& rows) {
   return {{Vec3{*low, 0, 0}, Vec3{*high, 0, 0}}, std::nullopt};
 }
 
-// Whether every row holds strictly at the origin (then the set has
-// interior there: no LP is needed to find a strict interior point).
-bool origin_strictly_inside(const std::vector<detail::LpRow>& rows) {
-  return std::all_of(rows.begin(), rows.end(), [](const detail::LpRow& row) { return sgn(row.b) > 0; });
+// Whether every row has a nonzero normal and holds strictly at the origin
+// (then the set has interior there: no LP is needed to find a strict
+// interior point).
+bool origin_strictly_inside(std::span<const HalfspaceRow> rows) {
+  return std::all_of(rows.begin(), rows.end(),
+                     [](const HalfspaceRow& row) { return sgn(row.offset) > 0 && !is_zero(row.normal); });
 }
 
 std::string text(const Vec3& v) {
@@ -195,6 +198,15 @@ std::string text(const Vec3& v) {
 }  // namespace
 
 HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities) {
+  // Any strict interior point gives the same bounded set, in the documented
+  // order (halfspaces.hpp), so when the origin is one the LP is skipped and
+  // the rows are dualised as given; an unbounded set still names its
+  // direction from the LP's point below, as always.
+  if (origin_strictly_inside(inequalities)) {
+    const std::vector<Rational> origin{Rational(0), Rational(0), Rational(0)};
+    if (std::optional<detail::DualVertices> v = detail::bounded_vertices(detail::homogeneous_dual(inequalities, origin)))
+      return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};
+  }
   Chart chart = whole_space();
   std::vector<detail::LpRow> rows;
   for (;;) {
@@ -202,14 +214,6 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
     const std::size_t dimension = chart.axes.size();
     if (dimension == 0) return {ConvexSet::point(chart.origin), std::nullopt};
     if (rows.empty()) return {ConvexSet(), direction_to_space(chart, chart_vector(Vec3{1, 0, 0}, dimension))};
-    // Any strict interior point gives the same bounded set, in the
-    // documented order (halfspaces.hpp), so when the origin is one the LP
-    // is skipped; an unbounded set still names its direction
-    // from the LP's point below, as always.
-    if (dimension == 3 && origin_strictly_inside(rows)) {
-      if (const std::optional<detail::DualVertices> v = detail::bounded_vertices(rows, {Rational(0), Rational(0), Rational(0)}))
-        return {ConvexSet(detail::intersection_polyhedron(*v)), std::nullopt};
-    }
     const detail::MaxSlack lp = detail::max_slack(rows, static_cast<int>(dimension));
     if (sgn(lp.slack) < 0) return {};
     if (sgn(lp.slack) == 0) {
@@ -218,9 +222,9 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
     }
     // A chart of dimension 3 is all of space (restrict_chart drops an axis).
     if (dimension == 3) {
-      if (const std::optional<detail::DualVertices> v =
+      if (std::optional<detail::DualVertices> v =
               detail::bounded_vertices(rows, detail::short_interior_point(rows, lp.point)))
-        return {ConvexSet(detail::intersection_polyhedron(*v)), std::nullopt};
+        return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};
     }
     const DualAnswer dual = dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension);
     if (dual.unbounded) return {ConvexSet(), direction_to_space(chart, chart_vector(*dual.unbounded, dimension))};

@@ -22,26 +22,36 @@ std::array<mpz_class, 4> over_common_denominator(const std::array<const Rational
   return n;
 }
 
-}  // namespace
+// content = gcd of the normal n_0, n_1, n_2 (the first pair often decides:
+// a gcd of 1 ends it).
+void normal_content(const std::array<mpz_class, 4>& n, mpz_class& content) {
+  mpz_gcd(content.get_mpz_t(), n[0].get_mpz_t(), n[1].get_mpz_t());
+  if (content != 1) mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), n[2].get_mpz_t());
+}
 
-HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vector<Rational>& x0) {
+// The dual of rows whose entries row(i) gives as (a_x, a_y, a_z, b).
+template <class Entries>
+HomogeneousDual dual_of(std::size_t count, const Entries& row, const std::vector<Rational>& x0) {
   mpz_class d;
   const Rational zero;
   const std::array<mpz_class, 4> xd = over_common_denominator({&x0[0], &x0[1], &x0[2], &zero}, d);
   HomogeneousDual dual;
-  dual.points.reserve(rows.size());
-  dual.offsets.reserve(rows.size());
-  dual.normal_contents.reserve(rows.size());
+  dual.points.reserve(count);
+  dual.offsets.reserve(count);
+  dual.normal_contents.reserve(count);
   mpz_class scale, g;
-  for (const LpRow& row : rows) {
-    std::array<mpz_class, 4> n = over_common_denominator({&row.a[0], &row.a[1], &row.a[2], &row.b}, scale);
+  for (std::size_t i = 0; i < count; ++i) {
+    std::array<mpz_class, 4> n = over_common_denominator(row(i), scale);
     mpz_class& content = dual.normal_contents.emplace_back();
-    mpz_gcd(content.get_mpz_t(), n[0].get_mpz_t(), n[1].get_mpz_t());
-    mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), n[2].get_mpz_t());
-    mpz_gcd(g.get_mpz_t(), content.get_mpz_t(), n[3].get_mpz_t());
-    if (g != 1) {
-      for (mpz_class& v : n) mpz_divexact(v.get_mpz_t(), v.get_mpz_t(), g.get_mpz_t());
-      mpz_divexact(content.get_mpz_t(), content.get_mpz_t(), g.get_mpz_t());
+    normal_content(n, content);
+    // The row's gcd divides its normal's: with a primitive normal (the
+    // usual case) the row is primitive and nothing is divided.
+    if (content != 1) {
+      mpz_gcd(g.get_mpz_t(), content.get_mpz_t(), n[3].get_mpz_t());
+      if (g != 1) {
+        for (mpz_class& v : n) mpz_divexact(v.get_mpz_t(), v.get_mpz_t(), g.get_mpz_t());
+        mpz_divexact(content.get_mpz_t(), content.get_mpz_t(), g.get_mpz_t());
+      }
     }
     HomogeneousPoint& p = dual.points.emplace_back();
     p.w = n[3] * d;
@@ -55,6 +65,28 @@ HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vect
   }
   dual.origin = {xd[0], xd[1], xd[2], d};
   return dual;
+}
+
+}  // namespace
+
+HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vector<Rational>& x0) {
+  return dual_of(
+      rows.size(),
+      [&](std::size_t i) -> std::array<const Rational*, 4> {
+        const LpRow& r = rows[i];
+        return {&r.a[0], &r.a[1], &r.a[2], &r.b};
+      },
+      x0);
+}
+
+HomogeneousDual homogeneous_dual(std::span<const HalfspaceRow> rows, const std::vector<Rational>& x0) {
+  return dual_of(
+      rows.size(),
+      [&](std::size_t i) -> std::array<const Rational*, 4> {
+        const HalfspaceRow& r = rows[i];
+        return {&r.normal.x, &r.normal.y, &r.normal.z, &r.offset};
+      },
+      x0);
 }
 
 }  // namespace cvms::detail

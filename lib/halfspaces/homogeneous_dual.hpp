@@ -12,10 +12,12 @@
 // per-row denominator is ever reduced.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <gmpxx.h>
 
+#include "cvms/halfspaces.hpp"
 #include "homogeneous_orient.hpp"
 #include "max_slack_lp.hpp"
 
@@ -35,5 +37,9 @@ struct HomogeneousDual {
 /// The dual of rows in 3 unknowns (no zero normal) around x0.
 /// \pre a_i·x0 < b_i for every row.
 HomogeneousDual homogeneous_dual(const std::vector<LpRow>& rows, const std::vector<Rational>& x0);
+
+/// The same for rows in space, as given (no chart, no copy).
+/// \pre as above.
+HomogeneousDual homogeneous_dual(std::span<const HalfspaceRow> rows, const std::vector<Rational>& x0);
 
 }  // namespace cvms::detail

@@ -10,6 +10,8 @@
 // the vertex is x = (X + y) / D = (X w + y_xyz) / (D w) for y = y_xyz / w.
 #include "integer_dual_hull.hpp"
 
+#include <utility>
+
 #include "cvms/error.hpp"
 #include "homogeneous_hull.hpp"
 
@@ -29,8 +31,12 @@ Vec3 vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint y) {
 }  // namespace
 
 std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, const std::vector<Rational>& x0) {
+  return bounded_vertices(homogeneous_dual(rows, x0));
+}
+
+std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
   DualVertices out;
-  out.dual = homogeneous_dual(rows, x0);
+  out.dual = std::move(homogeneous);
   const HomogeneousDual& dual = out.dual;
   PolygonSoup soup;
   std::vector<std::uint32_t> row_of;

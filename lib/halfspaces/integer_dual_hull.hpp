@@ -45,4 +45,7 @@ struct DualVertices {
 /// \pre a_i·x0 < b_i for every row.
 std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, const std::vector<Rational>& x0);
 
+/// The same from the rows' dual (homogeneous_dual.hpp), taken over.
+std::optional<DualVertices> bounded_vertices(HomogeneousDual dual);
+
 }  // namespace cvms::detail

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <limits>
 #include <span>
+#include <utility>
 #include <tuple>
 
 #include "cvms/error.hpp"
@@ -51,16 +52,24 @@ std::vector<Corner> sorted_corners(const DualVertices& v) {
   return corners;
 }
 
+// The integer z as a rational, its limbs taken over (z is left 0).
+Rational taken(mpz_class& z) {
+  Rational q;
+  mpz_swap(mpq_numref(q.get_mpq_t()), z.get_mpz_t());
+  return q;
+}
+
 // The plane a·x == b of row r as an outward primitive integer normal and
-// its offset: the primitive row divided by the gcd of its normal.
-void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
-  const HomogeneousPoint& a = v.dual.points[r];
+// its offset: the primitive row divided by the gcd of its normal. Each row
+// stands for one facet, so its integers are taken over.
+void add_plane(DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
+  HomogeneousPoint& a = v.dual.points[r];
   const mpz_class& content = v.dual.normal_contents[r];
   Vec3 n;
   Rational offset;
   if (content == 1) {
-    n = Vec3{Rational(a.x), Rational(a.y), Rational(a.z)};
-    offset = v.dual.offsets[r];
+    n = Vec3{taken(a.x), taken(a.y), taken(a.z)};
+    offset = taken(v.dual.offsets[r]);
   } else {
     n = Vec3{Rational(a.x / content), Rational(a.y / content), Rational(a.z / content)};
     offset = Rational(v.dual.offsets[r], content);
@@ -73,7 +82,7 @@ void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
 
 }  // namespace
 
-ConvexPolyhedron intersection_polyhedron(const DualVertices& v) {
+ConvexPolyhedron intersection_polyhedron(DualVertices v) {
   const std::vector<Corner> corners = sorted_corners(v);
   constexpr std::uint32_t unnumbered = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> number(v.vertices.size(), unnumbered);
@@ -99,7 +108,7 @@ ConvexPolyhedron intersection_polyhedron(const DualVertices& v) {
     do {
       if (number[c->vertex] == unnumbered) {
         number[c->vertex] = static_cast<std::uint32_t>(soup.points.size());
-        soup.points.push_back(v.vertices[c->vertex]);
+        soup.points.push_back(std::move(v.vertices[c->vertex]));  // numbered once, so used once
         approx.push_back(ApproxVec3::of(soup.points.back()));
       }
       face.push_back(number[c->vertex]);

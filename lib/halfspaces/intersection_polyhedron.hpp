@@ -24,6 +24,6 @@ namespace cvms::detail {
 /// The polyhedron, the same (vertices, oriented facets, exact planes) as
 /// convex_hull(v.vertices), in the order stated above.
 /// \pre v is the answer of bounded_vertices.
-ConvexPolyhedron intersection_polyhedron(const DualVertices& v);
+ConvexPolyhedron intersection_polyhedron(DualVertices v);
 
 }  // namespace cvms::detail
