@@ -18,14 +18,22 @@
 namespace cvms::detail {
 namespace {
 
-// The vertex (X + y) / D of a facet with pole y, w > 0.
-Vec3 vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint y) {
-  if (sgn(origin.x) == 0 && sgn(origin.y) == 0 && sgn(origin.z) == 0 && origin.w == 1) return standing_for(y);
-  mpz_addmul(y.x.get_mpz_t(), origin.x.get_mpz_t(), y.w.get_mpz_t());
-  mpz_addmul(y.y.get_mpz_t(), origin.y.get_mpz_t(), y.w.get_mpz_t());
-  mpz_addmul(y.z.get_mpz_t(), origin.z.get_mpz_t(), y.w.get_mpz_t());
-  y.w *= origin.w;
-  return standing_for(y);
+// The vertex (X + y) / D of a facet with pole y, w > 0, written into x
+// (made in place from y's integers: a moved rational allocates again).
+void vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint& y, Vec3& x) {
+  const bool at_origin = sgn(origin.x) == 0 && sgn(origin.y) == 0 && sgn(origin.z) == 0 && origin.w == 1;
+  if (!at_origin) {
+    mpz_addmul(y.x.get_mpz_t(), origin.x.get_mpz_t(), y.w.get_mpz_t());
+    mpz_addmul(y.y.get_mpz_t(), origin.y.get_mpz_t(), y.w.get_mpz_t());
+    mpz_addmul(y.z.get_mpz_t(), origin.z.get_mpz_t(), y.w.get_mpz_t());
+    y.w *= origin.w;
+  }
+  mpz_class* numerator[3] = {&y.x, &y.y, &y.z};
+  for (int m = 0; m < 3; ++m) {
+    mpz_swap(mpq_numref(x[m].get_mpq_t()), numerator[m]->get_mpz_t());
+    mpz_set(mpq_denref(x[m].get_mpq_t()), y.w.get_mpz_t());
+    x[m].canonicalize();
+  }
 }
 
 }  // namespace
@@ -56,7 +64,7 @@ std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
     // A facet whose plane does not have the origin strictly below it: the
     // set is unbounded (integer_dual_hull.hpp).
     if (sgn(poles[f].w) <= 0) return std::nullopt;
-    out.vertices.push_back(vertex_from_pole(dual.origin, std::move(poles[f])));
+    vertex_from_pole(dual.origin, poles[f], out.vertices.emplace_back());
     for (std::uint32_t c : soup.face(f)) out.tight.push_back(row_of[c]);
     out.tight_offsets.push_back(static_cast<std::uint32_t>(out.tight.size()));
   }

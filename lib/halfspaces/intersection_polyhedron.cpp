@@ -52,32 +52,28 @@ std::vector<Corner> sorted_corners(const DualVertices& v) {
   return corners;
 }
 
-// The integer z as a rational, its limbs taken over (z is left 0).
-Rational taken(mpz_class& z) {
-  Rational q;
-  mpz_swap(mpq_numref(q.get_mpq_t()), z.get_mpz_t());
-  return q;
-}
-
 // The plane a·x == b of row r as an outward primitive integer normal and
-// its offset: the primitive row divided by the gcd of its normal. Each row
-// stands for one facet, so its integers are taken over.
+// its offset: the primitive row divided by the gcd c of its normal, made in
+// place from the row's integers (each row stands for one facet, so they are
+// taken over; a rational moved or built from a temporary would allocate a
+// denominator once more).
 void add_plane(DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
   HomogeneousPoint& a = v.dual.points[r];
   const mpz_class& content = v.dual.normal_contents[r];
-  Vec3 n;
-  Rational offset;
-  if (content == 1) {
-    n = Vec3{taken(a.x), taken(a.y), taken(a.z)};
-    offset = taken(v.dual.offsets[r]);
-  } else {
-    n = Vec3{Rational(a.x / content), Rational(a.y / content), Rational(a.z / content)};
-    offset = Rational(v.dual.offsets[r], content);
+  Vec3& n = planes.normals.emplace_back();
+  Rational& offset = planes.offsets.emplace_back();
+  mpz_class* row[3] = {&a.x, &a.y, &a.z};
+  for (int m = 0; m < 3; ++m) {
+    mpz_ptr numerator = mpq_numref(n[m].get_mpq_t());
+    mpz_swap(numerator, row[m]->get_mpz_t());
+    if (content != 1) mpz_divexact(numerator, numerator, content.get_mpz_t());
+  }
+  mpz_swap(mpq_numref(offset.get_mpq_t()), v.dual.offsets[r].get_mpz_t());
+  if (content != 1) {
+    mpz_set(mpq_denref(offset.get_mpq_t()), content.get_mpz_t());
     offset.canonicalize();
   }
   planes.normal_approx.push_back(ApproxVec3::of(n));
-  planes.normals.push_back(std::move(n));
-  planes.offsets.push_back(std::move(offset));
 }
 
 }  // namespace
