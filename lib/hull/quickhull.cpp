@@ -100,6 +100,13 @@ struct Conflict {
   std::uint32_t point;
 };
 
+// An exact orient3d answer, remembered (Quickhull::exact_answer).
+struct ExactAnswer {
+  std::uint32_t a = 0, b = 0, c = 0, d = 0;
+  Sign sign = Sign::zero;
+  bool known = false;
+};
+
 struct HorizonEdge {
   std::uint32_t a, b;       // the edge as it runs in the visible triangle
   std::uint32_t neighbour;  // the hidden triangle across it
@@ -208,6 +215,31 @@ class Quickhull {
   // integers when the coordinates are dyadic (doubles, sums of doubles), else
   // by the predicates module.
   [[nodiscard]] Sign exact_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    ExactAnswer& memo = exact_answer(a, b, c, d);
+    if (memo.known && memo.a == a && memo.b == b && memo.c == c && memo.d == d) return memo.sign;
+    memo = {a, b, c, d, evaluate_orient(a, b, c, d), true};
+    return memo.sign;
+  }
+
+  // The slot of the exact answers for (a, b, c, d), direct-mapped, made on
+  // the first exact question. With the triangles of one plane sharing its
+  // triple, the same question comes again: on the coplanar dual points of
+  // Sphere5's facet planes a third of the exact questions were repeats
+  // (the plane of several hidden neighbours against the eye, a point
+  // against several cone triangles of one plane), nearly all exact zeros.
+  ExactAnswer& exact_answer(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    if (answers_.empty()) {
+      // At least half as many slots as points, between 2^8 and 2^12 (20
+      // bytes each).
+      std::size_t slots = 256;
+      while (slots < 4096 && 2 * slots < n_) slots *= 2;
+      answers_.resize(slots);
+    }
+    const std::uint32_t h = a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ c * 0xC2B2AE3Du ^ d * 0x27D4EB2Fu;
+    return answers_[h & (answers_.size() - 1)];
+  }
+
+  [[nodiscard]] Sign evaluate_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     if (exact_orient_) return exact_orient_(a, b, c, d);
     const Vec3Ref ra = ref(a), rb = ref(b), rc = ref(c), rd = ref(d);
     if (const std::optional<Sign> s = dyadic_orient3d(ra.exact, rb.exact, rc.exact, rd.exact)) {
@@ -703,6 +735,7 @@ class Quickhull {
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
   ExactOrient exact_orient_;  // the caller's exact orient3d, if any
+  std::vector<ExactAnswer> answers_;  // exact_answer's slots
   ExactCompareOrient exact_compare_;  // the caller's exact farther-point test, if any
   bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
