@@ -156,6 +156,7 @@ class Quickhull {
   PolygonSoup run(std::vector<std::uint32_t>* source_index, std::vector<FacePlane>* face_planes = nullptr) {
     std::uint32_t simplex[4];
     initial_simplex(simplex);
+    reserve_for_points();
     build_simplex(simplex);
     expand();
     PolygonSoup soup = extract(source_index, face_planes);
@@ -531,6 +532,19 @@ class Quickhull {
     return none;  // unreachable on a consistent triangulation
   }
 
+  // Room for the triangles of a hull of all n points (2n − 4, plus a cone)
+  // and for the conflict lists' growth, up to 2^20 triangles: growing these
+  // vectors copied them into fresh memory again and again (on Sphere6's
+  // dual points, a third of the page faults of a from_halfspaces call).
+  // Only what is used is ever touched.
+  void reserve_for_points() {
+    const std::size_t triangles = std::min<std::size_t>(2 * std::size_t{n_} + 8, std::size_t{1} << 20);
+    tris_.reserve(triangles);
+    planes_.reserve(triangles);
+    normal_slot_.reserve(triangles);
+    pool_.reserve(std::min<std::size_t>(2 * std::size_t{n_}, std::size_t{1} << 21));
+  }
+
   void build_simplex(const std::uint32_t s[4]) {
     // Orient so that the fourth point is below the face (s0, s1, s2).
     std::uint32_t a = s[0], b = s[1], c = s[2], d = s[3];
@@ -545,7 +559,6 @@ class Quickhull {
         for (std::uint32_t j = 0; j < 4; ++j)
           if (j != i && edge_index(t[j], to, from) != none) tris_[t[i]].nb[e] = t[j];
       }
-    pool_.reserve(n_);
     for (std::uint32_t p = 0; p < n_; ++p)
       if (p != a && p != b && p != c && p != d) pool_.push_back({coords_[p], p});
     live_ = static_cast<std::uint32_t>(pool_.size());
