@@ -6,11 +6,13 @@
 // their seed on failure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -188,6 +190,60 @@ TEST(FromHalfspaces, RandomSystemsMatchTheBruteForceEnumeration) {
     EXPECT_EQ(test::check_set_invariants(s), "") << "seed " << seed;
     const test::SetShape expected = test::brute_force_intersection(rows);
     EXPECT_EQ(describe_set(s), expected) << "seed " << seed << test::difference(expected, describe_set(s));
+  }
+}
+
+std::vector<Vec3> sorted_points(std::vector<Vec3> v) {
+  std::sort(v.begin(), v.end(), [](const Vec3& a, const Vec3& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  });
+  return v;
+}
+
+// The rows with the set moved by t: a·(x − t) <= b, i.e. a·x <= b + a·t.
+std::vector<HalfspaceRow> moved_rows(std::vector<HalfspaceRow> rows, const Vec3& t) {
+  for (HalfspaceRow& r : rows) r.offset += dot(r.normal, t);
+  return rows;
+}
+
+// The interior point is a choice of speed only: a system with the origin
+// strictly inside (dualised around the origin, with no LP) and the same
+// system moved so that the origin is outside (dualised around a point from
+// the LP) give the same polyhedron, moved, vertex for vertex and facet for
+// facet (the order halfspaces.hpp documents); and its vertices are those of
+// the hull the rows came from. Rows are repeated, scaled and loosened.
+TEST(FromHalfspaces, TheInteriorPointChangesNothingButSpeed) {
+  for (std::uint64_t seed = 0; seed < 60; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    const ConvexPolyhedron hull = test::random_pair(seed).a;
+    Vec3 center{0, 0, 0};
+    for (const Vec3& v : hull.mesh().positions()) center += v;
+    center = Rational(1, static_cast<long>(hull.mesh().positions().size())) * center;
+    std::vector<HalfspaceRow> rows;
+    for (const HalfspaceRow& r : moved_rows(to_halfspaces(ConvexSet(hull)).inequalities, -center)) {
+      rows.push_back(r);
+      if (rng() % 3 == 0) rows.push_back({Rational(3, 2) * r.normal, Rational(3, 2) * r.offset});
+      if (rng() % 4 == 0) rows.push_back({r.normal, r.offset + 1});
+    }
+    std::shuffle(rows.begin(), rows.end(), rng);
+    // Farther than any point of the set, |x − center| <= 2 R, from the origin.
+    Rational r = 1;
+    for (const Vec3& v : hull.mesh().positions()) r += abs(v.x) + abs(v.y) + abs(v.z);
+    const Vec3 far = r * Vec3{Rational(1000, 7), -777, Rational(555, 3)};
+    const std::vector<HalfspaceRow> far_rows = moved_rows(rows, far);
+    ASSERT_TRUE(std::all_of(rows.begin(), rows.end(), [](const HalfspaceRow& r) { return sgn(r.offset) > 0; }));
+    ASSERT_FALSE(std::all_of(far_rows.begin(), far_rows.end(), [](const HalfspaceRow& r) { return sgn(r.offset) > 0; }));
+
+    const ConvexPolyhedron near_set = from_halfspaces(rows).polyhedron();
+    const ConvexPolyhedron far_set = from_halfspaces(far_rows).polyhedron();
+    std::vector<Vec3> expected;
+    for (const Vec3& v : hull.mesh().positions()) expected.push_back(v - center);
+    EXPECT_EQ(sorted_points(near_set.mesh().positions()), sorted_points(expected));
+    const PolygonSoup near_soup = near_set.translated(far).to_soup(), far_soup = far_set.to_soup();
+    EXPECT_EQ(near_soup.points, far_soup.points);
+    EXPECT_EQ(near_soup.face_offsets, far_soup.face_offsets);
+    EXPECT_EQ(near_soup.face_indices, far_soup.face_indices);
   }
 }
 
