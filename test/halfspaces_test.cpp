@@ -206,12 +206,32 @@ std::vector<HalfspaceRow> moved_rows(std::vector<HalfspaceRow> rows, const Vec3&
   return rows;
 }
 
+// Rows that touch the set at a vertex or an edge without being a facet: a
+// positive combination of two or more rows tight at vertex v, s·x <= s·v.
+// Their dual points lie on facets or edges of the dual hull, which puts
+// coplanar points on the dual facets' planes.
+void add_weakly_redundant_rows(std::vector<HalfspaceRow>& rows, const std::vector<Vec3>& vertices, Rng& rng) {
+  const std::vector<HalfspaceRow> facets = rows;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3& v = vertices[rng() % vertices.size()];
+    std::vector<const HalfspaceRow*> tight;
+    for (const HalfspaceRow& r : facets)
+      if (dot(r.normal, v) == r.offset) tight.push_back(&r);
+    std::shuffle(tight.begin(), tight.end(), rng);
+    const std::size_t used = 2 + rng() % (tight.size() - 1);
+    Vec3 s{0, 0, 0};
+    for (std::size_t i = 0; i < used; ++i) s += Rational(static_cast<long>(1 + rng() % 3)) * tight[i]->normal;
+    rows.push_back({s, dot(s, v)});
+  }
+}
+
 // The interior point is a choice of speed only: a system with the origin
 // strictly inside (dualised around the origin, with no LP) and the same
 // system moved so that the origin is outside (dualised around a point from
 // the LP) give the same polyhedron, moved, vertex for vertex and facet for
-// facet (the order halfspaces.hpp documents); and its vertices are those of
-// the hull the rows came from. Rows are repeated, scaled and loosened.
+// facet (the order halfspaces.hpp documents), with the same planes; and its
+// vertices are those of the hull the rows came from. Rows are repeated,
+// scaled, loosened and weakly redundant.
 TEST(FromHalfspaces, TheInteriorPointChangesNothingButSpeed) {
   for (std::uint64_t seed = 0; seed < 60; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -226,24 +246,30 @@ TEST(FromHalfspaces, TheInteriorPointChangesNothingButSpeed) {
       if (rng() % 3 == 0) rows.push_back({Rational(3, 2) * r.normal, Rational(3, 2) * r.offset});
       if (rng() % 4 == 0) rows.push_back({r.normal, r.offset + 1});
     }
+    std::vector<Vec3> expected;
+    for (const Vec3& v : hull.mesh().positions()) expected.push_back(v - center);
+    add_weakly_redundant_rows(rows, expected, rng);
     std::shuffle(rows.begin(), rows.end(), rng);
     // Farther than any point of the set, |x − center| <= 2 R, from the origin.
     Rational r = 1;
     for (const Vec3& v : hull.mesh().positions()) r += abs(v.x) + abs(v.y) + abs(v.z);
-    const Vec3 far = r * Vec3{Rational(1000, 7), -777, Rational(555, 3)};
+    const Vec3 far = r * Vec3{Rational(1000, 7), -777, Rational(556, 3)};
     const std::vector<HalfspaceRow> far_rows = moved_rows(rows, far);
     ASSERT_TRUE(std::all_of(rows.begin(), rows.end(), [](const HalfspaceRow& r) { return sgn(r.offset) > 0; }));
     ASSERT_FALSE(std::all_of(far_rows.begin(), far_rows.end(), [](const HalfspaceRow& r) { return sgn(r.offset) > 0; }));
 
     const ConvexPolyhedron near_set = from_halfspaces(rows).polyhedron();
     const ConvexPolyhedron far_set = from_halfspaces(far_rows).polyhedron();
-    std::vector<Vec3> expected;
-    for (const Vec3& v : hull.mesh().positions()) expected.push_back(v - center);
     EXPECT_EQ(sorted_points(near_set.mesh().positions()), sorted_points(expected));
     const PolygonSoup near_soup = near_set.translated(far).to_soup(), far_soup = far_set.to_soup();
     EXPECT_EQ(near_soup.points, far_soup.points);
     EXPECT_EQ(near_soup.face_offsets, far_soup.face_offsets);
     EXPECT_EQ(near_soup.face_indices, far_soup.face_indices);
+    ASSERT_EQ(near_set.num_facets(), far_set.num_facets());
+    for (const FaceId f : near_set.mesh().faces()) {
+      EXPECT_EQ(near_set.normal(f), far_set.normal(f));
+      EXPECT_EQ(near_set.plane_offset(f) + dot(near_set.normal(f), far), far_set.plane_offset(f));
+    }
   }
 }
 

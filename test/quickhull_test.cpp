@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
 #include "filtered_predicates.hpp"
 #include "cvms/convex_hull.hpp"
 #include "support/oracle.hpp"
@@ -281,6 +284,68 @@ std::vector<Vec3> sphere_points(long r2) {
       for (long z = -r; z <= r; ++z)
         if (x * x + y * y + z * z == r2) pts.push_back(v(x, y, z));
   return pts;
+}
+
+// The plane triples hull_soup reports (hull_soup.hpp), checked against the
+// exact predicates: for every face, three input points on which every
+// corner of the face lies, with every input point on or below them and some
+// strictly below (so the triple spans the face's plane, counterclockwise
+// from outside); and no two faces with the same triple, compared as whole
+// triples. Approximations with no error bound decide everything exactly, as
+// the dual hull's fallbacks do; exact doubles let the filters decide.
+void expect_plane_triples(std::span<const Vec3> pts) {
+  std::vector<std::array<double, 3>> doubles;
+  for (const Vec3& p : pts) doubles.push_back({p.x.get_d(), p.y.get_d(), p.z.get_d()});
+  for (const double error : {0.0, std::numeric_limits<double>::infinity()}) {
+    SCOPED_TRACE("error bound " + std::to_string(error));
+    const ApproximatePoints approx{doubles, error, [&](std::uint32_t i) { return pts[i]; }};
+    const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+      return orient3d(pts[a], pts[b], pts[c], pts[d]);
+    };
+    std::vector<std::uint32_t> source;
+    std::vector<std::array<std::uint32_t, 3>> planes;
+    const PolygonSoup soup = hull_soup(approx, orient, {}, source, &planes);
+    ASSERT_EQ(planes.size(), soup.num_faces());
+    std::set<std::array<std::uint32_t, 3>> distinct;
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      const auto [i, j, k] = planes[f];
+      for (const std::uint32_t c : soup.face(f))
+        ASSERT_EQ(orient3d(pts[i], pts[j], pts[k], pts[source[c]]), Sign::zero) << "face " << f << " corner " << c;
+      bool below = false;
+      for (const Vec3& p : pts) {
+        const Sign s = orient3d(pts[i], pts[j], pts[k], p);
+        ASSERT_NE(s, Sign::positive) << "face " << f << ": a point above its triple";
+        below = below || s == Sign::negative;
+      }
+      ASSERT_TRUE(below) << "face " << f << ": a collinear triple";
+      std::array<std::uint32_t, 3> sorted = planes[f];
+      std::sort(sorted.begin(), sorted.end());
+      ASSERT_TRUE(distinct.insert(sorted).second) << "face " << f << " repeats another face's triple";
+    }
+  }
+}
+
+TEST(HullSoup, PlaneTriplesSpanTheFaces) {
+  for (int n : {2, 3, 5}) {
+    std::vector<Vec3> grid;
+    for (int x = 0; x < n; ++x)
+      for (int y = 0; y < n; ++y)
+        for (int z = 0; z < n; ++z) grid.push_back(v(x, y, z));
+    expect_plane_triples(grid);
+  }
+  expect_plane_triples(sphere_points(9));
+  for (std::uint64_t seed = 500; seed < 520; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_plane_triples(random_cloud(seed, 60, Kind::small_integers));
+    std::mt19937_64 rng(seed);
+    std::vector<Vec3> faces;  // many coplanar points on the faces of a cube
+    for (int i = 0; i < 80; ++i) {
+      Vec3 p = v(static_cast<long>(rng() % 7) - 3, static_cast<long>(rng() % 7) - 3, static_cast<long>(rng() % 7) - 3);
+      p[static_cast<int>(rng() % 3)] = rng() % 2 ? 3 : -3;
+      faces.push_back(p);
+    }
+    expect_plane_triples(faces);
+  }
 }
 
 TEST(HullSoup, CosphericalPoints) {

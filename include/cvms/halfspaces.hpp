@@ -55,7 +55,9 @@ struct HalfspaceIntersection {
 /// Algorithm: an exact simplex in rationals finds the largest t (<= 1) with
 /// a·x + t <= b for every row; t < 0 means empty; t == 0 means implied
 /// equalities (read off the LP's dual), removed by restricting to them and
-/// solving again in fewer dimensions; t > 0 gives a strict interior point x0,
+/// solving again in fewer dimensions; t > 0 gives a strict interior point x0
+/// (when every row has b > 0 and a nonzero normal, the origin is one and the
+/// LP is skipped for a bounded set),
 /// around which the rows are dualised to the points a/(b − a·x0), whose exact
 /// hull (convex_hull_set) has the vertices of the result as its facets and
 /// the irredundant rows as its vertices; the origin not strictly inside that

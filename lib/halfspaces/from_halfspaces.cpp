@@ -14,10 +14,17 @@
 //
 // In three dimensions a bounded set takes the integer path
 // (integer_dual_hull.hpp, intersection_polyhedron.hpp) around a strict
-// interior point with short coordinates (short_interior_point.hpp): the
-// hull decided on homogeneous integer dual points, its facets' vertices by
-// Cramer's rule from three tight rows, and the polyhedron read off the dual
-// hull (its polar) with its planes taken from the rows. The rational dual
+// interior point: the hull decided on homogeneous integer dual points, its
+// facets' vertices from the poles of the dual facets' planes (Cramer's rule
+// on three tight rows), and the polyhedron read off the dual hull (its
+// polar) with its planes taken from the rows. When every row has b > 0 and
+// a nonzero normal, the origin is that point and no LP runs: no row can then
+// be an implied equality, and the dual hull alone decides boundedness (the
+// LP path still runs when it finds the set unbounded, to name the same
+// direction as always). Otherwise the point is the LP's, moved to short
+// coordinates (short_interior_point.hpp). The result does not depend on the
+// point: the polyhedron is the same set, its facets in row order and its
+// vertices in order of first use. The rational dual
 // hull below runs only for an unbounded set (around the LP's point, to name
 // the same direction as always) and in the plane.
 #include "cvms/halfspaces.hpp"
@@ -202,10 +209,12 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
   // order (halfspaces.hpp), so when the origin is one the LP is skipped and
   // the rows are dualised as given; an unbounded set still names its
   // direction from the LP's point below, as always.
-  if (origin_strictly_inside(inequalities)) {
+  bool known_unbounded = false;
+  if (!inequalities.empty() && origin_strictly_inside(inequalities)) {
     const std::vector<Rational> origin{Rational(0), Rational(0), Rational(0)};
     if (std::optional<detail::DualVertices> v = detail::bounded_vertices(detail::homogeneous_dual(inequalities, origin)))
       return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};
+    known_unbounded = true;  // whatever the interior point: no second integer hull below
   }
   Chart chart = whole_space();
   std::vector<detail::LpRow> rows;
@@ -221,7 +230,7 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
       continue;
     }
     // A chart of dimension 3 is all of space (restrict_chart drops an axis).
-    if (dimension == 3) {
+    if (dimension == 3 && !known_unbounded) {
       if (std::optional<detail::DualVertices> v =
               detail::bounded_vertices(rows, detail::short_interior_point(rows, lp.point)))
         return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};

@@ -25,6 +25,7 @@
 #include "filtered_predicates.hpp"
 #include "fixed_det4.hpp"
 #include "hull_soup.hpp"
+#include "index_hash.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -97,11 +98,11 @@ class CofactorCache {
   explicit CofactorCache(std::size_t points) {
     while (bits_ < 12 && (std::size_t{2} << bits_) < points) ++bits_;
     keys_.resize(std::size_t{1} << bits_);
-    values_ = std::make_unique_for_overwrite<Slot[]>(std::size_t{1} << bits_);
+    values_.reset(new Slot[std::size_t{1} << bits_]);  // default-initialised: left unwritten
   }
 
   const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c, const std::vector<FixedRow<E>>& rows) {
-    const std::size_t index = (a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ c * 0xC2B2AE3Du) >> (32 - bits_);
+    const std::size_t index = index_slot(bits_, a, b, c);
     Key& key = keys_[index];
     void* slot = values_[index].bytes;
     // Cofactors are trivially copyable and destructible: a slot's value
@@ -128,9 +129,6 @@ class CofactorCache {
   std::unique_ptr<Slot[]> values_;
 };
 
-// The hull with every undecided orient3d as the integer determinant of
-// homogeneous_orient.cpp (sign orient3d = −sign det), each point converted
-// to E limbs once instead of at every call.
 // The pole of the plane of points i, j, k from their cofactors
 // (homogeneous_hull.hpp).
 template <int E>
@@ -145,6 +143,25 @@ HomogeneousPoint pole_from(const Cofactors<E>& c) {
   return y;
 }
 
+// hull_soup with the exact stages given, and, when face_poles is asked for,
+// the pole of each face's plane triple by pole_of(i, j, k).
+template <class PoleOf>
+PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& orient, const ExactCompareOrient& compare,
+                            std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles,
+                            const PoleOf& pole_of) {
+  if (!face_poles) return hull_soup(approx, orient, compare, source_index);
+  std::vector<std::array<std::uint32_t, 3>> planes;
+  PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes);
+  face_poles->clear();
+  face_poles->reserve(planes.size());
+  for (const auto& [i, j, k] : planes) face_poles->push_back(pole_of(i, j, k));
+  return soup;
+}
+
+// The hull with every undecided orient3d as the integer determinant of
+// homogeneous_orient.cpp (sign orient3d = −sign det), each point converted
+// to E limbs once instead of at every call, and each triangle's last-row
+// cofactors cached, from which the poles come too.
 template <int E>
 PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const ApproximatePoints& approx,
                           std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles) {
@@ -164,13 +181,9 @@ PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const App
     ++predicate_counters().exact;
     return sign_of(-fixed_det4_cross_sign<E>(cache.cofactors(a, b, c, rows), rows[p], rows[q]));
   };
-  if (!face_poles) return hull_soup(approx, orient, compare, source_index);
-  std::vector<std::array<std::uint32_t, 3>> planes;
-  PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes);
-  face_poles->clear();
-  face_poles->reserve(planes.size());
-  for (const auto& [i, j, k] : planes) face_poles->push_back(pole_from<E>(cache.cofactors(i, j, k, rows)));
-  return soup;
+  return hull_with_poles(approx, orient, compare, source_index, face_poles, [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+    return pole_from<E>(cache.cofactors(i, j, k, rows));
+  });
 }
 
 mpz_class dot(const std::array<mpz_class, 3>& u, const HomogeneousPoint& p) { return u[0] * p.x + u[1] * p.y + u[2] * p.z; }
@@ -211,13 +224,8 @@ PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const 
                                          std::uint32_t q) {
     return homogeneous_compare_orient3d(points[a], points[b], points[c], points[p], points[q]);
   };
-  if (!face_poles) return hull_soup(approximate_points, orient, compare, source_index);
-  std::vector<std::array<std::uint32_t, 3>> planes;
-  PolygonSoup soup = hull_soup(approximate_points, orient, compare, source_index, &planes);
-  face_poles->clear();
-  face_poles->reserve(planes.size());
-  for (const auto& [i, j, k] : planes) face_poles->push_back(mpz_pole(points, i, j, k));
-  return soup;
+  return hull_with_poles(approximate_points, orient, compare, source_index, face_poles,
+                         [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) { return mpz_pole(points, i, j, k); });
 }
 
 }  // namespace cvms::detail

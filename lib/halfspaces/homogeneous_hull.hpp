@@ -24,14 +24,15 @@ Vec3 standing_for(const HomogeneousPoint& p);
 /// exact(i) makes point i's rational value, for the few other exact
 /// decisions.
 /// If face_poles is given, it receives for every face the pole y of its
-/// plane, from three of its corners i, j, k (counterclockwise seen from
-/// outside) by Cramer's rule in integers: y = (s_i (a_j × a_k) + s_j (a_k ×
+/// plane, from three points i, j, k spanning it (the face's plane triple
+/// from hull_soup, counterclockwise seen from outside; not necessarily
+/// corners of the face) by Cramer's rule in integers: y = (s_i (a_j × a_k) + s_j (a_k ×
 /// a_i) + s_k (a_i × a_j)) / det[a_i; a_j; a_k] for the points (a, s), so
-/// that a·y == s at every corner, i.e. the plane is {q : q·y == 1} of the
+/// that a·y == s at each of them, i.e. the plane is {q : q·y == 1} of the
 /// points q = a/s. Its weight w = det[a_i; a_j; a_k] may be zero or
 /// negative: w > 0 exactly when the origin is strictly below the plane
 /// (integer_dual_hull.hpp). These are the last-row cofactors C of the
-/// corners' 4×4 determinant, y = (−C_0, −C_1, −C_2, C_3), which the exact
+/// triple's 4×4 determinant, y = (−C_0, −C_1, −C_2, C_3), which the exact
 /// predicates have mostly computed for that plane already.
 /// \pre exact(i) == standing_for(points[i]).
 /// \throw Error(degenerate) as hull_soup.

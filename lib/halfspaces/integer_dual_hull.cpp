@@ -5,9 +5,11 @@
 // none of its decisions, so it yields the same facets in the same order as
 // the rational dual hull of from_halfspaces.cpp. Each facet's vertex comes
 // from the pole y of its plane, which the hull gives with the facet (from
-// the integer cofactors its exact predicates cached for that plane): a·y
-// == s = D b − a·X at the facet's corners, so a·(X + y) == D b there and
-// the vertex is x = (X + y) / D = (X w + y_xyz) / (D w) for y = y_xyz / w.
+// the integer cofactors its exact predicates cached for that plane when the
+// entries fit the fixed widths, by Cramer's rule in mpz otherwise): a·y
+// == s = D b − a·X at every dual point on the plane, so a·(X + y) == D b
+// there and the vertex is x = (X + y) / D = (X w + y_xyz) / (D w) for
+// y = y_xyz / w.
 #include "integer_dual_hull.hpp"
 
 #include <utility>

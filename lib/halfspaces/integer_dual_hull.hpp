@@ -6,14 +6,16 @@
 // and of the hull only the combinatorics are used (the dual facets' corners
 // as rows, from which intersection_polyhedron.hpp reads the polyhedron). Each facet of the dual
 // hull is a vertex x of the set, where the rows of the facet's corners are
-// tight; any three corners of the strictly convex facet are affinely
-// independent, and the facet's plane misses the origin exactly when the set
-// is bounded there, so their normals a_i, a_j, a_k are linearly independent
-// and x solves their three equations. With y the Cramer solution of
+// tight. The hull reports for each facet three dual points i, j, k spanning
+// its plane (hull_soup's plane triple, not necessarily corners of the
+// facet): they are affinely independent, and the plane misses the origin
+// exactly when the set is bounded there, so a_i, a_j, a_k are linearly
+// independent and x solves their three equations, as every row whose dual
+// point is on the plane is tight at x. With y the Cramer solution of
 // a·y == s at those rows (the pole of the facet's plane, homogeneous_hull.hpp),
 //   y = (s_i (a_j × a_k) + s_j (a_k × a_i) + s_k (a_i × a_j)) / det[a_i; a_j; a_k],
 // and s = D b − a·X for x0 = X / D, x = (X + y) / D.
-// With the corners counterclockwise from outside, orient3d(q_i, q_j, q_k, 0)
+// With the triple counterclockwise from outside, orient3d(q_i, q_j, q_k, 0)
 // = −sign det[(a_i, s_i); (a_j, s_j); (a_k, s_k); (0, 0, 0, 1)] = −sign
 // det[a_i; a_j; a_k] (homogeneous_orient.cpp), so the origin is strictly
 // inside the facet's half-space (c > 0 in from_halfspaces.cpp) iff that

@@ -68,9 +68,10 @@ using ExactCompareOrient =
 /// \pre orient agrees with orient3d of points.exact, compare (if given) with
 ///   compare_dot as above.
 /// If face_planes is given, it receives for every face three input points
-/// spanning its plane, counterclockwise seen from outside, among those the
-/// exact predicates were asked about for that plane (so that a caller that
-/// caches work per triple finds it there).
+/// spanning its plane, counterclockwise seen from outside: the plane triple
+/// that the exact predicates were asked about for the triangles of that
+/// plane (so that a caller that caches work per triple finds it there). They
+/// lie on the face's plane but need not be corners of the face.
 PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, ExactCompareOrient compare,
                       std::vector<std::uint32_t>& source_index,
                       std::vector<std::array<std::uint32_t, 3>>* face_planes = nullptr);

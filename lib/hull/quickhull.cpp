@@ -39,6 +39,23 @@
 //   normal at a horizon edge is a non-negative combination of the normals of
 //   the two old triangles there), so testing q against the new triangles only
 //   is enough.
+//
+// Plane triples. Every triangle carries three points spanning its plane,
+// counterclockwise from outside (Triangle::plane), and the exact fallbacks
+// ask about the triple instead of the corners, so that every triangle of
+// one plane asks the same question and a caller's cache per triple serves
+// them all. Invariant: a live triangle's triple spans the triangle's plane
+// and has the same orientation as its corners. A new triangle takes its own
+// corners, except a cone triangle T = (a, b, eye) built against a hidden
+// neighbour h = (b, a, c) whose plane P holds the eye: it takes h's triple.
+// Proof that this keeps the invariant: a, b and the eye lie in P and T is
+// not flat, so T's plane is P. The visible triangle t across the horizon
+// edge has a and b on its plane, the eye strictly above it and c strictly
+// below it (c is below or on it by convexity, and on it would put h, and
+// with it the eye, in t's plane). P meets t's plane in the line ab, so in P
+// the eye and c lie on opposite sides of that line; T and h run the edge
+// in opposite directions, so they have the same orientation in P, that is,
+// the same outward normal, which h's triple has too.
 #include "hull_soup.hpp"
 
 #include <algorithm>
@@ -58,6 +75,7 @@
 #include "error_bounds.hpp"
 #include "filter_polynomials.hpp"
 #include "filtered_predicates.hpp"
+#include "index_hash.hpp"
 #include "no_index.hpp"
 #include "plane_filter.hpp"
 #include "polyhedron_builder.hpp"
@@ -68,6 +86,7 @@ namespace {
 constexpr std::uint32_t none = detail::no_index;
 
 using FacePlane = std::array<std::uint32_t, 3>;
+using detail::index_slot;
 
 constexpr std::uint32_t next3(std::uint32_t i) { return i == 2 ? 0 : i + 1; }
 constexpr std::uint32_t prev3(std::uint32_t i) { return i == 0 ? 2 : i - 1; }
@@ -103,7 +122,7 @@ struct Conflict {
 // An exact orient3d answer, remembered (Quickhull::exact_answer).
 struct ExactAnswer {
   std::uint32_t a = 0, b = 0, c = 0, d = 0;
-  Sign sign = Sign::zero;
+  std::int8_t sign = 0;  // a Sign; one byte keeps the slot at 20 bytes
   bool known = false;
 };
 
@@ -217,9 +236,10 @@ class Quickhull {
   // by the predicates module.
   [[nodiscard]] Sign exact_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     ExactAnswer& memo = exact_answer(a, b, c, d);
-    if (memo.known && memo.a == a && memo.b == b && memo.c == c && memo.d == d) return memo.sign;
-    memo = {a, b, c, d, evaluate_orient(a, b, c, d), true};
-    return memo.sign;
+    if (memo.known && memo.a == a && memo.b == b && memo.c == c && memo.d == d) return static_cast<Sign>(memo.sign);
+    const Sign sign = evaluate_orient(a, b, c, d);
+    memo = {a, b, c, d, static_cast<std::int8_t>(sign), true};
+    return sign;
   }
 
   // The slot of the exact answers for (a, b, c, d), direct-mapped, made on
@@ -232,12 +252,11 @@ class Quickhull {
     if (answers_.empty()) {
       // At least half as many slots as points, between 2^8 and 2^12 (20
       // bytes each).
-      std::size_t slots = 256;
-      while (slots < 4096 && 2 * slots < n_) slots *= 2;
-      answers_.resize(slots);
+      answer_bits_ = 8;
+      while (answer_bits_ < 12 && (std::size_t{2} << answer_bits_) < n_) ++answer_bits_;
+      answers_.resize(std::size_t{1} << answer_bits_);
     }
-    const std::uint32_t h = a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ c * 0xC2B2AE3Du ^ d * 0x27D4EB2Fu;
-    return answers_[h & (answers_.size() - 1)];
+    return answers_[index_slot(answer_bits_, a, b, c, d)];
   }
 
   [[nodiscard]] Sign evaluate_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
@@ -536,13 +555,17 @@ class Quickhull {
   // and for the conflict lists' growth, up to 2^20 triangles: growing these
   // vectors copied them into fresh memory again and again (on Sphere6's
   // dual points, a third of the page faults of a from_halfspaces call).
-  // Only what is used is ever touched.
+  // Only what is used is ever touched: at the caps (n >= 2^19 points) the
+  // reservation is about 120 MB of address space, which large allocations
+  // map without committing; the conflict pool always holds the n initial
+  // conflicts, as before.
   void reserve_for_points() {
-    const std::size_t triangles = std::min<std::size_t>(2 * std::size_t{n_} + 8, std::size_t{1} << 20);
+    const std::size_t n = n_;
+    const std::size_t triangles = std::min<std::size_t>(2 * n + 8, std::size_t{1} << 20);
     tris_.reserve(triangles);
     planes_.reserve(triangles);
     normal_slot_.reserve(triangles);
-    pool_.reserve(std::min<std::size_t>(2 * std::size_t{n_}, std::size_t{1} << 21));
+    pool_.reserve(std::max(n, std::min<std::size_t>(2 * n, std::size_t{1} << 21)));
   }
 
   void build_simplex(const std::uint32_t s[4]) {
@@ -749,6 +772,7 @@ class Quickhull {
   std::deque<ApproxVec3> lazy_approx_;
   ExactOrient exact_orient_;  // the caller's exact orient3d, if any
   std::vector<ExactAnswer> answers_;  // exact_answer's slots
+  int answer_bits_ = 0;               // log2 of their number
   ExactCompareOrient exact_compare_;  // the caller's exact farther-point test, if any
   bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
