@@ -135,11 +135,7 @@ template <int E>
 HomogeneousPoint pole_from(const Cofactors<E>& c) {
   HomogeneousPoint y;
   mpz_class* coordinate[4] = {&y.x, &y.y, &y.z, &y.w};
-  for (int m = 0; m < 4; ++m) {
-    FixedInt<3 * E + 1> v = c[static_cast<std::size_t>(m)];
-    if (m < 3) v.negate();
-    assign_to(coordinate[m]->get_mpz_t(), v);
-  }
+  for (int m = 0; m < 4; ++m) assign_to(coordinate[m]->get_mpz_t(), c[static_cast<std::size_t>(m)], m < 3);
   return y;
 }
 

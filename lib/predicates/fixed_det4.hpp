@@ -5,17 +5,18 @@
 // a geodesic sphere's facet planes) make it decide thousands of exact zeros.
 //
 // Overflow proof, by the width E (in 64-bit limbs) chosen from the entries:
-// every entry has at most 64E − 1 bits, so |m_ij| < 2^(64E − 1).
-//  - A 2×2 minor u_j v_k − u_k v_j: each product is below 2^(128E − 2)
-//    (multiply in fixed_int.hpp), the difference below 2^(128E − 1): it fits
-//    the signed range of 2E limbs.
+// every entry has at most 64E − 1 bits, so |m_ij| < 2^(64E − 1). Sums are
+// SignedSums (fixed_int.hpp): the positive and the negative terms'
+// magnitudes are added apart, so each part must stay below 2^(64 L) for
+// its L limbs; the value, their difference, is below the larger part.
+//  - A 2×2 minor u_j v_k − u_k v_j: each product is below 2^(128E − 2), so
+//    each part and the minor are below 2^(128E − 2): 2E limbs.
 //  - det = s01 c23 − s02 c13 + s03 c12 + s12 c03 − s13 c02 + s23 c01
 //    (Laplace along the first two rows, homogeneous_orient.cpp): each
-//    product of two minors is below 2^(256E − 2), the sum of six below
-//    6 · 2^(256E − 2) < 2^(256E + 1), inside the signed range of 4E + 1
-//    limbs (2^(256E + 63)), where the products are added after sign
-//    extension. Every intermediate of the sum is a partial sum of at most
-//    six such terms, so none wraps either.
+//    product of two minors is below 2^(256E − 4), a part of at most six
+//    below 6 · 2^(256E − 4) < 2^(256E − 1): 4E limbs.
+//  - The last row's cofactors and the determinant from them: below, at
+//    last_row_cofactors and fixed_det4_cross_sign.
 // Entries of more than max_fixed_entry_bits bits are not handled (the
 // caller falls back to GMP's mpz): huge rationals are legal input.
 #pragma once
@@ -33,9 +34,8 @@ namespace cvms::detail {
 /// Entries up to this many bits (E = 4 limbs) take the fixed-width path.
 inline constexpr std::size_t max_fixed_entry_bits = 4 * 64 - 1;
 
-/// The limbs a FixedInt needs to hold x: its GMP limbs, one more when the
-/// top bit of the top limb is set (x then has 64 n bits, and n signed limbs
-/// hold only 64 n − 1).
+/// The width E for x that the bounds here assume (|x| < 2^(64E − 1)): its
+/// GMP limbs, one more when the top bit of the top limb is set.
 inline int signed_limbs(mpz_srcptr x) noexcept {
   const std::size_t n = mpz_size(x);
   return n == 0 ? 1 : static_cast<int>(n + (mpz_getlimbn(x, static_cast<mp_size_t>(n - 1)) >> 63));
@@ -63,8 +63,10 @@ std::array<FixedInt<2 * E>, 6> minors(const FixedRow<E>& u, const FixedRow<E>& v
   std::array<FixedInt<2 * E>, 6> out;
   for (int m = 0; m < 6; ++m) {
     const int j = first_column[m], k = second_column[m];
-    out[m] = multiply(u[j], v[k]);
-    subtract_from(out[m], multiply(u[k], v[j]));
+    SignedSum<2 * E> minor;
+    minor.add(multiply(u[j], v[k]));
+    minor.subtract(multiply(u[k], v[j]));
+    out[m] = minor.value();
   }
   return out;
 }
@@ -76,14 +78,13 @@ template <int E>
 int fixed_det4_sign(const FixedRow<E>& a, const FixedRow<E>& b, const FixedRow<E>& c, const FixedRow<E>& d) noexcept {
   const std::array<FixedInt<2 * E>, 6> top = fixed_det4_internal::minors<E>(a, b),
                                        bottom = fixed_det4_internal::minors<E>(c, d);
-  FixedInt<4 * E + 1> det;
+  SignedSum<4 * E> det;
   for (int k = 0; k < 6; ++k) {
     // s_jk pairs with the complementary minor c_(5 − k); signs + − + + − +.
-    const FixedInt<4 * E + 1> term = multiply(top[k], bottom[5 - k]).template widened<4 * E + 1>();
     if (k == 1 || k == 4)
-      subtract_from(det, term);
+      det.subtract(multiply(top[k], bottom[5 - k]));
     else
-      add_to(det, term);
+      det.add(multiply(top[k], bottom[5 - k]));
   }
   return det.sign();
 }
@@ -91,11 +92,12 @@ int fixed_det4_sign(const FixedRow<E>& a, const FixedRow<E>& b, const FixedRow<E
 /// The cofactors of the last row of [a; b; c; d]: det = sum_k d_k cof_k for
 /// every d, so that many d against the same a, b, c cost four products each.
 /// Bound: cof_k = ±(a_p m_qr − a_q m_pr + a_r m_pq) with m the 2×2 minors of
-/// b, c (below 2^(128E − 1)), so |cof_k| < 3 · 2^(192E − 2) < 2^(192E): it
-/// fits 3E + 1 limbs; then |d_k cof_k| < 3 · 2^(256E − 3) and the sum of
-/// four is below 2^(256E + 1), inside the 4E + 1 limbs of fixed_det4_sign.
+/// b, c (below 2^(128E − 2)): each product is below 2^(192E − 3), a part of
+/// at most three below 2^(192E − 1), so cof_k fits 3E limbs; then each
+/// |d_k cof_k| < 2^(256E − 2) and a part of at most four is below 2^(256E):
+/// the determinant fits 4E limbs.
 template <int E>
-using Cofactors = std::array<FixedInt<3 * E + 1>, 4>;
+using Cofactors = std::array<FixedInt<3 * E>, 4>;
 
 template <int E>
 Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, const FixedRow<E>& c) noexcept {
@@ -105,44 +107,47 @@ Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, cons
   constexpr int column[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
   constexpr int minor[4][3] = {{5, 4, 3}, {5, 2, 1}, {4, 2, 0}, {3, 1, 0}};
   Cofactors<E> cof;
-  // Each product with the minor first, for the reason in fixed_det4 below.
+  // Each product with the minor first (multiply skips its zero limbs).
   for (int k = 0; k < 4; ++k) {
-    FixedInt<3 * E + 1>& d = cof[k];
-    add_to(d, multiply(m[minor[k][0]], a[column[k][0]]).template widened<3 * E + 1>());
-    subtract_from(d, multiply(m[minor[k][1]], a[column[k][1]]).template widened<3 * E + 1>());
-    add_to(d, multiply(m[minor[k][2]], a[column[k][2]]).template widened<3 * E + 1>());
-    if (k % 2 == 0) d.negate();
+    SignedSum<3 * E> d;
+    d.add(multiply(m[minor[k][0]], a[column[k][0]]));
+    d.subtract(multiply(m[minor[k][1]], a[column[k][1]]));
+    d.add(multiply(m[minor[k][2]], a[column[k][2]]));
+    cof[k] = d.value();
+    if (k % 2 == 0) cof[k].negative = !cof[k].negative;
   }
   return cof;
 }
 
 /// det[a; b; c; d] from the cofactors of a, b, c.
 template <int E>
-FixedInt<4 * E + 1> fixed_det4(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
-  FixedInt<4 * E + 1> det;
+FixedInt<4 * E> fixed_det4(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
+  SignedSum<4 * E> det;
   // The long operand first: multiply skips its zero limbs (the top limbs
   // of a cofactor's magnitude are often zero), each costing E products.
-  for (int k = 0; k < 4; ++k) add_to(det, multiply(cof[k], d[k]));
-  return det;
+  for (int k = 0; k < 4; ++k) det.add(multiply(cof[k], d[k]));
+  return det.value();
 }
 
 /// Its sign (−1, 0 or 1).
 template <int E>
 int fixed_det4_sign(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
-  return fixed_det4<E>(cof, d).sign();
+  SignedSum<4 * E> det;
+  for (int k = 0; k < 4; ++k) det.add(multiply(cof[k], d[k]));
+  return det.sign();
 }
 
 /// The sign (−1, 0 or 1) of det[a; b; c; p] · q_3 − det[a; b; c; q] · p_3
 /// (the last entries p_3, q_3 are the homogeneous weights of
 /// homogeneous_orient.hpp), from the cofactors of a, b, c. Bound: each
-/// determinant is below 2^(256E + 1) (above) and each weight below
-/// 2^(64E − 1), so each product is below 2^(320E) and their difference
-/// below 2^(320E + 1), inside the signed range of 5E + 1 limbs
-/// (2^(320E + 63)).
+/// determinant is below 2^(256E) (above) and each weight below
+/// 2^(64E − 1), so each product is below 2^(320E − 1) and each part of
+/// the difference (one product) fits 5E limbs.
 template <int E>
 int fixed_det4_cross_sign(const Cofactors<E>& cof, const FixedRow<E>& p, const FixedRow<E>& q) noexcept {
-  FixedInt<5 * E + 1> d = multiply(fixed_det4<E>(cof, p), q[3]);
-  subtract_from(d, multiply(fixed_det4<E>(cof, q), p[3]));
+  SignedSum<5 * E> d;
+  d.add(multiply(fixed_det4<E>(cof, p), q[3]));
+  d.subtract(multiply(fixed_det4<E>(cof, q), p[3]));
   return d.sign();
 }
 
