@@ -8,13 +8,18 @@
 // Hadamard sign patterns (the largest determinants ±1 patterns reach), and
 // the refusal of entries of 256 bits and more; and the sign of
 // det[a; b; c; p] q_3 − det[a; b; c; q] p_3 (fixed_det4_cross_sign, the dual
-// hull's farther-point test) the same way, with ties.
+// hull's farther-point test) the same way, with ties. Values too, not only
+// signs: at every sign pattern of the widest entries (where the parts of the
+// sign-and-magnitude sums reach their maxima) the cofactors and the
+// determinant from them equal the oracle's; and SignedSum (fixed_int.hpp) at
+// the edge of its range, with negative zeros.
 #include "fixed_det4.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <random>
 #include <string>
 
@@ -225,6 +230,137 @@ TEST(FixedDet4, CrossSignOfExtremeEntries) {
       EXPECT_EQ(cross_sign_in(limbs, abc, p, p), 0);
     }
   }
+}
+
+// The oracle's last-row cofactor k: det = sum_k m[3][k] cof_k.
+mpz_class oracle_cofactor(const Matrix& m, int k) {
+  Matrix with_unit = m;
+  for (int c = 0; c < 4; ++c) with_unit[3][c] = c == k ? 1 : 0;
+  return oracle_det(with_unit);
+}
+
+template <int E>
+mpz_class value_of(const detail::FixedInt<E>& x) {
+  mpz_class v;
+  detail::assign_to(v.get_mpz_t(), x);
+  return v;
+}
+
+template <int E>
+detail::FixedRow<E> fixed_row_of(const std::array<mpz_class, 4>& r) {
+  return detail::fixed_row<E>({r[0].get_mpz_t(), r[1].get_mpz_t(), r[2].get_mpz_t(), r[3].get_mpz_t()});
+}
+
+// Every sign pattern of the widest entries ±(2^(64E − 1) − 1): the parts of
+// the signed sums are convex in each entry, so their maxima are among these
+// (the Hadamard patterns reach the determinant's bound, 16 M^4, with no bit
+// to spare). Values, not only signs: the cofactors and the determinant
+// from them against the oracle.
+template <int E>
+void expect_exact_at_every_sign_pattern() {
+  SCOPED_TRACE("E = " + std::to_string(E));
+  const mpz_class big = (mpz_class(1) << (64 * E - 1)) - 1;
+  for (unsigned pattern = 0; pattern < (1u << 16); ++pattern) {
+    Matrix m;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m[r][c] = (pattern >> (4 * r + c)) & 1 ? mpz_class(-big) : big;
+    const mpz_class det = oracle_det(m);
+    const detail::Cofactors<E> cof =
+        detail::last_row_cofactors<E>(fixed_row_of<E>(m[0]), fixed_row_of<E>(m[1]), fixed_row_of<E>(m[2]));
+    for (int k = 0; k < 4; ++k) ASSERT_EQ(value_of(cof[static_cast<std::size_t>(k)]), oracle_cofactor(m, k)) << pattern;
+    ASSERT_EQ(value_of(detail::fixed_det4<E>(cof, fixed_row_of<E>(m[3]))), det) << pattern;
+    ASSERT_EQ(detail::fixed_det4_sign<E>(cof, fixed_row_of<E>(m[3])), sgn(det)) << pattern;
+    ASSERT_EQ(detail::fixed_det4_sign<E>(fixed_row_of<E>(m[0]), fixed_row_of<E>(m[1]), fixed_row_of<E>(m[2]),
+                                         fixed_row_of<E>(m[3])),
+              sgn(det))
+        << pattern;
+  }
+}
+
+TEST(FixedDet4, ExactValuesAtEverySignPatternOfTheWidestEntries) {
+  expect_exact_at_every_sign_pattern<1>();
+  expect_exact_at_every_sign_pattern<4>();
+}
+
+TEST(FixedDet4, CrossSignWithBothProductsInOnePart) {
+  // The rows below put both products of the cross sign in one part of its
+  // sum (24 M^5 for M = 2^(64E − 1) − 1, above one product's bound); then
+  // random sign patterns of the widest entries, both ways round.
+  const int worst[5][4] = {{-1, -1, -1, -1}, {-1, -1, 1, 1}, {-1, 1, -1, 1}, {-1, 1, 1, -1}, {-1, 1, 1, 1}};
+  for (int bits : {63, 127, 191, 255}) {
+    SCOPED_TRACE("bits " + std::to_string(bits));
+    const mpz_class big = (mpz_class(1) << bits) - 1;
+    Rng rng(static_cast<std::uint64_t>(bits));
+    for (int round = 0; round < 2000; ++round) {
+      Matrix abc;
+      std::array<mpz_class, 4> p, q;
+      std::array<mpz_class, 4>* rows[5] = {&abc[0], &abc[1], &abc[2], &p, &q};
+      for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 4; ++c)
+          (*rows[r])[static_cast<std::size_t>(c)] = round == 0 ? worst[r][c] * big : (rng() % 2 ? -big : big);
+      const int expected = oracle_cross_sign(abc, p, q);
+      const int limbs = limbs_of(abc, p, q);
+      ASSERT_EQ(cross_sign_in(limbs, abc, p, q), expected) << "seed " << bits << " round " << round;
+      ASSERT_EQ(cross_sign_in(limbs, abc, q, p), -expected) << "seed " << bits << " round " << round;
+    }
+  }
+}
+
+// A signed sum at the edge of its range: parts of 2^(64L) − 1 reached with
+// a carry through every limb, P == N (a zero, not negative), P − N = ±(2^(64L)
+// − 2); a negative zero as operand and as value; the widest product.
+template <int L>
+void expect_signed_sum_edges() {
+  SCOPED_TRACE("L = " + std::to_string(L));
+  detail::FixedInt<L> half, below_half, one;
+  half.magnitude[L - 1] = std::uint64_t{1} << 63;  // 2^(64L − 1)
+  for (std::uint64_t& w : below_half.magnitude) w = ~std::uint64_t{0};
+  below_half.magnitude[L - 1] >>= 1;  // 2^(64L − 1) − 1
+  one.magnitude[0] = 1;
+  const mpz_class top = (mpz_class(1) << (64 * L)) - 1;
+
+  detail::SignedSum<L> equal;
+  equal.add(half);
+  equal.add(below_half);
+  EXPECT_EQ(value_of(equal.value()), top);
+  detail::FixedInt<L> minus_half = half;
+  minus_half.negative = true;
+  equal.add(minus_half);
+  equal.subtract(below_half);
+  EXPECT_EQ(equal.sign(), 0);
+  EXPECT_TRUE(equal.value().zero());
+  EXPECT_FALSE(equal.value().negative);
+
+  detail::SignedSum<L> negative;
+  negative.subtract(half);
+  negative.subtract(below_half);
+  negative.add(one);
+  EXPECT_EQ(negative.sign(), -1);
+  EXPECT_EQ(value_of(negative.value()), -(top - 1));
+  mpz_class negated;
+  detail::assign_to(negated.get_mpz_t(), negative.value(), true);
+  EXPECT_EQ(negated, top - 1);
+
+  detail::FixedInt<L> negative_zero;
+  negative_zero.negative = true;
+  EXPECT_EQ(negative_zero.sign(), 0);
+  EXPECT_EQ(value_of(negative_zero), 0);
+  EXPECT_EQ(multiply(negative_zero, half).sign(), 0);
+
+  detail::FixedInt<L> all;
+  for (std::uint64_t& w : all.magnitude) w = ~std::uint64_t{0};
+  all.negative = true;
+  EXPECT_EQ(value_of(multiply(all, all)), top * top);
+  detail::FixedInt<L> positive_all = all;
+  positive_all.negative = false;
+  EXPECT_EQ(value_of(multiply(all, positive_all)), -(top * top));
+}
+
+TEST(FixedInt, SignedSumAtTheEdgeOfItsRange) {
+  expect_signed_sum_edges<1>();
+  expect_signed_sum_edges<2>();
+  expect_signed_sum_edges<3>();
+  expect_signed_sum_edges<5>();
 }
 
 TEST(FixedDet4, LongEntriesAreLeftToMpz) {

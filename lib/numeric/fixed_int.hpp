@@ -127,9 +127,9 @@ class SignedSum {
  private:
   template <std::size_t K>
   static void accumulate(Limbs<L>& sum, const std::array<std::uint64_t, K>& x) noexcept {
-    static_assert(K <= L);
+    static_assert(K <= static_cast<std::size_t>(L));
     std::uint64_t carry = 0;
-    for (std::size_t i = 0; i < L; ++i) {
+    for (std::size_t i = 0; i < static_cast<std::size_t>(L); ++i) {
       const FixedUint128 s = static_cast<FixedUint128>(sum[i]) + (i < K ? x[i] : 0) + carry;
       sum[i] = static_cast<std::uint64_t>(s);
       carry = static_cast<std::uint64_t>(s >> 64);

@@ -5,18 +5,24 @@
 // a geodesic sphere's facet planes) make it decide thousands of exact zeros.
 //
 // Overflow proof, by the width E (in 64-bit limbs) chosen from the entries:
-// every entry has at most 64E − 1 bits, so |m_ij| < 2^(64E − 1). Sums are
-// SignedSums (fixed_int.hpp): the positive and the negative terms'
-// magnitudes are added apart, so each part must stay below 2^(64 L) for
-// its L limbs; the value, their difference, is below the larger part.
-//  - A 2×2 minor u_j v_k − u_k v_j: each product is below 2^(128E − 2), so
-//    each part and the minor are below 2^(128E − 2): 2E limbs.
+// every entry has at most 64E − 1 bits, so |m_ij| <= M < 2^(64E − 1), and a
+// row r has Euclidean length |r| <= 2M (four entries). Sums are SignedSums
+// (fixed_int.hpp): the positive and the negative terms' magnitudes are added
+// apart, so each part must stay below 2^(64 L) for its L limbs, and the
+// value, their difference, is at most the larger part. A part is at most the
+// sum of the terms' magnitudes, which the bounds below take (every term may
+// fall in one part).
+//  - A 2×2 minor u_j v_k − u_k v_j: each product is at most M^2, a part at
+//    most 2 M^2 < 2^(128E − 1): 2E limbs.
 //  - det = s01 c23 − s02 c13 + s03 c12 + s12 c03 − s13 c02 + s23 c01
-//    (Laplace along the first two rows, homogeneous_orient.cpp): each
-//    product of two minors is below 2^(256E − 4), a part of at most six
-//    below 6 · 2^(256E − 4) < 2^(256E − 1): 4E limbs.
-//  - The last row's cofactors and the determinant from them: below, at
-//    last_row_cofactors and fixed_det4_cross_sign.
+//    (Laplace along the first two rows, homogeneous_orient.cpp), s the
+//    minors of rows a, b and c those of c, d: a part is at most
+//    sum_k |s_k| |c_(5−k)| <= ‖s‖ ‖c‖ (Cauchy–Schwarz), and ‖s‖ <= |a| |b|
+//    (Lagrange's identity: ‖s‖^2 = |a|^2 |b|^2 − (a·b)^2), so at most
+//    |a| |b| |c| |d| <= 16 M^4 < 2^(256E): 4E limbs, with no bit to spare
+//    (the ±M Hadamard patterns reach 16 M^4 in one part).
+//  - The last row's cofactors and the determinant from them: at
+//    last_row_cofactors and fixed_det4_cross_sign below.
 // Entries of more than max_fixed_entry_bits bits are not handled (the
 // caller falls back to GMP's mpz): huge rationals are legal input.
 #pragma once
@@ -35,7 +41,10 @@ namespace cvms::detail {
 inline constexpr std::size_t max_fixed_entry_bits = 4 * 64 - 1;
 
 /// The width E for x that the bounds here assume (|x| < 2^(64E − 1)): its
-/// GMP limbs, one more when the top bit of the top limb is set.
+/// GMP limbs, one more when the top bit of the top limb is set. The missing
+/// bit is the determinants' (the Laplace bound above has none to spare),
+/// not the sign's: a FixedInt<E> could hold 64E bits, the proofs could not.
+/// \pre every entry has at most 64E − 1 bits.
 inline int signed_limbs(mpz_srcptr x) noexcept {
   const std::size_t n = mpz_size(x);
   return n == 0 ? 1 : static_cast<int>(n + (mpz_getlimbn(x, static_cast<mp_size_t>(n - 1)) >> 63));
@@ -91,11 +100,15 @@ int fixed_det4_sign(const FixedRow<E>& a, const FixedRow<E>& b, const FixedRow<E
 
 /// The cofactors of the last row of [a; b; c; d]: det = sum_k d_k cof_k for
 /// every d, so that many d against the same a, b, c cost four products each.
-/// Bound: cof_k = ±(a_p m_qr − a_q m_pr + a_r m_pq) with m the 2×2 minors of
-/// b, c (below 2^(128E − 2)): each product is below 2^(192E − 3), a part of
-/// at most three below 2^(192E − 1), so cof_k fits 3E limbs; then each
-/// |d_k cof_k| < 2^(256E − 2) and a part of at most four is below 2^(256E):
-/// the determinant fits 4E limbs.
+/// Bound: cof_k = ±(a_p m_qr − a_q m_pr + a_r m_pq), the 3×3 determinant
+/// of a, b, c without column k, with m the 2×2 minors of b, c in the other
+/// three columns: as above, a part is at most |a'| |b'| |c'| for the rows
+/// restricted to those columns, each of length at most √3 M, so below
+/// 3√3 M^3 < 2^(192E): 3E limbs. The determinant from them, sum_k d_k cof_k:
+/// a part is at most |d| ‖cof‖ (Cauchy–Schwarz), and ‖cof‖ <= |a| |b| |c|
+/// (the cofactors are the 3-volume of a, b, c by its coordinate
+/// projections; Hadamard's inequality), so at most 16 M^4 < 2^(256E): 4E
+/// limbs.
 template <int E>
 using Cofactors = std::array<FixedInt<3 * E>, 4>;
 
@@ -140,9 +153,9 @@ int fixed_det4_sign(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
 /// The sign (−1, 0 or 1) of det[a; b; c; p] · q_3 − det[a; b; c; q] · p_3
 /// (the last entries p_3, q_3 are the homogeneous weights of
 /// homogeneous_orient.hpp), from the cofactors of a, b, c. Bound: each
-/// determinant is below 2^(256E) (above) and each weight below
-/// 2^(64E − 1), so each product is below 2^(320E − 1) and each part of
-/// the difference (one product) fits 5E limbs.
+/// determinant is at most 16 M^4 (above) and each weight at most M, so each
+/// product is at most 16 M^5 < 2^(320E − 1); both may fall in one part,
+/// which is then below 2^(320E): 5E limbs.
 template <int E>
 int fixed_det4_cross_sign(const Cofactors<E>& cof, const FixedRow<E>& p, const FixedRow<E>& q) noexcept {
   SignedSum<5 * E> d;
