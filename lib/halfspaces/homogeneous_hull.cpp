@@ -85,22 +85,23 @@ int width(const std::vector<HomogeneousPoint>& points) {
 template <int E>
 class CofactorCache {
  public:
-  // 2^bits entries, at least half as many as points, up to 2^14. The
+  // 2^bits entries, at least half as many as points, up to 2^12. The
   // triangles of one plane share an entry (quickhull.cpp), so fewer planes
   // than points are alive at a time; on Sphere5's dual (5,120 points) 2^12
-  // entries cost 3 % more instructions than 2^13 and 2^10 12 %, and on
-  // Sphere6's (20,480 points) 2^14 entries instead of 2^12 saved 10 % of
-  // the instructions. But every entry is 336 bytes (E = 3) of memory first
-  // touched in the call, and on this machine a page fault costs about
-  // 13 µs: with 2^11 entries instead of 2^10, Sphere4's dual (1,280 points)
-  // took 20 % longer. Only the keys are cleared; the cofactors are written
-  // when first used, so a cache larger than the hull needs is neither
-  // zeroed nor faulted in (zeroing it was a tenth of Sphere4's
-  // intersection, mostly page faults). (Keys from calloc, left to the
-  // kernel to zero, took Sphere6 in a benchmark loop from about 37,000 to
-  // 52,000 page faults, and longer.)
+  // entries cost 3 % more instructions than 2^13 and 2^10 12 %, but every
+  // entry is 336 bytes (E = 3) of memory first touched in the call, and on
+  // this machine a page fault costs about 13 µs: with 2^11 entries instead
+  // of 2^10, Sphere4's dual (1,280 points) took 20 % longer, and on
+  // Sphere6's (20,480 points) 2^14 entries saved 10 % of the instructions
+  // (a third of the cofactor sets) but not time: 3 % faster with freed
+  // memory kept, up to 25 % slower under glibc's default policy. Only the
+  // keys are cleared; the cofactors are written when first used, so a
+  // cache larger than the hull needs is neither zeroed nor faulted in
+  // (zeroing it was a tenth of Sphere4's intersection, mostly page faults).
+  // (Keys from calloc, left to the kernel to zero, took Sphere6 in a
+  // benchmark loop from about 37,000 to 52,000 page faults, and longer.)
   explicit CofactorCache(std::size_t points) {
-    while (bits_ < 14 && (std::size_t{2} << bits_) < points) ++bits_;
+    while (bits_ < 12 && (std::size_t{2} << bits_) < points) ++bits_;
     keys_.resize(std::size_t{1} << bits_);
     values_.reset(new Slot[std::size_t{1} << bits_]);  // default-initialised: left unwritten
   }
