@@ -3,6 +3,7 @@
 // (cvms/halfspace_io.hpp), on the bounded line reader of the io layer.
 #include <algorithm>
 #include <cerrno>
+#include <deque>
 #include <fstream>
 #include <ostream>
 #include <string>
@@ -19,10 +20,10 @@ namespace {
 using io_detail::LineReader;
 using io_detail::Tokenizer;
 
-// The numbers of one cdd row (or plain row): exactly four.
-std::array<Rational, 4> read_row(LineReader& reader, std::string_view line, std::uint64_t index, const char* element) {
+// The numbers of one cdd row (or plain row): exactly four, parsed in place.
+void read_row(LineReader& reader, std::string_view line, std::uint64_t index, const char* element,
+              std::array<Rational, 4>& row) {
   Tokenizer tokens(line, false);
-  std::array<Rational, 4> row;
   static constexpr const char* names[4] = {"first number", "second number", "third number", "fourth number"};
   for (int k = 0; k < 4; ++k) {
     const std::string_view token = tokens.next();
@@ -30,7 +31,6 @@ std::array<Rational, 4> read_row(LineReader& reader, std::string_view line, std:
     io_detail::parse_number(reader, token, {names[k], element, index}, row[static_cast<std::size_t>(k)]);
   }
   if (!tokens.at_end()) reader.fail(std::string(element) + " " + std::to_string(index) + " has more than 4 numbers");
-  return row;
 }
 
 bool is_comment_or_blank(std::string_view line) {
@@ -44,9 +44,20 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-// The rows of a cdd file and its linearity indices (1-based, checked).
+// Whether token is `word` (given in lower case) in any case, without the
+// string lower() makes: asked once per row ("end"?).
+bool is_word(std::string_view token, std::string_view word) {
+  return token.size() == word.size() &&
+         std::equal(token.begin(), token.end(), word.begin(),
+                    [](unsigned char t, char w) { return std::tolower(t) == static_cast<unsigned char>(w); });
+}
+
+// The rows of a cdd file and its linearity indices (1-based, checked). A
+// deque: rows are parsed in place and never relocated (a vector's growth
+// would copy them all, as a Rational's move may allocate; the header's
+// count is not trusted for a reservation).
 struct CddBody {
-  std::vector<std::array<Rational, 4>> rows;
+  std::deque<std::array<Rational, 4>> rows;
   std::vector<std::uint64_t> linearity;
 };
 
@@ -94,16 +105,15 @@ CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std:
     declared = *rows;
     break;
   }
-  body.rows.reserve(io_detail::safe_reserve(declared));
   bool ended = false;
   while (reader.next(line)) {
     if (is_comment_or_blank(line)) continue;
-    if (lower(Tokenizer(line, false).next()) == "end") {
+    if (is_word(Tokenizer(line, false).next(), "end")) {
       ended = true;
       break;
     }
     if (body.rows.size() == declared) reader.fail("more rows than the " + std::to_string(declared) + " of the header");
-    body.rows.push_back(read_row(reader, line, body.rows.size() + 1, element));
+    read_row(reader, line, body.rows.size() + 1, element, body.rows.emplace_back());
   }
   if (!ended) reader.fail("no 'end' line");
   if (body.rows.size() != declared) {
@@ -125,9 +135,16 @@ HalfspaceSystem read_cdd_halfspaces(LineReader& reader) {
   std::vector<bool> equality(body.rows.size(), false);
   for (const std::uint64_t i : body.linearity) equality[i - 1] = true;
   HalfspaceSystem system;
+  // Counted, not trusted from the header: a reallocation would copy every
+  // row (a Rational's move may allocate, so vector growth copies).
+  const auto equalities = static_cast<std::size_t>(std::count(equality.begin(), equality.end(), true));
+  system.equalities.reserve(equalities);
+  system.inequalities.reserve(body.rows.size() - equalities);
   for (std::size_t i = 0; i < body.rows.size(); ++i) {
     auto& r = body.rows[i];
-    HalfspaceRow row{Vec3{-r[1], -r[2], -r[3]}, std::move(r[0])};
+    // a = −c, negated in place: a negated copy would allocate every number again.
+    for (std::size_t k = 1; k < 4; ++k) mpq_neg(r[k].get_mpq_t(), r[k].get_mpq_t());
+    HalfspaceRow row{Vec3{std::move(r[1]), std::move(r[2]), std::move(r[3])}, std::move(r[0])};
     (equality[i] ? system.equalities : system.inequalities).push_back(std::move(row));
   }
   return system;
@@ -140,7 +157,8 @@ HalfspaceSystem read_plain_halfspaces(LineReader& reader) {
     if (Tokenizer(line).at_end()) continue;
     if (system.inequalities.size() >= reader.limits().max_faces) reader.fail("more rows than the limit", ErrorCategory::limit);
     const auto end = line.find('#');
-    auto r = read_row(reader, line.substr(0, end), system.inequalities.size() + 1, "row");
+    std::array<Rational, 4> r;
+    read_row(reader, line.substr(0, end), system.inequalities.size() + 1, "row", r);
     system.inequalities.push_back({Vec3{std::move(r[0]), std::move(r[1]), std::move(r[2])}, std::move(r[3])});
   }
   return system;

@@ -245,6 +245,10 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
 }
 
 HalfspaceIntersection intersect_halfspaces(const HalfspaceSystem& system) {
+  // The equalities come after the inequalities, so without them the rows
+  // are the inequalities as given: no copy (on Sphere5's rows the copy
+  // cost a tenth of the intersection).
+  if (system.equalities.empty()) return intersect_halfspaces(std::span<const HalfspaceRow>(system.inequalities));
   std::vector<HalfspaceRow> rows = system.inequalities;
   for (const HalfspaceRow& e : system.equalities) {
     rows.push_back(e);

@@ -5,6 +5,7 @@
 #include "io_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <ios>
 #include <limits>
@@ -16,7 +17,6 @@ namespace {
 
 constexpr std::size_t chunk_size = std::size_t{1} << 16;
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 char lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
@@ -206,19 +206,42 @@ std::uint64_t LineReader::number_bits_allowed() const noexcept {
   return std::max(number_bits_allowance, saturating_product(limits_.max_number_bits_per_byte, line_end_));
 }
 
+namespace {
+
+// What ends a token, by character: one table lookup per character instead
+// of a chain of comparisons (the token scan was about 8 % of reading an
+// exact OFF file).
+constexpr unsigned char space_class = 1, hash_class = 2;
+constexpr std::array<unsigned char, 256> character_classes = [] {
+  std::array<unsigned char, 256> table{};
+  for (const char c : {' ', '\t', '\r', '\v', '\f'}) table[static_cast<unsigned char>(c)] = space_class;
+  table[static_cast<unsigned char>('#')] = hash_class;
+  return table;
+}();
+
+// The length of the run of characters of text from `from` on that are in
+// none of the classes in mask.
+std::size_t run_outside(std::string_view text, std::size_t from, unsigned char mask) {
+  std::size_t i = from;
+  while (i < text.size() && (character_classes[static_cast<unsigned char>(text[i])] & mask) == 0) ++i;
+  return i;
+}
+
+}  // namespace
+
 void Tokenizer::skip_space() {
   std::size_t i = 0;
-  while (i < rest_.size() && is_space(rest_[i])) ++i;
+  while (i < rest_.size() && character_classes[static_cast<unsigned char>(rest_[i])] == space_class) ++i;
   rest_.remove_prefix(i);
   if (comments_ && !rest_.empty() && rest_.front() == '#') rest_ = {};
 }
 
 std::string_view Tokenizer::next() {
   skip_space();
-  std::size_t i = 0;
-  while (i < rest_.size() && !is_space(rest_[i]) &&
-         !(comments_ && rest_[i] == '#' && !is_msvc_non_finite_hash(rest_, i)))
-    ++i;
+  const unsigned char stop = comments_ ? space_class | hash_class : space_class;
+  std::size_t i = run_outside(rest_, 0, stop);
+  // A '#' inside "1.#INF" and its kin is part of the token, not a comment.
+  while (i < rest_.size() && rest_[i] == '#' && is_msvc_non_finite_hash(rest_, i)) i = run_outside(rest_, i + 1, stop);
   std::string_view token = rest_.substr(0, i);
   rest_.remove_prefix(i);
   return token;
