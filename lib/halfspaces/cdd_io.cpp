@@ -113,7 +113,8 @@ CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std:
       break;
     }
     if (body.rows.size() == declared) reader.fail("more rows than the " + std::to_string(declared) + " of the header");
-    read_row(reader, line, body.rows.size() + 1, element, body.rows.emplace_back());
+    const std::uint64_t index = body.rows.size() + 1;  // before the row is added
+    read_row(reader, line, index, element, body.rows.emplace_back());
   }
   if (!ended) reader.fail("no 'end' line");
   if (body.rows.size() != declared) {
