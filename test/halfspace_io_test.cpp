@@ -90,6 +90,35 @@ TEST(CddFormat, RoundTripsAreExact) {
   EXPECT_EQ(read_halfspaces(in, HalfspaceFormat::cdd).inequalities, rational.inequalities);
 }
 
+// More rows than any reservation made before reading them (4,096), with
+// rational and negative entries and equalities among them: every row comes
+// back exactly, in order, in both formats (the readers parse rows in place
+// and move them into the system once).
+TEST(CddFormat, ManyRowsComeBackExactlyInOrder) {
+  std::mt19937_64 rng(2026);
+  HalfspaceSystem rows;
+  const auto number = [&] {
+    Rational q(static_cast<long>(rng() % 2001) - 1000, static_cast<long>(1 + rng() % 9));
+    q.canonicalize();
+    return q;
+  };
+  for (int i = 0; i < 5000; ++i) {
+    HalfspaceRow row{Vec3{number(), number(), number()}, number()};
+    (i % 997 == 3 ? rows.equalities : rows.inequalities).push_back(row);
+  }
+  std::ostringstream cdd;
+  write_halfspaces(cdd, rows, HalfspaceFormat::cdd);
+  std::istringstream cdd_in(cdd.str());
+  const HalfspaceSystem from_cdd = read_halfspaces(cdd_in, HalfspaceFormat::cdd);
+  EXPECT_EQ(from_cdd.inequalities, rows.inequalities);
+  EXPECT_EQ(from_cdd.equalities, rows.equalities);
+  const HalfspaceSystem inequalities{{}, rows.inequalities};
+  std::ostringstream plain;
+  write_halfspaces(plain, inequalities, HalfspaceFormat::plain);
+  std::istringstream plain_in(plain.str());
+  EXPECT_EQ(read_halfspaces(plain_in, HalfspaceFormat::plain).inequalities, rows.inequalities);
+}
+
 TEST(CddFormat, HostileInputNamesTheLine) {
   expect_error("begin\n1 4 integer\n1 0 0 0\n", ErrorCategory::parse, "test.ine:3: no 'end' line");
   expect_error("H-representation\n1 4 integer\n", ErrorCategory::parse, "no 'begin' line");

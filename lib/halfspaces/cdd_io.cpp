@@ -131,6 +131,18 @@ CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std:
   return body;
 }
 
+// Appends the row a·x <= b whose numbers are in `numbers` (a in the columns
+// normal[0..2], b in column `offset`), taking them over: a row
+// default-constructed in place and swapped with them makes one fresh
+// Rational per number, where building a row from moved numbers and moving
+// it into the vector makes two or three (a moved-from Rational is
+// re-initialised, which allocates).
+void take_row(std::array<Rational, 4>& numbers, const int (&normal)[3], int offset, std::vector<HalfspaceRow>& rows) {
+  HalfspaceRow& row = rows.emplace_back();
+  for (int m = 0; m < 3; ++m) mpq_swap(row.normal[m].get_mpq_t(), numbers[static_cast<std::size_t>(normal[m])].get_mpq_t());
+  mpq_swap(row.offset.get_mpq_t(), numbers[static_cast<std::size_t>(offset)].get_mpq_t());
+}
+
 HalfspaceSystem read_cdd_halfspaces(LineReader& reader) {
   CddBody body = read_cdd(reader, "H-representation", "V-representation", reader.limits().max_faces, "row");
   std::vector<bool> equality(body.rows.size(), false);
@@ -145,23 +157,26 @@ HalfspaceSystem read_cdd_halfspaces(LineReader& reader) {
     auto& r = body.rows[i];
     // a = −c, negated in place: a negated copy would allocate every number again.
     for (std::size_t k = 1; k < 4; ++k) mpq_neg(r[k].get_mpq_t(), r[k].get_mpq_t());
-    HalfspaceRow row{Vec3{std::move(r[1]), std::move(r[2]), std::move(r[3])}, std::move(r[0])};
-    (equality[i] ? system.equalities : system.inequalities).push_back(std::move(row));
+    take_row(r, {1, 2, 3}, 0, equality[i] ? system.equalities : system.inequalities);
   }
   return system;
 }
 
 HalfspaceSystem read_plain_halfspaces(LineReader& reader) {
-  HalfspaceSystem system;
+  // Parsed in place into a deque, then moved once into rows reserved from
+  // the count read (as read_cdd: no relocation copies).
+  std::deque<std::array<Rational, 4>> rows;
   std::string_view line;
   while (reader.next(line)) {
     if (Tokenizer(line).at_end()) continue;
-    if (system.inequalities.size() >= reader.limits().max_faces) reader.fail("more rows than the limit", ErrorCategory::limit);
+    if (rows.size() >= reader.limits().max_faces) reader.fail("more rows than the limit", ErrorCategory::limit);
     const auto end = line.find('#');
-    std::array<Rational, 4> r;
-    read_row(reader, line.substr(0, end), system.inequalities.size() + 1, "row", r);
-    system.inequalities.push_back({Vec3{std::move(r[0]), std::move(r[1]), std::move(r[2])}, std::move(r[3])});
+    const std::uint64_t index = rows.size() + 1;  // before the row is added
+    read_row(reader, line.substr(0, end), index, "row", rows.emplace_back());
   }
+  HalfspaceSystem system;
+  system.inequalities.reserve(rows.size());
+  for (std::array<Rational, 4>& r : rows) take_row(r, {0, 1, 2}, 3, system.inequalities);
   return system;
 }
 
