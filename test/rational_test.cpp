@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "cvms/error.hpp"
@@ -555,6 +556,31 @@ TEST(RationalText, FastPathAgreesWithTheConstructionOnItsShapes) {
     const std::uint64_t caps[] = {detail::gmp_max_bits, 4096, exact, exact > 1 ? exact - 1 : 1, exact + 1};
     NumberTextResult r;
     ASSERT_NO_FATAL_FAILURE(expect_capped_parse(text, expected, caps[rng() % std::size(caps)], r));
+  }
+}
+
+// The parser reads digits eight at a time where it can: every byte that is
+// not part of a number's syntax, at every place of the first or second
+// eight-character window of a 24-digit number, makes the text no number;
+// a point there gives the value the digits and the point's place say.
+TEST(RationalText, EveryByteInsideAnEightDigitWindow) {
+  const std::string digits = "123456789012345678901234";
+  for (int byte = 0; byte < 256; ++byte) {
+    const char c = static_cast<char>(byte);
+    if ((c >= '0' && c <= '9') || c == 'e' || c == 'E' || c == '/' || c == '+' || c == '-') continue;
+    for (std::size_t at = 0; at < 16; ++at) {
+      std::string text = digits;
+      text.insert(at + 1, 1, c);  // after at least one digit
+      SCOPED_TRACE("byte " + std::to_string(byte) + " after digit " + std::to_string(at));
+      const std::optional<Rational> parsed = try_parse_rational(text);
+      if (c != '.') {
+        EXPECT_FALSE(parsed.has_value());
+        continue;
+      }
+      ASSERT_TRUE(parsed.has_value());
+      const long places = static_cast<long>(digits.size() - at - 1);
+      EXPECT_EQ(*parsed, Rational(mpz_class(digits, 10)) * power_of_ten(-places));
+    }
   }
 }
 
