@@ -2,6 +2,8 @@
 // cdd's H- and V-representation files and the plain half-space text form
 // (cvms/halfspace_io.hpp), on the bounded line reader of the io layer.
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cerrno>
 #include <deque>
 #include <fstream>
