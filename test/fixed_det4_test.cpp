@@ -154,12 +154,15 @@ int oracle_cross_sign(const Matrix& abc, const std::array<mpz_class, 4>& p, cons
 }
 
 template <int E>
+detail::FixedRow<E> fixed_row_of(const std::array<mpz_class, 4>& r) {
+  return detail::fixed_row<E>({r[0].get_mpz_t(), r[1].get_mpz_t(), r[2].get_mpz_t(), r[3].get_mpz_t()});
+}
+
+template <int E>
 int cross_sign(const Matrix& abc, const std::array<mpz_class, 4>& p, const std::array<mpz_class, 4>& q) {
-  auto row = [](const std::array<mpz_class, 4>& r) {
-    return detail::fixed_row<E>({r[0].get_mpz_t(), r[1].get_mpz_t(), r[2].get_mpz_t(), r[3].get_mpz_t()});
-  };
-  const detail::Cofactors<E> cof = detail::last_row_cofactors<E>(row(abc[0]), row(abc[1]), row(abc[2]));
-  return detail::fixed_det4_cross_sign<E>(cof, row(p), row(q));
+  const detail::Cofactors<E> cof =
+      detail::last_row_cofactors<E>(fixed_row_of<E>(abc[0]), fixed_row_of<E>(abc[1]), fixed_row_of<E>(abc[2]));
+  return detail::fixed_det4_cross_sign<E>(cof, fixed_row_of<E>(p), fixed_row_of<E>(q));
 }
 
 int cross_sign_in(int limbs, const Matrix& abc, const std::array<mpz_class, 4>& p, const std::array<mpz_class, 4>& q) {
@@ -244,11 +247,6 @@ mpz_class value_of(const detail::FixedInt<E>& x) {
   mpz_class v;
   detail::assign_to(v.get_mpz_t(), x);
   return v;
-}
-
-template <int E>
-detail::FixedRow<E> fixed_row_of(const std::array<mpz_class, 4>& r) {
-  return detail::fixed_row<E>({r[0].get_mpz_t(), r[1].get_mpz_t(), r[2].get_mpz_t(), r[3].get_mpz_t()});
 }
 
 // Every sign pattern of the widest entries ±(2^(64E − 1) − 1): the parts of

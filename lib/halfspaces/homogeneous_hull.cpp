@@ -101,7 +101,7 @@ class CofactorCache {
   // (Keys from calloc, left to the kernel to zero, took Sphere6 in a
   // benchmark loop from about 37,000 to 52,000 page faults, and longer.)
   explicit CofactorCache(std::size_t points) {
-    while (bits_ < 12 && (std::size_t{2} << bits_) < points) ++bits_;
+    bits_ = cache_bits(points, 2, 12);
     keys_.resize(std::size_t{1} << bits_);
     values_.reset(new Slot[std::size_t{1} << bits_]);  // default-initialised: left unwritten
   }

@@ -12,6 +12,14 @@
 
 namespace cvms::detail {
 
+// The size of such a cache as a power of two: at least half as many slots
+// as points, between 2^min_bits and 2^max_bits.
+[[nodiscard]] inline int cache_bits(std::size_t points, int min_bits, int max_bits) {
+  int bits = min_bits;
+  while (bits < max_bits && (std::size_t{2} << bits) < points) ++bits;
+  return bits;
+}
+
 // The top `bits` bits (1..32) of the indices' hash.
 [[nodiscard]] inline std::size_t index_slot(int bits, std::uint32_t a, std::uint32_t b, std::uint32_t c,
                                             std::uint32_t d = 0) {

@@ -86,6 +86,7 @@ namespace {
 constexpr std::uint32_t none = detail::no_index;
 
 using FacePlane = std::array<std::uint32_t, 3>;
+using detail::cache_bits;
 using detail::index_slot;
 
 constexpr std::uint32_t next3(std::uint32_t i) { return i == 2 ? 0 : i + 1; }
@@ -252,8 +253,7 @@ class Quickhull {
     if (answers_.empty()) {
       // At least half as many slots as points, between 2^8 and 2^12 (20
       // bytes each).
-      answer_bits_ = 8;
-      while (answer_bits_ < 12 && (std::size_t{2} << answer_bits_) < n_) ++answer_bits_;
+      answer_bits_ = cache_bits(n_, 8, 12);
       answers_.resize(std::size_t{1} << answer_bits_);
     }
     return answers_[index_slot(answer_bits_, a, b, c, d)];

@@ -132,22 +132,30 @@ Cofactors<E> last_row_cofactors(const FixedRow<E>& a, const FixedRow<E>& b, cons
   return cof;
 }
 
-/// det[a; b; c; d] from the cofactors of a, b, c.
+namespace fixed_det4_internal {
+
+// det[a; b; c; d] from the cofactors of a, b, c, as its two parts.
 template <int E>
-FixedInt<4 * E> fixed_det4(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
+SignedSum<4 * E> det_from_cofactors(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
   SignedSum<4 * E> det;
   // The long operand first: multiply skips its zero limbs (the top limbs
   // of a cofactor's magnitude are often zero), each costing E products.
   for (int k = 0; k < 4; ++k) det.add(multiply(cof[k], d[k]));
-  return det.value();
+  return det;
 }
 
-/// Its sign (−1, 0 or 1).
+}  // namespace fixed_det4_internal
+
+/// det[a; b; c; d] from the cofactors of a, b, c.
+template <int E>
+FixedInt<4 * E> fixed_det4(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
+  return fixed_det4_internal::det_from_cofactors<E>(cof, d).value();
+}
+
+/// Its sign (−1, 0 or 1): the parts compared, not subtracted.
 template <int E>
 int fixed_det4_sign(const Cofactors<E>& cof, const FixedRow<E>& d) noexcept {
-  SignedSum<4 * E> det;
-  for (int k = 0; k < 4; ++k) det.add(multiply(cof[k], d[k]));
-  return det.sign();
+  return fixed_det4_internal::det_from_cofactors<E>(cof, d).sign();
 }
 
 /// The sign (−1, 0 or 1) of det[a; b; c; p] · q_3 − det[a; b; c; q] · p_3
