@@ -14,6 +14,7 @@
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "files.hpp"
+#include "keep_until_exit.hpp"
 #include "set_commands.hpp"
 #include "sizes.hpp"
 
@@ -92,9 +93,11 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   sets.push_back(read_set(args.a));
   sets.push_back(read_set(args.b));
   for (const std::string& path : args.more) sets.push_back(read_set(path));
-  if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
-    return run_set_sum(sets, args.options(), args.output, args.format, coordinates_of(args.float_output),
-                       args.stats, report);
+  if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3) {
+    run_set_sum(sets, args.options(), args.output, args.format, coordinates_of(args.float_output), args.stats,
+                report);
+    return keep_until_exit(std::move(sets));
+  }
   const ConvexPolyhedron& a = sets[0].polyhedron();
   const ConvexPolyhedron& b = sets[1].polyhedron();
   Timed sum = limited_sum(a, b, args);
@@ -104,13 +107,18 @@ void run_sum(const SumArgs& args, std::ostream& report) {
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
     print_stats(report, sum.result.stats);
   }
+  keep_until_exit(std::move(sum.result.polyhedron));
+  keep_until_exit(std::move(sets));
 }
 
 void run_hull(const HullArgs& args) {
   check_output(args.output, args.format);
   std::vector<Vec3> points = read_point_cloud(args.input);
   // Flat, collinear or single-point clouds give the set they span.
-  write_set(args.output, convex_hull_set(points), coordinates_of(args.float_output), args.format);
+  ConvexSet hull = convex_hull_set(points);
+  write_set(args.output, hull, coordinates_of(args.float_output), args.format);
+  keep_until_exit(std::move(hull));
+  keep_until_exit(std::move(points));
 }
 
 void run_gen(const GenArgs& args) {
@@ -158,21 +166,30 @@ void run_gen(const GenArgs& args) {
   write_polyhedron(args.output, p, coordinates_of(args.float_output), args.format);
 }
 
-void run_check(const std::string& input, std::ostream& report) {
-  PolygonSoup soup = read_soup(input);
-  const std::size_t input_points = soup.points.size();
-  const std::size_t input_faces = soup.num_faces();
-  const ConvexSet set = set_from_soup(std::move(soup), input_name(input));
-  if (set.dimension() != 3) return report_set(input_name(input), set, report);
-  const ConvexPolyhedron& p = set.polyhedron();
+namespace {
+
+void report_polyhedron(const std::string& name, const ConvexPolyhedron& p, std::size_t input_points,
+                       std::size_t input_faces, std::ostream& report) {
   std::map<std::uint32_t, std::uint32_t> histogram;
   for (FaceId f : p.mesh().faces()) ++histogram[p.mesh().degree(f)];
-  report << printable(input_name(input)) << ": convex polyhedron\ndimension 3\n" << counts(p) << "\n";
+  report << printable(name) << ": convex polyhedron\ndimension 3\n" << counts(p) << "\n";
   if (input_points != p.num_vertices() || input_faces != p.num_facets())
     report << "input: V " << input_points << " F " << input_faces
            << " (normalised: coplanar faces merged, non-extreme vertices dropped)\n";
   report << "facet degree histogram:\n";
   for (auto [degree, count] : histogram) report << "  " << degree << ": " << count << "\n";
+}
+
+}  // namespace
+
+void run_check(const std::string& input, std::ostream& report) {
+  PolygonSoup soup = read_soup(input);
+  const std::size_t input_points = soup.points.size();
+  const std::size_t input_faces = soup.num_faces();
+  ConvexSet set = set_from_soup(std::move(soup), input_name(input));
+  if (set.dimension() != 3) return report_set(input_name(input), set, report);
+  report_polyhedron(input_name(input), set.polyhedron(), input_points, input_faces, report);
+  keep_until_exit(std::move(set));
 }
 
 void run_demo(const DemoArgs& args, std::ostream& report) {

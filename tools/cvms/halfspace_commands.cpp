@@ -10,6 +10,7 @@
 #include "cvms/halfspace_io.hpp"
 #include "cvms/halfspaces.hpp"
 #include "files.hpp"
+#include "keep_until_exit.hpp"
 #include "set_commands.hpp"
 
 namespace cvms::cli {
@@ -82,14 +83,19 @@ bool run_halfspace_command(const HalfspaceArgs& args, std::ostream& out) {
     if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
     (void)output_format(args.output, args.format);
     check_output_directory(args.output);
-    const ConvexSet a = read_set(args.a), b = read_set(args.b);
-    const ConvexSet d = pontryagin_difference(a, b);
+    ConvexSet a = read_set(args.a), b = read_set(args.b);
+    ConvexSet d = pontryagin_difference(a, b);
     write_set(args.output, d, args.float_output ? Coordinates::double_ : Coordinates::exact, args.format);
     report_set("difference", d, args.output == "-" ? std::cerr : out);
+    keep_until_exit(std::move(a));
+    keep_until_exit(std::move(b));
+    keep_until_exit(std::move(d));
     return true;
   }
   if (args.halfspaces != nullptr && *args.halfspaces) {
-    write_rows(args.rows_output, read_set(args.rows_input));
+    ConvexSet set = read_set(args.rows_input);
+    write_rows(args.rows_output, set);
+    keep_until_exit(std::move(set));
     return true;
   }
   if (args.hull != nullptr && *args.hull) {
@@ -100,8 +106,9 @@ bool run_halfspace_command(const HalfspaceArgs& args, std::ostream& out) {
     }
     (void)output_format(hull.output, hull.format);
     check_output_directory(hull.output);
-    write_set(hull.output, set_from_rows(args.rows_input),
-              hull.float_output ? Coordinates::double_ : Coordinates::exact, hull.format);
+    ConvexSet set = set_from_rows(args.rows_input);
+    write_set(hull.output, set, hull.float_output ? Coordinates::double_ : Coordinates::exact, hull.format);
+    keep_until_exit(std::move(set));
     return true;
   }
   return false;
