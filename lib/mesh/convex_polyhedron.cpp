@@ -61,6 +61,7 @@
 #include "dyadic.hpp"
 #include "element_names.hpp"
 #include "filtered_predicates.hpp"
+#include "limb_arena.hpp"
 #include "no_index.hpp"
 #include "polyhedron_builder.hpp"
 #include "small_direction.hpp"
@@ -257,6 +258,9 @@ struct FacePlanes {
   std::vector<Vec3> normal;
   std::vector<ApproxVec3> approx;
   std::vector<char> corner;
+  // The normals' numerators, and later the result's offsets' (the result
+  // keeps it): a block per number would be 80,000 heap blocks on Sphere6.
+  detail::LimbArena limbs;
   [[nodiscard]] Vec3Ref ref(std::uint32_t f) const { return {normal[f], approx[f]}; }
 };
 
@@ -268,6 +272,7 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   out.corner.assign(mesh.num_halfedges(), 0);
   FaceCorners face{FaceId(0), {}, {}};
   std::vector<char> corner;
+  Vec3 normal;  // keeps its limbs from face to face
   for (FaceId f : mesh.faces()) {
     face.f = f;
     face.pts.clear();
@@ -276,7 +281,8 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
       face.pts.push_back(points[mesh.from(h)]);
       face.ids.push_back(mesh.from(h).index());
     }
-    const FaceVerdict verdict = fast_face_plane(face, out.normal[f.index()], out.approx[f.index()], corner);
+    const FaceVerdict verdict = fast_face_plane(face, normal, out.approx[f.index()], corner);
+    if (verdict != FaceVerdict::failed) out.limbs.store(out.normal[f.index()], normal);
     if (verdict == FaceVerdict::failed_in_plane) {
       const FacePlane plane{out.normal[f.index()], out.approx[f.index()]};
       report_face_fault(face, &plane);
@@ -576,16 +582,20 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, FacePlanes
   planes.normal_approx = std::move(faces.approx);
   planes.offsets.resize(regions.size());
   detail::DotScratch scratch;
+  Rational offset;  // keeps its limbs from facet to facet
+  Vec3 negated;
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
     Vec3& normal = planes.normals[r];
-    if (flip) {
-      for (int i = 0; i < 3; ++i) mpq_neg(normal[i].get_mpq_t(), normal[i].get_mpq_t());
+    if (flip) {  // the arena's values are never a GMP output: store anew
+      negated = -normal;
+      faces.limbs.store(normal, negated);
       planes.normal_approx[r] = ApproxVec3::of(normal);
     }
     const Vec3& corner = merged.position(merged.from(merged.halfedge(FaceId(r))));
-    detail::integer_dot(normal, corner, scratch, planes.offsets[r]);
+    detail::integer_dot(normal, corner, scratch, offset);
+    faces.limbs.store(planes.offsets[r], offset);
   }
-  return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes));
+  return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes), std::move(faces.limbs));
 }
 
 // 8. Global: an interior point o below every facet, and a ray from o that
