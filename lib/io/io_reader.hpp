@@ -44,6 +44,9 @@ class ByteSource {
   std::string read_all();
   [[nodiscard]] std::uint64_t consumed() const noexcept { return consumed_; }
   [[nodiscard]] std::string_view source() const noexcept { return source_; }
+  /// Bytes the stream held when this source was made, if it can tell
+  /// (files and string streams; not pipes or terminals).
+  [[nodiscard]] std::optional<std::uint64_t> size_at_start() const noexcept { return size_at_start_; }
 
  private:
   std::istream& in_;
@@ -51,6 +54,9 @@ class ByteSource {
   std::uint64_t max_bytes_;
   std::uint64_t consumed_ = 0;
   bool at_end_ = false;
+  std::optional<std::uint64_t> size_at_start_ = bytes_left(in_);
+
+  static std::optional<std::uint64_t> bytes_left(std::istream& in);
 };
 
 /// Splits the input into lines ('\n' or "\r\n"). A line is returned as a view
@@ -93,6 +99,11 @@ class LineReader {
   [[nodiscard]] std::uint64_t number_bits() const noexcept { return number_bits_; }
   /// What add_number_bits allows now.
   [[nodiscard]] std::uint64_t number_bits_allowed() const noexcept;
+  /// How many elements to reserve for `declared` ones that need at least
+  /// `min_bytes` of input each: `declared` when the input is known to hold
+  /// that many bytes (so an honest count reserves once, and a lying one
+  /// reserves no more than the input's size allows), else safe_reserve's cap.
+  [[nodiscard]] std::size_t reserve_for(std::uint64_t declared, std::uint64_t min_bytes) const noexcept;
   /// Where numbers that are checked but not kept (colors, normals) are parsed.
   Rational& scratch() noexcept { return scratch_; }
 
@@ -178,6 +189,11 @@ void parse_point(LineReader& reader, NextToken&& next, Vec3& p, const char* elem
 /// exceeds that of the result by more than a block.
 class PointBuffer {
  public:
+  /// The first block holds `first_block` points (a header's count, bounded
+  /// by LineReader::reserve_for): when it is right, take() moves that block
+  /// out whole, and no point is moved one by one (moving a rational
+  /// allocates a new limb for the moved-from one).
+  explicit PointBuffer(std::size_t first_block = block_size) : first_block_(first_block) {}
   /// A new default point at the end.
   Vec3& append();
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
@@ -185,7 +201,11 @@ class PointBuffer {
   std::vector<Vec3> take();
 
  private:
+  void add_block(std::size_t capacity);
+  void widen_first_block();
+
   static constexpr std::size_t block_size = 4096;
+  std::size_t first_block_;
   std::vector<std::vector<Vec3>> blocks_;
   std::size_t size_ = 0;
 };

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// The readers' shared pieces (lib/io/io_reader.hpp): how much a header's
+// count may reserve, and the point buffer that holds what was read. The
+// expected sizes are worked out by hand from the input's length; the points
+// are compared with the ones appended.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "io_reader.hpp"
+
+namespace cvms::io_detail {
+namespace {
+
+// A stream buffer that cannot seek, like a pipe.
+class PipeBuffer : public std::stringbuf {
+ public:
+  explicit PipeBuffer(const std::string& data) : std::stringbuf(data) {}
+
+ protected:
+  pos_type seekoff(off_type, std::ios_base::seekdir, std::ios_base::openmode) override { return pos_type(-1); }
+  pos_type seekpos(pos_type, std::ios_base::openmode) override { return pos_type(-1); }
+};
+
+TEST(ReserveFor, AnHonestCountIsReservedWhole) {
+  std::istringstream in(std::string(60'000, ' '));
+  const LineReader reader(in, "in", {});
+  EXPECT_EQ(reader.reserve_for(10'000, 6), 10'000u);
+}
+
+TEST(ReserveFor, ALyingCountReservesNoMoreThanTheInputCanHold) {
+  std::istringstream in(std::string(1200, ' '));
+  const LineReader reader(in, "in", {});
+  EXPECT_EQ(reader.reserve_for(50'000'000, 6), 1200u / 6 + 1);
+  const std::string data(600, ' ');
+  const LineReader in_memory(data, "in", {});
+  EXPECT_EQ(in_memory.reserve_for(50'000'000, 6), 600u / 6 + 1);
+}
+
+TEST(ReserveFor, OnlyTheBytesLeftCountAndTheStreamReadsOnFromWhereItWas) {
+  std::istringstream in("skipped line\nOFF\n");
+  std::string skipped;
+  std::getline(in, skipped);
+  LineReader reader(in, "in", {});
+  EXPECT_EQ(reader.reserve_for(1000, 1), 4u + 1);  // "OFF\n"
+  std::string_view line;
+  ASSERT_TRUE(reader.next(line));
+  EXPECT_EQ(line, "OFF");
+  EXPECT_FALSE(reader.next(line));
+}
+
+TEST(ReserveFor, AStreamThatCannotSeekGetsTheFixedCap) {
+  PipeBuffer pipe(std::string(1'000'000, ' '));
+  std::istream in(&pipe);
+  const LineReader reader(in, "in", {});
+  EXPECT_EQ(reader.reserve_for(50'000'000, 6), safe_reserve(50'000'000));
+  EXPECT_EQ(reader.reserve_for(7, 6), 7u);
+}
+
+TEST(ReserveFor, TheByteLimitBoundsTheReserveToo) {
+  std::istringstream in(std::string(60'000, ' '));
+  ReadLimits limits;
+  limits.max_bytes = 600;
+  const LineReader reader(in, "in", limits);
+  EXPECT_EQ(reader.reserve_for(10'000, 6), 600u / 6 + 1);
+}
+
+void expect_points_in_order(std::size_t first_block, std::size_t count) {
+  PointBuffer buffer(first_block);
+  for (std::size_t i = 0; i < count; ++i) buffer.append() = Vec3(Rational(i), Rational(1, i + 1), Rational(-1));
+  ASSERT_EQ(buffer.size(), count);
+  const std::vector<Vec3> points = buffer.take();
+  ASSERT_EQ(points.size(), count) << "first block " << first_block;
+  for (std::size_t i = 0; i < count; ++i)
+    ASSERT_EQ(points[i], Vec3(Rational(i), Rational(1, i + 1), Rational(-1))) << "point " << i;
+  EXPECT_EQ(buffer.size(), 0u);
+}
+
+TEST(PointBuffer, KeepsEveryPointInOrderWhateverTheFirstBlock) {
+  expect_points_in_order(10'000, 10'000);  // exact: one block, moved out whole
+  expect_points_in_order(10'000, 3);       // a header larger than the points read
+  expect_points_in_order(3, 10'000);       // a header smaller: more blocks
+  expect_points_in_order(0, 5'000);        // no count at all
+  expect_points_in_order(1, 1);
+}
+
+TEST(PointBuffer, AnExactFirstBlockIsTakenWithoutMovingAPoint) {
+  PointBuffer small(3);
+  const Vec3* first = &small.append();
+  small.append();
+  small.append();
+  EXPECT_EQ(small.take().data(), first);
+  // A large block is reserved after its first few points were read; from
+  // then on nothing moves.
+  PointBuffer large(1000);
+  for (int i = 0; i < 100; ++i) large.append();
+  const Vec3* hundredth = &large.append();
+  for (int i = 101; i < 1000; ++i) large.append();
+  EXPECT_EQ(large.take().data() + 100, hundredth);
+}
+
+}  // namespace
+}  // namespace cvms::io_detail
