@@ -14,6 +14,7 @@
 #include "cvms/shapes.hpp"
 #include "limb_arena.hpp"
 #include "research_options.hpp"
+#include "support/hand_solids.hpp"
 
 namespace cvms {
 namespace {
@@ -106,6 +107,51 @@ TEST_P(ArenaStorage, SumsCopiesAndMovesKeepTheirValues) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Threads, ArenaStorage, ::testing::Values(1u, 2u, 4u));
+
+// Whether every nonzero numerator of p's normals and offsets is a view.
+bool plane_numerators_are_views(const ConvexPolyhedron& p, bool views) {
+  auto matches = [views](const Rational& q) {
+    return sgn(q) == 0 || (mpq_numref(q.get_mpq_t())->_mp_alloc == 0) == views;
+  };
+  for (FaceId f : p.mesh().faces()) {
+    for (int i = 0; i < 3; ++i)
+      if (!matches(p.normal(f)[i])) return false;
+    if (!matches(p.plane_offset(f))) return false;
+  }
+  return true;
+}
+
+// The planes from_soup stores in its arena, against planes worked out here
+// from each facet's first three corners (the primitive cross product, turned
+// outward by a vertex off the facet), for a mesh given outward and inward
+// (flipped on reading) and for a copy.
+TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
+  const PolygonSoup outward = shapes::rotated_geodesic_sphere(2).to_soup();
+  const PolygonSoup inward = test::reversed(outward);
+  for (const PolygonSoup* soup : {&outward, &inward}) {
+    const ConvexPolyhedron p = ConvexPolyhedron::from_soup(*soup);
+    ASSERT_EQ(p.num_facets(), outward.num_faces());
+    for (FaceId f : p.mesh().faces()) {
+      const HalfedgeId h = p.mesh().halfedge(f);
+      const Vec3& a = p.vertex(p.mesh().from(h));
+      Vec3 n = primitive_direction(cross(p.vertex(p.mesh().to(h)) - a, p.vertex(p.mesh().to(p.mesh().next(h))) - a));
+      const Rational offset = dot(n, a);
+      for (VertexId v : p.mesh().vertices())
+        if (dot(n, p.vertex(v)) > offset) {
+          n = -n;  // an outward normal has every vertex at or below its plane
+          break;
+        }
+      ASSERT_EQ(p.normal(f), n) << "facet " << f.index() << (soup == &inward ? " (inward input)" : "");
+      ASSERT_EQ(p.plane_offset(f), dot(n, a)) << "facet " << f.index();
+    }
+    if (detail::LimbArena::holds_limbs()) {
+      EXPECT_TRUE(plane_numerators_are_views(p, true));
+    }
+    const ConvexPolyhedron copy = p;
+    EXPECT_TRUE(plane_numerators_are_views(copy, false));
+    for (FaceId f : p.mesh().faces()) ASSERT_EQ(copy.normal(f), p.normal(f));
+  }
+}
 
 }  // namespace
 }  // namespace cvms
