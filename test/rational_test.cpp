@@ -584,6 +584,39 @@ TEST(RationalText, EveryByteInsideAnEightDigitWindow) {
   }
 }
 
+// The fast path cancels the fives of 10^places against the digits by exact
+// division: digits m 5^j, for every j up to 140 (the limb-sized steps, the
+// binary descent and their mix), with m prime to 5 or not, one limb or
+// several, and the point anywhere around j; against GMP's own reduction.
+TEST(RationalText, FastPathCancelsEveryPowerOfFive) {
+  const mpz_class factors[] = {1,
+                               3,
+                               7,
+                               2,
+                               1024,
+                               25 * 3,
+                               mpz_class("18446744073709551617"),  // 2^64 + 1
+                               mpz_class("340282366920938463463374607431768211507"),
+                               mpz_class("98765432109876543210987654321")};
+  for (const mpz_class& m : factors)
+    for (unsigned j = 0; j <= 140; ++j) {
+      mpz_class five_j;
+      mpz_ui_pow_ui(five_j.get_mpz_t(), 5, j);
+      const std::string digits = mpz_class(m * five_j).get_str();
+      for (const long places : {0L, static_cast<long>(j) - 1, static_cast<long>(j), static_cast<long>(j) + 1,
+                                static_cast<long>(j) + 30}) {
+        if (places < 0) continue;
+        const std::string text = with_point(digits, static_cast<std::size_t>(places));
+        SCOPED_TRACE(text);
+        const Rational expected = Rational(mpz_class(digits, 10)) * power_of_ten(-places);
+        const std::optional<Rational> parsed = try_parse_rational(text);
+        ASSERT_TRUE(parsed.has_value());
+        ASSERT_EQ(*parsed, expected);
+        ASSERT_EQ(parsed->get_den(), expected.get_den());  // in lowest terms
+      }
+    }
+}
+
 TEST(RationalText, FastPathReadsExactExpansionsOfDoubles) {
   test::Rng rng(1415);
   for (int i = 0; i < 20000; ++i) {

@@ -125,6 +125,21 @@ constexpr auto pow5_table = [] {
   return table;
 }();
 std::uint64_t pow5(unsigned n) { return pow5_table[n]; }
+
+// The inverse of an odd d modulo 2^64, by Newton's iteration x <- x (2 - d x),
+// which doubles the number of correct low bits: d itself is right to 3 bits
+// (d^2 = 1 mod 8 for every odd d), five steps make 96 >= 64.
+constexpr std::uint64_t inverse_mod_2_64(std::uint64_t d) {
+  std::uint64_t x = d;
+  for (int i = 0; i < 5; ++i) x *= 2 - d * x;
+  return x;
+}
+constexpr auto pow5_inverse_table = [] {
+  std::array<std::uint64_t, max_pow5_in_limb + 1> table{};
+  for (std::size_t i = 0; i < table.size(); ++i) table[i] = inverse_mod_2_64(pow5_table[i]);
+  return table;
+}();
+static_assert(pow5_table[max_pow5_in_limb] * pow5_inverse_table[max_pow5_in_limb] == 1);
 constexpr mp_limb_t ten_to_19 = 10000000000000000000u;  // < 2^64
 
 // Bits of a number of `count` decimal digits, from above (log2(10) < 3.33).
@@ -144,14 +159,28 @@ struct SmallNatural {
     carry += mpn_add_1(limbs, limbs, size, addend);  // cannot both carry out
     if (carry != 0) limbs[size++] = carry;
   }
-  // Divides by d when it divides exactly; returns whether it did.
-  bool divide_if_exact(mp_limb_t d) {
+  // Divides by the odd d (inverse: d's inverse modulo 2^64) when it divides
+  // exactly; returns whether it did. Hensel's division, lowest limb first:
+  // q_i clears limb i of what is left, and c carries the rest upwards. By
+  // induction, Q d = N + c B^size with Q = sum q_i B^i < B^size and B = 2^64
+  // (each q_i d = n_i - c_i + c_(i+1) B). So c = 0 means Q d = N; and if d
+  // divides N, N/d is the one residue below B^size that d times is N modulo
+  // B^size, so Q = N/d and c = 0. No division instruction, and c < d <= B.
+  bool divide_if_exact(mp_limb_t d, mp_limb_t inverse) {
     mp_limb_t quotient[small_limbs];
-    if (mpn_divrem_1(quotient, 0, limbs, size, d) != 0) return false;
+    mp_limb_t carry = 0;
+    for (mp_size_t i = 0; i < size; ++i) {
+      const mp_limb_t borrow = limbs[i] < carry ? 1 : 0;
+      const mp_limb_t q = (limbs[i] - carry) * inverse;
+      quotient[i] = q;
+      carry = static_cast<mp_limb_t>((Uint128{q} * d) >> 64) + borrow;
+    }
+    if (carry != 0) return false;
     std::copy(quotient, quotient + size, limbs);
     if (limbs[size - 1] == 0) --size;
     return true;
   }
+  bool divide_by_pow5_if_exact(unsigned n) { return divide_if_exact(pow5_table[n], pow5_inverse_table[n]); }
   std::uint64_t trailing_zero_bits() const {
     std::uint64_t bits = 0;
     mp_size_t i = 0;
@@ -204,11 +233,11 @@ void set_small_digits(SmallNatural& m, std::string_view digits) {
 // Cancels the factors 5 of m, at most `cap` of them; returns how many.
 std::uint64_t remove_fives(SmallNatural& m, std::uint64_t cap) {
   std::uint64_t removed = 0;
-  while (cap - removed >= max_pow5_in_limb && m.divide_if_exact(pow5(max_pow5_in_limb)))
+  while (cap - removed >= max_pow5_in_limb && m.divide_by_pow5_if_exact(max_pow5_in_limb))
     removed += max_pow5_in_limb;
   // Fewer than 27 remain (or may be taken): take them by binary descent.
   for (unsigned step = 16; step > 0; step /= 2)
-    if (cap - removed >= step && m.divide_if_exact(pow5(step))) removed += step;
+    if (cap - removed >= step && m.divide_by_pow5_if_exact(step)) removed += step;
   return removed;
 }
 
