@@ -100,5 +100,21 @@ TEST(PointBuffer, AnExactFirstBlockIsTakenWithoutMovingAPoint) {
   EXPECT_EQ(large.take().data() + 100, hundredth);
 }
 
+// Counts and indices saturate at 2^64 - 1: against GMP's value of the
+// digits, clamped, at and around the boundary.
+TEST(ParseUnsigned, SaturatesExactlyBeyond64Bits) {
+  const mpz_class max("18446744073709551615");
+  for (const char* token : {"0", "7", "000123", "1844674407370955161", "1844674407370955162", "18446744073709551609",
+                            "18446744073709551610", "18446744073709551614", "18446744073709551615",
+                            "18446744073709551616", "18446744073709551619", "18446744073709551620",
+                            "99999999999999999999", "0018446744073709551615", "123456789012345678901234567890"}) {
+    const mpz_class value(token, 10);  // base 10: base 0 reads a leading 0 as octal
+    const std::optional<std::uint64_t> parsed = parse_unsigned(token);
+    ASSERT_TRUE(parsed.has_value()) << token;
+    EXPECT_EQ(mpz_class(std::to_string(*parsed)), value > max ? max : value) << token;
+  }
+  for (const char* junk : {"", "-1", "+1", "1e3", "12a", " 1"}) EXPECT_FALSE(parse_unsigned(junk).has_value()) << junk;
+}
+
 }  // namespace
 }  // namespace cvms::io_detail

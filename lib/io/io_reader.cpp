@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstring>
 #include <ios>
 #include <limits>
@@ -242,11 +243,38 @@ constexpr std::array<unsigned char, 256> character_classes = [] {
   return table;
 }();
 
+// The first of the eight bytes at p (in memory order, on a little-endian
+// machine: the first byte is the word's low one) that may end a token: below
+// 0x21 (every space is) or '#'; 8 if none. Each test is exact for its lowest
+// flagged byte (a borrow only runs upwards), which is all that is read.
+constexpr bool words_of_bytes = std::endian::native == std::endian::little;
+
+unsigned first_stop_candidate(const char* p) {
+  constexpr std::uint64_t ones = 0x0101010101010101u, highs = 0x8080808080808080u;
+  std::uint64_t w;
+  std::memcpy(&w, p, sizeof w);
+  const std::uint64_t below_0x21 = (w - ones * 0x21) & ~w & highs;
+  const std::uint64_t hashes = w ^ (ones * static_cast<unsigned char>('#'));
+  const std::uint64_t is_hash = (hashes - ones) & ~hashes & highs;
+  const std::uint64_t flagged = below_0x21 | is_hash;
+  return flagged == 0 ? 8 : static_cast<unsigned>(std::countr_zero(flagged)) / 8;
+}
+
 // The length of the run of characters of text from `from` on that are in
-// none of the classes in mask.
+// none of the classes in mask: eight bytes at a time to the first byte that
+// may stop it, which the table then decides (a control byte that is no space
+// is part of the token, for the number parser to refuse).
 std::size_t run_outside(std::string_view text, std::size_t from, unsigned char mask) {
   std::size_t i = from;
-  while (i < text.size() && (character_classes[static_cast<unsigned char>(text[i])] & mask) == 0) ++i;
+  while (i < text.size()) {
+    if (words_of_bytes && i + 8 <= text.size()) {
+      const unsigned skip = first_stop_candidate(text.data() + i);
+      i += skip;
+      if (skip == 8) continue;
+    }
+    if ((character_classes[static_cast<unsigned char>(text[i])] & mask) != 0) break;
+    ++i;
+  }
   return i;
 }
 
@@ -406,7 +434,9 @@ std::optional<std::uint64_t> parse_unsigned(std::string_view token) {
   for (char c : token) {
     if (!is_digit(c)) return std::nullopt;
     auto d = static_cast<std::uint64_t>(c - '0');
-    value = value > (max - d) / 10 ? max : value * 10 + d;
+    // value * 10 + d > max, without a division per digit.
+    const bool overflows = value > max / 10 || (value == max / 10 && d > max % 10);
+    value = overflows ? max : value * 10 + d;
   }
   return value;
 }
