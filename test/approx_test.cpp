@@ -108,6 +108,42 @@ TEST(Approx, RandomRationalsBoundHolds) {
   }
 }
 
+// Numerators of one to six limbs over one-limb powers of two (the normals
+// and plane offsets Approx::of reads from the top limbs): the contract, and
+// the very double GMP's truncation gives. Shapes: random limbs, 2^j and
+// 2^j - 1, a top limb alone, and one stray bit far below it.
+TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
+  test::Rng rng(2611);
+  for (int i = 0; i < 40000; ++i) {
+    const int limbs = 1 + static_cast<int>(rng() % 6);
+    mpz_class num = 0;
+    switch (rng() % 4) {
+      case 0:
+        for (int l = 0; l < limbs; ++l) num = (num << 64) + mpz_class(std::to_string(rng()));
+        break;
+      case 1:
+        num = mpz_class(1) << static_cast<unsigned>(rng() % (64 * limbs));
+        if (rng() % 2 == 0) num -= 1;
+        break;
+      case 2:
+        num = mpz_class(std::to_string(rng() | 1)) << (64 * (limbs - 1));
+        break;
+      default:
+        num = (mpz_class(std::to_string(rng() | (std::uint64_t{1} << 63))) << (64 * (limbs - 1))) +
+              (mpz_class(1) << static_cast<unsigned>(rng() % (64 * (limbs - 1) + 1)));
+    }
+    if (num == 0) continue;
+    if (rng() % 2 == 0) num = -num;
+    Rational q(num, mpz_class(1) << static_cast<unsigned>(rng() % 64));
+    q.canonicalize();
+    SCOPED_TRACE("case " + std::to_string(i));
+    ASSERT_EQ(check(q), "");
+    if (abs(q) < power_of_two(1024)) {
+      ASSERT_EQ(Approx::of(q).value, mpq_get_d(q.get_mpq_t())) << to_string(q);
+    }
+  }
+}
+
 TEST(Approx, RandomDoubleNeighbours) {
   // Values just off a double (by a fraction of its ulp), all exponents.
   test::Rng rng(7);

@@ -7,11 +7,50 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "error_bounds.hpp"
 #include "exact_double.hpp"
 
 namespace cvms {
+namespace {
+
+// num / 2^k for a one-limb power-of-two denominator 2^k and a numerator of
+// any size (the primitive normals, up to 2^125, and the planes' offsets,
+// n . p over the denominator of p): the value mpq_get_d gives, truncated
+// toward zero, with the error Approx::of gives, read off the numerator's
+// top limbs. Dividing by 2^k only moves the exponent, so truncating num to
+// its top 53 bits and scaling is the truncation of the quotient, as long as
+// the result is a normal double; otherwise nullopt (the general path).
+std::optional<Approx> truncated_dyadic(mpz_srcptr num, mpz_srcptr den) noexcept {
+  if (mpz_size(den) != 1 || mpz_size(num) == 0) return std::nullopt;
+  const mp_limb_t den_limb = mpz_getlimbn(den, 0);
+  if (!std::has_single_bit(den_limb)) return std::nullopt;
+  const auto n = static_cast<std::size_t>(mpz_size(num));
+  const mp_limb_t* limbs = mpz_limbs_read(num);
+  const mp_limb_t top = limbs[n - 1];
+  const int zeros = std::countl_zero(top);
+  // The numerator's top 64 bits, and whether any bit below them is set.
+  mp_limb_t window = top << zeros;
+  bool below = false;
+  if (n >= 2) {
+    if (zeros != 0) window |= limbs[n - 2] >> (64 - zeros);
+    below = (limbs[n - 2] << zeros) != 0;  // its bits that the window left out
+    for (std::size_t i = 0; i + 2 < n && !below; ++i) below = limbs[i] != 0;
+  }
+  const mp_limb_t mantissa = window >> 11;  // the top 53 bits, truncated
+  const bool exact = !below && (window & 0x7ff) == 0;
+  // value = mantissa 2^(bits - 53 - k), bits = 64 n - zeros.
+  const long exponent = static_cast<long>(64 * n) - zeros - 53 - std::countr_zero(den_limb);
+  // mantissa is in [2^52, 2^53): the value is normal when the exponent of
+  // its leading bit, exponent + 52, is in [-1022, 1023].
+  if (exponent + 52 < -1022 || exponent + 52 > 1023) return std::nullopt;
+  const double d = std::ldexp(static_cast<double>(mantissa), static_cast<int>(exponent));
+  const double value = mpz_sgn(num) < 0 ? -d : d;
+  return Approx{value, exact ? 0.0 : filtered::truncation_error(value)};
+}
+
+}  // namespace
 
 Approx Approx::of(const Rational& q) noexcept {
   // The general case truncates q toward zero (mpq_get_d, mpz_get_d), whose
@@ -45,6 +84,7 @@ Approx Approx::of(const Rational& q) noexcept {
       return {mpz_sgn(num) < 0 ? -v : v, v * filtered::unit_roundoff};
     }
   }
+  if (const std::optional<Approx> a = truncated_dyadic(num, den)) return *a;
   // Integers (the primitive normals of edge facets reach 2^125): mpz_get_d
   // truncates toward zero too, without mpq_get_d's division.
   const bool integer = mpz_cmp_ui(den, 1) == 0;
