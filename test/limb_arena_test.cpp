@@ -79,6 +79,33 @@ TEST(LimbArena, StoredValuesEqualTheOriginalsAndBehaveAsRationals) {
   }
 }
 
+// Integers stored from their limbs: 0, 1 and -1 (views of constants), one
+// and two limbs of either sign, over values that held fractions before;
+// against the same integers made by GMP, as views when the arena holds limbs.
+TEST(LimbArena, StoresIntegersFromTheirLimbs) {
+  LimbArena arena;
+  struct Case {
+    std::uint64_t low, high;
+    bool negative;
+  };
+  const Case cases[] = {{0, 0, false}, {0, 0, true}, {1, 0, false},  {1, 0, true}, {2, 0, true},
+                        {~0ull, 0, false}, {0, 1, true}, {12345, ~0ull >> 3, false}, {~0ull, ~0ull >> 3, true}};
+  std::vector<Rational> stored(std::size(cases), Rational(-7, 3));
+  for (std::size_t i = 0; i < std::size(cases); ++i) {
+    const Case& c = cases[i];
+    arena.store_integer(stored[i], c.low, c.high, c.negative);
+    mpz_class expected = (mpz_class(std::to_string(c.high)) << 64) + mpz_class(std::to_string(c.low));
+    if (c.negative) expected = -expected;
+    EXPECT_EQ(stored[i], Rational(expected)) << i;
+    EXPECT_EQ(stored[i].get_den(), 1) << i;
+    if (LimbArena::holds_limbs()) {
+      EXPECT_EQ(mpq_numref(stored[i].get_mpq_t())->_mp_alloc, 0) << i;
+    }
+    const Rational copy = stored[i];  // a copy owns its limbs and keeps the value
+    EXPECT_EQ(copy, Rational(expected)) << i;
+  }
+}
+
 TEST(LimbArena, ValuesStayValidInAnArenaThatAbsorbedTheirs) {
   const std::vector<Rational> originals = random_values(99, 5000);
   LimbArena kept;

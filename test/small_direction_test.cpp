@@ -11,6 +11,7 @@
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/rational.hpp"
+#include "limb_arena.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -67,6 +68,45 @@ TEST(SmallDirection, CrossMatchesRationalPrimitiveCross) {
     Vec3 c{Rational(5), Rational(-1, 3), Rational(7)};  // overwritten, whatever it held
     primitive_cross(u, v, c);
     ASSERT_EQ(c, primitive_direction(expected_cross)) << "seed " << seed << " i " << i;
+  }
+}
+
+// The same cross products as integers, before they become rationals: the
+// vector assign_to and store write, and the approximations approx() reads
+// off the integers, against ApproxVec3::of of the rational vector (same
+// doubles, same bounds), also negated and for magnitudes of every size.
+TEST(SmallDirection, SmallNormalsMatchTheirRationalsAndApproximations) {
+  const std::uint64_t seed = 2612;
+  std::mt19937_64 rng(seed);
+  LimbArena arena;
+  for (int i = 0; i < 3000; ++i) {
+    const int bits = 1 + static_cast<int>(rng() % 62);  // coordinates of 1 to 62 bits: products of 2 to 125
+    const std::int64_t limit = (std::int64_t{1} << bits) - 1;
+    std::uniform_int_distribution<std::int64_t> c(-limit, limit);
+    const SmallDirection u{{c(rng), c(rng), i % 5 == 0 ? 0 : c(rng)}};
+    const SmallDirection v{{c(rng), c(rng), c(rng)}};
+    const Vec3 expected_cross = cross(u.to_vec3(), v.to_vec3());
+    if (is_zero(expected_cross)) continue;
+    SmallNormal small = primitive_cross(u, v);
+    Vec3 expected = primitive_direction(expected_cross);
+    if (i % 2 == 1) {
+      small.negate();
+      expected = -expected;
+    }
+    SCOPED_TRACE("seed " + std::to_string(seed) + " i " + std::to_string(i));
+    Vec3 assigned{Rational(5), Rational(-1, 3), Rational(7)};  // overwritten, whatever it held
+    small.assign_to(assigned);
+    ASSERT_EQ(assigned, expected);
+    Vec3 stored{Rational(1, 2), Rational(3), Rational(-4, 9)};
+    small.store(arena, stored);
+    ASSERT_EQ(stored, expected);
+    const ApproxVec3 approx = small.approx(), oracle = ApproxVec3::of(expected);
+    const Approx* got[3] = {&approx.x, &approx.y, &approx.z};
+    const Approx* want[3] = {&oracle.x, &oracle.y, &oracle.z};
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_EQ(got[k]->value, want[k]->value) << to_string(expected[k]);
+      ASSERT_EQ(got[k]->error, want[k]->error) << to_string(expected[k]);
+    }
   }
 }
 

@@ -158,23 +158,29 @@ struct FaceCorners {
   std::vector<std::uint32_t> ids;
 };
 
-// out = the primitive integer normal of cross(b - a, c - a) (nonzero): in
-// 128-bit integers when the points are doubles of close exponents or small
-// fractions (short decimals), else rational. Written into out's storage (a
-// moved mpq_class allocates anew).
-void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3& out) {
+// out = the primitive integer normal of cross(b - a, c - a) (nonzero), its
+// numerators kept in arena, and approx its approximation: in 128-bit
+// integers when the points are doubles of close exponents or small fractions
+// (short decimals), else rational (in `general` first).
+void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, detail::LimbArena& arena, Vec3& general, Vec3& out,
+                      ApproxVec3& approx) {
+  std::optional<detail::SmallNormal> small;
   const std::optional<detail::SmallDirection> u = detail::small_integer_direction(a.approx, b.approx);
   const std::optional<detail::SmallDirection> v =
       u ? detail::small_integer_direction(a.approx, c.approx) : std::nullopt;
   if (u && v) {
-    detail::primitive_cross(*u, *v, out);
+    small = detail::primitive_cross(*u, *v);
+  } else if (const auto d = detail::small_fraction_directions(a.exact, b.exact, c.exact)) {
+    small = detail::primitive_cross((*d)[0], (*d)[1]);
+  }
+  if (small) {
+    small->store(arena, out);
+    approx = small->approx();
     return;
   }
-  if (const auto d = detail::small_fraction_directions(a.exact, b.exact, c.exact)) {
-    detail::primitive_cross((*d)[0], (*d)[1], out);
-    return;
-  }
-  out = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
+  general = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
+  arena.store(out, general);
+  approx = ApproxVec3::of(out);
 }
 
 // Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
@@ -191,14 +197,14 @@ enum class FaceVerdict {
   failed            // collinear or not planar
 };
 
-FaceVerdict fast_face_plane(const FaceCorners& face, Vec3& normal, ApproxVec3& approx, std::vector<char>& corner) {
+FaceVerdict fast_face_plane(const FaceCorners& face, detail::LimbArena& arena, Vec3& general_normal, Vec3& normal,
+                            ApproxVec3& approx, std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
   std::size_t k = 2;
   while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
   if (k == m) return FaceVerdict::failed;
-  primitive_normal(pts[0], pts[1], pts[k], normal);
-  approx = ApproxVec3::of(normal);
+  primitive_normal(pts[0], pts[1], pts[k], arena, general_normal, normal, approx);
   const Vec3Ref plane{normal, approx};
   if (m == 3) {
     corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
@@ -272,7 +278,7 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   out.corner.assign(mesh.num_halfedges(), 0);
   FaceCorners face{FaceId(0), {}, {}};
   std::vector<char> corner;
-  Vec3 normal;  // keeps its limbs from face to face
+  Vec3 general_normal;  // keeps its limbs from face to face
   for (FaceId f : mesh.faces()) {
     face.f = f;
     face.pts.clear();
@@ -281,8 +287,8 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
       face.pts.push_back(points[mesh.from(h)]);
       face.ids.push_back(mesh.from(h).index());
     }
-    const FaceVerdict verdict = fast_face_plane(face, normal, out.approx[f.index()], corner);
-    if (verdict != FaceVerdict::failed) out.limbs.store(out.normal[f.index()], normal);
+    const FaceVerdict verdict =
+        fast_face_plane(face, out.limbs, general_normal, out.normal[f.index()], out.approx[f.index()], corner);
     if (verdict == FaceVerdict::failed_in_plane) {
       const FacePlane plane{out.normal[f.index()], out.approx[f.index()]};
       report_face_fault(face, &plane);

@@ -356,11 +356,16 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
       const HalfedgeId ha(source.index), hb(source.other);
       const SmallDirection* da = scratch.directions_a.small(ha);
       const SmallDirection* db = scratch.directions_b.small(hb);
-      if (da != nullptr && db != nullptr)
-        primitive_cross(*da, *db, scratch.normal);
-      else
-        primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), scratch.normal);
       const bool flip = (source.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
+      if (da != nullptr && db != nullptr) {
+        // Straight from 128-bit integers into the arena: no GMP value to copy.
+        SmallNormal small = primitive_cross(*da, *db);
+        if (flip) small.negate();
+        planes.normal_approx[i] = small.approx();
+        small.store(scratch.limbs, planes.normals[i]);
+        return planes.normals[i];
+      }
+      primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), scratch.normal);
       if (flip)
         for (int k = 0; k < 3; ++k) mpq_neg(scratch.normal[k].get_mpq_t(), scratch.normal[k].get_mpq_t());
       break;

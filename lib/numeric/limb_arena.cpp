@@ -107,6 +107,30 @@ void LimbArena::store(Rational& out, const Rational& value) {
   view(mpq_numref(o), num_limbs > 0 ? limbs : &one_limb, num);
 }
 
+void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t high, bool negative) {
+  const mp_size_t size = high != 0 ? 2 : (low != 0 ? 1 : 0);
+  mpq_ptr o = out.get_mpq_t();
+  if (mpz_cmp_ui(mpq_denref(o), 1) != 0) mpz_set_ui(mpq_denref(o), 1);
+  mpz_ptr num = mpq_numref(o);
+  if (!holds_limbs()) {
+    mp_limb_t* limbs = mpz_limbs_write(num, size == 0 ? 1 : size);
+    limbs[0] = low;
+    if (size == 2) limbs[1] = high;
+    mpz_limbs_finish(num, negative ? -size : size);
+    return;
+  }
+  // As in store(): 0 and 1 are views of constants, the rest of new limbs.
+  const mp_limb_t* view_limbs = size == 0 ? &zero_limb : &one_limb;
+  if (size == 2 || (size == 1 && low != 1)) {
+    mp_limb_t* limbs = allocate(static_cast<std::size_t>(size));
+    limbs[0] = low;
+    if (size == 2) limbs[1] = high;
+    view_limbs = limbs;
+  }
+  mpz_clear(num);
+  mpz_roinit_n(num, view_limbs, negative ? -size : size);
+}
+
 void LimbArena::store(Vec3& out, const Vec3& value) {
   for (int i = 0; i < 3; ++i) store(out[i], value[i]);
 }

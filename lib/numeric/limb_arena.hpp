@@ -31,6 +31,7 @@
 #include <gmp.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -63,6 +64,9 @@ class LimbArena {
   void store(Rational& out, const Rational& value);
   /// store() per coordinate.
   void store(Vec3& out, const Vec3& value);
+  /// out = the integer -+(high 2^64 + low), stored like store() stores it,
+  /// without a GMP value to copy from.
+  void store_integer(Rational& out, std::uint64_t low, std::uint64_t high, bool negative);
 
   /// Takes over other's blocks (their addresses do not change), so that the
   /// values stored in either stay valid as long as this arena lives.

@@ -10,6 +10,9 @@
 
 #include <gmp.h>
 
+#include "error_bounds.hpp"
+#include "limb_arena.hpp"
+
 namespace cvms::detail {
 namespace {
 
@@ -70,6 +73,25 @@ void set_integer(Rational& out, Int128 x) {
     if (x < 0) mpz_neg(num, num);
   }
   mpz_set_ui(mpq_denref(out.get_mpq_t()), 1);
+}
+
+// Approx::of(x) for an integer x below 2^125 in magnitude: x truncated
+// toward zero to 53 significant bits (a normal double), exact or with the
+// truncation bound, as Approx::of gives it.
+Approx truncated_integer(Int128 x) noexcept {
+  const Uint128 m = magnitude(x);
+  const int bits = 128 - (static_cast<std::uint64_t>(m >> 64) != 0
+                              ? std::countl_zero(static_cast<std::uint64_t>(m >> 64))
+                              : 64 + std::countl_zero(static_cast<std::uint64_t>(m)));
+  if (bits <= 53) {
+    const double d = static_cast<double>(static_cast<std::uint64_t>(m));  // exact
+    return {x < 0 ? -d : d, 0.0};
+  }
+  const int shift = bits - 53;
+  const bool exact = (m & ((Uint128{1} << shift) - 1)) == 0;
+  const double d = std::ldexp(static_cast<double>(static_cast<std::uint64_t>(m >> shift)), shift);
+  const double value = x < 0 ? -d : d;
+  return {value, exact ? 0.0 : filtered::truncation_error(value)};
 }
 
 // A finite nonzero double as odd mantissa * 2^exponent, read off its bits.
@@ -205,7 +227,7 @@ std::optional<std::array<SmallDirection, 2>> small_fraction_directions(const Vec
   return d;
 }
 
-void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out) {
+SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) noexcept {
   // Each product is below 2^124 in magnitude, each difference below 2^125.
   Int128 c[3];
   for (int i = 0; i < 3; ++i) {
@@ -213,7 +235,34 @@ void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out
     c[i] = static_cast<Int128>(u.c[j]) * v.c[k] - static_cast<Int128>(u.c[k]) * v.c[j];
   }
   make_primitive(c);
-  for (int i = 0; i < 3; ++i) set_integer(out[i], c[i]);
+  return {{c[0], c[1], c[2]}};
+}
+
+void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out) {
+  primitive_cross(u, v).assign_to(out);
+}
+
+void SmallNormal::negate() noexcept {
+  for (Int128& x : c) x = -x;
+}
+
+ApproxVec3 SmallNormal::approx() const noexcept {
+  ApproxVec3 out;
+  Approx* parts[3] = {&out.x, &out.y, &out.z};
+  for (std::size_t i = 0; i < 3; ++i) *parts[i] = truncated_integer(c[i]);
+  return out;
+}
+
+void SmallNormal::assign_to(Vec3& out) const {
+  for (std::size_t i = 0; i < 3; ++i) set_integer(out[static_cast<int>(i)], c[i]);
+}
+
+void SmallNormal::store(LimbArena& arena, Vec3& out) const {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Uint128 m = magnitude(c[i]);
+    arena.store_integer(out[static_cast<int>(i)], static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64),
+                        c[i] < 0);
+  }
 }
 
 }  // namespace cvms::detail

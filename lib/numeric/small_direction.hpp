@@ -40,6 +40,28 @@ struct SmallDirection {
 [[nodiscard]] std::optional<std::array<SmallDirection, 2>> small_fraction_directions(const Vec3& a, const Vec3& b,
                                                                                      const Vec3& c);
 
+class LimbArena;
+
+/// A primitive integer vector in 128-bit coordinates: the cross product of
+/// two small directions, before it becomes rationals.
+struct SmallNormal {
+  __extension__ using Int128 = __int128;
+  std::array<Int128, 3> c;  ///< the coordinates, below 2^125 in magnitude
+
+  void negate() noexcept;
+  /// ApproxVec3::of of the same vector (the same doubles and bounds),
+  /// read off the integers.
+  [[nodiscard]] ApproxVec3 approx() const noexcept;
+  /// out = this vector, in out's existing storage.
+  void assign_to(Vec3& out) const;
+  /// out = this vector, numerators kept in arena (LimbArena::store_integer).
+  void store(LimbArena& arena, Vec3& out) const;
+};
+
+/// primitive_direction(cross(u, v)) in 128-bit integers.
+/// \pre u and v are not parallel.
+[[nodiscard]] SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) noexcept;
+
 /// out = primitive_direction(cross(u, v)), computed in 128-bit integers and
 /// written into out's existing storage. \pre u and v are not parallel.
 void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out);
