@@ -2,6 +2,7 @@
 // Approx::of: the bound |value - q| <= error holds, checked exactly, and
 // error == 0 exactly when q is a double.
 #include "approx.hpp"
+#include "error_bounds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -139,7 +140,11 @@ TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
     SCOPED_TRACE("case " + std::to_string(i));
     ASSERT_EQ(check(q), "");
     if (abs(q) < power_of_two(1024)) {
-      ASSERT_EQ(Approx::of(q).value, mpq_get_d(q.get_mpq_t())) << to_string(q);
+      // The double and the bound of the general path: GMP's truncation, and
+      // the truncation bound unless q is a double.
+      const double truncated = mpq_get_d(q.get_mpq_t());
+      ASSERT_EQ(Approx::of(q).value, truncated) << to_string(q);
+      ASSERT_EQ(Approx::of(q).error, is_a_double(q) ? 0.0 : filtered::truncation_error(truncated)) << to_string(q);
     }
   }
 }

@@ -128,9 +128,13 @@ bool plane_numerators_are_views(const ConvexPolyhedron& p, bool views) {
 TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
   const PolygonSoup outward = shapes::rotated_geodesic_sphere(2).to_soup();
   const PolygonSoup inward = test::reversed(outward);
-  for (const PolygonSoup* soup : {&outward, &inward}) {
+  // Faces that merge into facets (the kept normals move to a fresh arena),
+  // outward and inward.
+  const PolygonSoup merging = test::subdivided(test::cube_quads(), 2);
+  const PolygonSoup merging_inward = test::reversed(merging);
+  for (const PolygonSoup* soup : {&outward, &inward, &merging, &merging_inward}) {
     const ConvexPolyhedron p = ConvexPolyhedron::from_soup(*soup);
-    ASSERT_EQ(p.num_facets(), outward.num_faces());
+    ASSERT_EQ(p.num_facets(), soup == &merging || soup == &merging_inward ? 6u : outward.num_faces());
     for (FaceId f : p.mesh().faces()) {
       const HalfedgeId h = p.mesh().halfedge(f);
       const Vec3& a = p.vertex(p.mesh().from(h));
@@ -141,7 +145,7 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
           n = -n;  // an outward normal has every vertex at or below its plane
           break;
         }
-      ASSERT_EQ(p.normal(f), n) << "facet " << f.index() << (soup == &inward ? " (inward input)" : "");
+      ASSERT_EQ(p.normal(f), n) << "facet " << f.index() << (soup == &inward || soup == &merging_inward ? " (inward input)" : "");
       ASSERT_EQ(p.plane_offset(f), dot(n, a)) << "facet " << f.index();
     }
     if (detail::LimbArena::holds_limbs()) {

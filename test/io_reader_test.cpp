@@ -66,38 +66,65 @@ TEST(ReserveFor, TheByteLimitBoundsTheReserveToo) {
   EXPECT_EQ(reader.reserve_for(10'000, 6), 600u / 6 + 1);
 }
 
-void expect_points_in_order(std::size_t first_block, std::size_t count) {
-  PointBuffer buffer(first_block);
-  for (std::size_t i = 0; i < count; ++i) buffer.append() = Vec3(Rational(i), Rational(1, i + 1), Rational(-1));
+Vec3 nth_point(std::size_t i) { return Vec3(Rational(i), Rational(1, i + 1), Rational(-1)); }
+
+void expect_points_in_order(PointBuffer buffer, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) buffer.append() = nth_point(i);
   ASSERT_EQ(buffer.size(), count);
   const std::vector<Vec3> points = buffer.take();
-  ASSERT_EQ(points.size(), count) << "first block " << first_block;
-  for (std::size_t i = 0; i < count; ++i)
-    ASSERT_EQ(points[i], Vec3(Rational(i), Rational(1, i + 1), Rational(-1))) << "point " << i;
+  ASSERT_EQ(points.size(), count);
+  for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(points[i], nth_point(i)) << "point " << i;
   EXPECT_EQ(buffer.size(), 0u);
 }
 
-TEST(PointBuffer, KeepsEveryPointInOrderWhateverTheFirstBlock) {
-  expect_points_in_order(10'000, 10'000);  // exact: one block, moved out whole
-  expect_points_in_order(10'000, 3);       // a header larger than the points read
-  expect_points_in_order(3, 10'000);       // a header smaller: more blocks
-  expect_points_in_order(0, 5'000);        // no count at all
-  expect_points_in_order(1, 1);
+TEST(PointBuffer, KeepsEveryPointInOrderWhateverTheDeclaredCount) {
+  for (const std::size_t count : {1u, 3u, 64u, 65u, 5'000u, 10'000u}) {
+    SCOPED_TRACE("count " + std::to_string(count));
+    expect_points_in_order(PointBuffer(), count);
+    expect_points_in_order(PointBuffer(PointBuffer::Declared{count}), count);      // exact
+    expect_points_in_order(PointBuffer(PointBuffer::Declared{10'000}), count);     // a larger header
+    expect_points_in_order(PointBuffer(PointBuffer::Declared{3}), count);          // a smaller one
+    expect_points_in_order(PointBuffer(PointBuffer::Declared{0}), count);
+  }
 }
 
-TEST(PointBuffer, AnExactFirstBlockIsTakenWithoutMovingAPoint) {
-  PointBuffer small(3);
+// Without a declared count a point never moves until take() (the ASCII STL
+// reader keys its vertex map on their addresses), across blocks too.
+TEST(PointBuffer, WithoutACountPointsNeverMove) {
+  PointBuffer buffer;
+  std::vector<const Vec3*> addresses;
+  for (std::size_t i = 0; i < 10'000; ++i) {
+    Vec3& p = buffer.append();
+    p = nth_point(i);
+    addresses.push_back(&p);
+  }
+  for (std::size_t i = 0; i < addresses.size(); ++i) ASSERT_EQ(*addresses[i], nth_point(i)) << i;
+}
+
+TEST(PointBuffer, AnExactDeclaredCountIsTakenWithoutMovingAPoint) {
+  PointBuffer small(PointBuffer::Declared{3});
   const Vec3* first = &small.append();
   small.append();
   small.append();
   EXPECT_EQ(small.take().data(), first);
   // A large block is reserved after its first few points were read; from
   // then on nothing moves.
-  PointBuffer large(1000);
+  PointBuffer large(PointBuffer::Declared{1000});
   for (int i = 0; i < 100; ++i) large.append();
   const Vec3* hundredth = &large.append();
   for (int i = 101; i < 1000; ++i) large.append();
   EXPECT_EQ(large.take().data() + 100, hundredth);
+}
+
+// A block handed over whole keeps no unused room: a few points in a buffer
+// sized for many come back in a vector of their own size.
+TEST(PointBuffer, FewPointsDoNotKeepARoomyBlock) {
+  PointBuffer buffer;
+  for (int i = 0; i < 65; ++i) buffer.append();
+  EXPECT_EQ(buffer.take().capacity(), 65u);
+  PointBuffer declared(PointBuffer::Declared{10'000});
+  for (int i = 0; i < 100; ++i) declared.append();
+  EXPECT_EQ(declared.take().capacity(), 100u);
 }
 
 // Counts and indices saturate at 2^64 - 1: against GMP's value of the

@@ -52,6 +52,36 @@ TEST(ReadStl, AsciiMixedCaseSeveralSolidsMergedVertices) {
   EXPECT_EQ(faces_of(soup), (Faces{{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {2, 1, 3}}));
 }
 
+// A strip of 4,998 triangles over 5,000 distinct points, each point shared
+// by up to three triangles: points come back once each, in order of first
+// appearance, however many blocks the reader's buffer needs for them (the
+// reader merges vertices by the addresses of the points it keeps).
+TEST(ReadStl, AsciiStripOfManyDistinctVerticesMergesEachOnce) {
+  constexpr int n = 5000;
+  auto point = [](int i) { return v3(i, (i * i) % 97, i % 3); };
+  std::string text = "solid strip\n";
+  for (int i = 0; i + 2 < n; ++i) {
+    text += "facet normal 0 0 0\nouter loop\n";
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = point(i + k);
+      text += "vertex " + to_string(p.x) + " " + to_string(p.y) + " " + to_string(p.z) + "\n";
+    }
+    text += "endloop\nendfacet\n";
+  }
+  text += "endsolid strip\n";
+  const PolygonSoup soup = stl_from(text);
+  ASSERT_EQ(soup.points.size(), static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) ASSERT_EQ(soup.points[static_cast<std::size_t>(i)], point(i)) << i;
+  ASSERT_EQ(soup.num_faces(), static_cast<std::size_t>(n - 2));
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const auto face = soup.face(f);
+    ASSERT_EQ(std::vector<std::uint32_t>(face.begin(), face.end()),
+              (std::vector<std::uint32_t>{static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(f + 1),
+                                          static_cast<std::uint32_t>(f + 2)}))
+        << f;
+  }
+}
+
 TEST(ReadStl, BinaryWithSolidHeaderIsDetectedBySize) {
   PolygonSoup soup = read_file(data_path("tetra_binary_solid_header.stl"));
   // 0.1f = 13421773 * 2^-27, the smallest subnormal 2^-149, FLT_MAX = (2^24 - 1) * 2^104;

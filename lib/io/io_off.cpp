@@ -148,7 +148,7 @@ PolygonSoup parse_off(LineReader& reader) {
   PolygonSoup soup;
   // A vertex line holds at least "0 0 0" and a separator.
   constexpr std::uint64_t min_vertex_bytes = 6;
-  PointBuffer points(reader.reserve_for(num_vertices, min_vertex_bytes));
+  PointBuffer points(PointBuffer::Declared{reader.reserve_for(num_vertices, min_vertex_bytes)});
   for (std::uint64_t v = 0; v < num_vertices; ++v) {
     if (!next_content_line(reader, tokens, token))
       fail_end(reader, "the header declares " + std::to_string(num_vertices) + " vertices but only " +

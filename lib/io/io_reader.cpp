@@ -243,6 +243,14 @@ constexpr std::array<unsigned char, 256> character_classes = [] {
   return table;
 }();
 
+// The word scan below finds every byte that may end a token only because
+// each of them is below 0x21 or is '#'.
+static_assert([] {
+  for (int c = 0; c < 256; ++c)
+    if (character_classes[static_cast<std::size_t>(c)] != 0 && c >= 0x21 && c != '#') return false;
+  return true;
+}());
+
 // The first of the eight bytes at p (in memory order, on a little-endian
 // machine: the first byte is the word's low one) that may end a token: below
 // 0x21 (every space is) or '#'; 8 if none. Each test is exact for its lowest
@@ -368,17 +376,17 @@ const Rational& check_number(LineReader& reader, std::string_view token, const V
 }
 
 // A block is full at its capacity: a vector of rationals is never let grow
-// by itself, since growing moves (allocates for) every element. The first
-// block starts with room for a few points and grows towards the declared
-// count as points arrive (widen_first_block), so that what it reserves stays
-// within a fixed multiple of what was read: input refused at its first
-// numbers never pays for its header's count.
+// by itself, since growing moves (allocates for) every element. With a
+// declared count, the first block starts with room for a few points and
+// grows towards the count as points arrive (widen_first_block), so that
+// what it reserves stays within a fixed multiple of what was read: input
+// refused at its first numbers never pays for its header's count.
 Vec3& PointBuffer::append() {
   constexpr std::size_t trial_points = 64;
   if (blocks_.empty()) {
-    add_block(std::max<std::size_t>(std::min(first_block_, trial_points), 1));
+    add_block(declared_ ? std::max<std::size_t>(std::min(*declared_, trial_points), 1) : block_size);
   } else if (blocks_.back().size() == blocks_.back().capacity()) {
-    if (blocks_.size() == 1 && first_block_ > size_)
+    if (declared_ && blocks_.size() == 1 && *declared_ > size_)
       widen_first_block();
     else
       add_block(block_size);
@@ -398,13 +406,15 @@ void PointBuffer::add_block(std::size_t capacity) {
 void PointBuffer::widen_first_block() {
   const std::size_t read = blocks_.front().size();
   std::vector<Vec3> wide;
-  wide.reserve(read * 64 >= first_block_ ? first_block_ : read * 16);
+  wide.reserve(read * 64 >= *declared_ ? *declared_ : read * 16);
   for (Vec3& p : blocks_.front()) wide.push_back(std::move(p));
   blocks_.front() = std::move(wide);
 }
 
 std::vector<Vec3> PointBuffer::take() {
-  if (blocks_.size() == 1) {
+  // Whole only when full: a nearly empty block would keep its unused room
+  // for as long as the points live (a polyhedron may take them over).
+  if (blocks_.size() == 1 && blocks_.front().size() == blocks_.front().capacity()) {
     std::vector<Vec3> points = std::move(blocks_.front());
     blocks_.clear();
     size_ = 0;

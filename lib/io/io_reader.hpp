@@ -189,11 +189,18 @@ void parse_point(LineReader& reader, NextToken&& next, Vec3& p, const char* elem
 /// exceeds that of the result by more than a block.
 class PointBuffer {
  public:
-  /// The first block holds `first_block` points (a header's count, bounded
-  /// by LineReader::reserve_for): when it is right, take() moves that block
-  /// out whole, and no point is moved one by one (moving a rational
-  /// allocates a new limb for the moved-from one).
-  explicit PointBuffer(std::size_t first_block = block_size) : first_block_(first_block) {}
+  /// Blocks of a fixed size: a point, once appended, never moves until
+  /// take() (readers may keep its address, as the ASCII STL reader does).
+  PointBuffer() = default;
+  /// For a declared count (a header's, bounded by LineReader::reserve_for):
+  /// the first block grows towards it as points arrive, and when the count
+  /// is right take() hands that block over whole, so that no point is moved
+  /// one by one (moving a rational allocates a limb for the moved-from one).
+  /// Growing moves the points appended before: do not keep their addresses.
+  struct Declared {
+    std::size_t count;
+  };
+  explicit PointBuffer(Declared declared) : declared_(declared.count) {}
   /// A new default point at the end.
   Vec3& append();
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
@@ -205,7 +212,7 @@ class PointBuffer {
   void widen_first_block();
 
   static constexpr std::size_t block_size = 4096;
-  std::size_t first_block_;
+  std::optional<std::size_t> declared_;
   std::vector<std::vector<Vec3>> blocks_;
   std::size_t size_ = 0;
 };

@@ -267,12 +267,14 @@ struct FacePlanes {
   // The normals' numerators, and later the result's offsets' (the result
   // keeps it): a block per number would be 80,000 heap blocks on Sphere6.
   detail::LimbArena limbs;
+  std::size_t input_faces = 0;  // normal.size() before keep_first_faces
   [[nodiscard]] Vec3Ref ref(std::uint32_t f) const { return {normal[f], approx[f]}; }
 };
 
 // 2. Faces: orientation normal, zero area, planarity, convexity.
 FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   FacePlanes out;
+  out.input_faces = mesh.num_faces();
   out.normal.resize(mesh.num_faces());
   out.approx.resize(mesh.num_faces());
   out.corner.assign(mesh.num_halfedges(), 0);
@@ -587,21 +589,32 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, FacePlanes
   planes.normals = std::move(faces.normal);
   planes.normal_approx = std::move(faces.approx);
   planes.offsets.resize(regions.size());
+  // The arena holds the normals of every input face; when faces merged,
+  // the kept ones move to an arena of their own, so that the result does not
+  // keep the others' limbs (a finely triangulated box would keep millions).
+  detail::LimbArena limbs;
+  if (regions.size() == faces.input_faces) {
+    limbs = std::move(faces.limbs);
+  } else {
+    Vec3 copy;
+    for (Vec3& normal : planes.normals) {
+      copy = normal;
+      limbs.store(normal, copy);
+    }
+  }
   detail::DotScratch scratch;
   Rational offset;  // keeps its limbs from facet to facet
-  Vec3 negated;
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
     Vec3& normal = planes.normals[r];
-    if (flip) {  // the arena's values are never a GMP output: store anew
-      negated = -normal;
-      faces.limbs.store(normal, negated);
+    if (flip) {
+      for (int i = 0; i < 3; ++i) limbs.negate_stored(normal[i]);
       planes.normal_approx[r] = ApproxVec3::of(normal);
     }
     const Vec3& corner = merged.position(merged.from(merged.halfedge(FaceId(r))));
     detail::integer_dot(normal, corner, scratch, offset);
-    faces.limbs.store(planes.offsets[r], offset);
+    limbs.store(planes.offsets[r], offset);
   }
-  return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes), std::move(faces.limbs));
+  return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes), std::move(limbs));
 }
 
 // 8. Global: an interior point o below every facet, and a ray from o that

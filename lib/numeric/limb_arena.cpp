@@ -131,6 +131,16 @@ void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t hi
   mpz_roinit_n(num, view_limbs, negative ? -size : size);
 }
 
+void LimbArena::negate_stored(Rational& out) const {
+  mpz_ptr num = mpq_numref(out.get_mpq_t());
+  if (!holds_limbs()) {
+    mpz_neg(num, num);
+    return;
+  }
+  const auto size = static_cast<mp_size_t>(mpz_size(num));
+  mpz_roinit_n(num, size == 0 ? &zero_limb : mpz_limbs_read(num), mpz_sgn(num) < 0 ? size : -size);
+}
+
 void LimbArena::store(Vec3& out, const Vec3& value) {
   for (int i = 0; i < 3; ++i) store(out[i], value[i]);
 }

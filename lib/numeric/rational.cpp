@@ -139,7 +139,11 @@ constexpr auto pow5_inverse_table = [] {
   for (std::size_t i = 0; i < table.size(); ++i) table[i] = inverse_mod_2_64(pow5_table[i]);
   return table;
 }();
-static_assert(pow5_table[max_pow5_in_limb] * pow5_inverse_table[max_pow5_in_limb] == 1);
+static_assert([] {
+  for (std::size_t i = 0; i < pow5_table.size(); ++i)
+    if (pow5_table[i] * pow5_inverse_table[i] != 1) return false;
+  return true;
+}());
 constexpr mp_limb_t ten_to_19 = 10000000000000000000u;  // < 2^64
 
 // Bits of a number of `count` decimal digits, from above (log2(10) < 3.33).
@@ -165,7 +169,8 @@ struct SmallNatural {
   // induction, Q d = N + c B^size with Q = sum q_i B^i < B^size and B = 2^64
   // (each q_i d = n_i - c_i + c_(i+1) B). So c = 0 means Q d = N; and if d
   // divides N, N/d is the one residue below B^size that d times is N modulo
-  // B^size, so Q = N/d and c = 0. No division instruction, and c < d <= B.
+  // B^size, so Q = N/d and c = 0. No division instruction; c <= d < B (the
+  // high half of q d is at most d - 1, plus a borrow of 1).
   bool divide_if_exact(mp_limb_t d, mp_limb_t inverse) {
     mp_limb_t quotient[small_limbs];
     mp_limb_t carry = 0;
