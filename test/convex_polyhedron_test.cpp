@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -166,6 +167,65 @@ TEST(ConvexPolyhedron, OutputIsCanonical) {
     std::rotate(rotated.begin(), std::min_element(rotated.begin(), rotated.end()), rotated.end());
     auto b = out.face(f);
     EXPECT_EQ(rotated, std::vector<std::uint32_t>(b.begin(), b.end()));
+  }
+}
+
+// Every link of two meshes, and their positions.
+void expect_same_mesh(const Mesh& got, const Mesh& want) {
+  ASSERT_EQ(got.num_vertices(), want.num_vertices());
+  ASSERT_EQ(got.num_halfedges(), want.num_halfedges());
+  ASSERT_EQ(got.num_faces(), want.num_faces());
+  for (std::uint32_t i = 0; i < want.num_halfedges(); ++i) {
+    const HalfedgeId h(i);
+    ASSERT_EQ(got.to(h), want.to(h)) << "halfedge " << i;
+    ASSERT_EQ(got.next(h), want.next(h)) << "halfedge " << i;
+    ASSERT_EQ(got.prev(h), want.prev(h)) << "halfedge " << i;
+    ASSERT_EQ(got.face(h), want.face(h)) << "halfedge " << i;
+  }
+  for (FaceId f : want.faces()) ASSERT_EQ(got.halfedge(f), want.halfedge(f)) << "face " << f.index();
+  for (VertexId v : want.vertices()) {
+    ASSERT_EQ(got.halfedge(v), want.halfedge(v)) << "vertex " << v.index();
+    ASSERT_EQ(got.position(v), want.position(v)) << "vertex " << v.index();
+  }
+}
+
+// The result's mesh is what Mesh::from_soup builds from its canonical soup
+// (every facet from its smallest vertex), whichever way it was made: from a
+// soup whose face cycles start anywhere (nothing merged: the input's own
+// connectivity is kept), with faces merged, vertices dropped or the
+// orientation flipped (a second build), and from a caller's mesh.
+TEST(ConvexPolyhedron, ResultMeshIsTheMeshOfItsCanonicalSoup) {
+  std::mt19937 rng(2727);
+  auto rotated_cycles = [&rng](const PolygonSoup& soup) {
+    PolygonSoup out;
+    out.points = soup.points;
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+      auto face = soup.face(f);
+      std::vector<std::uint32_t> cycle(face.begin(), face.end());
+      std::rotate(cycle.begin(), cycle.begin() + static_cast<long>(rng() % cycle.size()), cycle.end());
+      out.add_face(cycle);
+    }
+    return out;
+  };
+  const std::vector<PolygonSoup> solids{test::tetrahedron(),
+                                        test::octahedron(),
+                                        test::subdivided(test::prism(), 2),
+                                        test::cube_triangles(),  // merges
+                                        test::reversed(test::octahedron()),  // flips
+                                        test::reversed(test::subdivided(test::prism(), 1))};
+  for (std::size_t i = 0; i < solids.size(); ++i) {
+    for (int round = 0; round < 3; ++round) {
+      SCOPED_TRACE("solid " + std::to_string(i) + " round " + std::to_string(round));
+      const PolygonSoup soup = rotated_cycles(solids[i]);
+      const ConvexPolyhedron p = ConvexPolyhedron::from_soup(soup);
+      expect_same_mesh(p.mesh(), Mesh::from_soup(p.to_soup()));
+      const ConvexPolyhedron q = ConvexPolyhedron::from_mesh(Mesh::from_soup(soup));
+      expect_same_mesh(q.mesh(), p.mesh());
+      for (FaceId f : p.mesh().faces()) {
+        ASSERT_EQ(q.normal(f), p.normal(f));
+        ASSERT_EQ(q.plane_offset(f), p.plane_offset(f));
+      }
+    }
   }
 }
 

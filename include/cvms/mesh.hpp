@@ -258,10 +258,17 @@ class Mesh {
   // a_i + b_j by construction; topology is checked in full. Only the library
   // can call it: the promise's type is incomplete outside.
   static Mesh from_soup(PolygonSoup soup, const detail::DistinctPoints& promise);
+  // with_positions, and each face's stored halfedge the one leaving its
+  // smallest vertex: by the numbering rules above, the mesh from_soup builds
+  // from this mesh's soup with every face cycle rotated to start there.
+  [[nodiscard]] Mesh with_faces_from_smallest_vertex(std::vector<Vec3> positions,
+                                                     const detail::DistinctPoints& promise) const;
   /// \endcond
 
  private:
   static Mesh build(PolygonSoup soup, bool check_points);
+  // This connectivity with the given positions; no checks.
+  [[nodiscard]] Mesh same_connectivity(std::vector<Vec3> positions) const;
 
   std::vector<Vec3> positions_;
   std::vector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex

@@ -538,11 +538,26 @@ std::vector<Vec3> kept_points(const Mesh& mesh, const FacetsAtVertices& facets_a
   return points;
 }
 
+bool keeps_every_vertex(const Mesh& mesh, const FacetsAtVertices& facets_at) {
+  for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
+    if (!facets_at.extreme(v)) return false;
+  return true;
+}
+
 // The result's mesh. The points of from_soup's own mesh were checked when it
 // was built (canonical and distinct), so then only the topology is; a
 // caller's mesh may come from Mesh::with_positions, which checks nothing.
 Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners, const FacetsAtVertices& facets_at, bool flip,
                  Mesh* owned) {
+  // from_soup's own mesh (points checked) with nothing merged, dropped or
+  // turned (every facet is its face with all its vertices, every vertex
+  // extreme, the orientation kept): the merged soup is the input's with each
+  // cycle rotated to its smallest vertex, whose mesh is the input's
+  // connectivity with the faces' stored halfedges moved there (the numbering
+  // of Mesh::from_soup), without a second build.
+  if (owned != nullptr && !flip && facet_corners.num_faces() == mesh.num_faces() &&
+      facet_corners.face_indices.size() == mesh.num_halfedges() && keeps_every_vertex(mesh, facets_at))
+    return mesh.with_faces_from_smallest_vertex(kept_points(mesh, facets_at, owned), detail::DistinctPoints{});
   PolygonSoup out = merged_faces(mesh, facet_corners, facets_at, flip);
   out.points = kept_points(mesh, facets_at, owned);
   Mesh merged;

@@ -449,11 +449,32 @@ PolygonSoup Mesh::to_soup() const {
   return soup;
 }
 
+// The count is read off the connectivity: the positions may be this mesh's
+// own, moved out (from_soup's result takes them over).
+Mesh Mesh::with_faces_from_smallest_vertex(std::vector<Vec3> positions, const detail::DistinctPoints&) const {
+  if (positions.size() != vertex_he_.size())
+    throw Error(ErrorCategory::invalid_argument, "with_faces_from_smallest_vertex: got " +
+                                                     std::to_string(positions.size()) + " positions for " +
+                                                     std::to_string(vertex_he_.size()) + " vertices");
+  Mesh m = same_connectivity(std::move(positions));
+  for (std::size_t f = 0; f < m.face_he_.size(); ++f) {
+    HalfedgeId smallest = m.face_he_[f];
+    for (HalfedgeId h : m.face_halfedges(FaceId(static_cast<std::uint32_t>(f))))
+      if (m.from(h) < m.from(smallest)) smallest = h;
+    m.face_he_[f] = smallest;
+  }
+  return m;
+}
+
 Mesh Mesh::with_positions(std::vector<Vec3> positions) const {
   if (positions.size() != positions_.size())
     throw Error(ErrorCategory::invalid_argument, "with_positions: got " + std::to_string(positions.size()) +
                                                      " positions for " + std::to_string(positions_.size()) +
                                                      " vertices");
+  return same_connectivity(std::move(positions));
+}
+
+Mesh Mesh::same_connectivity(std::vector<Vec3> positions) const {
   Mesh m;
   m.positions_ = std::move(positions);
   m.vertex_he_ = vertex_he_;
