@@ -141,7 +141,8 @@ TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
     ASSERT_EQ(check(q), "");
     if (abs(q) < power_of_two(1024)) {
       // The double and the bound of the general path: GMP's truncation, and
-      // the truncation bound unless q is a double.
+      // the truncation bound unless q is a double. The bound's formula is the
+      // implementation's own; check(q) above is what proves it exactly.
       const double truncated = mpq_get_d(q.get_mpq_t());
       ASSERT_EQ(Approx::of(q).value, truncated) << to_string(q);
       ASSERT_EQ(Approx::of(q).error, is_a_double(q) ? 0.0 : filtered::truncation_error(truncated)) << to_string(q);

@@ -129,8 +129,15 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
   const PolygonSoup outward = shapes::rotated_geodesic_sphere(2).to_soup();
   const PolygonSoup inward = test::reversed(outward);
   // Faces that merge into facets (the kept normals move to a fresh arena),
-  // outward and inward.
-  const PolygonSoup merging = test::subdivided(test::cube_quads(), 2);
+  // outward and inward: a subdivided cube under a shear with large entries,
+  // so that the normals are large integers, not the constants 0 and +-1.
+  const PolygonSoup merging = [] {
+    PolygonSoup soup = test::subdivided(test::cube_quads(), 2);
+    for (Vec3& q : soup.points)
+      q = Vec3{1000003 * q.x + 7 * q.y + 11 * q.z, 13 * q.x + 999983 * q.y + 17 * q.z,
+               19 * q.x + 23 * q.y + 1000033 * q.z};
+    return soup;
+  }();
   const PolygonSoup merging_inward = test::reversed(merging);
   for (const PolygonSoup* soup : {&outward, &inward, &merging, &merging_inward}) {
     const ConvexPolyhedron p = ConvexPolyhedron::from_soup(*soup);

@@ -209,6 +209,8 @@ TEST(ConvexPolyhedron, ResultMeshIsTheMeshOfItsCanonicalSoup) {
   };
   const std::vector<PolygonSoup> solids{test::tetrahedron(),
                                         test::octahedron(),
+                                        test::prism(),  // triangles and quads, nothing merges
+                                        test::cube_quads(),
                                         test::subdivided(test::prism(), 2),
                                         test::cube_triangles(),  // merges
                                         test::reversed(test::octahedron()),  // flips
@@ -218,7 +220,14 @@ TEST(ConvexPolyhedron, ResultMeshIsTheMeshOfItsCanonicalSoup) {
       SCOPED_TRACE("solid " + std::to_string(i) + " round " + std::to_string(round));
       const PolygonSoup soup = rotated_cycles(solids[i]);
       const ConvexPolyhedron p = ConvexPolyhedron::from_soup(soup);
-      expect_same_mesh(p.mesh(), Mesh::from_soup(p.to_soup()));
+      // Each facet starts at its smallest vertex; then the whole mesh is the
+      // one from_soup builds from that soup.
+      const PolygonSoup canonical = p.to_soup();
+      for (std::size_t f = 0; f < canonical.num_faces(); ++f) {
+        const auto face = canonical.face(f);
+        ASSERT_EQ(face[0], *std::min_element(face.begin(), face.end())) << "facet " << f;
+      }
+      expect_same_mesh(p.mesh(), Mesh::from_soup(canonical));
       const ConvexPolyhedron q = ConvexPolyhedron::from_mesh(Mesh::from_soup(soup));
       expect_same_mesh(q.mesh(), p.mesh());
       for (FaceId f : p.mesh().faces()) {

@@ -24,6 +24,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/io.hpp"
 #include "support/cpu_time.hpp"
+#include "support/hand_solids.hpp"
 #include "support/io_expect.hpp"
 
 // ---- allocation accounting --------------------------------------------------
@@ -412,6 +413,39 @@ TEST(Hostile, EndlessLineStopsAtMaxLineBytes) {
     EXPECT_LT(c.peak, 16 * MiB);
     EXPECT_LT(c.seconds, 1.0 * slow_factor);
   }
+}
+
+// ---- what a polyhedron keeps --------------------------------------------------
+
+// A box given as 12,288 coplanar triangles (sheared, so that the normals are
+// large integers) merges into 6 facets; the result keeps no more memory
+// than the same box given as 6 quads: none of the exact normals of the
+// faces merged away (issue 14's arena keeps only the facets').
+TEST(Hostile, AFinelyTriangulatedBoxKeepsOnlyItsFacets) {
+  auto sheared = [](PolygonSoup soup) {
+    for (Vec3& q : soup.points)
+      q = Vec3{1000003 * q.x + 7 * q.y + 11 * q.z, 13 * q.x + 999983 * q.y + 17 * q.z,
+               19 * q.x + 23 * q.y + 1000033 * q.z};
+    return soup;
+  };
+  // The bytes p holds: the heap in use while p lives, less after it died
+  // (the input, moved into from_soup, is gone in both).
+  auto retained = [](const PolygonSoup& soup) {
+    PolygonSoup copy = soup;
+    std::size_t with_p = 0;
+    {
+      const ConvexPolyhedron p = ConvexPolyhedron::from_soup(std::move(copy));
+      EXPECT_EQ(p.num_facets(), 6u);
+      with_p = current_bytes.load();
+    }
+    return with_p - current_bytes.load();
+  };
+  const PolygonSoup fine = sheared(test::subdivided(test::cube_quads(), 5));
+  ASSERT_EQ(fine.num_faces(), 12288u);
+  const std::size_t coarse_bytes = retained(sheared(test::cube_quads()));
+  const std::size_t fine_bytes = retained(fine);
+  std::printf("    kept %zu bytes (6 quads), %zu bytes (12,288 triangles)\n", coarse_bytes, fine_bytes);
+  EXPECT_LE(fine_bytes, coarse_bytes + 1024);
 }
 
 // ---- exact numbers that are much bigger than their text (issue 18) ----------

@@ -106,6 +106,38 @@ TEST(LimbArena, StoresIntegersFromTheirLimbs) {
   }
 }
 
+// Negating stored values and values that own their limbs: 0, +-1, one and
+// several limbs, fractions; twice gives the value back, and a view stays a
+// view over the same limbs.
+TEST(LimbArena, NegatesStoredAndOwnValuesInPlace) {
+  LimbArena arena;
+  mpz_class big;
+  mpz_ui_pow_ui(big.get_mpz_t(), 3, 200);
+  const Rational values[] = {Rational(0), Rational(1), Rational(-1), Rational(7, 3), Rational(-5),
+                             Rational(big, 7), Rational(-big)};
+  for (const Rational& value : values) {
+    Rational stored;
+    arena.store(stored, value);
+    const mp_limb_t* limbs = mpz_limbs_read(mpq_numref(stored.get_mpq_t()));
+    arena.negate_stored(stored);
+    EXPECT_EQ(stored, -value) << to_string(value);
+    if (LimbArena::holds_limbs()) {
+      EXPECT_EQ(mpq_numref(stored.get_mpq_t())->_mp_alloc, 0) << to_string(value);
+      if (sgn(value) != 0) {
+        EXPECT_EQ(mpz_limbs_read(mpq_numref(stored.get_mpq_t())), limbs) << to_string(value);
+      }
+    }
+    arena.negate_stored(stored);
+    EXPECT_EQ(stored, value) << to_string(value);
+    Rational own = value;  // owns its limbs
+    arena.negate_stored(own);
+    EXPECT_EQ(own, -value) << to_string(value);
+    if (sgn(value) != 0) {
+      EXPECT_NE(mpq_numref(own.get_mpq_t())->_mp_alloc, 0) << to_string(value);
+    }
+  }
+}
+
 TEST(LimbArena, ValuesStayValidInAnArenaThatAbsorbedTheirs) {
   const std::vector<Rational> originals = random_values(99, 5000);
   LimbArena kept;

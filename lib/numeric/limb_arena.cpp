@@ -133,7 +133,9 @@ void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t hi
 
 void LimbArena::negate_stored(Rational& out) const {
   mpz_ptr num = mpq_numref(out.get_mpq_t());
-  if (!holds_limbs()) {
+  // A value that owns its limbs (never a view) is negated by GMP: made into
+  // a view, its limbs would never be freed.
+  if (!holds_limbs() || num->_mp_alloc != 0) {
     mpz_neg(num, num);
     return;
   }

@@ -68,9 +68,9 @@ class LimbArena {
   /// without a GMP value to copy from.
   void store_integer(Rational& out, std::uint64_t low, std::uint64_t high, bool negative);
 
-  /// out = -out for a value this arena stored (or any value when the arena
-  /// does not hold limbs): a view is made anew over the same limbs with
-  /// the other sign, so nothing is written to them and nothing is stored.
+  /// out = -out. A view (a value an arena stored) is made anew over the
+  /// same limbs with the other sign, so nothing is written to them and
+  /// nothing is stored; a value that owns its limbs is negated in place.
   void negate_stored(Rational& out) const;
 
   /// Takes over other's blocks (their addresses do not change), so that the
