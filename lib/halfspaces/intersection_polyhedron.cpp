@@ -35,20 +35,27 @@ struct Corner {
 };
 
 bool before(const Corner& a, const Corner& b) { return std::tie(a.row, a.next) < std::tie(b.row, b.next); }
+bool next_before(const Corner& a, const Corner& b) { return a.next < b.next; }
 
-// Every corner of every dual facet, grouped by row and, within a row, by the
-// next corner.
+// Every corner of every dual facet, grouped by row (rows in increasing
+// order) and, within a row, by the next corner: placed by row with a
+// counting pass, then each row's few corners sorted, instead of sorting all
+// corners (on Sphere5's 25,600 corners, 7.5 → 2 M instructions).
 std::vector<Corner> sorted_corners(const DualVertices& v) {
-  std::vector<Corner> corners;
-  corners.reserve(v.tight.size());
+  std::vector<std::uint32_t> start(v.dual.points.size() + 1, 0);
+  for (const std::uint32_t row : v.tight) ++start[row + 1];
+  for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+  std::vector<Corner> corners(v.tight.size());
+  std::vector<std::uint32_t> cursor(start.begin(), start.end() - 1);
   for (std::uint32_t vertex = 0; vertex + 1 < v.tight_offsets.size(); ++vertex) {
     const std::uint32_t begin = v.tight_offsets[vertex], end = v.tight_offsets[vertex + 1];
     for (std::uint32_t i = begin; i < end; ++i) {
       const std::uint32_t next = i + 1 == end ? begin : i + 1, previous = i == begin ? end - 1 : i - 1;
-      corners.push_back({v.tight[i], v.tight[next], v.tight[previous], vertex});
+      corners[cursor[v.tight[i]]++] = {v.tight[i], v.tight[next], v.tight[previous], vertex};
     }
   }
-  std::sort(corners.begin(), corners.end(), before);
+  for (std::size_t r = 0; r + 1 < start.size(); ++r)
+    std::sort(corners.begin() + start[r], corners.begin() + start[r + 1], next_before);
   return corners;
 }
 
@@ -56,23 +63,30 @@ std::vector<Corner> sorted_corners(const DualVertices& v) {
 // its offset: the primitive row divided by the gcd c of its normal, made in
 // place from the row's integers (each row stands for one facet, so they are
 // taken over; a rational moved or built from a temporary would allocate a
-// denominator once more).
+// denominator once more). The offset b / c needs no reduction: the row is
+// primitive, so gcd(b, c) = gcd(a_x, a_y, a_z, b) = 1. A content that is a
+// power of two (rows with dyadic offsets, scaled to integers) divides by a
+// shift.
 void add_plane(DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
   HomogeneousPoint& a = v.dual.points[r];
   const mpz_class& content = v.dual.normal_contents[r];
+  const bool reduce = content != 1;
+  const mp_bitcnt_t twos = mpz_scan1(content.get_mpz_t(), 0);
+  const bool power_of_two = twos + 1 == mpz_sizeinbase(content.get_mpz_t(), 2);
   Vec3& n = planes.normals.emplace_back();
   Rational& offset = planes.offsets.emplace_back();
   mpz_class* row[3] = {&a.x, &a.y, &a.z};
   for (int m = 0; m < 3; ++m) {
     mpz_ptr numerator = mpq_numref(n[m].get_mpq_t());
     mpz_swap(numerator, row[m]->get_mpz_t());
-    if (content != 1) mpz_divexact(numerator, numerator, content.get_mpz_t());
+    if (!reduce) continue;
+    if (power_of_two)
+      mpz_tdiv_q_2exp(numerator, numerator, twos);
+    else
+      mpz_divexact(numerator, numerator, content.get_mpz_t());
   }
   mpz_swap(mpq_numref(offset.get_mpq_t()), v.dual.offsets[r].get_mpz_t());
-  if (content != 1) {
-    mpz_set(mpq_denref(offset.get_mpq_t()), content.get_mpz_t());
-    offset.canonicalize();
-  }
+  if (reduce) mpz_set(mpq_denref(offset.get_mpq_t()), content.get_mpz_t());
   planes.normal_approx.push_back(ApproxVec3::of(n));
 }
 
