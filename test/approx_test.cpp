@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Approx::of: the bound |value - q| <= error holds, checked exactly, and
-// error == 0 exactly when q is a double.
+// error == 0 exactly when q is a double; Approx::of_quotient's bound holds.
 #include "approx.hpp"
 #include "error_bounds.hpp"
 
@@ -148,6 +148,74 @@ TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
       ASSERT_EQ(Approx::of(q).error, is_a_double(q) ? 0.0 : filtered::truncation_error(truncated)) << to_string(q);
     }
   }
+}
+
+// Approx::of_quotient for integers n / d, unreduced: the bound holds
+// exactly (the oracle is the exact rational), and it is never looser than
+// the documented |value| 2^-51. Sizes of 1 to 6 limbs, tops with and without
+// their highest bit, powers of two and their neighbours (the rounding of
+// the tops' conversions), common factors, and exponents on both sides of the
+// fast path's range (|s_n - s_d| = 900).
+mpz_class random_integer(test::Rng& rng) {
+  const int limbs = 1 + static_cast<int>(rng() % 6);
+  mpz_class x = 0;
+  switch (rng() % 4) {
+    case 0:
+      for (int l = 0; l < limbs; ++l) x = (x << 64) + mpz_class(std::to_string(rng()));
+      break;
+    case 1:
+      x = mpz_class(1) << static_cast<unsigned>(rng() % (64 * limbs));
+      if (rng() % 2 == 0) x -= 1;
+      break;
+    case 2:
+      x = mpz_class(std::to_string(rng() >> (rng() % 64))) << (64 * (limbs - 1));
+      break;
+    default:
+      x = mpz_class(std::to_string(rng() % 1000));
+  }
+  return x;
+}
+
+std::string check_quotient(const mpz_class& n, const mpz_class& d) {
+  const Approx a = Approx::of_quotient(n.get_mpz_t(), d.get_mpz_t());
+  const std::string which = n.get_str() + " / " + d.get_str();
+  if (std::isnan(a.value) || std::isnan(a.error) || !(a.error >= 0)) return "no bound for " + which;
+  Rational q(n, d);
+  q.canonicalize();
+  if (!std::isfinite(a.value) || !std::isfinite(a.error))
+    return abs(q) < power_of_two(1024) ? "non-finite for in-range " + which : "";
+  if (abs(Rational(a.value) - q) > Rational(a.error)) return "bound violated for " + which;
+  if (a.error > std::fabs(a.value) * 0x1p-51 && a.error > filtered::truncation_error(a.value))
+    return "bound looser than documented for " + which;
+  return "";
+}
+
+TEST(Approx, QuotientsOfIntegersFromTheirTopBits) {
+  test::Rng rng(2612);
+  for (int i = 0; i < 60000; ++i) {
+    mpz_class n = random_integer(rng), d = random_integer(rng);
+    if (d == 0) continue;
+    const mpz_class common = random_integer(rng) % 100000;
+    if (common > 0) {
+      n *= common;
+      d *= common;
+    }
+    if (rng() % 2 == 0) n = -n;
+    SCOPED_TRACE("case " + std::to_string(i) + ", seed 2612");
+    ASSERT_EQ(check_quotient(n, d), "");
+  }
+  // The edges of the fast path, the double range and zero.
+  for (const int shift : {895, 899, 900, 901, 905, 1000, 1030, 1100, 1200}) {
+    for (const mpz_class& top : {mpz_class(1), mpz_class(3), mpz_class((mpz_class(1) << 64) - 1)}) {
+      const mpz_class big = top << static_cast<unsigned>(shift), seven = 7;
+      ASSERT_EQ(check_quotient(big, seven), "") << shift;
+      ASSERT_EQ(check_quotient(-big, seven), "") << shift;
+      ASSERT_EQ(check_quotient(seven, big), "") << shift;
+      ASSERT_EQ(check_quotient(-seven, big), "") << shift;
+    }
+  }
+  EXPECT_EQ(Approx::of_quotient(mpz_class(0).get_mpz_t(), mpz_class(5).get_mpz_t()).value, 0.0);
+  EXPECT_EQ(Approx::of_quotient(mpz_class(0).get_mpz_t(), mpz_class(5).get_mpz_t()).error, 0.0);
 }
 
 TEST(Approx, RandomDoubleNeighbours) {

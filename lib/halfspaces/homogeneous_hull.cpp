@@ -30,18 +30,9 @@
 namespace cvms::detail {
 namespace {
 
-// The double of n/d (d > 0) with a bound on its error: mpq_get_d truncates
-// the value toward zero whatever its representation, so the fraction is
-// converted unreduced (no gcd) and truncation_error bounds the result
-// (error_bounds.hpp, "Approx::of").
-Approx quotient(const mpz_class& n, const mpz_class& d, mpq_class& scratch) {
-  mpz_set(mpq_numref(scratch.get_mpq_t()), n.get_mpz_t());
-  mpz_set(mpq_denref(scratch.get_mpq_t()), d.get_mpz_t());
-  const double v = mpq_get_d(scratch.get_mpq_t());
-  if (!std::isfinite(v)) return {v, std::numeric_limits<double>::infinity()};
-  return {v, filtered::truncation_error(v)};
-}
-
+// The points' doubles and one bound for all of them (Approx::of_quotient:
+// from the integers' top bits, with no division; mpq_get_d's division made
+// them 6 % of from_halfspaces on Sphere5's rows).
 struct Approximation {
   std::vector<std::array<double, 3>> coords;
   double max_error = 0;
@@ -50,9 +41,10 @@ struct Approximation {
 Approximation approximate(const std::vector<HomogeneousPoint>& points) {
   Approximation out;
   out.coords.reserve(points.size());
-  mpq_class scratch;
   for (const HomogeneousPoint& p : points) {
-    const Approx c[3] = {quotient(p.x, p.w, scratch), quotient(p.y, p.w, scratch), quotient(p.z, p.w, scratch)};
+    const mpz_srcptr w = p.w.get_mpz_t();
+    const Approx c[3] = {Approx::of_quotient(p.x.get_mpz_t(), w), Approx::of_quotient(p.y.get_mpz_t(), w),
+                         Approx::of_quotient(p.z.get_mpz_t(), w)};
     out.coords.push_back({c[0].value, c[1].value, c[2].value});
     for (const Approx& a : c) out.max_error = a.error <= out.max_error ? out.max_error : a.error;
   }

@@ -95,4 +95,54 @@ Approx Approx::of(const Rational& q) noexcept {
   return {d, filtered::truncation_error(d)};
 }
 
+namespace {
+
+// |x| (x != 0) as [t 2^s, (t + 1) 2^s) with t its top 64 bits, so t >= 2^63
+// when s > 0.
+std::uint64_t top_bits(mpz_srcptr x, long& shift) noexcept {
+  const std::size_t n = mpz_size(x);
+  const std::uint64_t high = mpz_getlimbn(x, static_cast<mp_size_t>(n - 1));
+  if (n == 1) {
+    shift = 0;
+    return high;
+  }
+  const int zeros = std::countl_zero(high);
+  const std::uint64_t low = mpz_getlimbn(x, static_cast<mp_size_t>(n - 2));
+  shift = static_cast<long>(64 * (n - 1)) - zeros;
+  return zeros == 0 ? high : (high << zeros) | (low >> (64 - zeros));
+}
+
+}  // namespace
+
+// Proof of the bound. With the top bits t_n 2^s_n of |n| and t_d 2^s_d of d
+// as in top_bits, |n| = t_n 2^s_n (1 + e_n) and d = t_d 2^s_d (1 + e_d) with
+// 0 <= e < 2^-63 (the bits below t are less than 2^s <= t 2^-63 when s > 0,
+// and there are none when s = 0). Converting t_n and t_d to doubles and
+// dividing are three roundings of relative error at most u = 2^-53 each
+// (Higham, 2.2), and scaling by 2^(s_n - s_d) is exact while the result is
+// normal, which |s_n - s_d| <= 900 ensures (the quotient of the tops lies in
+// (2^-64, 2^64)). So v / (n/d) = (1 + d1)(1 + d3)(1 + e_d) / ((1 + d2)(1 +
+// e_n)) is within 3.01 u of 1, and |v - n/d| <= 3.01 u |n/d| <= 3.01 u (1 +
+// 3.01 u) |v| < 4 u |v| = |v| 2^-51, a product by a power of two, exact in
+// the normal range. Outside that range mpq_get_d truncates the unreduced
+// fraction (read in place: mpq_get_d needs no canonical form), which
+// truncation_error bounds.
+Approx Approx::of_quotient(mpz_srcptr n, mpz_srcptr d) noexcept {
+  if (mpz_sgn(n) == 0) return {0.0, 0.0};
+  long shift_n = 0, shift_d = 0;
+  const std::uint64_t top_n = top_bits(n, shift_n), top_d = top_bits(d, shift_d);
+  const long exponent = shift_n - shift_d;
+  if (exponent >= -900 && exponent <= 900) {
+    const double magnitude =
+        std::ldexp(static_cast<double>(top_n) / static_cast<double>(top_d), static_cast<int>(exponent));
+    return {mpz_sgn(n) < 0 ? -magnitude : magnitude, magnitude * 0x1p-51};
+  }
+  mpq_t fraction;
+  mpz_roinit_n(mpq_numref(fraction), mpz_limbs_read(n), mpz_size(n) * static_cast<mp_size_t>(mpz_sgn(n)));
+  mpz_roinit_n(mpq_denref(fraction), mpz_limbs_read(d), static_cast<mp_size_t>(mpz_size(d)));
+  const double v = mpq_get_d(fraction);
+  if (!std::isfinite(v)) return {v, std::numeric_limits<double>::infinity()};
+  return {v, filtered::truncation_error(v)};
+}
+
 }  // namespace cvms

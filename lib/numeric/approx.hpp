@@ -18,6 +18,11 @@ struct Approx {
   /// The nearest-or-truncated double of q and a bound that covers both the
   /// rounding and underflow; exact (error 0) when q is a double.
   static Approx of(const Rational& q) noexcept;
+  /// A double within error of n / d for integers n and d > 0, from their
+  /// top bits: no division of the integers, no gcd (the fraction need not
+  /// be reduced). The bound is |value| 2^-51, twice that of `of`; an
+  /// exponent near the ends of the double range takes the exact quotient.
+  static Approx of_quotient(mpz_srcptr n, mpz_srcptr d) noexcept;
 };
 
 /// True only if the exact values a and b approximate differ: |a.value -
