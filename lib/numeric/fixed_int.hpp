@@ -48,8 +48,9 @@ struct FixedInt {
   /// The value of x. \pre mpz_size(x) <= L.
   static FixedInt from(mpz_srcptr x) noexcept {
     FixedInt r;
+    const mp_limb_t* limbs = mpz_limbs_read(x);
     const std::size_t n = mpz_size(x);
-    for (std::size_t i = 0; i < n; ++i) r.magnitude[i] = mpz_getlimbn(x, static_cast<mp_size_t>(i));
+    for (std::size_t i = 0; i < n; ++i) r.magnitude[i] = limbs[i];
     r.negative = mpz_sgn(x) < 0;
     return r;
   }
@@ -58,8 +59,13 @@ struct FixedInt {
 /// out = x, negated when `negate`.
 template <int L>
 void assign_to(mpz_ptr out, const FixedInt<L>& x, bool negate = false) noexcept {
-  mpz_import(out, L, -1, sizeof(std::uint64_t), 0, 0, x.magnitude.data());
-  if (x.negative != negate) mpz_neg(out, out);
+  // The limbs written directly (mpz_import's generic word order and size
+  // handling cost 300 instructions a number).
+  int n = L;
+  while (n > 0 && x.magnitude[static_cast<std::size_t>(n - 1)] == 0) --n;
+  mp_limb_t* limbs = mpz_limbs_write(out, n > 0 ? n : 1);
+  for (int i = 0; i < n; ++i) limbs[i] = x.magnitude[static_cast<std::size_t>(i)];
+  mpz_limbs_finish(out, x.negative != negate ? -n : n);
 }
 
 /// The exact product in A + B limbs (the magnitudes' product is below
