@@ -66,7 +66,7 @@ TEST(SmallDirection, CrossMatchesRationalPrimitiveCross) {
     const Vec3 expected_cross = cross(uv, vv);
     if (is_zero(expected_cross)) continue;
     Vec3 c{Rational(5), Rational(-1, 3), Rational(7)};  // overwritten, whatever it held
-    primitive_cross(u, v, c);
+    primitive_cross(u, v).assign_to(c);
     ASSERT_EQ(c, primitive_direction(expected_cross)) << "seed " << seed << " i " << i;
   }
 }
@@ -131,7 +131,7 @@ TEST(SmallDirection, CrossRemovesLargeCommonFactors) {
     const Vec3 expected_cross = cross(u.to_vec3(), v.to_vec3());
     if (is_zero(expected_cross)) continue;
     Vec3 c;
-    primitive_cross(u, v, c);
+    primitive_cross(u, v).assign_to(c);
     ASSERT_EQ(c, primitive_direction(expected_cross)) << "seed " << seed << " i " << i;
   }
 }
@@ -169,7 +169,7 @@ TEST(SmallDirection, FractionDirectionsMatchRationalDifferences) {
     const Vec3 n = cross(ab, ac);
     if (is_zero(n)) continue;
     Vec3 c;
-    primitive_cross((*d)[0], (*d)[1], c);
+    primitive_cross((*d)[0], (*d)[1]).assign_to(c);
     ASSERT_EQ(c, primitive_direction(n)) << "seed " << seed << " i " << i;
   }
   EXPECT_GT(small, 2000) << "short decimals should take the fast path";

@@ -267,14 +267,12 @@ struct FacePlanes {
   // The normals' numerators, and later the result's offsets' (the result
   // keeps it): a block per number would be 80,000 heap blocks on Sphere6.
   detail::LimbArena limbs;
-  std::size_t input_faces = 0;  // normal.size() before keep_first_faces
   [[nodiscard]] Vec3Ref ref(std::uint32_t f) const { return {normal[f], approx[f]}; }
 };
 
 // 2. Faces: orientation normal, zero area, planarity, convexity.
 FacePlanes face_planes(const Mesh& mesh, const Points& points) {
   FacePlanes out;
-  out.input_faces = mesh.num_faces();
   out.normal.resize(mesh.num_faces());
   out.approx.resize(mesh.num_faces());
   out.corner.assign(mesh.num_halfedges(), 0);
@@ -599,10 +597,11 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, FacePlanes
   vertex_approx.reserve(merged.num_vertices());
   for (std::uint32_t v = 0; v < facets_at.count.size(); ++v)
     if (facets_at.extreme(v)) vertex_approx.push_back(points.approx(VertexId(v)));
+  const bool none_merged = regions.size() == faces.normal.size();
   keep_first_faces(faces, regions.first_face);
   detail::FacetPlanes planes;
   detail::LimbArena limbs;
-  if (regions.size() == faces.input_faces) {
+  if (none_merged) {
     planes.normals = std::move(faces.normal);
     limbs = std::move(faces.limbs);
   } else {

@@ -238,10 +238,6 @@ SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) no
   return {{c[0], c[1], c[2]}};
 }
 
-void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out) {
-  primitive_cross(u, v).assign_to(out);
-}
-
 void SmallNormal::negate() noexcept {
   for (Int128& x : c) x = -x;
 }

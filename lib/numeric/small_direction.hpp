@@ -62,8 +62,4 @@ struct SmallNormal {
 /// \pre u and v are not parallel.
 [[nodiscard]] SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) noexcept;
 
-/// out = primitive_direction(cross(u, v)), computed in 128-bit integers and
-/// written into out's existing storage. \pre u and v are not parallel.
-void primitive_cross(const SmallDirection& u, const SmallDirection& v, Vec3& out);
-
 }  // namespace cvms::detail
