@@ -69,59 +69,71 @@ int width(const std::vector<HomogeneousPoint>& points) {
   return limbs;
 }
 
-// The last-row cofactors of recent triangles (a, b, c), direct-mapped: the
-// quickhull asks one triangle about many points (its conflict points, the
-// coplanar neighbours when merging facets), and each later question then
-// costs four products instead of a 4×4 determinant. An entry is used only
-// for the very same ordered triple.
+// The last-row cofactors of recent triangles (a, b, c): the quickhull asks
+// one triangle about many points (its conflict points, the coplanar
+// neighbours when merging facets), and each later question then costs four
+// products instead of a 4×4 determinant. An entry is used only for the very
+// same ordered triple.
 template <int E>
 class CofactorCache {
  public:
-  // 2^bits entries, at least half as many as points, up to 2^12. The
-  // triangles of one plane share an entry (quickhull.cpp), so fewer planes
-  // than points are alive at a time; on Sphere5's dual (5,120 points) 2^12
-  // entries cost 3 % more instructions than 2^13 and 2^10 12 %, but every
-  // entry is 336 bytes (E = 3) of memory first touched in the call, and on
-  // this machine a page fault costs about 13 µs: with 2^11 entries instead
-  // of 2^10, Sphere4's dual (1,280 points) took 20 % longer, and on
-  // Sphere6's (20,480 points) 2^14 entries saved 10 % of the instructions
-  // (a third of the cofactor sets) but not time: 3 % faster with freed
-  // memory kept, up to 25 % slower under glibc's default policy. Only the
-  // keys are cleared; the cofactors are written when first used, so a
-  // cache larger than the hull needs is neither zeroed nor faulted in
-  // (zeroing it was a tenth of Sphere4's intersection, mostly page faults).
-  // (Keys from calloc, left to the kernel to zero, took Sphere6 in a
-  // benchmark loop from about 37,000 to 52,000 page faults, and longer.)
+  // 2^bits entries, at least half as many as points, up to 2^12, in sets of
+  // 8 with the least recently used entry replaced. The triangles of one
+  // plane share an entry (quickhull.cpp), so fewer planes than points are
+  // alive at a time: Sphere5's dual (5,120 points) asks about 2,925 planes,
+  // each computed once with an unbounded cache. A direct-mapped cache of
+  // 2^12 entries computed 4,667 sets (conflicts evicted planes still in
+  // use); 8 ways compute fewer (Sphere5's rows 157.9 → 148.6 M instructions,
+  // Sphere4's 40.1 → 37.5 M; 16 ways gained 0.4 % more, 2 ways half as
+  // much). Every entry is 336 bytes (E = 3) of memory first touched in the
+  // call, and on this machine a page fault costs about 13 µs: with 2^11
+  // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer;
+  // on Sphere6's (20,480 points), 2^14 entries of 8 ways take 729 → 614 M
+  // instructions and 25 % less time with freed memory kept, but 10-25 %
+  // more under glibc's default policy, which faults the larger cache's
+  // pages in again at every call. Only the keys are cleared; the cofactors
+  // are written when first used, so a cache larger than the hull needs is
+  // neither zeroed nor faulted in (zeroing it was a tenth of Sphere4's
+  // intersection, mostly page faults). (Keys from calloc, left to the kernel
+  // to zero, took Sphere6 in a benchmark loop from about 37,000 to 52,000
+  // page faults, and longer.) The recency clock may wrap after 2^32
+  // questions: that only makes a worse choice of entry to replace.
   explicit CofactorCache(std::size_t points) {
-    bits_ = cache_bits(points, 2, 12);
-    keys_.resize(std::size_t{1} << bits_);
-    values_.reset(new Slot[std::size_t{1} << bits_]);  // default-initialised: left unwritten
+    set_bits_ = std::max(cache_bits(points, 2, 12) - kWayBits, 1);
+    keys_.resize(std::size_t{1} << (set_bits_ + kWayBits));
+    values_.reset(new Slot[std::size_t{1} << (set_bits_ + kWayBits)]);  // default-initialised: left unwritten
   }
 
   const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c, const std::vector<FixedRow<E>>& rows) {
-    const std::size_t index = index_slot(bits_, a, b, c);
-    Key& key = keys_[index];
-    void* slot = values_[index].bytes;
-    // Cofactors are trivially copyable and destructible: a slot's value
-    // is replaced by constructing the new one over it.
-    if (!key.used || key.a != a || key.b != b || key.c != c) {
-      key = {true, a, b, c};
-      return *::new (slot) Cofactors<E>(last_row_cofactors<E>(rows[a], rows[b], rows[c]));
+    const std::size_t first = index_slot(set_bits_, a, b, c) << kWayBits;
+    ++clock_;
+    std::size_t victim = first;
+    for (std::size_t i = first; i < first + kWays; ++i) {
+      Key& key = keys_[i];
+      if (key.used && key.a == a && key.b == b && key.c == c) {
+        key.stamp = clock_;
+        return *std::launder(static_cast<Cofactors<E>*>(static_cast<void*>(values_[i].bytes)));
+      }
+      if (!key.used || (keys_[victim].used && key.stamp < keys_[victim].stamp)) victim = i;
     }
-    return *std::launder(static_cast<Cofactors<E>*>(slot));
+    keys_[victim] = {true, a, b, c, clock_};
+    return *::new (values_[victim].bytes) Cofactors<E>(last_row_cofactors<E>(rows[a], rows[b], rows[c]));
   }
 
  private:
+  static constexpr int kWayBits = 3;
+  static constexpr std::size_t kWays = std::size_t{1} << kWayBits;
   static_assert(std::is_trivially_copyable_v<Cofactors<E>> && std::is_trivially_destructible_v<Cofactors<E>>);
   struct Key {
     bool used = false;
-    std::uint32_t a = 0, b = 0, c = 0;
+    std::uint32_t a = 0, b = 0, c = 0, stamp = 0;
   };
   // Uninitialised storage for one entry's cofactors.
   struct Slot {
     alignas(Cofactors<E>) unsigned char bytes[sizeof(Cofactors<E>)];
   };
-  int bits_ = 2;
+  int set_bits_ = 1;
+  std::uint32_t clock_ = 0;
   std::vector<Key> keys_;
   std::unique_ptr<Slot[]> values_;
 };
