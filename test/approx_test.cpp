@@ -204,14 +204,31 @@ TEST(Approx, QuotientsOfIntegersFromTheirTopBits) {
     SCOPED_TRACE("case " + std::to_string(i) + ", seed 2612");
     ASSERT_EQ(check_quotient(n, d), "");
   }
-  // The edges of the fast path, the double range and zero.
-  for (const int shift : {895, 899, 900, 901, 905, 1000, 1030, 1100, 1200}) {
-    for (const mpz_class& top : {mpz_class(1), mpz_class(3), mpz_class((mpz_class(1) << 64) - 1)}) {
-      const mpz_class big = top << static_cast<unsigned>(shift), seven = 7;
-      ASSERT_EQ(check_quotient(big, seven), "") << shift;
-      ASSERT_EQ(check_quotient(-big, seven), "") << shift;
-      ASSERT_EQ(check_quotient(seven, big), "") << shift;
-      ASSERT_EQ(check_quotient(-seven, big), "") << shift;
+  // The edges of the fast path (|s_n - s_d| = 900, s = bit length - 64),
+  // beyond them (mpq_get_d on the unreduced fraction: numerator and
+  // denominator share a factor) and beyond the double range.
+  const mpz_class seven = 7, shared = 12345;
+  for (const mpz_class& top : {mpz_class(1), mpz_class(3), mpz_class((mpz_class(1) << 64) - 1)}) {
+    const int top_bits = static_cast<int>(mpz_sizeinbase(top.get_mpz_t(), 2));
+    for (const int s : {899, 900, 901, 1000, 1100, 1200}) {
+      const mpz_class big = top << static_cast<unsigned>(s + 64 - top_bits);
+      for (const mpz_class& n : {mpz_class(big), mpz_class(-big)}) {
+        ASSERT_EQ(check_quotient(n, seven), "") << s;
+        ASSERT_EQ(check_quotient(seven * (n < 0 ? -1 : 1), big), "") << s;
+        ASSERT_EQ(check_quotient(n * shared, seven * shared), "") << s;
+        ASSERT_EQ(check_quotient(seven * shared, big * shared), "") << s;
+      }
+    }
+  }
+  // Tails just below 2^s under tops that round up to 2^64 when converted:
+  // the largest e_n and e_d of the proof, in both places.
+  for (const unsigned s : {1u, 11u, 63u, 64u, 65u, 200u}) {
+    const mpz_class ones = (mpz_class(1) << (64 + s)) - 1;
+    for (const unsigned t : {0u, 1u, 64u, 130u}) {
+      const mpz_class low = (mpz_class(1) << (63 + t)) + 1;
+      ASSERT_EQ(check_quotient(ones, low), "") << s << " " << t;
+      ASSERT_EQ(check_quotient(low, ones), "") << s << " " << t;
+      ASSERT_EQ(check_quotient(-ones, ones + 2), "") << s << " " << t;
     }
   }
   EXPECT_EQ(Approx::of_quotient(mpz_class(0).get_mpz_t(), mpz_class(5).get_mpz_t()).value, 0.0);

@@ -71,8 +71,8 @@ void add_plane(DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
   HomogeneousPoint& a = v.dual.points[r];
   const mpz_class& content = v.dual.normal_contents[r];
   const bool reduce = content != 1;
-  const mp_bitcnt_t twos = mpz_scan1(content.get_mpz_t(), 0);
-  const bool power_of_two = twos + 1 == mpz_sizeinbase(content.get_mpz_t(), 2);
+  const mp_bitcnt_t twos = reduce ? mpz_scan1(content.get_mpz_t(), 0) : 0;
+  const bool power_of_two = reduce && twos + 1 == mpz_sizeinbase(content.get_mpz_t(), 2);
   Vec3& n = planes.normals.emplace_back();
   Rational& offset = planes.offsets.emplace_back();
   mpz_class* row[3] = {&a.x, &a.y, &a.z};

@@ -97,6 +97,8 @@ Approx Approx::of(const Rational& q) noexcept {
 
 namespace {
 
+static_assert(GMP_NUMB_BITS == 64, "top_bits reads 64-bit limbs");
+
 // |x| (x != 0) as [t 2^s, (t + 1) 2^s) with t its top 64 bits, so t >= 2^63
 // when s > 0.
 std::uint64_t top_bits(mpz_srcptr x, long& shift) noexcept {
@@ -119,13 +121,14 @@ std::uint64_t top_bits(mpz_srcptr x, long& shift) noexcept {
 // 0 <= e < 2^-63 (the bits below t are less than 2^s <= t 2^-63 when s > 0,
 // and there are none when s = 0). Converting t_n and t_d to doubles and
 // dividing are three roundings of relative error at most u = 2^-53 each
-// (Higham, 2.2), and scaling by 2^(s_n - s_d) is exact while the result is
-// normal, which |s_n - s_d| <= 900 ensures (the quotient of the tops lies in
-// (2^-64, 2^64)). So v / (n/d) = (1 + d1)(1 + d3)(1 + e_d) / ((1 + d2)(1 +
+// (Higham, 2.2), so v / (n/d) = (1 + d1)(1 + d3)(1 + e_d) / ((1 + d2)(1 +
 // e_n)) is within 3.01 u of 1, and |v - n/d| <= 3.01 u |n/d| <= 3.01 u (1 +
-// 3.01 u) |v| < 4 u |v| = |v| 2^-51, a product by a power of two, exact in
-// the normal range. Outside that range mpq_get_d truncates the unreduced
-// fraction (read in place: mpq_get_d needs no canonical form), which
+// 3.01 u) |v| < 4 u |v| = |v| 2^-51. The quotient of the rounded tops lies
+// in [2^-64, 2^64] (a top of 2^64 - 1 rounds up to 2^64), so with
+// |s_n - s_d| <= 900 the scaling by 2^(s_n - s_d) is exact and |v| is in
+// [2^-964, 2^964], normal, and so is |v| 2^-51 >= 2^-1015: the bound is
+// computed exactly. Beyond that range mpq_get_d truncates the unreduced
+// fraction (read in place: it needs no canonical form), which
 // truncation_error bounds.
 Approx Approx::of_quotient(mpz_srcptr n, mpz_srcptr d) noexcept {
   if (mpz_sgn(n) == 0) return {0.0, 0.0};
@@ -138,7 +141,7 @@ Approx Approx::of_quotient(mpz_srcptr n, mpz_srcptr d) noexcept {
     return {mpz_sgn(n) < 0 ? -magnitude : magnitude, magnitude * 0x1p-51};
   }
   mpq_t fraction;
-  mpz_roinit_n(mpq_numref(fraction), mpz_limbs_read(n), mpz_size(n) * static_cast<mp_size_t>(mpz_sgn(n)));
+  mpz_roinit_n(mpq_numref(fraction), mpz_limbs_read(n), static_cast<mp_size_t>(mpz_size(n)) * mpz_sgn(n));
   mpz_roinit_n(mpq_denref(fraction), mpz_limbs_read(d), static_cast<mp_size_t>(mpz_size(d)));
   const double v = mpq_get_d(fraction);
   if (!std::isfinite(v)) return {v, std::numeric_limits<double>::infinity()};

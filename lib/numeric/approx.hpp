@@ -20,8 +20,9 @@ struct Approx {
   static Approx of(const Rational& q) noexcept;
   /// A double within error of n / d for integers n and d > 0, from their
   /// top bits: no division of the integers, no gcd (the fraction need not
-  /// be reduced). The bound is |value| 2^-51, twice that of `of`; an
-  /// exponent near the ends of the double range takes the exact quotient.
+  /// be reduced). The bound is |value| 2^-51, twice that of `of`; when the
+  /// integers' lengths differ by about 900 bits or more, the value is
+  /// mpq_get_d's truncation of n / d instead, with `of`'s bound.
   static Approx of_quotient(mpz_srcptr n, mpz_srcptr d) noexcept;
 };
 
