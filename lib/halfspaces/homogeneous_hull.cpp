@@ -77,31 +77,33 @@ int width(const std::vector<HomogeneousPoint>& points) {
 template <int E>
 class CofactorCache {
  public:
-  // 2^bits entries, at least half as many as points, up to 2^12, in sets of
+  // 2^bits entries, at least half as many as points, up to 2^14, in sets of
   // 8 with the least recently used entry replaced. The triangles of one
   // plane share an entry (quickhull.cpp), so fewer planes than points are
   // alive at a time: Sphere5's dual (5,120 points) asks about 2,925 planes,
   // each computed once with an unbounded cache. A direct-mapped cache of
-  // 2^12 entries computed 4,667 sets (conflicts evicted planes still in
-  // use); 8 ways compute fewer (Sphere5's rows 157.9 → 148.6 M instructions,
+  // 2^12 entries computed 4,667 sets (conflicts evicted planes in use); 8
+  // ways compute fewer (Sphere5's rows 157.9 → 148.6 M instructions,
   // Sphere4's 40.1 → 37.5 M; 16 ways gained 0.4 % more, 2 ways half as
-  // much). Every entry is 336 bytes (E = 3) of memory first touched in the
+  // much). Every entry is 340 bytes (E = 3) of memory first touched in the
   // call, and on this machine a page fault costs about 13 µs: with 2^11
-  // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer;
-  // on Sphere6's (20,480 points), 2^14 entries of 8 ways take 729 → 614 M
-  // instructions and 25 % less time with freed memory kept, but 10-25 %
-  // more under glibc's default policy, which faults the larger cache's
-  // pages in again at every call. Only the keys are cleared; the cofactors
-  // are written when first used, so a cache larger than the hull needs is
-  // neither zeroed nor faulted in (zeroing it was a tenth of Sphere4's
-  // intersection, mostly page faults). (Keys from calloc, left to the kernel
-  // to zero, took Sphere6 in a benchmark loop from about 37,000 to 52,000
-  // page faults, and longer.) The recency clock may wrap after 2^32
-  // questions: that only makes a worse choice of entry to replace. A
-  // returned reference is valid until the next call (which may replace its
+  // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer.
+  // On Sphere6's dual (20,480 points), 2^14 entries of 8 ways instead of
+  // 2^12 take 729 → 614 M instructions and a quarter less time with freed
+  // memory kept, and the same time under glibc's default policy (which
+  // faults the larger cache's pages in again at every call: 3,900 → 5,100
+  // page faults a call); a direct-mapped 2^14 saved only 10 % of the
+  // instructions and was up to 25 % slower under that policy. Only the keys
+  // are cleared; the cofactors are written when first used, so a cache
+  // larger than the hull needs is neither zeroed nor faulted in (zeroing it
+  // was a tenth of Sphere4's intersection, mostly page faults). (Keys from
+  // calloc, left to the kernel to zero, took Sphere6 in a benchmark loop
+  // from about 37,000 to 52,000 page faults, and longer.) The recency clock
+  // may wrap after 2^32 questions: that only makes a worse choice of entry
+  // to replace. A returned reference is valid until the next call (which may replace its
   // entry); every caller uses it within one expression.
   explicit CofactorCache(std::size_t points) {
-    set_bits_ = std::max(cache_bits(points, 2, 12) - kWayBits, 1);
+    set_bits_ = std::max(cache_bits(points, 2, 14) - kWayBits, 1);
     keys_.resize(std::size_t{1} << (set_bits_ + kWayBits));
     values_.reset(new Slot[std::size_t{1} << (set_bits_ + kWayBits)]);  // default-initialised: left unwritten
   }
