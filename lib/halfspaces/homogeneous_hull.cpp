@@ -77,7 +77,7 @@ int width(const std::vector<HomogeneousPoint>& points) {
 template <int E>
 class CofactorCache {
  public:
-  // 2^bits entries, at least half as many as points, up to 2^14, in sets of
+  // 2^bits entries, at least half as many as points, up to 2^12, in sets of
   // 8 with the least recently used entry replaced. The triangles of one
   // plane share an entry (quickhull.cpp), so fewer planes than points are
   // alive at a time: Sphere5's dual (5,120 points) asks about 2,925 planes,
@@ -88,22 +88,22 @@ class CofactorCache {
   // much). Every entry is 340 bytes (E = 3) of memory first touched in the
   // call, and on this machine a page fault costs about 13 µs: with 2^11
   // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer.
-  // On Sphere6's dual (20,480 points), 2^14 entries of 8 ways instead of
-  // 2^12 take 729 → 614 M instructions and a quarter less time with freed
-  // memory kept, and the same time under glibc's default policy (which
-  // faults the larger cache's pages in again at every call: 3,900 → 5,100
-  // page faults a call); a direct-mapped 2^14 saved only 10 % of the
-  // instructions and was up to 25 % slower under that policy. Only the keys
-  // are cleared; the cofactors are written when first used, so a cache
-  // larger than the hull needs is neither zeroed nor faulted in (zeroing it
-  // was a tenth of Sphere4's intersection, mostly page faults). (Keys from
-  // calloc, left to the kernel to zero, took Sphere6 in a benchmark loop
-  // from about 37,000 to 52,000 page faults, and longer.) The recency clock
+  // On Sphere6's dual (20,480 points), 2^13 and 2^14 entries instead of
+  // 2^12 take 729 → 664 and 614 M instructions, but in time (minimum of 4
+  // alternating runs) 98 → 96 and 94 ms with freed memory kept and 120 →
+  // 125 and 130 ms under glibc's default policy, which faults the larger
+  // cache's pages in again at every call (3,900 → 5,100 page faults a call
+  // at 2^14). Only the keys are cleared; the cofactors are written when
+  // first used, so a cache larger than the hull needs is neither zeroed nor
+  // faulted in (zeroing it was a tenth of Sphere4's intersection, mostly
+  // page faults). (Keys from calloc, left to the kernel to zero, took
+  // Sphere6 in a benchmark loop from about 37,000 to 52,000 page faults,
+  // and longer.) The recency clock
   // may wrap after 2^32 questions: that only makes a worse choice of entry
   // to replace. A returned reference is valid until the next call (which may replace its
   // entry); every caller uses it within one expression.
   explicit CofactorCache(std::size_t points) {
-    set_bits_ = std::max(cache_bits(points, 2, 14) - kWayBits, 1);
+    set_bits_ = std::max(cache_bits(points, 2, 12) - kWayBits, 1);
     keys_.resize(std::size_t{1} << (set_bits_ + kWayBits));
     values_.reset(new Slot[std::size_t{1} << (set_bits_ + kWayBits)]);  // default-initialised: left unwritten
   }
