@@ -98,10 +98,10 @@ class CofactorCache {
   // faulted in (zeroing it was a tenth of Sphere4's intersection, mostly
   // page faults). (Keys from calloc, left to the kernel to zero, took
   // Sphere6 in a benchmark loop from about 37,000 to 52,000 page faults,
-  // and longer.) The recency clock
-  // may wrap after 2^32 questions: that only makes a worse choice of entry
-  // to replace. A returned reference is valid until the next call (which may replace its
-  // entry); every caller uses it within one expression.
+  // and longer.) The recency clock may wrap after 2^32 questions: that only
+  // makes a worse choice of entry to replace. A returned reference is valid
+  // until the next call (which may replace its entry); every caller uses it
+  // within one expression.
   explicit CofactorCache(std::size_t points) {
     set_bits_ = std::max(cache_bits(points, 2, 12) - kWayBits, 1);
     keys_.resize(std::size_t{1} << (set_bits_ + kWayBits));
