@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The slot of a few point indices in a direct-mapped cache of exact work
-// (the quickhull's exact answers, the cofactors of the dual hull's
-// triangles). Each index is multiplied by its own odd constant (Knuth's
+// The slot of a few point indices in a cache of exact work: the quickhull's
+// exact answers (direct-mapped), the cofactors of the dual hull's triangles
+// (the set of 8 entries, homogeneous_hull.cpp). Each index is multiplied by its own odd constant (Knuth's
 // golden-ratio multiplier and MurmurHash3's finaliser constants); only the
 // high bits of such products depend on every bit of the indices, so the
 // slot is taken from the top.
