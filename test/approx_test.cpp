@@ -109,6 +109,35 @@ TEST(Approx, RandomRationalsBoundHolds) {
   }
 }
 
+// An integer of at most `limbs` limbs in one of the shapes the tests need:
+// 0 random limbs, 1 2^j or 2^j - 1, 2 an odd top limb alone, 3 a top limb
+// with its highest bit set and one stray bit far below it, 4 a top limb of
+// random length alone, 5 below 1000.
+mpz_class integer_of_shape(test::Rng& rng, int limbs, int shape) {
+  const auto top_shift = static_cast<unsigned>(64 * (limbs - 1));
+  switch (shape) {
+    case 0: {
+      mpz_class x = 0;
+      for (int l = 0; l < limbs; ++l) x = (x << 64) + mpz_class(std::to_string(rng()));
+      return x;
+    }
+    case 1: {
+      mpz_class x = mpz_class(1) << static_cast<unsigned>(rng() % (64 * limbs));
+      if (rng() % 2 == 0) x -= 1;
+      return x;
+    }
+    case 2:
+      return mpz_class(std::to_string(rng() | 1)) << top_shift;
+    case 3:
+      return (mpz_class(std::to_string(rng() | (std::uint64_t{1} << 63))) << top_shift) +
+             (mpz_class(1) << static_cast<unsigned>(rng() % (top_shift + 1)));
+    case 4:
+      return mpz_class(std::to_string(rng() >> (rng() % 64))) << top_shift;
+    default:
+      return mpz_class(std::to_string(rng() % 1000));
+  }
+}
+
 // Numerators of one to six limbs over one-limb powers of two (the normals
 // and plane offsets Approx::of reads from the top limbs): the contract, and
 // the very double GMP's truncation gives. Shapes: random limbs, 2^j and
@@ -117,22 +146,7 @@ TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
   test::Rng rng(2611);
   for (int i = 0; i < 40000; ++i) {
     const int limbs = 1 + static_cast<int>(rng() % 6);
-    mpz_class num = 0;
-    switch (rng() % 4) {
-      case 0:
-        for (int l = 0; l < limbs; ++l) num = (num << 64) + mpz_class(std::to_string(rng()));
-        break;
-      case 1:
-        num = mpz_class(1) << static_cast<unsigned>(rng() % (64 * limbs));
-        if (rng() % 2 == 0) num -= 1;
-        break;
-      case 2:
-        num = mpz_class(std::to_string(rng() | 1)) << (64 * (limbs - 1));
-        break;
-      default:
-        num = (mpz_class(std::to_string(rng() | (std::uint64_t{1} << 63))) << (64 * (limbs - 1))) +
-              (mpz_class(1) << static_cast<unsigned>(rng() % (64 * (limbs - 1) + 1)));
-    }
+    mpz_class num = integer_of_shape(rng, limbs, static_cast<int>(rng() % 4));
     if (num == 0) continue;
     if (rng() % 2 == 0) num = -num;
     Rational q(num, mpz_class(1) << static_cast<unsigned>(rng() % 64));
@@ -158,22 +172,8 @@ TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
 // fast path's range (|s_n - s_d| = 900).
 mpz_class random_integer(test::Rng& rng) {
   const int limbs = 1 + static_cast<int>(rng() % 6);
-  mpz_class x = 0;
-  switch (rng() % 4) {
-    case 0:
-      for (int l = 0; l < limbs; ++l) x = (x << 64) + mpz_class(std::to_string(rng()));
-      break;
-    case 1:
-      x = mpz_class(1) << static_cast<unsigned>(rng() % (64 * limbs));
-      if (rng() % 2 == 0) x -= 1;
-      break;
-    case 2:
-      x = mpz_class(std::to_string(rng() >> (rng() % 64))) << (64 * (limbs - 1));
-      break;
-    default:
-      x = mpz_class(std::to_string(rng() % 1000));
-  }
-  return x;
+  constexpr int shapes[4] = {0, 1, 4, 5};
+  return integer_of_shape(rng, limbs, shapes[rng() % 4]);
 }
 
 std::string check_quotient(const mpz_class& n, const mpz_class& d) {
