@@ -204,13 +204,14 @@ TEST(Approx, QuotientsOfIntegersFromTheirTopBits) {
     SCOPED_TRACE("case " + std::to_string(i) + ", seed 2612");
     ASSERT_EQ(check_quotient(n, d), "");
   }
-  // The edges of the fast path (|s_n - s_d| = 900, s = bit length - 64),
-  // beyond them (mpq_get_d on the unreduced fraction: numerator and
-  // denominator share a factor) and beyond the double range.
+  // The edges of the fast path (|s_n - s_d| = 900, s = bit length - 64, so
+  // s = 839 against 7, whose s is -61), beyond them (mpq_get_d on the
+  // unreduced fraction: numerator and denominator share a factor) and
+  // beyond the double range.
   const mpz_class seven = 7, shared = 12345;
   for (const mpz_class& top : {mpz_class(1), mpz_class(3), mpz_class((mpz_class(1) << 64) - 1)}) {
     const int top_bits = static_cast<int>(mpz_sizeinbase(top.get_mpz_t(), 2));
-    for (const int s : {899, 900, 901, 1000, 1100, 1200}) {
+    for (const int s : {838, 839, 840, 899, 900, 901, 1000, 1100, 1200}) {
       const mpz_class big = top << static_cast<unsigned>(s + 64 - top_bits);
       for (const mpz_class& n : {mpz_class(big), mpz_class(-big)}) {
         ASSERT_EQ(check_quotient(n, seven), "") << s;

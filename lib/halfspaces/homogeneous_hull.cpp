@@ -15,13 +15,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <new>
 #include <type_traits>
 
 #include "approx.hpp"
-#include "error_bounds.hpp"
 #include "filtered_predicates.hpp"
 #include "fixed_det4.hpp"
 #include "hull_soup.hpp"

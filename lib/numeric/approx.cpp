@@ -15,6 +15,33 @@
 namespace cvms {
 namespace {
 
+static_assert(GMP_NUMB_BITS == 64, "top_bits reads 64-bit limbs");
+
+// The top 64 bits t of |x| (x != 0), highest bit set, and the shift s =
+// bit length - 64 (negative for short x), so |x| = t 2^s + r with
+// 0 <= r < 2^s, and r = 0 when s <= 0.
+std::uint64_t top_bits(mpz_srcptr x, long& shift) noexcept {
+  const std::size_t n = mpz_size(x);
+  const mp_limb_t* limbs = mpz_limbs_read(x);
+  const std::uint64_t high = limbs[n - 1];
+  const int zeros = std::countl_zero(high);
+  shift = static_cast<long>(64 * (n - 1)) - zeros;
+  if (n == 1 || zeros == 0) return high << zeros;
+  return (high << zeros) | (limbs[n - 2] >> (64 - zeros));
+}
+
+// Whether r != 0 above: any bit of |x| below the top 64.
+bool bits_below(mpz_srcptr x, long shift) noexcept {
+  if (shift <= 0) return false;
+  const std::size_t n = mpz_size(x);
+  const mp_limb_t* limbs = mpz_limbs_read(x);
+  const long zeros = static_cast<long>(64 * (n - 1)) - shift;
+  if ((limbs[n - 2] << zeros) != 0) return true;  // the bits the window left out of the second limb
+  for (std::size_t i = 0; i + 2 < n; ++i)
+    if (limbs[i] != 0) return true;
+  return false;
+}
+
 // num / 2^k for a one-limb power-of-two denominator 2^k and a numerator of
 // any size (the primitive normals, up to 2^125, and the planes' offsets,
 // n . p over the denominator of p): the value mpq_get_d gives, truncated
@@ -26,22 +53,12 @@ std::optional<Approx> truncated_dyadic(mpz_srcptr num, mpz_srcptr den) noexcept 
   if (mpz_size(den) != 1 || mpz_size(num) == 0) return std::nullopt;
   const mp_limb_t den_limb = mpz_getlimbn(den, 0);
   if (!std::has_single_bit(den_limb)) return std::nullopt;
-  const auto n = static_cast<std::size_t>(mpz_size(num));
-  const mp_limb_t* limbs = mpz_limbs_read(num);
-  const mp_limb_t top = limbs[n - 1];
-  const int zeros = std::countl_zero(top);
-  // The numerator's top 64 bits, and whether any bit below them is set.
-  mp_limb_t window = top << zeros;
-  bool below = false;
-  if (n >= 2) {
-    if (zeros != 0) window |= limbs[n - 2] >> (64 - zeros);
-    below = (limbs[n - 2] << zeros) != 0;  // its bits that the window left out
-    for (std::size_t i = 0; i + 2 < n && !below; ++i) below = limbs[i] != 0;
-  }
+  long shift = 0;
+  const std::uint64_t window = top_bits(num, shift);
   const mp_limb_t mantissa = window >> 11;  // the top 53 bits, truncated
-  const bool exact = !below && (window & 0x7ff) == 0;
-  // value = mantissa 2^(bits - 53 - k), bits = 64 n - zeros.
-  const long exponent = static_cast<long>(64 * n) - zeros - 53 - std::countr_zero(den_limb);
+  const bool exact = !bits_below(num, shift) && (window & 0x7ff) == 0;
+  // value = mantissa 2^(bits - 53 - k), bits = shift + 64.
+  const long exponent = shift + 11 - std::countr_zero(den_limb);
   // mantissa is in [2^52, 2^53): the value is normal when the exponent of
   // its leading bit, exponent + 52, is in [-1022, 1023].
   if (exponent + 52 < -1022 || exponent + 52 > 1023) return std::nullopt;
@@ -95,39 +112,18 @@ Approx Approx::of(const Rational& q) noexcept {
   return {d, filtered::truncation_error(d)};
 }
 
-namespace {
-
-static_assert(GMP_NUMB_BITS == 64, "top_bits reads 64-bit limbs");
-
-// |x| (x != 0) as [t 2^s, (t + 1) 2^s) with t its top 64 bits, so t >= 2^63
-// when s > 0.
-std::uint64_t top_bits(mpz_srcptr x, long& shift) noexcept {
-  const std::size_t n = mpz_size(x);
-  const std::uint64_t high = mpz_getlimbn(x, static_cast<mp_size_t>(n - 1));
-  if (n == 1) {
-    shift = 0;
-    return high;
-  }
-  const int zeros = std::countl_zero(high);
-  const std::uint64_t low = mpz_getlimbn(x, static_cast<mp_size_t>(n - 2));
-  shift = static_cast<long>(64 * (n - 1)) - zeros;
-  return zeros == 0 ? high : (high << zeros) | (low >> (64 - zeros));
-}
-
-}  // namespace
-
 // Proof of the bound. With the top bits t_n 2^s_n of |n| and t_d 2^s_d of d
 // as in top_bits, |n| = t_n 2^s_n (1 + e_n) and d = t_d 2^s_d (1 + e_d) with
 // 0 <= e < 2^-63 (the bits below t are less than 2^s <= t 2^-63 when s > 0,
-// and there are none when s = 0). Converting t_n and t_d to doubles and
+// and there are none when s <= 0). Converting t_n and t_d to doubles and
 // dividing are three roundings of relative error at most u = 2^-53 each
 // (Higham, 2.2), so v / (n/d) = (1 + d1)(1 + d3)(1 + e_d) / ((1 + d2)(1 +
 // e_n)) is within 3.01 u of 1, and |v - n/d| <= 3.01 u |n/d| <= 3.01 u (1 +
-// 3.01 u) |v| < 4 u |v| = |v| 2^-51. The quotient of the rounded tops lies
-// in [2^-64, 2^64] (a top of 2^64 - 1 rounds up to 2^64), so with
-// |s_n - s_d| <= 900 the scaling by 2^(s_n - s_d) is exact and |v| is in
-// [2^-964, 2^964], normal, and so is |v| 2^-51 >= 2^-1015: the bound is
-// computed exactly. Beyond that range mpq_get_d truncates the unreduced
+// 3.01 u) |v| < 4 u |v| = |v| 2^-51. The tops are in [2^63, 2^64), so the
+// quotient of the rounded tops lies in [2^-1, 2] (a top of 2^64 - 1 rounds
+// up to 2^64), and with |s_n - s_d| <= 900 the scaling by 2^(s_n - s_d) is
+// exact and |v| is in [2^-901, 2^901], normal, and so is |v| 2^-51 >=
+// 2^-952: the bound is computed exactly. Beyond that range mpq_get_d truncates the unreduced
 // fraction (read in place: it needs no canonical form), which
 // truncation_error bounds.
 Approx Approx::of_quotient(mpz_srcptr n, mpz_srcptr d) noexcept {
