@@ -19,6 +19,7 @@
 /// and flat input (degenerate).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -35,6 +36,8 @@ namespace detail {
 // instance (see the constructor that takes them).
 struct PolyhedronParts;
 struct PolyhedronApproximations;
+struct FacetPlanes;
+class PlaneStore;
 class LimbArena;
 }  // namespace detail
 
@@ -102,10 +105,15 @@ class ConvexPolyhedron {
   /// The exact position of v.
   [[nodiscard]] const Vec3& vertex(VertexId v) const noexcept { return mesh_.position(v); }
 
-  /// Exact outward normal of facet f: a primitive integer vector.
-  [[nodiscard]] const Vec3& normal(FaceId f) const noexcept { return normals_[f.index()]; }
-  /// dot(normal(f), x) == plane_offset(f) for every point x of facet f.
-  [[nodiscard]] const Rational& plane_offset(FaceId f) const noexcept { return offsets_[f.index()]; }
+  /// Exact outward normal of facet f: a primitive integer vector. A
+  /// polyhedron made from a mesh or soup finds its planes when one is first
+  /// asked for (once, for all facets; safe from concurrent readers), so
+  /// that loading and checking alone never pay for them.
+  /// \throw std::bad_alloc only then, if memory runs out.
+  [[nodiscard]] const Vec3& normal(FaceId f) const;
+  /// dot(normal(f), x) == plane_offset(f) for every point x of facet f
+  /// (made with the normals).
+  [[nodiscard]] const Rational& plane_offset(FaceId f) const;
 
   /// The direction of the edge of h: vertex(to(h)) - vertex(from(h)).
   [[nodiscard]] Vec3 edge_vector(HalfedgeId h) const;
@@ -137,6 +145,12 @@ class ConvexPolyhedron {
   // The approximations the library's predicates use; the type is incomplete
   // outside the library. Precondition: the instance is not empty.
   [[nodiscard]] const detail::PolyhedronApproximations& approximations() const noexcept { return *approx_; }
+  // The facets' planes (normals, their approximations, offsets), made now if
+  // they were not yet; the type is incomplete outside the library.
+  [[nodiscard]] const detail::FacetPlanes& planes() const {
+    const detail::FacetPlanes* made = planes_made_.load(std::memory_order_acquire);
+    return made != nullptr ? *made : make_planes();
+  }
   /// \endcond
 
  private:
@@ -145,9 +159,15 @@ class ConvexPolyhedron {
   // Declared first so that it outlives every value that points into it.
   std::shared_ptr<const detail::LimbArena> exact_limbs_;
   Mesh mesh_;
-  std::vector<Vec3> normals_;
-  std::vector<Rational> offsets_;
   std::shared_ptr<const detail::PolyhedronApproximations> approx_;  // null for a default-constructed instance
+  // The planes; null for a default-constructed instance.
+  std::shared_ptr<detail::PlaneStore> planes_;
+  // The planes once made or given (null before): what planes() reads without
+  // a call or a lock. Written by whichever reader made them; every writer
+  // writes the same pointer.
+  mutable std::atomic<const detail::FacetPlanes*> planes_made_{nullptr};
+
+  const detail::FacetPlanes& make_planes() const;
 };
 
 /// Scales a nonzero rational vector by a positive factor to the primitive

@@ -64,7 +64,7 @@
 #include "limb_arena.hpp"
 #include "no_index.hpp"
 #include "polyhedron_builder.hpp"
-#include "small_direction.hpp"
+#include "facet_planes.hpp"
 
 namespace cvms {
 namespace {
@@ -158,31 +158,6 @@ struct FaceCorners {
   std::vector<std::uint32_t> ids;
 };
 
-// out = the primitive integer normal of cross(b - a, c - a) (nonzero), its
-// numerators kept in arena, and approx its approximation: in 128-bit
-// integers when the points are doubles of close exponents or small fractions
-// (short decimals), else rational (in `general` first).
-void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, detail::LimbArena& arena, Vec3& general, Vec3& out,
-                      ApproxVec3& approx) {
-  std::optional<detail::SmallNormal> small;
-  const std::optional<detail::SmallDirection> u = detail::small_integer_direction(a.approx, b.approx);
-  const std::optional<detail::SmallDirection> v =
-      u ? detail::small_integer_direction(a.approx, c.approx) : std::nullopt;
-  if (u && v) {
-    small = detail::primitive_cross(*u, *v);
-  } else if (const auto d = detail::small_fraction_directions(a.exact, b.exact, c.exact)) {
-    small = detail::primitive_cross((*d)[0], (*d)[1]);
-  }
-  if (small) {
-    small->store(arena, out);
-    approx = small->approx();
-    return;
-  }
-  general = primitive_direction(cross(detail::subtract(b.exact, a.exact), detail::subtract(c.exact, a.exact)));
-  arena.store(out, general);
-  approx = ApproxVec3::of(out);
-}
-
 // Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
 // p1 and the first pk off their line span the face's plane if it is planar,
 // and if it is moreover a convex polygon, the triangle p0 p1 pk (three of its
@@ -204,7 +179,7 @@ FaceVerdict fast_face_plane(const FaceCorners& face, detail::LimbArena& arena, V
   std::size_t k = 2;
   while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
   if (k == m) return FaceVerdict::failed;
-  primitive_normal(pts[0], pts[1], pts[k], arena, general_normal, normal, approx);
+  detail::primitive_normal(pts[0], pts[1], pts[k], arena, general_normal, normal, approx);
   const Vec3Ref plane{normal, approx};
   if (m == 3) {
     corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
@@ -723,10 +698,24 @@ ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
 // A copy's exact values own their limbs (copying a rational allocates them),
-// so it does not keep the original's arena alive.
-ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other)
-    : mesh_(other.mesh_), normals_(other.normals_), offsets_(other.offsets_), approx_(other.approx_) {}
-ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&&) noexcept = default;
+// so it does not keep the original's arena alive: planes made already are
+// copied, planes not yet made are made by the copy when it needs them.
+ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other) : mesh_(other.mesh_), approx_(other.approx_) {
+  if (!other.planes_) return;
+  const detail::FacetPlanes* made = other.planes_made_.load(std::memory_order_acquire);
+  if (made == nullptr) {
+    planes_ = std::make_shared<detail::PlaneStore>();
+    return;
+  }
+  planes_ = std::make_shared<detail::PlaneStore>(*made, nullptr);
+  planes_made_.store(&planes_->get(mesh_, approx_->vertices), std::memory_order_release);
+}
+ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept
+    : exact_limbs_(std::move(other.exact_limbs_)),
+      mesh_(std::move(other.mesh_)),
+      approx_(std::move(other.approx_)),
+      planes_(std::move(other.planes_)),
+      planes_made_(other.planes_made_.exchange(nullptr, std::memory_order_acq_rel)) {}
 ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
   ConvexPolyhedron copy(other);
   return *this = std::move(copy);
@@ -735,9 +724,9 @@ ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
 // into it (destroying a view reads no limb, but the order keeps the rule simple).
 ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&& other) noexcept {
   mesh_ = std::move(other.mesh_);
-  normals_ = std::move(other.normals_);
-  offsets_ = std::move(other.offsets_);
   approx_ = std::move(other.approx_);
+  planes_ = std::move(other.planes_);
+  planes_made_.store(other.planes_made_.exchange(nullptr, std::memory_order_acq_rel), std::memory_order_release);
   exact_limbs_ = std::move(other.exact_limbs_);
   return *this;
 }
@@ -746,9 +735,23 @@ ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
     : exact_limbs_(parts.limbs.capacity_bytes() > 0 ? std::make_shared<const detail::LimbArena>(std::move(parts.limbs))
                                                     : nullptr),
       mesh_(std::move(parts.mesh)),
-      normals_(std::move(parts.normals)),
-      offsets_(std::move(parts.offsets)),
-      approx_(std::make_shared<const detail::PolyhedronApproximations>(std::move(parts.approx))) {}
+      approx_(std::make_shared<const detail::PolyhedronApproximations>(
+          detail::PolyhedronApproximations{std::move(parts.vertex_approx)})),
+      planes_(parts.planes ? std::make_shared<detail::PlaneStore>(std::move(*parts.planes), exact_limbs_)
+                           : std::make_shared<detail::PlaneStore>()) {
+  if (parts.planes) planes_made_.store(&planes_->get(mesh_, approx_->vertices), std::memory_order_release);
+}
+
+const detail::FacetPlanes& ConvexPolyhedron::make_planes() const {
+  static const detail::FacetPlanes none;  // a default-constructed instance has no facets
+  if (!planes_) return none;
+  const detail::FacetPlanes& made = planes_->get(mesh_, approx_->vertices);
+  planes_made_.store(&made, std::memory_order_release);
+  return made;
+}
+
+const Vec3& ConvexPolyhedron::normal(FaceId f) const { return planes().normals[f.index()]; }
+const Rational& ConvexPolyhedron::plane_offset(FaceId f) const { return planes().offsets[f.index()]; }
 
 ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) { return checked_polyhedron(mesh, nullptr); }
 
@@ -761,18 +764,21 @@ bool ConvexPolyhedron::is_convex() const {
     return false;
   }
   if (euler_characteristic() != 2) return false;
-  if (!approx_ || approx_->vertices.size() != m.num_vertices() || normals_.size() != m.num_faces() ||
-      approx_->normals.size() != m.num_faces() || offsets_.size() != m.num_faces())
+  if (!approx_ || approx_->vertices.size() != m.num_vertices()) return false;
+  const std::vector<Vec3>& normals = planes().normals;
+  const std::vector<Rational>& offsets = planes().offsets;
+  if (normals.size() != m.num_faces() || planes().normal_approx.size() != m.num_faces() ||
+      offsets.size() != m.num_faces())
     return false;
   std::vector<const Vec3*> pts;
   for (FaceId f : m.faces()) {
     pts.clear();
     for (HalfedgeId h : m.face_halfedges(f)) pts.push_back(&m.position(m.from(h)));
     const Vec3 n = cross(*pts[1] - *pts[0], *pts[2] - *pts[1]);
-    if (is_zero(n) || primitive_direction(n) != normals_[f.index()]) return false;
-    if (dot(normals_[f.index()], *pts[0]) != offsets_[f.index()]) return false;
+    if (is_zero(n) || primitive_direction(n) != normals[f.index()]) return false;
+    if (dot(normals[f.index()], *pts[0]) != offsets[f.index()]) return false;
     for (const Vec3* q : pts)
-      if (side_of_plane(*q, normals_[f.index()], offsets_[f.index()]) != Sign::zero) return false;
+      if (side_of_plane(*q, normals[f.index()], offsets[f.index()]) != Sign::zero) return false;
     std::vector<ApproxVec3> approx;
     for (const Vec3* q : pts) approx.push_back(ApproxVec3::of(*q));
     std::vector<Vec3Ref> refs;
@@ -785,7 +791,7 @@ bool ConvexPolyhedron::is_convex() const {
   for (VertexId v : m.vertices()) {
     std::uint32_t on = 0;
     for (FaceId f : m.faces()) {
-      const Sign s = side_of_plane(m.position(v), normals_[f.index()], offsets_[f.index()]);
+      const Sign s = side_of_plane(m.position(v), normals[f.index()], offsets[f.index()]);
       if (s == Sign::positive) return false;
       on += s == Sign::zero;
     }
@@ -793,8 +799,8 @@ bool ConvexPolyhedron::is_convex() const {
   }
   // Distinct planes: with every vertex on or below every plane, two facets
   // with equal normals would lie in one plane (covering it twice).
-  std::set<Vec3> distinct(normals_.begin(), normals_.end());
-  if (distinct.size() != normals_.size()) return false;
+  std::set<Vec3> distinct(normals.begin(), normals.end());
+  if (distinct.size() != normals.size()) return false;
   for (VertexId v : m.vertices()) {
     const ApproxVec3 a = ApproxVec3::of(m.position(v));
     const ApproxVec3& b = approx_->vertices[v.index()];
@@ -819,7 +825,7 @@ ConvexPolyhedron ConvexPolyhedron::transformed(const Mat3& linear, const Vec3& o
     pts.push_back(linear * vertex(v) + offset);
     for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();  // in case the caller's matrix was not
   }
-  if (det == Sign::positive) return ConvexPolyhedron(detail::parts_with_planes(mesh_.with_positions(std::move(pts))));
+  if (det == Sign::positive) return ConvexPolyhedron(detail::trusted_parts(mesh_.with_positions(std::move(pts))));
   // Orientation reversing: reverse every facet so it stays counterclockwise
   // seen from outside.
   PolygonSoup soup = mesh_.to_soup();
@@ -839,15 +845,16 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
   if (!approx_) return {};
   detail::PolyhedronParts p;
   p.mesh = mesh_.with_positions(std::move(pts));
-  p.approx.vertices.reserve(num_vertices());
-  for (VertexId v : p.mesh.vertices()) p.approx.vertices.push_back(ApproxVec3::of(p.mesh.position(v)));
-  p.normals = normals_;
-  p.approx.normals = approx_->normals;
-  p.offsets.reserve(offsets_.size());
+  p.vertex_approx.reserve(num_vertices());
+  for (VertexId v : p.mesh.vertices()) p.vertex_approx.push_back(ApproxVec3::of(p.mesh.position(v)));
+  const detail::FacetPlanes& old = planes();
+  detail::FacetPlanes moved{old.normals, old.normal_approx, {}};
+  moved.offsets.reserve(old.offsets.size());
   for (FaceId f : mesh_.faces()) {
-    p.offsets.push_back(offsets_[f.index()] + dot(normals_[f.index()], offset));
-    p.offsets.back().canonicalize();
+    moved.offsets.push_back(old.offsets[f.index()] + dot(old.normals[f.index()], offset));
+    moved.offsets.back().canonicalize();
   }
+  p.planes = std::move(moved);
   return ConvexPolyhedron(std::move(p));
 }
 

@@ -6,8 +6,8 @@
 //
 // Two ways in, both for facets the caller already knows to be maximal,
 // strictly convex, counterclockwise from outside, with only extreme vertices:
-//  - trusted_polyhedron(soup): planes computed from each facet's first corner
-//    (the exact hull's output, transforms that reverse orientation);
+//  - trusted_polyhedron(soup): planes made from each facet's first corners
+//    when first needed (the exact hull's output, transforms);
 //  - assemble(mesh, approximations, planes): the algorithms' output path,
 //    whose exact primitive normals and offsets are known already, so that
 //    nothing is recomputed (no cross products, no gcds), built in parts that
@@ -17,9 +17,11 @@
 // without defining them, so no user can build an unchecked instance.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "approx.hpp"
+#include "facet_planes.hpp"
 #include "limb_arena.hpp"
 #include "cvms/convex_polyhedron.hpp"
 
@@ -30,29 +32,23 @@ struct DistinctPoints {};
 
 struct PolyhedronApproximations {
   std::vector<ApproxVec3> vertices;  ///< one per vertex
-  std::vector<ApproxVec3> normals;   ///< one per facet
 };
 
 /// What ConvexPolyhedron's library constructor takes, index by index.
 struct PolyhedronParts {
   Mesh mesh;
-  std::vector<Vec3> normals;      ///< outward primitive integer normals
-  std::vector<Rational> offsets;  ///< dot(normal, x) for x on the facet
-  PolyhedronApproximations approx;
+  std::vector<ApproxVec3> vertex_approx;  ///< one per vertex
+  /// The facets' planes when the builder knows them; nullopt: made from the
+  /// facets' first corners when first needed (facet_planes.hpp).
+  std::optional<FacetPlanes> planes;
   LimbArena limbs;  ///< where the exact values above keep their limbs, if they do
 };
 
-/// The planes of the output facets, index by index.
-struct FacetPlanes {
-  std::vector<Vec3> normals;              ///< outward primitive integer normals
-  std::vector<ApproxVec3> normal_approx;  ///< their approximations
-  std::vector<Rational> offsets;          ///< dot(normal, x) for x on the facet
-};
-
-/// The parts of a mesh whose faces meet the guarantee above: normals from
-/// each face's first corner, approximations of everything.
-/// \throw Error(invalid_argument) if a face starts with three collinear vertices.
-PolyhedronParts parts_with_planes(Mesh mesh);
+/// The parts of a mesh whose faces meet the guarantee above: the vertices'
+/// approximations, the planes left to be made from each face's first corners.
+/// \throw Error(invalid_argument) if a face starts with three collinear
+///   vertices (then it has no plane to make).
+PolyhedronParts trusted_parts(Mesh mesh);
 
 /// The polyhedron of a soup that meets the guarantee (topology checked).
 ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
@@ -74,10 +70,14 @@ inline const ApproxVec3& vertex_approx(const ConvexPolyhedron& p, VertexId v) no
 }
 /// vertex(v) with its approximation, for the filtered predicates.
 inline Vec3Ref vertex_ref(const ConvexPolyhedron& p, VertexId v) noexcept { return {p.vertex(v), vertex_approx(p, v)}; }
-inline const ApproxVec3& normal_approx(const ConvexPolyhedron& p, FaceId f) noexcept {
-  return p.approximations().normals[f.index()];
+/// The approximation of normal(f); makes the planes if they were not yet.
+inline const ApproxVec3& normal_approx(const ConvexPolyhedron& p, FaceId f) {
+  return p.planes().normal_approx[f.index()];
 }
 /// normal(f) with its approximation, for the filtered predicates.
-inline Vec3Ref normal_ref(const ConvexPolyhedron& p, FaceId f) noexcept { return {p.normal(f), normal_approx(p, f)}; }
+inline Vec3Ref normal_ref(const ConvexPolyhedron& p, FaceId f) {
+  const FacetPlanes& planes = p.planes();
+  return {planes.normals[f.index()], planes.normal_approx[f.index()]};
+}
 
 }  // namespace cvms::detail

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// The exact planes of a polyhedron's facets, and where a ConvexPolyhedron
+// keeps them: made once, when first asked for, unless its builder knew them
+// already (issue 14).
+//
+// Why lazily: validating a mesh (ConvexPolyhedron::from_mesh) decides every
+// sign it needs with orientation predicates on the vertices, so a program
+// that loads and checks a polyhedron, or only reads its vertices, never pays
+// for the primitive normals' gcds and the offsets' products, which were half
+// of loading a triangulated sphere. Why this is still exact and the same:
+// a facet is a strictly convex polygon, counterclockwise from outside, so its
+// first three corners a, b, c are not collinear and cross(b - a, c - a) is a
+// positive multiple of its outward normal; the primitive integer vector of
+// that direction is unique, and so is its offset dot(n, a).
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "approx.hpp"
+#include "cvms/mesh.hpp"
+#include "limb_arena.hpp"
+
+namespace cvms::detail {
+
+/// The planes of the output facets, index by index.
+struct FacetPlanes {
+  std::vector<Vec3> normals;              ///< outward primitive integer normals
+  std::vector<ApproxVec3> normal_approx;  ///< their approximations
+  std::vector<Rational> offsets;          ///< dot(normal, x) for x on the facet
+};
+
+/// out = the primitive integer normal of cross(b - a, c - a) (nonzero), its
+/// numerators kept in arena, and approx its approximation: in 128-bit
+/// integers when the points are doubles of close exponents or small
+/// fractions (short decimals), else rational (in `general` first, whose
+/// storage the caller reuses from call to call).
+/// \pre a, b, c are not collinear.
+void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, LimbArena& arena, Vec3& general, Vec3& out,
+                      ApproxVec3& approx);
+
+/// The planes of every face of mesh from its first three corners (see the
+/// file comment), their values' limbs kept in arena.
+/// \pre every face is a strictly convex polygon, counterclockwise seen from
+///   outside, and vertex_approx[v] approximates vertex v.
+FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
+                                      LimbArena& arena);
+
+/// A ConvexPolyhedron's planes, shared by its copies (they never change):
+/// either given when it was built, or made from its facets' first corners the
+/// first time they are needed, by whichever thread asks first (std::call_once:
+/// concurrent readers of one polyhedron wait for the same single computation).
+class PlaneStore {
+ public:
+  /// Planes known already; `limbs` is the arena their values point into, if any.
+  PlaneStore(FacetPlanes planes, std::shared_ptr<const LimbArena> limbs);
+  /// Planes to be made from the corners on first use.
+  PlaneStore();
+  PlaneStore(const PlaneStore&) = delete;
+  PlaneStore& operator=(const PlaneStore&) = delete;
+
+  /// The planes of mesh, made now if they were not given or made before.
+  /// \pre mesh and vertex_approx are those of the polyhedron (or of a copy).
+  const FacetPlanes& get(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx);
+
+ private:
+  // Declared first so that it outlives the values that point into it.
+  std::shared_ptr<const LimbArena> given_limbs_;
+  LimbArena made_limbs_;
+  std::once_flag made_;
+  bool given_;
+  FacetPlanes planes_;
+};
+
+}  // namespace cvms::detail
