@@ -49,6 +49,8 @@
 #include "cvms/convex_polyhedron.hpp"
 
 #include <algorithm>
+#include <array>
+#include <deque>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -158,40 +160,65 @@ struct FaceCorners {
   std::vector<std::uint32_t> ids;
 };
 
+// The primitive normals of the faces that need one, made at most once per
+// face from its plane triple (FaceChecks): faces of more than three vertices
+// (step 2's planarity and polygon checks), the two faces of an edge whose
+// planes coincide (step 4: coplanar or a fold) and the first face of a
+// merged facet (step 5). A triangulated surface in general position needs
+// none: its convexity is decided by orientations of its vertices alone.
+class FaceNormals {
+ public:
+  FaceNormals(const Mesh& mesh, const Points& points, const std::vector<std::array<VertexId, 3>>& triple)
+      : points_(points), triple_(triple), slot_(mesh.num_faces(), no_index) {}
+  const FacePlane& operator()(std::uint32_t f) {
+    if (slot_[f] == no_index) {
+      slot_[f] = static_cast<std::uint32_t>(planes_.size());
+      FacePlane& plane = planes_.emplace_back();
+      const std::array<VertexId, 3>& t = triple_[f];
+      detail::primitive_normal(points_[t[0]], points_[t[1]], points_[t[2]], arena_, general_, plane.normal,
+                               plane.approx);
+    }
+    return planes_[slot_[f]];
+  }
+
+ private:
+  const Points& points_;
+  const std::vector<std::array<VertexId, 3>>& triple_;
+  std::vector<std::uint32_t> slot_;
+  std::deque<FacePlane> planes_;  // a deque: a normal never moves once made
+  detail::LimbArena arena_;
+  Vec3 general_;  // keeps its limbs from face to face
+};
+
 // Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
 // p1 and the first pk off their line span the face's plane if it is planar,
 // and if it is moreover a convex polygon, the triangle p0 p1 pk (three of its
-// vertices in cyclic order, not collinear) turns like the polygon, so the
-// normal of that triangle is a positive multiple of the area vector and the
-// polygon check against it decides as the check against the area vector
-// would. Writes that plane into `normal` and `approx` and, for a face that
+// vertices in cyclic order, not collinear) turns like the polygon, so it
+// orients the plane like the face: its normal is a positive multiple of the
+// area vector and the polygon check against it decides as the check against
+// the area vector would. Writes that triple into `triple` and, for a face that
 // passes, the corner flags into `corner`.
 enum class FaceVerdict {
   passed,
-  failed_in_plane,  // planar (in `normal`), but not a convex polygon
+  failed_in_plane,  // planar (the triple spans its plane), but not a convex polygon
   failed            // collinear or not planar
 };
 
-FaceVerdict fast_face_plane(const FaceCorners& face, detail::LimbArena& arena, Vec3& general_normal, Vec3& normal,
-                            ApproxVec3& approx, std::vector<char>& corner) {
+FaceVerdict check_face(const FaceCorners& face, FaceNormals& normals, std::array<VertexId, 3>& triple,
+                       std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
   std::size_t k = 2;
   while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
   if (k == m) return FaceVerdict::failed;
-  detail::primitive_normal(pts[0], pts[1], pts[k], arena, general_normal, normal, approx);
-  const Vec3Ref plane{normal, approx};
+  triple = {VertexId(face.ids[0]), VertexId(face.ids[1]), VertexId(face.ids[k])};
   if (m == 3) {
     corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
     return FaceVerdict::passed;
   }
-  thread_local detail::DotScratch scratch;
-  thread_local Rational offset;
-  detail::integer_dot(normal, pts[0].exact, scratch, offset);
-  const Approx offset_approx = Approx::of(offset);
   for (std::size_t i = 2; i < m; ++i)
-    if (i != k && side_of_plane(pts[i], plane, offset, offset_approx) != Sign::zero) return FaceVerdict::failed;
-  PolygonCheck c = check_convex_polygon(pts, plane);
+    if (i != k && orient3d(pts[0], pts[1], pts[k], pts[i]) != Sign::zero) return FaceVerdict::failed;
+  PolygonCheck c = check_convex_polygon(pts, normals(face.f.index()).ref());
   if (c.fault != PolygonFault::none) return FaceVerdict::failed_in_plane;
   corner = std::move(c.corner);
   return FaceVerdict::passed;
@@ -231,29 +258,19 @@ FaceVerdict fast_face_plane(const FaceCorners& face, detail::LimbArena& arena, V
   throw Error(ErrorCategory::not_convex, name + " could not be checked");
 }
 
-// What step 2 finds: each face's plane (normals and approximations apart,
-// so that the normals move into the result as a whole: see
-// merged_polyhedron), and per halfedge whether its origin is a corner of its
-// face (a strict turn).
-struct FacePlanes {
-  std::vector<Vec3> normal;
-  std::vector<ApproxVec3> approx;
+// What step 2 finds: per face three of its vertices, not collinear, that
+// span its plane and turn like it (its plane triple: orient3d against them is
+// the side of its plane, signed by its orientation), and per halfedge whether
+// its origin is a corner of its face (a strict turn).
+struct FaceChecks {
+  std::vector<std::array<VertexId, 3>> triple;
   std::vector<char> corner;
-  // The normals' numerators, and later the result's offsets' (the result
-  // keeps it): a block per number would be 80,000 heap blocks on Sphere6.
-  detail::LimbArena limbs;
-  [[nodiscard]] Vec3Ref ref(std::uint32_t f) const { return {normal[f], approx[f]}; }
 };
 
-// 2. Faces: orientation normal, zero area, planarity, convexity.
-FacePlanes face_planes(const Mesh& mesh, const Points& points) {
-  FacePlanes out;
-  out.normal.resize(mesh.num_faces());
-  out.approx.resize(mesh.num_faces());
-  out.corner.assign(mesh.num_halfedges(), 0);
+// 2. Faces: zero area, planarity, convexity.
+void check_faces(const Mesh& mesh, const Points& points, FaceNormals& normals, FaceChecks& out) {
   FaceCorners face{FaceId(0), {}, {}};
   std::vector<char> corner;
-  Vec3 general_normal;  // keeps its limbs from face to face
   for (FaceId f : mesh.faces()) {
     face.f = f;
     face.pts.clear();
@@ -262,35 +279,24 @@ FacePlanes face_planes(const Mesh& mesh, const Points& points) {
       face.pts.push_back(points[mesh.from(h)]);
       face.ids.push_back(mesh.from(h).index());
     }
-    const FaceVerdict verdict =
-        fast_face_plane(face, out.limbs, general_normal, out.normal[f.index()], out.approx[f.index()], corner);
-    if (verdict == FaceVerdict::failed_in_plane) {
-      const FacePlane plane{out.normal[f.index()], out.approx[f.index()]};
-      report_face_fault(face, &plane);
-    }
+    const FaceVerdict verdict = check_face(face, normals, out.triple[f.index()], corner);
+    if (verdict == FaceVerdict::failed_in_plane) report_face_fault(face, &normals(f.index()));
     if (verdict == FaceVerdict::failed) report_face_fault(face, nullptr);
     std::size_t i = 0;
     for (HalfedgeId h : mesh.face_halfedges(f)) out.corner[h.index()] = corner[i++];
   }
-  return out;
 }
 
-// 3. Flat: every vertex on the plane of face 0 (integer normal n): with
-// the plane's offset, the exact test of a vertex on it (the usual answer
-// until the first vertex off it) is one integer comparison.
-void check_not_flat(const Mesh& mesh, const Points& points, Vec3Ref n) {
-  Rational offset;
-  detail::DotScratch scratch;
-  detail::integer_dot(n.exact, mesh.position(mesh.from(mesh.halfedge(FaceId(0)))), scratch, offset);
-  const Approx offset_approx = Approx::of(offset);
-  bool flat = true;
+// orient3d of x against the plane triple t.
+Sign side_of_triple(const Points& points, const std::array<VertexId, 3>& t, Vec3Ref x) {
+  return orient3d(points[t[0]], points[t[1]], points[t[2]], x);
+}
+
+// 3. Flat: every vertex on the plane of face 0.
+void check_not_flat(const Mesh& mesh, const Points& points, const std::array<VertexId, 3>& plane0) {
   for (VertexId v : mesh.vertices())
-    if (side_of_plane(points[v], n, offset, offset_approx) != Sign::zero) {
-      flat = false;
-      break;
-    }
-  if (flat)
-    throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
+    if (side_of_triple(points, plane0, points[v]) != Sign::zero) return;
+  throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
 }
 
 // What step 4 finds: the faces joined by coplanar edges, and whether the
@@ -300,23 +306,34 @@ struct EdgeClasses {
   bool flip;
 };
 
-// 4. Edges.
-EdgeClasses classify_edges(const Mesh& mesh, const Points& points, const FacePlanes& faces) {
+// 4. Edges. For the edge p -> q of face f and q -> p of face g, the
+// classical test is the sign of det[N_f, N_g, q - p] (N the outward area
+// normals): positive iff the edge is convex. Without the normals: the planes
+// of f and g both contain the line pq, and g, a convex polygon (step 2) with
+// the side q -> p, lies in its plane on one side of that line, so the
+// vertices of g off the line lie strictly on one side of f's plane and the
+// others on it. Writing x - p = a (q - p) + t (N_g x (q - p)) for such an x,
+// g's counterclockwise turn from q -> p to x gives t < 0, and then
+// dot(N_f, x - p) = t det[N_f, N_g, q - p]: the edge is convex iff x is below
+// f's plane, reflex iff above. If all three vertices of g's plane triple are
+// on f's plane, the planes coincide (N_f, N_g parallel) and only the normals'
+// directions tell a coplanar edge (merged) from a zero-angle fold.
+EdgeClasses classify_edges(const Mesh& mesh, const Points& points, const FaceChecks& faces, FaceNormals& normals) {
   std::vector<EdgeKind> kind(mesh.num_edges());
   std::size_t num_convex = 0, num_reflex = 0;
   EdgeClasses out{UnionFind(mesh.num_faces()), false};
   for (EdgeId e : mesh.edges()) {
     const HalfedgeId h = Mesh::halfedge(e);
+    const VertexId p = mesh.from(h), q = mesh.to(h);
     const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
-    const Vec3Ref n_f = faces.ref(f);
-    const Vec3Ref n_g = faces.ref(g);
+    Sign side = Sign::zero;
+    for (VertexId x : faces.triple[g])
+      if (x != p && x != q && (side = side_of_triple(points, faces.triple[f], points[x])) != Sign::zero) break;
     EdgeKind k;
-    if (is_parallel(n_f, n_g)) {
-      k = sign_dot(n_f, n_g) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
+    if (side == Sign::zero) {
+      k = sign_dot(normals(f).ref(), normals(g).ref()) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
     } else {
-      k = sign_triple_with_difference(n_f, n_g, points[mesh.from(h)], points[mesh.to(h)]) == Sign::positive
-              ? EdgeKind::convex
-              : EdgeKind::reflex;
+      k = side == Sign::negative ? EdgeKind::convex : EdgeKind::reflex;
     }
     kind[e.index()] = k;
     if (k == EdgeKind::coplanar) out.coplanar.unite(f, g);
@@ -426,7 +443,7 @@ FacetsAtVertices facets_at_vertices(const Regions& regions) {
 // convex polygon stays one from any start), else from the polygon check.
 // Written into c, whose storage the caller reuses from facet to facet.
 void cycle_corners(const Regions& regions, std::span<const HalfedgeId> cycle, const Points& points,
-                   const FacePlanes& faces, std::uint32_t r, PolygonCheck& c) {
+                   const FaceChecks& faces, FaceNormals& normals, std::uint32_t r, PolygonCheck& c) {
   const Mesh& mesh = regions.mesh;
   if (regions.num_faces[r] == 1) {
     c.fault = PolygonFault::none;
@@ -437,14 +454,14 @@ void cycle_corners(const Regions& regions, std::span<const HalfedgeId> cycle, co
   std::vector<Vec3Ref> pts;
   pts.reserve(cycle.size());
   for (HalfedgeId h : cycle) pts.push_back(points[mesh.from(h)]);
-  c = check_convex_polygon(pts, faces.ref(regions.first_face[r]));
+  c = check_convex_polygon(pts, normals(regions.first_face[r]).ref());
 }
 
 // Facet polygons, and corners agree with extremality. The corners of facet
 // r, as input vertex indices, are face r of the returned soup (which has no
 // points).
 PolygonSoup facet_corners(const Regions& regions, const BoundaryCycles& cycle, const Points& points,
-                          const FacePlanes& faces, const FacetsAtVertices& facets_at) {
+                          const FaceChecks& faces, FaceNormals& normals, const FacetsAtVertices& facets_at) {
   const Mesh& mesh = regions.mesh;
   PolygonSoup corners;
   corners.face_offsets.reserve(regions.size() + 1);
@@ -453,7 +470,7 @@ PolygonSoup facet_corners(const Regions& regions, const BoundaryCycles& cycle, c
   for (std::uint32_t r = 0; r < regions.size(); ++r) {
     ids.clear();
     for (HalfedgeId h : cycle[r]) ids.push_back(mesh.from(h).index());
-    cycle_corners(regions, cycle[r], points, faces, r, c);
+    cycle_corners(regions, cycle[r], points, faces, normals, r, c);
     if (c.fault != PolygonFault::none)
       not_convex(regions.facet_name(r) + " (coplanar faces merged) is not a convex polygon: it " +
                  describe_fault(c, ids));
@@ -543,80 +560,45 @@ Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners, const Facet
   return merged;
 }
 
-// Moves the planes of the regions' first faces to the front, region by
-// region, and drops the rest: first_face increases, so first_face[r] >= r
-// and the plane moved to r was never moved before. Swaps, not moves: a
-// moved-from mpq_class allocates anew, and without merging (every facet one
-// face) nothing moves at all.
-void keep_first_faces(FacePlanes& faces, const std::vector<std::uint32_t>& first_face) {
-  for (std::uint32_t r = 0; r < first_face.size(); ++r) {
-    const std::uint32_t f = first_face[r];
-    if (f == r) continue;
-    for (int i = 0; i < 3; ++i) mpq_swap(faces.normal[r][i].get_mpq_t(), faces.normal[f][i].get_mpq_t());
-    faces.approx[r] = faces.approx[f];
-  }
-  faces.normal.resize(first_face.size());
-  faces.approx.resize(first_face.size());
+// The result: its planes are made when first asked for, from each facet's
+// first three corners (facet_planes.hpp), which are not collinear because
+// step 5 checked every facet to be a strictly convex polygon of its corners
+// and the facets turn like their faces, flipped with the mesh. The input's
+// positions may have moved into `merged`: its vertices are counted by
+// facets_at.
+ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, const FacetsAtVertices& facets_at) {
+  detail::PolyhedronParts parts;
+  parts.vertex_approx.reserve(merged.num_vertices());
+  for (std::uint32_t v = 0; v < facets_at.count.size(); ++v)
+    if (facets_at.extreme(v)) parts.vertex_approx.push_back(points.approx(VertexId(v)));
+  parts.mesh = std::move(merged);
+  return ConvexPolyhedron(std::move(parts));
 }
 
-// The result's planes, with nothing recomputed: facet r lies in the plane
-// of its faces, and its boundary turns like them (step 5 checked it against
-// that plane), so its outward primitive normal is that of its first face,
-// negated when the mesh is flipped, and its offset the normal's dot product
-// with any of its corners: the planes detail::parts_with_planes would find.
-// The input's positions may have moved into `merged`: its vertices are
-// counted by facets_at.
-ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, FacePlanes&& faces, const Regions& regions,
-                                   const FacetsAtVertices& facets_at, bool flip) {
-  std::vector<ApproxVec3> vertex_approx;
-  vertex_approx.reserve(merged.num_vertices());
-  for (std::uint32_t v = 0; v < facets_at.count.size(); ++v)
-    if (facets_at.extreme(v)) vertex_approx.push_back(points.approx(VertexId(v)));
-  const bool none_merged = regions.size() == faces.normal.size();
-  keep_first_faces(faces, regions.first_face);
-  detail::FacetPlanes planes;
-  detail::LimbArena limbs;
-  if (none_merged) {
-    planes.normals = std::move(faces.normal);
-    limbs = std::move(faces.limbs);
-  } else {
-    // Faces merged: the kept normals go to a vector and an arena of their
-    // own, so that the result holds nothing of the faces merged away (the
-    // room and limbs of 12,288 triangles' normals were 1.8 MB for a box).
-    planes.normals.resize(regions.size());
-    for (std::uint32_t r = 0; r < regions.size(); ++r) limbs.store(planes.normals[r], faces.normal[r]);
-  }
-  planes.normal_approx = std::move(faces.approx);
-  planes.normal_approx.shrink_to_fit();
-  planes.offsets.resize(regions.size());
-  detail::DotScratch scratch;
-  Rational offset;  // keeps its limbs from facet to facet
-  for (std::uint32_t r = 0; r < regions.size(); ++r) {
-    Vec3& normal = planes.normals[r];
-    if (flip) {
-      for (int i = 0; i < 3; ++i) limbs.negate_stored(normal[i]);
-      planes.normal_approx[r] = ApproxVec3::of(normal);
-    }
-    const Vec3& corner = merged.position(merged.from(merged.halfedge(FaceId(r))));
-    detail::integer_dot(normal, corner, scratch, offset);
-    limbs.store(planes.offsets[r], offset);
-  }
-  return detail::assemble(std::move(merged), std::move(vertex_approx), std::move(planes), std::move(limbs));
+// The plane triple of a facet of the result: its first three corners.
+std::array<VertexId, 3> first_corners(const Mesh& m, FaceId f) {
+  const HalfedgeId h = m.halfedge(f);
+  return {m.from(h), m.to(h), m.to(m.next(h))};
 }
 
 // 8. Global: an interior point o below every facet, and a ray from o that
 // crosses facet 0 only. The facets of p are the regions, in order.
+// The facets' planes are signed by their first three corners (first_corners),
+// in orientations of the result's vertices, so that the check does not make
+// the planes: orient3d(a, b, c, x) is the side of x, and det[dir, b - a, c - a]
+// the sign of dot(N, dir), for a positive multiple N of the outward normal.
 void check_global(const ConvexPolyhedron& p, const Regions& regions) {
   const Mesh& m = p.mesh();
-  const HalfedgeId h0 = m.halfedge(FaceId(0));
-  const Vec3& a = m.position(m.from(h0));
-  const Vec3& b = m.position(m.to(h0));
-  const Vec3& c = m.position(m.to(m.next(h0)));
-  const Vec3Ref n0 = detail::normal_ref(p, FaceId(0));
-  const Approx offset0 = Approx::of(p.plane_offset(FaceId(0)));
+  const auto ref = [&p](VertexId v) { return detail::vertex_ref(p, v); };
+  const auto side = [&](FaceId f, Vec3Ref x) {
+    const std::array<VertexId, 3> t = first_corners(m, f);
+    return orient3d(ref(t[0]), ref(t[1]), ref(t[2]), x);
+  };
+  const std::array<VertexId, 3> t0 = first_corners(m, FaceId(0));
+  const Vec3 &a = m.position(t0[0]), &b = m.position(t0[1]), &c = m.position(t0[2]);
   const Vec3* w = nullptr;
   for (VertexId v : m.vertices())
-    if (side_of_plane(detail::vertex_ref(p, v), n0, p.plane_offset(FaceId(0)), offset0) == Sign::negative) {
+    if (side(FaceId(0), ref(v)) == Sign::negative) {
       w = &m.position(v);
       break;
     }
@@ -625,18 +607,17 @@ void check_global(const ConvexPolyhedron& p, const Regions& regions) {
   const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
   const ApproxVec3 o_approx = ApproxVec3::of(o), dir_approx = ApproxVec3::of(dir);
   const Vec3Ref o_ref{o, o_approx}, dir_ref{dir, dir_approx};
-  for (FaceId f : m.faces()) {
-    const Rational& offset = p.plane_offset(f);
-    if (side_of_plane(o_ref, detail::normal_ref(p, f), offset, Approx::of(offset)) != Sign::negative)
+  for (FaceId f : m.faces())
+    if (side(f, o_ref) != Sign::negative)
       not_convex("the surface is locally convex but not convex: an interior point lies above " +
                  regions.facet_name(f.index()));
-  }
   for (FaceId f : m.faces()) {
-    if (f.index() == 0 || sign_dot(detail::normal_ref(p, f), dir_ref) != Sign::positive) continue;
+    if (f.index() == 0) continue;
+    const std::array<VertexId, 3> t = first_corners(m, f);
+    if (sign_triple_of_differences(dir_ref, ref(t[0]), ref(t[1]), ref(t[0]), ref(t[2])) != Sign::positive) continue;
     bool hit = true;
     for (HalfedgeId h : m.face_halfedges(f))  // det[from - o, to - o, dir] = det[dir, from - o, to - o]
-      if (sign_triple_of_differences(dir_ref, o_ref, detail::vertex_ref(p, m.from(h)), o_ref,
-                                     detail::vertex_ref(p, m.to(h))) == Sign::negative) {
+      if (sign_triple_of_differences(dir_ref, o_ref, ref(m.from(h)), o_ref, ref(m.to(h))) == Sign::negative) {
         hit = false;
         break;
       }
@@ -655,17 +636,19 @@ ConvexPolyhedron checked_polyhedron(const Mesh& mesh, Mesh* owned) {
   // globally (the file comment says why that suffices).
   check_sphere(mesh);
   const Points points(mesh);
-  FacePlanes faces = face_planes(mesh, points);
-  check_not_flat(mesh, points, faces.ref(0));
-  EdgeClasses edges = classify_edges(mesh, points, faces);
+  FaceChecks faces{std::vector<std::array<VertexId, 3>>(mesh.num_faces()), std::vector<char>(mesh.num_halfedges(), 0)};
+  FaceNormals normals(mesh, points, faces.triple);
+  check_faces(mesh, points, normals, faces);
+  check_not_flat(mesh, points, faces.triple[0]);
+  EdgeClasses edges = classify_edges(mesh, points, faces, normals);
   const Regions regions(mesh, edges.coplanar);
   const BoundaryCycles cycles = boundary_cycles(regions);
   const FacetsAtVertices facets_at = facets_at_vertices(regions);
-  const PolygonSoup corners = facet_corners(regions, cycles, points, faces, facets_at);
+  const PolygonSoup corners = facet_corners(regions, cycles, points, faces, normals, facets_at);
   // From here on `mesh` may have no positions (kept_points): only counts and
   // approximations of the input are read.
   Mesh merged = merged_mesh(mesh, corners, facets_at, edges.flip, owned);
-  ConvexPolyhedron p = merged_polyhedron(std::move(merged), points, std::move(faces), regions, facets_at, edges.flip);
+  ConvexPolyhedron p = merged_polyhedron(std::move(merged), points, facets_at);
   check_global(p, regions);
   return p;
 }
