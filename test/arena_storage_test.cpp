@@ -7,6 +7,8 @@
 // the differential suites check against the hull of the pairwise sums.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -121,6 +123,18 @@ bool plane_numerators_are_views(const ConvexPolyhedron& p, bool views) {
   return true;
 }
 
+// The plane of facet f worked out here from its first three corners: the
+// primitive cross product, turned outward by a vertex off the facet.
+std::pair<Vec3, Rational> outward_plane(const ConvexPolyhedron& p, FaceId f) {
+  const HalfedgeId h = p.mesh().halfedge(f);
+  const Vec3& a = p.vertex(p.mesh().from(h));
+  Vec3 n = primitive_direction(cross(p.vertex(p.mesh().to(h)) - a, p.vertex(p.mesh().to(p.mesh().next(h))) - a));
+  const Rational offset = dot(n, a);
+  for (VertexId v : p.mesh().vertices())
+    if (dot(n, p.vertex(v)) > offset) return {-n, -offset};  // every vertex is at or below an outward plane
+  return {n, offset};
+}
+
 // The planes from_soup stores in its arena, against planes worked out here
 // from each facet's first three corners (the primitive cross product, turned
 // outward by a vertex off the facet), for a mesh given outward and inward
@@ -143,17 +157,9 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
     const ConvexPolyhedron p = ConvexPolyhedron::from_soup(*soup);
     ASSERT_EQ(p.num_facets(), soup == &merging || soup == &merging_inward ? 6u : outward.num_faces());
     for (FaceId f : p.mesh().faces()) {
-      const HalfedgeId h = p.mesh().halfedge(f);
-      const Vec3& a = p.vertex(p.mesh().from(h));
-      Vec3 n = primitive_direction(cross(p.vertex(p.mesh().to(h)) - a, p.vertex(p.mesh().to(p.mesh().next(h))) - a));
-      const Rational offset = dot(n, a);
-      for (VertexId v : p.mesh().vertices())
-        if (dot(n, p.vertex(v)) > offset) {
-          n = -n;  // an outward normal has every vertex at or below its plane
-          break;
-        }
+      const auto [n, offset] = outward_plane(p, f);
       ASSERT_EQ(p.normal(f), n) << "facet " << f.index() << (soup == &inward || soup == &merging_inward ? " (inward input)" : "");
-      ASSERT_EQ(p.plane_offset(f), dot(n, a)) << "facet " << f.index();
+      ASSERT_EQ(p.plane_offset(f), offset) << "facet " << f.index();
     }
     if (detail::LimbArena::holds_limbs()) {
       EXPECT_TRUE(plane_numerators_are_views(p, true));
@@ -161,6 +167,46 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
     const ConvexPolyhedron copy = p;
     EXPECT_TRUE(plane_numerators_are_views(copy, false));
     for (FaceId f : p.mesh().faces()) ASSERT_EQ(copy.normal(f), p.normal(f));
+  }
+}
+
+// A loaded polyhedron makes its planes when one is first asked for
+// (lib/mesh/facet_planes.hpp). Readers on several threads that ask at once
+// all get the one set made (the same addresses), and it is the right one; a
+// copy taken before that makes its own, equal set. Under TSan this is the
+// test of the once-only construction.
+TEST(ArenaStorage, LoadedPlanesAreMadeOnceForConcurrentReaders) {
+  const PolygonSoup soup = shapes::rotated_geodesic_sphere(3).to_soup();
+  constexpr int num_readers = 4;
+  for (int round = 0; round < 3; ++round) {
+    const ConvexPolyhedron p = ConvexPolyhedron::from_soup(soup);
+    const ConvexPolyhedron copy_before = p;
+    std::vector<std::vector<const Vec3*>> seen(num_readers);
+    std::vector<std::thread> readers;
+    for (int t = 0; t < num_readers; ++t)
+      readers.emplace_back([&p, &seen, t] {
+        const std::uint32_t n = p.num_facets();
+        for (std::uint32_t i = 0; i < n; ++i) {  // each thread starts elsewhere
+          const FaceId f((i + static_cast<std::uint32_t>(t) * n / num_readers) % n);
+          seen[static_cast<std::size_t>(t)].push_back(&p.normal(f));
+          (void)p.plane_offset(f);
+        }
+      });
+    for (std::thread& r : readers) r.join();
+    for (int t = 1; t < num_readers; ++t) {
+      std::vector<const Vec3*> a = seen[0], b = seen[static_cast<std::size_t>(t)];
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      ASSERT_EQ(a, b) << "reader " << t << " read another set of planes (round " << round << ")";
+    }
+    for (FaceId f : p.mesh().faces()) {
+      const auto [n, offset] = outward_plane(p, f);
+      ASSERT_EQ(p.normal(f), n) << "facet " << f.index();
+      ASSERT_EQ(p.plane_offset(f), offset) << "facet " << f.index();
+      ASSERT_EQ(copy_before.normal(f), n) << "facet " << f.index() << " of the copy";
+      ASSERT_EQ(copy_before.plane_offset(f), offset) << "facet " << f.index() << " of the copy";
+    }
+    EXPECT_NE(&copy_before.normal(FaceId(0)), &p.normal(FaceId(0)));
   }
 }
 

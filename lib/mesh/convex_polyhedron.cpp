@@ -1,24 +1,27 @@
 // SPDX-License-Identifier: MIT
 // ConvexPolyhedron: exact convexity verification of a closed mesh, merging of
-// coplanar faces into maximal facets, removal of non-extreme vertices, and the
-// cached normals, plane offsets and double approximations.
+// coplanar faces into maximal facets, removal of non-extreme vertices; the
+// facet planes are made when first asked for (facet_planes.hpp).
 //
 // from_mesh works in O(V + E + F) predicates:
 //  1. topology: one connected component and Euler characteristic 2 (a sphere);
-//  2. every face: exact area vector N_f (its orientation normal); zero area is
-//     `degenerate`; a face must be planar and a convex polygon (collinear
-//     vertices allowed), else `not_convex`. A face that passes keeps, for N_f,
-//     the primitive normal of three of its vertices (a positive multiple,
-//     found in O(degree): fast_face_plane); only a failing face has its N_f
-//     computed, to report its fault as stated;
+//  2. every face: zero area is `degenerate`; a face must be planar and a
+//     convex polygon (collinear vertices allowed), else `not_convex`. A face
+//     that passes keeps a plane triple: three of its vertices, not collinear,
+//     that turn like it (found in O(degree): check_face), so that
+//     orient3d against them signs a point's side of the face's plane by the
+//     face's orientation normal N_f (its area vector, up to a positive
+//     factor); only a failing face has its N_f computed, to report its fault
+//     as stated;
 //  3. all vertices on one plane: `degenerate` (flat, zero volume);
 //  4. every edge between faces f, g with halfedge h in f and direction d:
 //     coplanar if N_f, N_g are parallel (same direction: merged into one
 //     facet; opposite: a zero-angle fold, `not_convex`), else convex iff
-//     det[N_f, N_g, d] > 0. The global orientation is the one under which the
-//     majority of the non-coplanar edges are convex (a consistently inward mesh
-//     has every edge reflex and is flipped); the first edge that is reflex
-//     under it is reported;
+//     det[N_f, N_g, d] > 0, decided as the side of g's vertices against f's
+//     plane (the argument is at classify_edges). The global orientation is the
+//     one under which the majority of the non-coplanar edges are convex (a
+//     consistently inward mesh has every edge reflex and is flipped); the first
+//     edge that is reflex under it is reported;
 //  5. merged facets (union-find over coplanar edges) must each have exactly one
 //     boundary cycle, and that cycle must be a strictly convex polygon after
 //     dropping the vertices where it runs straight;
@@ -28,6 +31,9 @@
 //  7. global check, on the result: a point o inside a tetrahedron of vertices
 //     must be strictly below every facet plane, and a ray from o through the
 //     interior of facet 0 must meet no other (closed) facet.
+// Primitive normals are made only where a sign needs more than orientations
+// of vertices (FaceNormals): none for a triangulated surface in general
+// position.
 //
 // Why 1-7 prove that the result bounds a convex polytope: by (7) every facet
 // is seen from o from its inner side, so the central projection from o onto a
