@@ -238,6 +238,11 @@ TEST(MeshBadInput, DuplicatePointsWrittenDifferently) {
   s.points.push_back(Vec3{Rational(0, 3), Rational(2, 2), Rational(0)});  // equal to vertex 2
   s.add_face({4, 1, 3});
   expect_error(s, ErrorCategory::topology, {"vertices 2 and 4", "same point"});
+  // Negative and power-of-two denominators over even or negative numerators.
+  PolygonSoup t = test::tetrahedron();
+  t.points.push_back(Vec3{Rational(-4, -4), Rational(0, -8), Rational(0, 1)});  // equal to vertex 1
+  t.add_face({4, 2, 3});
+  expect_error(t, ErrorCategory::topology, {"vertices 1 and 4", "same point"});
 }
 
 // The duplicate check sorts on the coordinates' doubles first and tells

@@ -175,18 +175,20 @@ PolygonSoup parse_off(LineReader& reader) {
     if (!next_content_line(reader, tokens, token))
       fail_end(reader, "the header declares " + std::to_string(num_faces) + " faces but only " +
                            std::to_string(f) + " were found");
-    const std::string name = "face " + std::to_string(f);
+    // Named only when something fails: building the name per face cost more
+    // than reading its indices.
+    const auto name = [f] { return "face " + std::to_string(f); };
     auto size = parse_unsigned(token);
-    if (!size) reader.fail(name + ": vertex count " + quote(token) + " is not a non-negative integer");
-    if (*size < 3) reader.fail(name + " has " + std::to_string(*size) + " vertices, at least 3 are needed");
+    if (!size) reader.fail(name() + ": vertex count " + quote(token) + " is not a non-negative integer");
+    if (*size < 3) reader.fail(name() + " has " + std::to_string(*size) + " vertices, at least 3 are needed");
     for (std::uint64_t k = 0; k < *size; ++k) {
       std::string_view t = tokens.next();
       if (t.empty())
-        reader.fail(name + " declares " + typed(token) + " vertices but lists " + std::to_string(k));
+        reader.fail(name() + " declares " + typed(token) + " vertices but lists " + std::to_string(k));
       auto index = parse_unsigned(t);
-      if (!index) reader.fail(name + ": index " + quote(t) + " is not a non-negative integer");
+      if (!index) reader.fail(name() + ": index " + quote(t) + " is not a non-negative integer");
       if (*index >= num_vertices)
-        reader.fail(name + " has index " + typed(t) + " but there are " + std::to_string(num_vertices) +
+        reader.fail(name() + " has index " + typed(t) + " but there are " + std::to_string(num_vertices) +
                     " vertices");
       soup.face_indices.push_back(static_cast<std::uint32_t>(*index));
       if (soup.face_indices.size() % 4096 == 0) check_face_limit(reader, f + 1, soup.face_indices.size());
@@ -196,7 +198,7 @@ PolygonSoup parse_off(LineReader& reader) {
     // but checked like coordinates.
     std::size_t extra = 0;
     for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
-      if (++extra > 4) reader.fail(name + " has more than 4 values after its " + typed(token) + " indices");
+      if (++extra > 4) reader.fail(name() + " has more than 4 values after its " + typed(token) + " indices");
       check_number(reader, t, {"color value", "face", f});
     }
     soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));

@@ -71,11 +71,24 @@ void check_faces(const PolygonSoup& soup) {
     if (stamp[v] == no_index) fail("vertex " + str(v) + " is not used by any face (unreferenced vertex)");
 }
 
+// Whether q is canonical without a gcd: a denominator 1, or a one-limb power
+// of two over an odd numerator (every double, and every number the readers
+// make from one), is in lowest terms and positive.
+bool surely_canonical(const Rational& q) noexcept {
+  mpz_srcptr den = q.get_den_mpz_t();
+  if (den->_mp_size != 1) return false;
+  const mp_limb_t d = den->_mp_d[0];
+  if (d == 1) return true;
+  mpz_srcptr num = q.get_num_mpz_t();
+  return (d & (d - 1)) == 0 && num->_mp_size != 0 && (num->_mp_d[0] & 1) != 0;
+}
+
 // GMP's comparisons, hashing and arithmetic assume canonical fractions; a
 // caller that built 0/3 by hand would otherwise get wrong answers.
 void canonicalize_points(std::vector<Vec3>& points) {
   for (Vec3& p : points)
-    for (int i = 0; i < 3; ++i) p[i].canonicalize();
+    for (int i = 0; i < 3; ++i)
+      if (!surely_canonical(p[i])) p[i].canonicalize();
 }
 
 // A point's sort key for the duplicate check: its coordinates' doubles
