@@ -22,6 +22,7 @@ PolyhedronParts trusted_parts(Mesh mesh) {
       throw Error(ErrorCategory::invalid_argument, "facet " + std::to_string(f.index()) +
                                                        " starts with three collinear vertices (trusted input is not convex)");
   }
+  parts.planes = planes_from_first_corners(m, parts.vertex_approx, parts.limbs);
   parts.mesh = std::move(mesh);
   return parts;
 }

@@ -7,7 +7,7 @@
 // Two ways in, both for facets the caller already knows to be maximal,
 // strictly convex, counterclockwise from outside, with only extreme vertices:
 //  - trusted_polyhedron(soup): planes made from each facet's first corners
-//    when first needed (the exact hull's output, transforms);
+//    (the exact hull's output, transforms);
 //  - assemble(mesh, approximations, planes): the algorithms' output path,
 //    whose exact primitive normals and offsets are known already, so that
 //    nothing is recomputed (no cross products, no gcds), built in parts that
@@ -45,9 +45,10 @@ struct PolyhedronParts {
 };
 
 /// The parts of a mesh whose faces meet the guarantee above: the vertices'
-/// approximations, the planes left to be made from each face's first corners.
+/// approximations and the planes from each face's first corners, made now
+/// (an algorithm's output comes with its planes, as the peers' do).
 /// \throw Error(invalid_argument) if a face starts with three collinear
-///   vertices (then it has no plane to make).
+///   vertices (then it has no plane).
 PolyhedronParts trusted_parts(Mesh mesh);
 
 /// The polyhedron of a soup that meets the guarantee (topology checked).
