@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <latch>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -183,8 +184,10 @@ TEST(ArenaStorage, LoadedPlanesAreMadeOnceForConcurrentReaders) {
     const ConvexPolyhedron copy_before = p;
     std::vector<std::vector<const Vec3*>> seen(num_readers);
     std::vector<std::thread> readers;
+    std::latch start(num_readers);  // all ask at once, so that they race for the one computation
     for (int t = 0; t < num_readers; ++t)
-      readers.emplace_back([&p, &seen, t] {
+      readers.emplace_back([&p, &seen, &start, t] {
+        start.arrive_and_wait();
         const std::uint32_t n = p.num_facets();
         for (std::uint32_t i = 0; i < n; ++i) {  // each thread starts elsewhere
           const FaceId f((i + static_cast<std::uint32_t>(t) * n / num_readers) % n);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // intersection_polyhedron (intersection_polyhedron.hpp has the argument).
 // The trusted builder takes the planes as they are; they equal the ones
-// parts_with_planes would compute: the outward primitive integer normal of
+// planes_from_first_corners would compute: the outward primitive integer normal of
 // a plane is unique, and the offset is its value on the plane.
 //
 // Why the walk below runs counterclockwise. At a dual vertex q, a dual facet

@@ -68,11 +68,11 @@
 #include "cvms/error.hpp"
 #include "dyadic.hpp"
 #include "element_names.hpp"
+#include "facet_planes.hpp"
 #include "filtered_predicates.hpp"
 #include "limb_arena.hpp"
 #include "no_index.hpp"
 #include "polyhedron_builder.hpp"
-#include "facet_planes.hpp"
 
 namespace cvms {
 namespace {
@@ -108,6 +108,22 @@ struct FacePlane {
   Vec3 normal;
   ApproxVec3 approx;
   [[nodiscard]] Vec3Ref ref() const { return {normal, approx}; }
+};
+
+// The plane through `point` with a primitive integer normal: the side of a
+// point on it is one integer comparison after the filter (coplanar points,
+// which no filter decides, are what faces of more than three vertices and
+// flat meshes are made of).
+struct IntegerPlane {
+  Vec3Ref normal;
+  Rational offset;
+  Approx offset_approx;
+  IntegerPlane(Vec3Ref n, const Vec3& point) : normal(n) {
+    thread_local detail::DotScratch scratch;
+    detail::integer_dot(n.exact, point, scratch, offset);
+    offset_approx = Approx::of(offset);
+  }
+  [[nodiscard]] Sign side(Vec3Ref p) const { return side_of_plane(p, normal, offset, offset_approx); }
 };
 
 FacePlane plane_of(Vec3 normal) {
@@ -168,10 +184,11 @@ struct FaceCorners {
 
 // The primitive normals of the faces that need one, made at most once per
 // face from its plane triple (FaceChecks): faces of more than three vertices
-// (step 2's planarity and polygon checks), the two faces of an edge whose
-// planes coincide (step 4: coplanar or a fold) and the first face of a
+// (step 2's planarity and polygon checks), face 0 when the filter cannot
+// place a vertex against it (step 3), the two faces of an edge that the
+// filter cannot classify (step 4: coplanar or nearly) and the first face of a
 // merged facet (step 5). A triangulated surface in general position needs
-// none: its convexity is decided by orientations of its vertices alone.
+// none: the filtered orientations of its vertices decide it.
 class FaceNormals {
  public:
   FaceNormals(const Mesh& mesh, const Points& points, const std::vector<std::array<VertexId, 3>>& triple)
@@ -186,6 +203,7 @@ class FaceNormals {
     }
     return planes_[slot_[f]];
   }
+  [[nodiscard]] bool has(std::uint32_t f) const { return slot_[f] != no_index; }
 
  private:
   const Points& points_;
@@ -222,16 +240,18 @@ FaceVerdict check_face(const FaceCorners& face, FaceNormals& normals, std::array
     corner.assign(3, 1);  // a triangle of nonzero area turns left at each corner
     return FaceVerdict::passed;
   }
+  const Vec3Ref normal = normals(face.f.index()).ref();
+  const IntegerPlane plane(normal, pts[0].exact);
   for (std::size_t i = 2; i < m; ++i)
-    if (i != k && orient3d(pts[0], pts[1], pts[k], pts[i]) != Sign::zero) return FaceVerdict::failed;
-  PolygonCheck c = check_convex_polygon(pts, normals(face.f.index()).ref());
+    if (i != k && plane.side(pts[i]) != Sign::zero) return FaceVerdict::failed;
+  PolygonCheck c = check_convex_polygon(pts, normal);
   if (c.fault != PolygonFault::none) return FaceVerdict::failed_in_plane;
   corner = std::move(c.corner);
   return FaceVerdict::passed;
 }
 
 // Step 2 as stated, on the exact area vector N_f, for a face that
-// fast_face_plane refused: throws its first fault. `normal` is the plane of
+// check_face refused: throws its first fault. `normal` is the plane of
 // the face when it is known to be planar (then N_f is a multiple of it, and
 // a positive multiple stands in for N_f in the polygon check).
 [[noreturn]] void report_face_fault(const FaceCorners& face, const FacePlane* normal) {
@@ -260,7 +280,7 @@ FaceVerdict check_face(const FaceCorners& face, FaceNormals& normals, std::array
     if (c.fault != PolygonFault::none)
       not_convex(name + " is not a convex polygon: it " + describe_fault(c, face.ids));
   }
-  // Not reached: fast_face_plane refuses only faces that fail (see there).
+  // Not reached: check_face refuses only faces that fail (see there).
   throw Error(ErrorCategory::not_convex, name + " could not be checked");
 }
 
@@ -269,6 +289,7 @@ FaceVerdict check_face(const FaceCorners& face, FaceNormals& normals, std::array
 // the side of its plane, signed by its orientation), and per halfedge whether
 // its origin is a corner of its face (a strict turn).
 struct FaceChecks {
+  explicit FaceChecks(const Mesh& mesh) : triple(mesh.num_faces()), corner(mesh.num_halfedges(), 0) {}
   std::vector<std::array<VertexId, 3>> triple;
   std::vector<char> corner;
 };
@@ -293,15 +314,18 @@ void check_faces(const Mesh& mesh, const Points& points, FaceNormals& normals, F
   }
 }
 
-// orient3d of x against the plane triple t.
-Sign side_of_triple(const Points& points, const std::array<VertexId, 3>& t, Vec3Ref x) {
-  return orient3d(points[t[0]], points[t[1]], points[t[2]], x);
-}
 
-// 3. Flat: every vertex on the plane of face 0.
-void check_not_flat(const Mesh& mesh, const Points& points, const std::array<VertexId, 3>& plane0) {
-  for (VertexId v : mesh.vertices())
-    if (side_of_triple(points, plane0, points[v]) != Sign::zero) return;
+// 3. Flat: every vertex on the plane of face 0. The filter places the first
+// vertex off it at once in general position; the vertices it cannot place
+// (those on the plane, all of them in a flat mesh) take the integer test.
+void check_not_flat(const Mesh& mesh, const Points& points, const std::array<VertexId, 3>& t0,
+                    FaceNormals& normals) {
+  std::optional<IntegerPlane> plane0;
+  for (VertexId v : mesh.vertices()) {
+    if (orient3d_if_certain(points[t0[0]], points[t0[1]], points[t0[2]], points[v])) return;
+    if (!plane0) plane0.emplace(normals(0).ref(), points[t0[0]].exact);
+    if (plane0->side(points[v]) != Sign::zero) return;
+  }
   throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
 }
 
@@ -321,26 +345,51 @@ struct EdgeClasses {
 // others on it. Writing x - p = a (q - p) + t (N_g x (q - p)) for such an x,
 // g's counterclockwise turn from q -> p to x gives t < 0, and then
 // dot(N_f, x - p) = t det[N_f, N_g, q - p]: the edge is convex iff x is below
-// f's plane, reflex iff above. If all three vertices of g's plane triple are
-// on f's plane, the planes coincide (N_f, N_g parallel) and only the normals'
-// directions tell a coplanar edge (merged) from a zero-angle fold.
+// f's plane, reflex iff above. The filter decides that for a vertex of g's
+// plane triple other than p and q whenever it is off f's plane by more than
+// its error bound; otherwise (coplanar faces, a vertex of g on the line pq, or
+// a nearly flat edge) the classical test decides, on the primitive normals,
+// and so it does at once when both were made already (a mesh whose faces are
+// coplanar in large groups, where the filter would fail edge after edge).
+// Two primitive integer vectors are parallel exactly when they are equal (the
+// same direction: a coplanar edge, merged) or opposite (a zero-angle fold).
+// a == -b, without making -b (canonical rationals).
+bool opposite(const Vec3& a, const Vec3& b) {
+  for (int i = 0; i < 3; ++i)
+    if (sgn(a[i]) != -sgn(b[i]) || mpz_cmpabs(a[i].get_num_mpz_t(), b[i].get_num_mpz_t()) != 0 ||
+        mpz_cmp(a[i].get_den_mpz_t(), b[i].get_den_mpz_t()) != 0)
+      return false;
+  return true;
+}
+
+EdgeKind edge_kind(const Points& points, const FaceChecks& faces, FaceNormals& normals, VertexId p, VertexId q,
+                   std::uint32_t f, std::uint32_t g) {
+  if (!normals.has(f) || !normals.has(g)) {
+    const std::array<VertexId, 3>& t = faces.triple[f];
+    for (VertexId x : faces.triple[g]) {
+      if (x == p || x == q) continue;
+      if (const auto side = orient3d_if_certain(points[t[0]], points[t[1]], points[t[2]], points[x]))
+        return *side == Sign::negative ? EdgeKind::convex : EdgeKind::reflex;
+      break;
+    }
+  }
+  const FacePlane& n_f = normals(f);
+  const FacePlane& n_g = normals(g);
+  if (n_f.normal == n_g.normal) return EdgeKind::coplanar;
+  if (opposite(n_f.normal, n_g.normal)) return EdgeKind::fold;
+  return sign_triple_with_difference(n_f.ref(), n_g.ref(), points[p], points[q]) == Sign::positive
+             ? EdgeKind::convex
+             : EdgeKind::reflex;
+}
+
 EdgeClasses classify_edges(const Mesh& mesh, const Points& points, const FaceChecks& faces, FaceNormals& normals) {
   std::vector<EdgeKind> kind(mesh.num_edges());
   std::size_t num_convex = 0, num_reflex = 0;
   EdgeClasses out{UnionFind(mesh.num_faces()), false};
   for (EdgeId e : mesh.edges()) {
     const HalfedgeId h = Mesh::halfedge(e);
-    const VertexId p = mesh.from(h), q = mesh.to(h);
     const std::uint32_t f = mesh.face(h).index(), g = mesh.face(Mesh::twin(h)).index();
-    Sign side = Sign::zero;
-    for (VertexId x : faces.triple[g])
-      if (x != p && x != q && (side = side_of_triple(points, faces.triple[f], points[x])) != Sign::zero) break;
-    EdgeKind k;
-    if (side == Sign::zero) {
-      k = sign_dot(normals(f).ref(), normals(g).ref()) == Sign::positive ? EdgeKind::coplanar : EdgeKind::fold;
-    } else {
-      k = side == Sign::negative ? EdgeKind::convex : EdgeKind::reflex;
-    }
+    const EdgeKind k = edge_kind(points, faces, normals, mesh.from(h), mesh.to(h), f, g);
     kind[e.index()] = k;
     if (k == EdgeKind::coplanar) out.coplanar.unite(f, g);
     if (k == EdgeKind::fold)
@@ -642,10 +691,10 @@ ConvexPolyhedron checked_polyhedron(const Mesh& mesh, Mesh* owned) {
   // globally (the file comment says why that suffices).
   check_sphere(mesh);
   const Points points(mesh);
-  FaceChecks faces{std::vector<std::array<VertexId, 3>>(mesh.num_faces()), std::vector<char>(mesh.num_halfedges(), 0)};
+  FaceChecks faces(mesh);
   FaceNormals normals(mesh, points, faces.triple);
   check_faces(mesh, points, normals, faces);
-  check_not_flat(mesh, points, faces.triple[0]);
+  check_not_flat(mesh, points, faces.triple[0], normals);
   EdgeClasses edges = classify_edges(mesh, points, faces, normals);
   const Regions regions(mesh, edges.coplanar);
   const BoundaryCycles cycles = boundary_cycles(regions);
@@ -754,9 +803,10 @@ bool ConvexPolyhedron::is_convex() const {
   }
   if (euler_characteristic() != 2) return false;
   if (!approx_ || approx_->vertices.size() != m.num_vertices()) return false;
-  const std::vector<Vec3>& normals = planes().normals;
-  const std::vector<Rational>& offsets = planes().offsets;
-  if (normals.size() != m.num_faces() || planes().normal_approx.size() != m.num_faces() ||
+  const detail::FacetPlanes& made = planes();
+  const std::vector<Vec3>& normals = made.normals;
+  const std::vector<Rational>& offsets = made.offsets;
+  if (normals.size() != m.num_faces() || made.normal_approx.size() != m.num_faces() ||
       offsets.size() != m.num_faces())
     return false;
   std::vector<const Vec3*> pts;

@@ -3,11 +3,12 @@
 // keeps them: made once, when first asked for, unless its builder knew them
 // already (issue 14).
 //
-// Why lazily: validating a mesh (ConvexPolyhedron::from_mesh) decides every
-// sign it needs with orientation predicates on the vertices, so a program
-// that loads and checks a polyhedron, or only reads its vertices, never pays
-// for the primitive normals' gcds and the offsets' products, which were half
-// of loading a triangulated sphere. Why this is still exact and the same:
+// Why lazily: validating a mesh (ConvexPolyhedron::from_mesh) decides the
+// signs of a triangulated surface in general position with filtered
+// orientations of its vertices, so a program that loads and checks such a
+// polyhedron, or only reads its vertices, never pays for the primitive
+// normals' gcds and the offsets' products, which were half of loading a
+// triangulated sphere. Why this is still exact and the same:
 // a facet is a strictly convex polygon, counterclockwise from outside, so its
 // first three corners a, b, c are not collinear and cross(b - a, c - a) is a
 // positive multiple of its outward normal; the primitive integer vector of
@@ -47,10 +48,11 @@ void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, LimbArena& arena, Vec3& g
 FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
                                       LimbArena& arena);
 
-/// A ConvexPolyhedron's planes, shared by its copies (they never change):
-/// either given when it was built, or made from its facets' first corners the
-/// first time they are needed, by whichever thread asks first (std::call_once:
-/// concurrent readers of one polyhedron wait for the same single computation).
+/// A ConvexPolyhedron's planes (a move takes them along; a copy copies those
+/// made, or makes its own): either given when it was built, or made from its
+/// facets' first corners the first time they are needed, by whichever thread
+/// asks first (std::call_once: concurrent readers of one polyhedron wait for
+/// the same single computation).
 class PlaneStore {
  public:
   /// Planes known already; `limbs` is the arena their values point into, if any.

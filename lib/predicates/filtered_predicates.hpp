@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "approx.hpp"
 #include "cvms/predicates.hpp"
@@ -34,6 +35,10 @@ Sign sign_cross2(Vec2Ref u, Vec2Ref v);
 Sign sign_dot(Vec2Ref u, Vec2Ref v);
 bool ccw_in_between(Vec2Ref d, Vec2Ref d1, Vec2Ref d2);
 Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d);
+/// orient3d when the filter alone proves its sign (never zero), else nothing:
+/// for callers with a cheaper exact route than the rational determinant
+/// (coplanar points, which no filter can prove, are the usual case).
+std::optional<Sign> orient3d_if_certain(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d) noexcept;
 Sign sign_dot(Vec3Ref u, Vec3Ref v);
 Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
 Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_approx);

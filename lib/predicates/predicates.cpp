@@ -115,6 +115,12 @@ Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d) {
   return decide(filter(filtered::orient3d_approx, a, b, c, d),
                 [&] { return exact::orient3d(a.exact, b.exact, c.exact, d.exact); });
 }
+std::optional<Sign> orient3d_if_certain(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d) noexcept {
+  const Approx r = filter(filtered::orient3d_approx, a, b, c, d);
+  if (!filtered::certain(r)) return std::nullopt;
+  ++predicate_counters().filtered;
+  return filtered::sign(r);
+}
 Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return on_the_fly([](auto... r) { return orient3d(r...); }, a, b, c, d);
 }
