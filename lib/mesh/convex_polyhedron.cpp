@@ -209,9 +209,9 @@ class FaceNormals {
   const Points& points_;
   const std::vector<std::array<VertexId, 3>>& triple_;
   std::vector<std::uint32_t> slot_;
+  detail::LimbArena arena_;       // before the normals that point into it, so that it outlives them
   std::deque<FacePlane> planes_;  // a deque: a normal never moves once made
-  detail::LimbArena arena_;
-  Vec3 general_;  // keeps its limbs from face to face
+  Vec3 general_;                  // keeps its limbs from face to face
 };
 
 // Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
