@@ -77,6 +77,7 @@
 namespace cvms {
 namespace {
 
+using detail::first_corners;
 using detail::no_index;
 using detail::edge_name;
 using detail::str;
@@ -113,14 +114,15 @@ struct FacePlane {
 // The plane through `point` with a primitive integer normal: the side of a
 // point on it is one integer comparison after the filter (coplanar points,
 // which no filter decides, are what faces of more than three vertices and
-// flat meshes are made of).
+// flat meshes are made of). The offset lives in the caller's `storage`, which
+// keeps its limbs from face to face.
 struct IntegerPlane {
   Vec3Ref normal;
-  Rational offset;
+  const Rational& offset;
   Approx offset_approx;
-  IntegerPlane(Vec3Ref n, const Vec3& point) : normal(n) {
+  IntegerPlane(Vec3Ref n, const Vec3& point, Rational& storage) : normal(n), offset(storage) {
     thread_local detail::DotScratch scratch;
-    detail::integer_dot(n.exact, point, scratch, offset);
+    detail::integer_dot(n.exact, point, scratch, storage);
     offset_approx = Approx::of(offset);
   }
   [[nodiscard]] Sign side(Vec3Ref p) const { return side_of_plane(p, normal, offset, offset_approx); }
@@ -180,6 +182,7 @@ struct FaceCorners {
   FaceId f;
   std::vector<Vec3Ref> pts;
   std::vector<std::uint32_t> ids;
+  Rational plane_offset;  // storage for the face's IntegerPlane
 };
 
 // The primitive normals of the faces that need one, made at most once per
@@ -228,7 +231,7 @@ enum class FaceVerdict {
   failed            // collinear or not planar
 };
 
-FaceVerdict check_face(const FaceCorners& face, FaceNormals& normals, std::array<VertexId, 3>& triple,
+FaceVerdict check_face(FaceCorners& face, FaceNormals& normals, std::array<VertexId, 3>& triple,
                        std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
@@ -241,7 +244,7 @@ FaceVerdict check_face(const FaceCorners& face, FaceNormals& normals, std::array
     return FaceVerdict::passed;
   }
   const Vec3Ref normal = normals(face.f.index()).ref();
-  const IntegerPlane plane(normal, pts[0].exact);
+  const IntegerPlane plane(normal, pts[0].exact, face.plane_offset);
   for (std::size_t i = 2; i < m; ++i)
     if (i != k && plane.side(pts[i]) != Sign::zero) return FaceVerdict::failed;
   PolygonCheck c = check_convex_polygon(pts, normal);
@@ -296,7 +299,7 @@ struct FaceChecks {
 
 // 2. Faces: zero area, planarity, convexity.
 void check_faces(const Mesh& mesh, const Points& points, FaceNormals& normals, FaceChecks& out) {
-  FaceCorners face{FaceId(0), {}, {}};
+  FaceCorners face{FaceId(0), {}, {}, {}};
   std::vector<char> corner;
   for (FaceId f : mesh.faces()) {
     face.f = f;
@@ -320,10 +323,11 @@ void check_faces(const Mesh& mesh, const Points& points, FaceNormals& normals, F
 // (those on the plane, all of them in a flat mesh) take the integer test.
 void check_not_flat(const Mesh& mesh, const Points& points, const std::array<VertexId, 3>& t0,
                     FaceNormals& normals) {
+  Rational offset;
   std::optional<IntegerPlane> plane0;
   for (VertexId v : mesh.vertices()) {
     if (orient3d_if_certain(points[t0[0]], points[t0[1]], points[t0[2]], points[v])) return;
-    if (!plane0) plane0.emplace(normals(0).ref(), points[t0[0]].exact);
+    if (!plane0) plane0.emplace(normals(0).ref(), points[t0[0]].exact, offset);
     if (plane0->side(points[v]) != Sign::zero) return;
   }
   throw Error(ErrorCategory::degenerate, "flat polyhedron: all vertices are coplanar (zero volume)");
@@ -628,12 +632,6 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, const Face
     if (facets_at.extreme(v)) parts.vertex_approx.push_back(points.approx(VertexId(v)));
   parts.mesh = std::move(merged);
   return ConvexPolyhedron(std::move(parts));
-}
-
-// The plane triple of a facet of the result: its first three corners.
-std::array<VertexId, 3> first_corners(const Mesh& m, FaceId f) {
-  const HalfedgeId h = m.halfedge(f);
-  return {m.from(h), m.to(h), m.to(m.next(h))};
 }
 
 // 8. Global: an interior point o below every facet, and a ray from o that

@@ -3,6 +3,7 @@
 // header for why the result is the same plane however it is found).
 #include "facet_planes.hpp"
 
+#include <array>
 #include <optional>
 #include <utility>
 
@@ -43,12 +44,10 @@ FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<Approx
   DotScratch scratch;
   Rational offset;
   for (FaceId f : mesh.faces()) {
-    const HalfedgeId h = mesh.halfedge(f);
-    const VertexId a = mesh.from(h);
+    const std::array<VertexId, 3> t = first_corners(mesh, f);
     Vec3& normal = out.normals[f.index()];
-    primitive_normal(ref(a), ref(mesh.to(h)), ref(mesh.to(mesh.next(h))), arena, general, normal,
-                     out.normal_approx[f.index()]);
-    integer_dot(normal, mesh.position(a), scratch, offset);
+    primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, normal, out.normal_approx[f.index()]);
+    integer_dot(normal, mesh.position(t[0]), scratch, offset);
     arena.store(out.offsets[f.index()], offset);
   }
   return out;

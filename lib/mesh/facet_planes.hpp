@@ -15,6 +15,7 @@
 // that direction is unique, and so is its offset dot(n, a).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -31,6 +32,13 @@ struct FacetPlanes {
   std::vector<ApproxVec3> normal_approx;  ///< their approximations
   std::vector<Rational> offsets;          ///< dot(normal, x) for x on the facet
 };
+
+/// The plane triple of face f: its first three corners, in order (not
+/// collinear and turning like the face when the face is strictly convex).
+[[nodiscard]] inline std::array<VertexId, 3> first_corners(const Mesh& mesh, FaceId f) {
+  const HalfedgeId h = mesh.halfedge(f);
+  return {mesh.from(h), mesh.to(h), mesh.to(mesh.next(h))};
+}
 
 /// out = the primitive integer normal of cross(b - a, c - a) (nonzero), its
 /// numerators kept in arena, and approx its approximation: in 128-bit

@@ -2,6 +2,7 @@
 // ConvexPolyhedron from trusted parts (see the header).
 #include "polyhedron_builder.hpp"
 
+#include <array>
 #include <string>
 #include <utility>
 
@@ -17,8 +18,8 @@ PolyhedronParts trusted_parts(Mesh mesh) {
   for (VertexId v : m.vertices()) parts.vertex_approx.push_back(ApproxVec3::of(m.position(v)));
   const auto ref = [&](VertexId v) { return Vec3Ref{m.position(v), parts.vertex_approx[v.index()]}; };
   for (FaceId f : m.faces()) {
-    const HalfedgeId h = m.halfedge(f);
-    if (collinear(ref(m.from(h)), ref(m.to(h)), ref(m.to(m.next(h)))))
+    const std::array<VertexId, 3> t = first_corners(m, f);
+    if (collinear(ref(t[0]), ref(t[1]), ref(t[2])))
       throw Error(ErrorCategory::invalid_argument, "facet " + std::to_string(f.index()) +
                                                        " starts with three collinear vertices (trusted input is not convex)");
   }

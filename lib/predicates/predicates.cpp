@@ -10,6 +10,7 @@
 // approximations on the fly and calls it.
 #include "filtered_predicates.hpp"
 
+#include <optional>
 #include <utility>
 
 #include "filter_polynomials.hpp"
@@ -26,15 +27,18 @@ namespace {
 
 using filtered::Approx3;
 
+// The filter's answer, counted, when it proves the sign.
+std::optional<Sign> sign_if_certain(Approx r) noexcept {
+  if (!filtered::certain(r)) return std::nullopt;
+  ++predicate_counters().filtered;
+  return filtered::sign(r);
+}
+
 // Answers from the filter when it proves the sign, else from `exact_sign`.
 template <class ExactSign>
 Sign decide(Approx r, ExactSign&& exact_sign) {
-  PredicateCounters& counters = predicate_counters();
-  if (filtered::certain(r)) {
-    ++counters.filtered;
-    return filtered::sign(r);
-  }
-  ++counters.exact;
+  if (const std::optional<Sign> s = sign_if_certain(r)) return *s;
+  ++predicate_counters().exact;
   return std::forward<ExactSign>(exact_sign)();
 }
 
@@ -116,10 +120,7 @@ Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d) {
                 [&] { return exact::orient3d(a.exact, b.exact, c.exact, d.exact); });
 }
 std::optional<Sign> orient3d_if_certain(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d) noexcept {
-  const Approx r = filter(filtered::orient3d_approx, a, b, c, d);
-  if (!filtered::certain(r)) return std::nullopt;
-  ++predicate_counters().filtered;
-  return filtered::sign(r);
+  return sign_if_certain(filter(filtered::orient3d_approx, a, b, c, d));
 }
 Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return on_the_fly([](auto... r) { return orient3d(r...); }, a, b, c, d);
