@@ -512,7 +512,7 @@ TEST(ConvexPolyhedronBadInput, RandomWoundBipyramidsAreRejected) {
   // Bipyramids over perturbed star polygons {5/2} and {7/3}: never convex.
   const long pentagon[5][2] = {{100, 0}, {31, 95}, {-81, 59}, {-81, -59}, {31, -95}};
   const long heptagon[7][2] = {{100, 0}, {62, 78}, {-22, 97}, {-90, 43}, {-90, -43}, {-22, -97}, {62, -78}};
-  int global_rejections = 0;
+  int global_rejections = 0, above_interior_point = 0, wound_twice = 0;
   for (unsigned seed = 1; seed <= 300; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(seed);
@@ -529,10 +529,17 @@ TEST(ConvexPolyhedronBadInput, RandomWoundBipyramidsAreRejected) {
       ADD_FAILURE() << "accepted a surface that winds twice";
     } catch (const Error& e) {
       EXPECT_EQ(e.category(), ErrorCategory::not_convex) << e.what();
-      global_rejections += std::string(e.what()).find("locally convex but") != std::string::npos;
+      const std::string what = e.what();
+      global_rejections += what.find("locally convex but") != std::string::npos;
+      above_interior_point += what.find("an interior point lies above") != std::string::npos;
+      wound_twice += what.find("winds around its interior more than once") != std::string::npos;
     }
   }
   EXPECT_GT(global_rejections, 100);  // the global check is exercised, not just the edges
+  // Both of its tests are: a facet above the interior point (90 of 300
+  // here), and the ray that leaves through two facets (98).
+  EXPECT_GT(above_interior_point, 30);
+  EXPECT_GT(wound_twice, 30);
 }
 
 TEST(ConvexPolyhedron, RandomBipyramidsAgainstHullOracle) {

@@ -140,20 +140,15 @@ class Quickhull {
     n_ = checked_size(points.size());
     approx_.reserve(n_);
     own_coords_.reserve(n_);
-    double max_abs = 0, max_error = 0;
+    PlaneFilterExtent extent;
     for (const Vec3& p : points) {
       const ApproxVec3& a = approx_.emplace_back(ApproxVec3::of(p));
-      own_coords_.push_back({a.x.value, a.y.value, a.z.value});
-      // NaN (never produced, but cheap to exclude) would compare false: fold
-      // it into an infinite maximum, which disables the filter.
-      for (const Approx& c : {a.x, a.y, a.z}) {
-        max_abs = std::fabs(c.value) <= max_abs ? max_abs : (std::isnan(c.value) ? inf : std::fabs(c.value));
-        max_error = c.error <= max_error ? max_error : (std::isnan(c.error) ? inf : c.error);
-      }
+      own_coords_.push_back(coords_of(a));
+      extent.add(a);
     }
     coords_ = own_coords_;
-    error_ = max_error;
-    scale_ = PlaneFilterScale::of(max_abs, max_error);
+    error_ = extent.max_error;
+    scale_ = extent.scale();
   }
 
   // Approximations only (double input is exact, with error 0): only the

@@ -72,6 +72,7 @@
 #include "filtered_predicates.hpp"
 #include "limb_arena.hpp"
 #include "no_index.hpp"
+#include "plane_filter.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
@@ -85,20 +86,40 @@ using detail::str;
 [[noreturn]] void not_convex(const std::string& message) { throw Error(ErrorCategory::not_convex, message); }
 
 // The input's vertices with their double approximations, made once, for
-// the filtered predicates.
+// the filtered predicates, and the scale of the semi-static plane filter
+// over all of them (plane_filter.hpp), which decides most orientations of a
+// mesh in general position in a few multiplications.
 class Points {
  public:
   explicit Points(const Mesh& mesh) : mesh_(mesh) {
     approx_.reserve(mesh.num_vertices());
-    for (VertexId v : mesh.vertices()) approx_.push_back(ApproxVec3::of(mesh.position(v)));
+    PlaneFilterExtent extent;
+    for (VertexId v : mesh.vertices()) extent.add(approx_.emplace_back(ApproxVec3::of(mesh.position(v))));
+    scale_ = extent.scale();
   }
   Vec3Ref operator[](VertexId v) const { return {mesh_.position(v), approx_[v.index()]}; }
   [[nodiscard]] const ApproxVec3& approx(VertexId v) const { return approx_[v.index()]; }
+  [[nodiscard]] Coords coords(VertexId v) const { return coords_of(approx_[v.index()]); }
+  // The filter of the plane through a, b, c (in that order).
+  [[nodiscard]] PlaneFilter plane(const std::array<VertexId, 3>& t) const {
+    return PlaneFilter::of(coords(t[0]), coords(t[1]), coords(t[2]), scale_);
+  }
 
  private:
   const Mesh& mesh_;
   std::vector<ApproxVec3> approx_;
+  PlaneFilterScale scale_;
 };
+
+// The side of x of the plane through the triple t when a filter proves it:
+// the semi-static one first, else the running-error one.
+std::optional<Sign> side_if_certain(const Points& points, const std::array<VertexId, 3>& t, VertexId x) {
+  const PlaneFilter plane = points.plane(t);
+  const double s = plane.value(points.coords(x));
+  if (plane.above(s)) return Sign::positive;
+  if (plane.below(s)) return Sign::negative;
+  return orient3d_if_certain(points[t[0]], points[t[1]], points[t[2]], points[x]);
+}
 
 // The plane of a face: its primitive integer normal, oriented like the face
 // (a positive multiple of its area vector), and the normal's approximation.
@@ -326,7 +347,7 @@ void check_not_flat(const Mesh& mesh, const Points& points, const std::array<Ver
   Rational offset;
   std::optional<IntegerPlane> plane0;
   for (VertexId v : mesh.vertices()) {
-    if (orient3d_if_certain(points[t0[0]], points[t0[1]], points[t0[2]], points[v])) return;
+    if (side_if_certain(points, t0, v)) return;
     if (!plane0) plane0.emplace(normals(0).ref(), points[t0[0]].exact, offset);
     if (plane0->side(points[v]) != Sign::zero) return;
   }
@@ -349,9 +370,9 @@ struct EdgeClasses {
 // others on it. Writing x - p = a (q - p) + t (N_g x (q - p)) for such an x,
 // g's counterclockwise turn from q -> p to x gives t < 0, and then
 // dot(N_f, x - p) = t det[N_f, N_g, q - p]: the edge is convex iff x is below
-// f's plane, reflex iff above. The filter decides that for a vertex of g's
-// plane triple other than p and q whenever it is off f's plane by more than
-// its error bound; otherwise (coplanar faces, a vertex of g on the line pq, or
+// f's plane, reflex iff above. The filters (side_if_certain) decide that for
+// a vertex of g's plane triple other than p and q whenever it is off f's plane
+// by more than their error bounds; otherwise (coplanar faces, a vertex of g on the line pq, or
 // a nearly flat edge) the classical test decides, on the primitive normals,
 // and so it does at once when both were made already (a mesh whose faces are
 // coplanar in large groups, where the filter would fail edge after edge).
@@ -369,13 +390,10 @@ bool opposite(const Vec3& a, const Vec3& b) {
 EdgeKind edge_kind(const Points& points, const FaceChecks& faces, FaceNormals& normals, VertexId p, VertexId q,
                    std::uint32_t f, std::uint32_t g) {
   if (!normals.has(f) || !normals.has(g)) {
-    const std::array<VertexId, 3>& t = faces.triple[f];
-    for (VertexId x : faces.triple[g]) {
-      if (x == p || x == q) continue;
-      if (const auto side = orient3d_if_certain(points[t[0]], points[t[1]], points[t[2]], points[x]))
-        return *side == Sign::negative ? EdgeKind::convex : EdgeKind::reflex;
-      break;
-    }
+    const std::array<VertexId, 3>& t = faces.triple[g];
+    const VertexId x = t[0] != p && t[0] != q ? t[0] : (t[1] != p && t[1] != q ? t[1] : t[2]);
+    if (const std::optional<Sign> side = side_if_certain(points, faces.triple[f], x))
+      return *side == Sign::negative ? EdgeKind::convex : EdgeKind::reflex;
   }
   const FacePlane& n_f = normals(f);
   const FacePlane& n_g = normals(g);
@@ -638,48 +656,106 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, const Face
 // crosses facet 0 only. The facets of p are the regions, in order.
 // The facets' planes are signed by their first three corners (first_corners),
 // in orientations of the result's vertices, so that the check does not make
-// the planes: orient3d(a, b, c, x) is the side of x, and det[dir, b - a, c - a]
-// the sign of dot(N, dir), for a positive multiple N of the outward normal.
-void check_global(const ConvexPolyhedron& p, const Regions& regions) {
-  const Mesh& m = p.mesh();
-  const auto ref = [&p](VertexId v) { return detail::vertex_ref(p, v); };
-  const auto side = [&](FaceId f, Vec3Ref x) {
-    const std::array<VertexId, 3> t = first_corners(m, f);
-    return orient3d(ref(t[0]), ref(t[1]), ref(t[2]), x);
-  };
-  const std::array<VertexId, 3> t0 = first_corners(m, FaceId(0));
-  const Vec3 &a = m.position(t0[0]), &b = m.position(t0[1]), &c = m.position(t0[2]);
-  const Vec3* w = nullptr;
-  for (VertexId v : m.vertices())
-    if (side(FaceId(0), ref(v)) == Sign::negative) {
-      w = &m.position(v);
-      break;
-    }
-  if (w == nullptr) not_convex(regions.facet_name(0) + " has every vertex on its plane");
-  const Vec3 o = Rational(1, 4) * (a + b + c + *w);
-  const Vec3 dir = (a + b + c) - Rational(3) * *w;  // from o through (a + b + c) / 3
-  const ApproxVec3 o_approx = ApproxVec3::of(o), dir_approx = ApproxVec3::of(dir);
-  const Vec3Ref o_ref{o, o_approx}, dir_ref{dir, dir_approx};
-  for (FaceId f : m.faces())
-    if (side(f, o_ref) != Sign::negative)
-      not_convex("the surface is locally convex but not convex: an interior point lies above " +
-                 regions.facet_name(f.index()));
-  for (FaceId f : m.faces()) {
-    if (f.index() == 0) continue;
-    const std::array<VertexId, 3> t = first_corners(m, f);
-    if (sign_triple_of_differences(dir_ref, ref(t[0]), ref(t[1]), ref(t[0]), ref(t[2])) != Sign::positive) continue;
-    bool hit = true;
-    for (HalfedgeId h : m.face_halfedges(f))  // det[from - o, to - o, dir] = det[dir, from - o, to - o]
-      if (sign_triple_of_differences(dir_ref, o_ref, ref(m.from(h)), o_ref, ref(m.to(h))) == Sign::negative) {
-        hit = false;
+// the planes: S_f(x) = orient3d(a, b, c, x) is the side of x, a positive
+// multiple of dot(N, x - a) for the outward normal N. With w a vertex below
+// facet 0, o = (a + b + c + w) / 4 and the ray runs from o through g = (a + b
+// + c) / 3, inside facet 0, in the direction dir = 12 (g - o); it leaves
+// through f's plane iff dot(N, dir) > 0, that is S_f(g) > S_f(o), and meets
+// the closed facet iff det[from - o, to - o, dir] >= 0 along each of its
+// edges, that is orient3d(o, from, to, g) >= 0. o and g lie in the hull of
+// the vertices, so the semi-static plane filter over the vertices, o and g
+// decides most of these signs in a few multiplications (two values within
+// one bound b differ provably by more than 3b, error_bounds.hpp); exact
+// predicates on dir decide the rest.
+class GlobalCheck {
+ public:
+  GlobalCheck(const ConvexPolyhedron& p, const Regions& regions) : p_(p), m_(p.mesh()), regions_(regions) {}
+
+  void run() {
+    const std::array<VertexId, 3> t0 = first_corners(m_, FaceId(0));
+    const Vec3 &a = m_.position(t0[0]), &b = m_.position(t0[1]), &c = m_.position(t0[2]);
+    const Vec3* w = nullptr;
+    for (VertexId v : m_.vertices())
+      if (orient3d(ref(t0[0]), ref(t0[1]), ref(t0[2]), ref(v)) == Sign::negative) {
+        w = &m_.position(v);
         break;
       }
-    if (hit)
-      not_convex("the surface is locally convex but winds around its interior more than once (" +
-                 regions.facet_name(0) + " and " + regions.facet_name(f.index()) +
-                 " overlap as seen from inside)");
+    if (w == nullptr) not_convex(regions_.facet_name(0) + " has every vertex on its plane");
+    const Vec3 abc = a + b + c;
+    o_ = Rational(1, 4) * (abc + *w);
+    g_ = Rational(1, 3) * abc;
+    dir_ = abc - Rational(3) * *w;
+    o_approx_ = ApproxVec3::of(o_);
+    dir_approx_ = ApproxVec3::of(dir_);
+    PlaneFilterExtent extent;
+    for (VertexId v : m_.vertices()) extent.add(detail::vertex_approx(p_, v));
+    extent.add(o_approx_);
+    const ApproxVec3 g_approx = ApproxVec3::of(g_);
+    extent.add(g_approx);
+    scale_ = extent.scale();
+    o_coords_ = coords_of(o_approx_);
+    g_coords_ = coords_of(g_approx);
+    for (FaceId f : m_.faces())
+      if (!below(f))
+        not_convex("the surface is locally convex but not convex: an interior point lies above " +
+                   regions_.facet_name(f.index()));
+    for (FaceId f : m_.faces())
+      if (f.index() != 0 && ray_leaves_through(f) && ray_meets(f))
+        not_convex("the surface is locally convex but winds around its interior more than once (" +
+                   regions_.facet_name(0) + " and " + regions_.facet_name(f.index()) +
+                   " overlap as seen from inside)");
   }
-}
+
+ private:
+  [[nodiscard]] Vec3Ref ref(VertexId v) const { return detail::vertex_ref(p_, v); }
+  [[nodiscard]] Coords coords(VertexId v) const { return coords_of(detail::vertex_approx(p_, v)); }
+  [[nodiscard]] Vec3Ref o_ref() const { return {o_, o_approx_}; }
+  [[nodiscard]] Vec3Ref dir_ref() const { return {dir_, dir_approx_}; }
+  [[nodiscard]] PlaneFilter plane(const std::array<VertexId, 3>& t) const {
+    return PlaneFilter::of(coords(t[0]), coords(t[1]), coords(t[2]), scale_);
+  }
+
+  // S_f(o) < 0.
+  [[nodiscard]] bool below(FaceId f) const {
+    const std::array<VertexId, 3> t = first_corners(m_, f);
+    const PlaneFilter filter = plane(t);
+    if (filter.below(filter.value(o_coords_))) return true;
+    return orient3d(ref(t[0]), ref(t[1]), ref(t[2]), o_ref()) == Sign::negative;
+  }
+
+  // dot(N_f, dir) > 0.
+  [[nodiscard]] bool ray_leaves_through(FaceId f) const {
+    const std::array<VertexId, 3> t = first_corners(m_, f);
+    const PlaneFilter filter = plane(t);
+    const double difference = filter.value(g_coords_) - filter.value(o_coords_);
+    const double margin = filtered::difference_margin * filter.bound;
+    if (difference > margin) return true;
+    if (difference < -margin) return false;
+    return sign_triple_of_differences(dir_ref(), ref(t[0]), ref(t[1]), ref(t[0]), ref(t[2])) == Sign::positive;
+  }
+
+  // det[from - o, to - o, dir] >= 0 along every edge of f.
+  [[nodiscard]] bool ray_meets(FaceId f) const {
+    for (HalfedgeId h : m_.face_halfedges(f)) {
+      const PlaneFilter filter = PlaneFilter::of(o_coords_, coords(m_.from(h)), coords(m_.to(h)), scale_);
+      const double s = filter.value(g_coords_);
+      if (filter.above(s)) continue;
+      if (filter.below(s)) return false;
+      // det[from - o, to - o, dir] = det[dir, from - o, to - o]
+      if (sign_triple_of_differences(dir_ref(), o_ref(), ref(m_.from(h)), o_ref(), ref(m_.to(h))) == Sign::negative)
+        return false;
+    }
+    return true;
+  }
+
+  const ConvexPolyhedron& p_;
+  const Mesh& m_;
+  const Regions& regions_;
+  Vec3 o_, g_, dir_;
+  ApproxVec3 o_approx_{}, dir_approx_{};
+  PlaneFilterScale scale_;
+  Coords o_coords_{}, g_coords_{};
+};
 
 // from_mesh; `owned` is the mesh itself when the caller hands it over
 // (from_soup), whose points may then move into the result (kept_points).
@@ -702,7 +778,7 @@ ConvexPolyhedron checked_polyhedron(const Mesh& mesh, Mesh* owned) {
   // approximations of the input are read.
   Mesh merged = merged_mesh(mesh, corners, facets_at, edges.flip, owned);
   ConvexPolyhedron p = merged_polyhedron(std::move(merged), points, facets_at);
-  check_global(p, regions);
+  GlobalCheck(p, regions).run();
   return p;
 }
 

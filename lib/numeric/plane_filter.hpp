@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "approx.hpp"
 #include "error_bounds.hpp"
 
 namespace cvms {
@@ -40,6 +41,30 @@ struct PlaneFilterScale {
     return {2.0 * max_abs, filtered::plane_filter_slack(max_abs, max_error)};
   }
 };
+
+/// The largest coordinate magnitude and error bound over the points of a set,
+/// gathered one point at a time. A NaN (never produced, but cheap to exclude)
+/// would compare false: it is folded into an infinite maximum, which
+/// disables the filter.
+struct PlaneFilterExtent {
+  double max_abs = 0;
+  double max_error = 0;
+
+  void add(const Approx& c) noexcept {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    max_abs = std::fabs(c.value) <= max_abs ? max_abs : (std::isnan(c.value) ? inf : std::fabs(c.value));
+    max_error = c.error <= max_error ? max_error : (std::isnan(c.error) ? inf : c.error);
+  }
+  void add(const ApproxVec3& p) noexcept {
+    add(p.x);
+    add(p.y);
+    add(p.z);
+  }
+  [[nodiscard]] PlaneFilterScale scale() const noexcept { return PlaneFilterScale::of(max_abs, max_error); }
+};
+
+/// The doubles of an approximation (its error bounds are the set's business).
+inline Coords coords_of(const ApproxVec3& p) noexcept { return {p.x.value, p.y.value, p.z.value}; }
 
 /// The plane of one triangle, ready to test many points against it.
 struct PlaneFilter {
