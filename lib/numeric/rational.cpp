@@ -62,6 +62,19 @@ std::uint64_t eight_digit_value(std::uint64_t w) {
   return (w * 10000 + (w >> 32)) & 0xFFFFFFFFu;
 }
 
+// The first and the last position of a mantissa (digits and at most one
+// '.') that holds a digit other than 0; npos if none does.
+std::size_t first_significant(std::string_view mantissa) {
+  for (std::size_t i = 0; i < mantissa.size(); ++i)
+    if (mantissa[i] != '0' && mantissa[i] != '.') return i;
+  return std::string_view::npos;
+}
+std::size_t last_significant(std::string_view mantissa) {
+  for (std::size_t i = mantissa.size(); i-- > 0;)
+    if (mantissa[i] != '0' && mantissa[i] != '.') return i;
+  return std::string_view::npos;
+}
+
 // The end of the run of digits of text that starts at i.
 std::size_t digit_run_end(std::string_view text, std::size_t i) {
   if constexpr (words_of_digits)
@@ -206,33 +219,48 @@ struct SmallNatural {
   }
 };
 
-// The significant digits (one '.' may sit among them) as an integer.
-void set_small_digits(SmallNatural& m, std::string_view digits) {
+// Digits into a SmallNatural, 19 at a time: each run of at most 19 digits
+// (a chunk, < 10^19 < 2^64) is one multiply-add of the limbs.
+struct DigitAccumulator {
+  SmallNatural& m;
   mp_limb_t chunk = 0;  // the digits since the last flush, fewer than 19
   unsigned in_chunk = 0;
-  for (std::size_t i = 0; i < digits.size();) {
-    if (digits[i] == '.') {
-      ++i;
-      continue;
-    }
-    std::uint64_t word = 0;
-    if (words_of_digits && in_chunk + 8 <= 19 && i + 8 <= digits.size() &&
-        eight_digits(word = load_eight(digits.data() + i))) {
-      chunk = chunk * 100000000u + eight_digit_value(word);
-      in_chunk += 8;
-      i += 8;
-    } else {
-      chunk = chunk * 10 + static_cast<mp_limb_t>(digits[i] - '0');
-      ++in_chunk;
-      ++i;
-    }
-    if (in_chunk == 19) {
-      m.multiply_add(ten_to_19, chunk);
-      chunk = 0;
-      in_chunk = 0;
+
+  // run: digits only (the parser has checked them).
+  void append(std::string_view run) {
+    for (std::size_t i = 0; i < run.size();) {
+      if (words_of_digits && in_chunk + 8 <= 19 && i + 8 <= run.size()) {
+        chunk = chunk * 100000000u + eight_digit_value(load_eight(run.data() + i));
+        in_chunk += 8;
+        i += 8;
+      } else {
+        chunk = chunk * 10 + static_cast<mp_limb_t>(run[i] - '0');
+        ++in_chunk;
+        ++i;
+      }
+      if (in_chunk == 19) {
+        m.multiply_add(ten_to_19, chunk);
+        chunk = 0;
+        in_chunk = 0;
+      }
     }
   }
-  if (in_chunk != 0) m.multiply_add(pow5(in_chunk) << in_chunk, chunk);  // 10^in_chunk
+  void finish() {
+    if (in_chunk != 0) m.multiply_add(pow5(in_chunk) << in_chunk, chunk);  // 10^in_chunk
+  }
+};
+
+// The significant digits as an integer: `digits` with the '.' at `dot`
+// (npos: none) left out.
+void set_small_digits(SmallNatural& m, std::string_view digits, std::size_t dot) {
+  DigitAccumulator accumulator{m};
+  if (dot == std::string_view::npos) {
+    accumulator.append(digits);
+  } else {
+    accumulator.append(digits.substr(0, dot));
+    accumulator.append(digits.substr(dot + 1));
+  }
+  accumulator.finish();
 }
 
 // Cancels the factors 5 of m, at most `cap` of them; returns how many.
@@ -270,8 +298,8 @@ void set_power_2_5(mpz_ptr z, std::uint64_t twos, std::uint64_t fives) {
 
 // Builds M x 10^scale in lowest terms when both parts are surely within the
 // caps and small; returns false (out untouched) to leave it to the general path.
-bool set_small_decimal(std::string_view significant, std::uint64_t digits, Int128 scale, bool negative,
-                       const NumberTextLimits& limits, Rational& out) {
+bool set_small_decimal(std::string_view significant, std::size_t dot, std::uint64_t digits, Int128 scale,
+                       bool negative, const NumberTextLimits& limits, Rational& out) {
   if (digits > small_max_digits || scale > Int128{small_max_scale} || scale < -Int128{small_max_scale})
     return false;
   const std::uint64_t magnitude = static_cast<std::uint64_t>(scale < 0 ? -scale : scale);
@@ -281,7 +309,7 @@ bool set_small_decimal(std::string_view significant, std::uint64_t digits, Int12
   mpz_ptr num = out.get_num_mpz_t();
   mpz_ptr den = out.get_den_mpz_t();
   SmallNatural m;
-  set_small_digits(m, significant);
+  set_small_digits(m, significant, dot);
   if (scale >= 0) {
     if (num_bits_at_most > small_limbs * 64) return false;
     for (std::uint64_t s = magnitude; s > 0;) {
@@ -468,7 +496,9 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
   i = digit_run_end(text, i);
   bool has_digits = i > mantissa_start;
   std::size_t frac_len = 0;
+  std::size_t dot = std::string_view::npos;  // in the mantissa
   if (i < text.size() && text[i] == '.') {
+    dot = i - mantissa_start;
     ++i;
     const std::size_t frac_start = i;
     i = digit_run_end(text, i);
@@ -507,13 +537,12 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
   // The significant digits [first, last] (a '.' may sit among them); the
   // zeros after the last one only scale the value.
   std::string_view mantissa = text.substr(mantissa_start, mantissa_end - mantissa_start);
-  const std::size_t first = mantissa.find_first_not_of("0.");
+  const std::size_t first = first_significant(mantissa);
   if (first == std::string_view::npos) {
     out = 0;
     return {};
   }
-  const std::size_t last = mantissa.find_last_not_of("0.");
-  const std::size_t dot = mantissa.find('.');
+  const std::size_t last = last_significant(mantissa);
   std::string_view significant = mantissa.substr(first, last + 1 - first);
   const bool dot_inside = dot != std::string_view::npos && dot > first && dot < last;
   const std::uint64_t digits = significant.size() - (dot_inside ? 1 : 0);
@@ -523,7 +552,9 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
   // value = M * 10^scale, M the significant digits as an integer.
   const Int128 scale = Int128{exponent} - static_cast<Int128>(frac_len) + static_cast<Int128>(trailing);
 
-  if (set_small_decimal(significant, digits, scale, negative, limits, out)) return {};
+  if (set_small_decimal(significant, dot_inside ? dot - first : std::string_view::npos, digits, scale, negative,
+                        limits, out))
+    return {};
 
   mpz_ptr num = out.get_num_mpz_t();
   mpz_ptr den = out.get_den_mpz_t();
