@@ -15,6 +15,7 @@
 #include "cvms/error.hpp"
 #include "support/hand_solids.hpp"
 #include "support/oracle.hpp"
+#include "support/random_numbers.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms {
@@ -508,24 +509,38 @@ PolygonSoup bipyramid(const std::vector<Vec3>& ring, const Vec3& north, const Ve
   return s;
 }
 
-TEST(ConvexPolyhedronBadInput, RandomWoundBipyramidsAreRejected) {
-  // Bipyramids over perturbed star polygons {5/2} and {7/3}: never convex.
+// A bipyramid over a perturbed star polygon {5/2} (even seeds) or {7/3}
+// (odd seeds): never convex.
+PolygonSoup wound_bipyramid(unsigned seed) {
   const long pentagon[5][2] = {{100, 0}, {31, 95}, {-81, 59}, {-81, -59}, {31, -95}};
   const long heptagon[7][2] = {{100, 0}, {62, 78}, {-22, 97}, {-90, 43}, {-90, -43}, {-22, -97}, {62, -78}};
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<long> d(-30, 30);
+  std::vector<Vec3> ring;
+  if (seed % 2 == 0)
+    for (int i = 0; i < 5; ++i) ring.push_back(v3(pentagon[(2 * i) % 5][0], pentagon[(2 * i) % 5][1], 0));
+  else
+    for (int i = 0; i < 7; ++i) ring.push_back(v3(heptagon[(3 * i) % 7][0], heptagon[(3 * i) % 7][1], 0));
+  for (Vec3& p : ring) p += v3(d(rng), d(rng), d(rng));
+  return bipyramid(ring, v3(d(rng), d(rng), 100 + d(rng)), v3(d(rng), d(rng), -100 + d(rng)));
+}
+
+// The error from_soup reports (its category and message), or "accepted".
+std::string verdict(const PolygonSoup& s) {
+  try {
+    (void)ConvexPolyhedron::from_soup(s);
+    return "accepted";
+  } catch (const Error& e) {
+    return std::to_string(static_cast<int>(e.category())) + ": " + e.what();
+  }
+}
+
+TEST(ConvexPolyhedronBadInput, RandomWoundBipyramidsAreRejected) {
   int global_rejections = 0, above_interior_point = 0, wound_twice = 0;
   for (unsigned seed = 1; seed <= 300; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<long> d(-30, 30);
-    std::vector<Vec3> ring;
-    if (seed % 2 == 0)
-      for (int i = 0; i < 5; ++i) ring.push_back(v3(pentagon[(2 * i) % 5][0], pentagon[(2 * i) % 5][1], 0));
-    else
-      for (int i = 0; i < 7; ++i) ring.push_back(v3(heptagon[(3 * i) % 7][0], heptagon[(3 * i) % 7][1], 0));
-    for (Vec3& p : ring) p += v3(d(rng), d(rng), d(rng));
-    PolygonSoup s = bipyramid(ring, v3(d(rng), d(rng), 100 + d(rng)), v3(d(rng), d(rng), -100 + d(rng)));
     try {
-      (void)ConvexPolyhedron::from_soup(s);
+      (void)ConvexPolyhedron::from_soup(wound_bipyramid(seed));
       ADD_FAILURE() << "accepted a surface that winds twice";
     } catch (const Error& e) {
       EXPECT_EQ(e.category(), ErrorCategory::not_convex) << e.what();
@@ -540,6 +555,32 @@ TEST(ConvexPolyhedronBadInput, RandomWoundBipyramidsAreRejected) {
   // here), and the ray that leaves through two facets (98).
   EXPECT_GT(above_interior_point, 30);
   EXPECT_GT(wound_twice, 30);
+}
+
+TEST(ConvexPolyhedronBadInput, WoundBipyramidsGetTheSameVerdictAtEveryScale) {
+  // Scaled beyond the semi-static filter's range (2^400: its bound is
+  // infinite, and the running-error filter overflows), by 2^-600 (products
+  // underflow), and by 1/3 then shifted by 10^17 (non-dyadic coordinates, an
+  // approximation error in every one): the fallbacks must find what the
+  // filters find on the integer input, fault for fault.
+  Mat3 up, down, third;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      up.m[i][j] = i == j ? test::power_of_two(400) : Rational(0);
+      down.m[i][j] = i == j ? test::power_of_two(-600) : Rational(0);
+      third.m[i][j] = i == j ? Rational(1, 3) : Rational(0);
+    }
+  const Vec3 zero{0, 0, 0};
+  const Vec3 far{Rational(mpz_class("100000000000000000")), Rational(0), Rational(-7, 5)};
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const PolygonSoup s = wound_bipyramid(seed);
+    const std::string want = verdict(s);
+    EXPECT_NE(want, "accepted");
+    EXPECT_EQ(verdict(test::mapped(s, up, zero)), want);
+    EXPECT_EQ(verdict(test::mapped(s, down, zero)), want);
+    EXPECT_EQ(verdict(test::mapped(s, third, far)), want);
+  }
 }
 
 TEST(ConvexPolyhedron, RandomBipyramidsAgainstHullOracle) {

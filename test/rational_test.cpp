@@ -559,6 +559,33 @@ TEST(RationalText, FastPathAgreesWithTheConstructionOnItsShapes) {
   }
 }
 
+// Every digit count up to 40, the point at every place (and none), with
+// leading and trailing zeros: the fast path reads its digits in runs split
+// by the point, eight at a time into chunks of 19, so the point before,
+// inside and after each eight-digit step and chunk boundary is covered, not
+// left to chance.
+TEST(RationalText, EveryDigitCountAndPointPlace) {
+  test::Rng rng(4040);
+  for (std::size_t count = 1; count <= 40; ++count)
+    for (std::size_t places = 0; places <= count + 1; ++places)
+      for (int zeros = 0; zeros < 4; ++zeros) {
+        std::string digits;
+        for (std::size_t d = 0; d < count; ++d) digits += static_cast<char>('0' + rng() % 10);
+        digits.front() = static_cast<char>('1' + rng() % 9);  // the count is the significant digits'
+        digits.back() = static_cast<char>('1' + rng() % 9);
+        if ((zeros & 1) != 0) digits.append(2, '0');
+        std::string text = with_point(digits, places);
+        if ((zeros & 2) != 0) text.insert(text.begin(), 2, '0');
+        if (places == count + 1 && (zeros & 1) == 0) text = digits;  // no point at all
+        SCOPED_TRACE(text);
+        const long scale = text == digits ? 0 : -static_cast<long>(places);
+        const Rational expected = Rational(mpz_class(digits, 10)) * power_of_ten(scale);
+        const std::optional<Rational> parsed = try_parse_rational(text);
+        ASSERT_TRUE(parsed.has_value());
+        ASSERT_EQ(*parsed, expected);
+      }
+}
+
 // The parser reads digits eight at a time where it can: every byte that is
 // not part of a number's syntax, at every place of the first or second
 // eight-character window of a 24-digit number, makes the text no number;

@@ -447,10 +447,9 @@ class Quickhull {
   // orient3d, whose difference is that dot product, so a difference of the
   // values beyond 3 bounds (2 plus rounding, see difference_margin) decides.
   [[nodiscard]] bool farther(std::uint32_t t, double s_p, std::uint32_t p, double s_q, std::uint32_t q) {
-    const double diff = s_p - s_q, margin = filtered::difference_margin * planes_[t].bound;
-    if (diff > margin || -diff > margin) {
+    if (const std::optional<Sign> s = difference_sign_if_certain(s_p, s_q, planes_[t].bound)) {
       ++plane_decisions_;
-      return diff > 0;
+      return *s == Sign::positive;
     }
     // The caller's predicate, when given, needs no exact point or normal.
     if (exact_compare_) {

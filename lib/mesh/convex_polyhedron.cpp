@@ -78,48 +78,56 @@
 namespace cvms {
 namespace {
 
+using detail::edge_name;
 using detail::first_corners;
 using detail::no_index;
-using detail::edge_name;
 using detail::str;
 
 [[noreturn]] void not_convex(const std::string& message) { throw Error(ErrorCategory::not_convex, message); }
 
+// The plane filter of the triple t, the coordinates of its vertices from
+// coords(v): S(x) = orient3d(t[0], t[1], t[2], x) to within its bound.
+template <class CoordsOf>
+PlaneFilter triple_plane(const std::array<VertexId, 3>& t, const CoordsOf& coords,
+                         const PlaneFilterScale& scale) {
+  return PlaneFilter::of(coords(t[0]), coords(t[1]), coords(t[2]), scale);
+}
+
 // The input's vertices with their double approximations, made once, for
-// the filtered predicates, and the scale of the semi-static plane filter
+// the filtered predicates, and the extent of the semi-static plane filter
 // over all of them (plane_filter.hpp), which decides most orientations of a
-// mesh in general position in a few multiplications.
+// mesh in general position in a few multiplications. Its decisions count as
+// filtered ones, like those of the running-error filter.
 class Points {
  public:
-  explicit Points(const Mesh& mesh) : mesh_(mesh) {
+  explicit Points(const Mesh& mesh) : mesh_(mesh), counters_(predicate_counters()) {
     approx_.reserve(mesh.num_vertices());
-    PlaneFilterExtent extent;
-    for (VertexId v : mesh.vertices()) extent.add(approx_.emplace_back(ApproxVec3::of(mesh.position(v))));
-    scale_ = extent.scale();
+    for (VertexId v : mesh.vertices()) extent_.add(approx_.emplace_back(ApproxVec3::of(mesh.position(v))));
+    scale_ = extent_.scale();
   }
   Vec3Ref operator[](VertexId v) const { return {mesh_.position(v), approx_[v.index()]}; }
   [[nodiscard]] const ApproxVec3& approx(VertexId v) const { return approx_[v.index()]; }
-  [[nodiscard]] Coords coords(VertexId v) const { return coords_of(approx_[v.index()]); }
-  // The filter of the plane through a, b, c (in that order).
-  [[nodiscard]] PlaneFilter plane(const std::array<VertexId, 3>& t) const {
-    return PlaneFilter::of(coords(t[0]), coords(t[1]), coords(t[2]), scale_);
+  [[nodiscard]] const PlaneFilterExtent& extent() const { return extent_; }
+
+  // The side of x of the plane through the triple t when a filter proves it:
+  // the semi-static one first, else the running-error one.
+  [[nodiscard]] std::optional<Sign> side_if_certain(const std::array<VertexId, 3>& t, VertexId x) const {
+    const auto coords = [this](VertexId v) { return coords_of(approx_[v.index()]); };
+    const PlaneFilter plane = triple_plane(t, coords, scale_);
+    if (const std::optional<Sign> side = plane.sign_if_certain(plane.value(coords(x)))) {
+      ++counters_.filtered;
+      return side;
+    }
+    return orient3d_if_certain((*this)[t[0]], (*this)[t[1]], (*this)[t[2]], (*this)[x]);
   }
 
  private:
   const Mesh& mesh_;
+  PredicateCounters& counters_;
   std::vector<ApproxVec3> approx_;
+  PlaneFilterExtent extent_;
   PlaneFilterScale scale_;
 };
-
-// The side of x of the plane through the triple t when a filter proves it:
-// the semi-static one first, else the running-error one.
-std::optional<Sign> side_if_certain(const Points& points, const std::array<VertexId, 3>& t, VertexId x) {
-  const PlaneFilter plane = points.plane(t);
-  const double s = plane.value(points.coords(x));
-  if (plane.above(s)) return Sign::positive;
-  if (plane.below(s)) return Sign::negative;
-  return orient3d_if_certain(points[t[0]], points[t[1]], points[t[2]], points[x]);
-}
 
 // The plane of a face: its primitive integer normal, oriented like the face
 // (a positive multiple of its area vector), and the normal's approximation.
@@ -347,7 +355,7 @@ void check_not_flat(const Mesh& mesh, const Points& points, const std::array<Ver
   Rational offset;
   std::optional<IntegerPlane> plane0;
   for (VertexId v : mesh.vertices()) {
-    if (side_if_certain(points, t0, v)) return;
+    if (points.side_if_certain(t0, v)) return;
     if (!plane0) plane0.emplace(normals(0).ref(), points[t0[0]].exact, offset);
     if (plane0->side(points[v]) != Sign::zero) return;
   }
@@ -370,9 +378,9 @@ struct EdgeClasses {
 // others on it. Writing x - p = a (q - p) + t (N_g x (q - p)) for such an x,
 // g's counterclockwise turn from q -> p to x gives t < 0, and then
 // dot(N_f, x - p) = t det[N_f, N_g, q - p]: the edge is convex iff x is below
-// f's plane, reflex iff above. The filters (side_if_certain) decide that for
-// a vertex of g's plane triple other than p and q whenever it is off f's plane
-// by more than their error bounds; otherwise (coplanar faces, a vertex of g on the line pq, or
+// f's plane, reflex iff above. The filters (Points::side_if_certain) decide
+// that for a vertex of g's plane triple other than p and q whenever it is off
+// f's plane by more than their error bounds; otherwise (coplanar faces, a vertex of g on the line pq, or
 // a nearly flat edge) the classical test decides, on the primitive normals,
 // and so it does at once when both were made already (a mesh whose faces are
 // coplanar in large groups, where the filter would fail edge after edge).
@@ -392,7 +400,7 @@ EdgeKind edge_kind(const Points& points, const FaceChecks& faces, FaceNormals& n
   if (!normals.has(f) || !normals.has(g)) {
     const std::array<VertexId, 3>& t = faces.triple[g];
     const VertexId x = t[0] != p && t[0] != q ? t[0] : (t[1] != p && t[1] != q ? t[1] : t[2]);
-    if (const std::optional<Sign> side = side_if_certain(points, faces.triple[f], x))
+    if (const std::optional<Sign> side = points.side_if_certain(faces.triple[f], x))
       return *side == Sign::negative ? EdgeKind::convex : EdgeKind::reflex;
   }
   const FacePlane& n_f = normals(f);
@@ -662,18 +670,17 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, const Face
 // + c) / 3, inside facet 0, in the direction dir = 12 (g - o); it leaves
 // through f's plane iff dot(N, dir) > 0, that is S_f(g) > S_f(o), and meets
 // the closed facet iff det[from - o, to - o, dir] >= 0 along each of its
-// edges, that is orient3d(o, from, to, g) >= 0. o and g lie in the hull of
-// the vertices, so the semi-static plane filter over the vertices, o and g
-// decides most of these signs in a few multiplications (two values within
-// one bound b differ provably by more than 3b, error_bounds.hpp); exact
-// predicates on dir decide the rest.
+// edges, that is orient3d(o, from, to, g) >= 0. Written so, every sign is an
+// orientation of points, and the semi-static plane filter decides most of
+// them in a few multiplications, its scale taken over the input's vertices
+// (the result's are among them, with the same approximations) and the
+// approximations of o and g; a difference S_f(g) - S_f(o) is proved by
+// difference_sign_if_certain. Exact predicates on dir decide the rest.
 class GlobalCheck {
  public:
-  GlobalCheck(const ConvexPolyhedron& p, const Regions& regions) : p_(p), m_(p.mesh()), regions_(regions) {}
-
-  void run() {
+  GlobalCheck(const ConvexPolyhedron& p, const Regions& regions, PlaneFilterExtent extent)
+      : p_(p), m_(p.mesh()), regions_(regions), counters_(predicate_counters()) {
     const std::array<VertexId, 3> t0 = first_corners(m_, FaceId(0));
-    const Vec3 &a = m_.position(t0[0]), &b = m_.position(t0[1]), &c = m_.position(t0[2]);
     const Vec3* w = nullptr;
     for (VertexId v : m_.vertices())
       if (orient3d(ref(t0[0]), ref(t0[1]), ref(t0[2]), ref(v)) == Sign::negative) {
@@ -681,20 +688,20 @@ class GlobalCheck {
         break;
       }
     if (w == nullptr) not_convex(regions_.facet_name(0) + " has every vertex on its plane");
-    const Vec3 abc = a + b + c;
+    const Vec3 abc = m_.position(t0[0]) + m_.position(t0[1]) + m_.position(t0[2]);
     o_ = Rational(1, 4) * (abc + *w);
-    g_ = Rational(1, 3) * abc;
     dir_ = abc - Rational(3) * *w;
     o_approx_ = ApproxVec3::of(o_);
     dir_approx_ = ApproxVec3::of(dir_);
-    PlaneFilterExtent extent;
-    for (VertexId v : m_.vertices()) extent.add(detail::vertex_approx(p_, v));
+    const ApproxVec3 g_approx = ApproxVec3::of(Rational(1, 3) * abc);
     extent.add(o_approx_);
-    const ApproxVec3 g_approx = ApproxVec3::of(g_);
     extent.add(g_approx);
     scale_ = extent.scale();
     o_coords_ = coords_of(o_approx_);
     g_coords_ = coords_of(g_approx);
+  }
+
+  void run() {
     for (FaceId f : m_.faces())
       if (!below(f))
         not_convex("the surface is locally convex but not convex: an interior point lies above " +
@@ -712,14 +719,21 @@ class GlobalCheck {
   [[nodiscard]] Vec3Ref o_ref() const { return {o_, o_approx_}; }
   [[nodiscard]] Vec3Ref dir_ref() const { return {dir_, dir_approx_}; }
   [[nodiscard]] PlaneFilter plane(const std::array<VertexId, 3>& t) const {
-    return PlaneFilter::of(coords(t[0]), coords(t[1]), coords(t[2]), scale_);
+    const auto vertex_coords = [this](VertexId v) { return coords(v); };
+    return triple_plane(t, vertex_coords, scale_);
+  }
+  // A sign the filter proved, counted.
+  [[nodiscard]] std::optional<Sign> counted(std::optional<Sign> sign) const {
+    if (sign) ++counters_.filtered;
+    return sign;
   }
 
   // S_f(o) < 0.
   [[nodiscard]] bool below(FaceId f) const {
     const std::array<VertexId, 3> t = first_corners(m_, f);
     const PlaneFilter filter = plane(t);
-    if (filter.below(filter.value(o_coords_))) return true;
+    if (const std::optional<Sign> side = counted(filter.sign_if_certain(filter.value(o_coords_))))
+      return *side == Sign::negative;
     return orient3d(ref(t[0]), ref(t[1]), ref(t[2]), o_ref()) == Sign::negative;
   }
 
@@ -727,23 +741,23 @@ class GlobalCheck {
   [[nodiscard]] bool ray_leaves_through(FaceId f) const {
     const std::array<VertexId, 3> t = first_corners(m_, f);
     const PlaneFilter filter = plane(t);
-    const double difference = filter.value(g_coords_) - filter.value(o_coords_);
-    const double margin = filtered::difference_margin * filter.bound;
-    if (difference > margin) return true;
-    if (difference < -margin) return false;
-    return sign_triple_of_differences(dir_ref(), ref(t[0]), ref(t[1]), ref(t[0]), ref(t[2])) == Sign::positive;
+    if (const std::optional<Sign> s = counted(
+            difference_sign_if_certain(filter.value(g_coords_), filter.value(o_coords_), filter.bound)))
+      return *s == Sign::positive;
+    return sign_triple_of_differences(dir_ref(), ref(t[0]), ref(t[1]), ref(t[0]), ref(t[2])) ==
+           Sign::positive;
   }
 
   // det[from - o, to - o, dir] >= 0 along every edge of f.
   [[nodiscard]] bool ray_meets(FaceId f) const {
     for (HalfedgeId h : m_.face_halfedges(f)) {
       const PlaneFilter filter = PlaneFilter::of(o_coords_, coords(m_.from(h)), coords(m_.to(h)), scale_);
-      const double s = filter.value(g_coords_);
-      if (filter.above(s)) continue;
-      if (filter.below(s)) return false;
+      const std::optional<Sign> side = counted(filter.sign_if_certain(filter.value(g_coords_)));
       // det[from - o, to - o, dir] = det[dir, from - o, to - o]
-      if (sign_triple_of_differences(dir_ref(), o_ref(), ref(m_.from(h)), o_ref(), ref(m_.to(h))) == Sign::negative)
-        return false;
+      const Sign s =
+          side ? *side
+               : sign_triple_of_differences(dir_ref(), o_ref(), ref(m_.from(h)), o_ref(), ref(m_.to(h)));
+      if (s == Sign::negative) return false;
     }
     return true;
   }
@@ -751,7 +765,8 @@ class GlobalCheck {
   const ConvexPolyhedron& p_;
   const Mesh& m_;
   const Regions& regions_;
-  Vec3 o_, g_, dir_;
+  PredicateCounters& counters_;
+  Vec3 o_, dir_;
   ApproxVec3 o_approx_{}, dir_approx_{};
   PlaneFilterScale scale_;
   Coords o_coords_{}, g_coords_{};
@@ -778,7 +793,7 @@ ConvexPolyhedron checked_polyhedron(const Mesh& mesh, Mesh* owned) {
   // approximations of the input are read.
   Mesh merged = merged_mesh(mesh, corners, facets_at, edges.flip, owned);
   ConvexPolyhedron p = merged_polyhedron(std::move(merged), points, facets_at);
-  GlobalCheck(p, regions).run();
+  GlobalCheck(p, regions, points.extent()).run();
   return p;
 }
 

@@ -20,8 +20,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "approx.hpp"
+#include "cvms/sign.hpp"
 #include "error_bounds.hpp"
 
 namespace cvms {
@@ -90,6 +92,23 @@ struct PlaneFilter {
   [[nodiscard]] bool above(double s) const noexcept { return s > bound; }
   /// True iff the value proves that the point is strictly below the plane.
   [[nodiscard]] bool below(double s) const noexcept { return s < -bound; }
+  /// The sign of orient3d that the value s proves, if it proves one.
+  [[nodiscard]] std::optional<Sign> sign_if_certain(double s) const noexcept {
+    if (above(s)) return Sign::positive;
+    if (below(s)) return Sign::negative;
+    return std::nullopt;
+  }
 };
+
+/// The sign of V - W for doubles v, w each within `bound` (at least
+/// 2^-1022, as every semi-static bound is) of exact values V, W, when their
+/// computed difference proves it: beyond 3 bounds, 2 for the values and 1 for
+/// the rounding (error_bounds.hpp, "Comparing two filtered values").
+inline std::optional<Sign> difference_sign_if_certain(double v, double w, double bound) noexcept {
+  const double difference = v - w, margin = filtered::difference_margin * bound;
+  if (difference > margin) return Sign::positive;
+  if (-difference > margin) return Sign::negative;
+  return std::nullopt;
+}
 
 }  // namespace cvms

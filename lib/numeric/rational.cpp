@@ -552,8 +552,8 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
   // value = M * 10^scale, M the significant digits as an integer.
   const Int128 scale = Int128{exponent} - static_cast<Int128>(frac_len) + static_cast<Int128>(trailing);
 
-  if (set_small_decimal(significant, dot_inside ? dot - first : std::string_view::npos, digits, scale, negative,
-                        limits, out))
+  if (set_small_decimal(significant, dot_inside ? dot - first : std::string_view::npos, digits, scale,
+                        negative, limits, out))
     return {};
 
   mpz_ptr num = out.get_num_mpz_t();
