@@ -529,29 +529,42 @@ class Quickhull {
   }
 
   // Before the visible triangles' conflicts are appended: when they would
-  // outgrow the pool's reservation, the pool is compacted instead. A regrown
+  // outgrow the pool's capacity, the pool is compacted instead. A regrown
   // pool is copied into fresh memory, which glibc's default policy maps anew
   // at every call: half the page faults of an exact hull of 10^4 points in a
-  // ball (the README's quickhull table). After compaction the pool holds the
-  // live entries, at most n, and the incoming ones are among them, so 2n
-  // (the reservation for n <= 2^20) always suffices.
+  // ball (the README's quickhull table). It never regrows here: the live
+  // entries only decrease after the first distribution (each step drops its
+  // eye), the capacity holds that distribution's n - 4 initial entries and
+  // its lists, and after compaction the pool holds the live entries L and
+  // the step appends fewer than L. Amortised O(1) per distributed entry (plus
+  // the sort): the next compaction comes only after about n more entries
+  // were distributed.
   void make_room(std::size_t incoming) {
     if (pool_.size() + incoming > pool_.capacity()) compact_pool_now();
   }
 
   // The live lists moved to the front of the pool in the order of their
-  // ranges, in place: each moves down, so copying forward is safe. A list's
-  // order, and so its farthest entry's offset, is kept.
+  // ranges, in place: the ranges are disjoint and each moves down, so copying
+  // forward is safe. A list's order, and so its farthest entry's offset, is
+  // kept. Empty lists are reset to [0, 0), so no range points past the pool.
   void compact_pool_now() {
     live_lists_.clear();
-    for (std::uint32_t t = 0; t < tris_.size(); ++t)
-      if (tris_[t].alive && tris_[t].begin != tris_[t].end) live_lists_.push_back(t);
+    for (std::uint32_t t = 0; t < tris_.size(); ++t) {
+      Triangle& tr = tris_[t];
+      if (tr.alive && tr.begin != tr.end)
+        live_lists_.push_back(t);
+      else
+        tr.begin = tr.end = 0;
+    }
     std::sort(live_lists_.begin(), live_lists_.end(),
               [this](std::uint32_t a, std::uint32_t b) { return tris_[a].begin < tris_[b].begin; });
     std::uint32_t cursor = 0;
     for (std::uint32_t t : live_lists_) {
       Triangle& tr = tris_[t];
-      std::copy(pool_.begin() + tr.begin, pool_.begin() + tr.end, pool_.begin() + cursor);
+      // A list already in place is left alone (std::copy's output must not
+      // begin inside its input).
+      if (tr.begin != cursor)
+        std::copy(pool_.begin() + tr.begin, pool_.begin() + tr.end, pool_.begin() + cursor);
       tr.end = cursor + (tr.end - tr.begin);
       tr.begin = cursor;
       cursor = tr.end;
@@ -574,8 +587,8 @@ class Quickhull {
   // Only what is used is ever touched: at the caps (n >= 2^19 points) the
   // reservation is about 120 MB of address space, which large allocations
   // map without committing; the conflict pool always holds the n initial
-  // conflicts, as before, and is compacted rather than grown past 2n
-  // (make_room).
+  // conflicts, as before, and after the first distribution is compacted
+  // rather than grown (make_room).
   void reserve_for_points() {
     const std::size_t n = n_;
     const std::size_t triangles = std::min<std::size_t>(2 * n + 8, std::size_t{1} << 20);
