@@ -160,11 +160,11 @@ class Quickhull {
         exact_compare_(std::move(compare)),
         copy_points_(!exact_orient_) {
     n_ = checked_size(coords_.size());
-    double max_abs = 0;
-    for (const Coords& c : coords_)
-      for (double x : c) max_abs = std::fabs(x) <= max_abs ? max_abs : (std::isnan(x) ? inf : std::fabs(x));
-    error_ = std::isnan(points.max_error) ? inf : points.max_error;
-    scale_ = PlaneFilterScale::of(max_abs, error_);
+    PlaneFilterExtent extent;
+    for (const Coords& c : coords_) extent.add(c);
+    extent.add_error(points.max_error);
+    error_ = extent.max_error;
+    scale_ = extent.scale();
     lazy_.assign(n_, none);
   }
 

@@ -49,18 +49,25 @@ struct PlaneFilterScale {
 /// would compare false: it is folded into an infinite maximum, which
 /// disables the filter.
 struct PlaneFilterExtent {
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
   double max_abs = 0;
   double max_error = 0;
 
+  void add_value(double x) noexcept {
+    max_abs = std::fabs(x) <= max_abs ? max_abs : (std::isnan(x) ? infinity : std::fabs(x));
+  }
+  void add_error(double e) noexcept { max_error = e <= max_error ? max_error : (std::isnan(e) ? infinity : e); }
   void add(const Approx& c) noexcept {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    max_abs = std::fabs(c.value) <= max_abs ? max_abs : (std::isnan(c.value) ? inf : std::fabs(c.value));
-    max_error = c.error <= max_error ? max_error : (std::isnan(c.error) ? inf : c.error);
+    add_value(c.value);
+    add_error(c.error);
   }
   void add(const ApproxVec3& p) noexcept {
     add(p.x);
     add(p.y);
     add(p.z);
+  }
+  void add(const Coords& p) noexcept {
+    for (double x : p) add_value(x);
   }
   [[nodiscard]] PlaneFilterScale scale() const noexcept { return PlaneFilterScale::of(max_abs, max_error); }
 };
