@@ -108,6 +108,7 @@ class Points {
   Vec3Ref operator[](VertexId v) const { return {mesh_.position(v), approx_[v.index()]}; }
   [[nodiscard]] const ApproxVec3& approx(VertexId v) const { return approx_[v.index()]; }
   [[nodiscard]] const PlaneFilterExtent& extent() const { return extent_; }
+  [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(approx_.size()); }
 
   // The side of x of the plane through the triple t when a filter proves it:
   // the semi-static one first, else the running-error one.
@@ -119,6 +120,17 @@ class Points {
       return side;
     }
     return orient3d_if_certain((*this)[t[0]], (*this)[t[1]], (*this)[t[2]], (*this)[x]);
+  }
+
+  // True when the semi-static filter proves x off the plane of the triple t:
+  // then t is not collinear (for three points on a line the determinant
+  // vanishes at every x). False says nothing.
+  [[nodiscard]] bool surely_spans_plane(const std::array<VertexId, 3>& t, VertexId x) const {
+    const auto coords = [this](VertexId v) { return coords_of(approx_[v.index()]); };
+    const PlaneFilter plane = triple_plane(t, coords, scale_);
+    if (!plane.sign_if_certain(plane.value(coords(x)))) return false;
+    ++counters_.filtered;
+    return true;
   }
 
  private:
@@ -254,18 +266,31 @@ class FaceNormals {
 // area vector and the polygon check against it decides as the check against
 // the area vector would. Writes that triple into `triple` and, for a face that
 // passes, the corner flags into `corner`.
+// Corners 0, 1 and k of the face are not collinear. A witness off their
+// plane proves it for most faces in a few floating-point operations: the
+// mesh's first vertex, or its last for faces through the first. Faces that
+// hold their witness or lie too near it in angle take the exact test.
+bool not_collinear(const FaceCorners& face, const Points& points, std::size_t k) {
+  const std::array<VertexId, 3> t{VertexId(face.ids[0]), VertexId(face.ids[1]), VertexId(face.ids[k])};
+  const VertexId witness = std::find(face.ids.begin(), face.ids.end(), 0u) == face.ids.end()
+                               ? VertexId(0)
+                               : VertexId(points.size() - 1);
+  if (points.surely_spans_plane(t, witness)) return true;
+  return !collinear(face.pts[0], face.pts[1], face.pts[k]);
+}
+
 enum class FaceVerdict {
   passed,
   failed_in_plane,  // planar (the triple spans its plane), but not a convex polygon
   failed            // collinear or not planar
 };
 
-FaceVerdict check_face(FaceCorners& face, FaceNormals& normals, std::array<VertexId, 3>& triple,
-                       std::vector<char>& corner) {
+FaceVerdict check_face(FaceCorners& face, const Points& points, FaceNormals& normals,
+                       std::array<VertexId, 3>& triple, std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
   std::size_t k = 2;
-  while (k < m && collinear(pts[0], pts[1], pts[k])) ++k;
+  while (k < m && !not_collinear(face, points, k)) ++k;
   if (k == m) return FaceVerdict::failed;
   triple = {VertexId(face.ids[0]), VertexId(face.ids[1]), VertexId(face.ids[k])};
   if (m == 3) {
@@ -338,7 +363,7 @@ void check_faces(const Mesh& mesh, const Points& points, FaceNormals& normals, F
       face.pts.push_back(points[mesh.from(h)]);
       face.ids.push_back(mesh.from(h).index());
     }
-    const FaceVerdict verdict = check_face(face, normals, out.triple[f.index()], corner);
+    const FaceVerdict verdict = check_face(face, points, normals, out.triple[f.index()], corner);
     if (verdict == FaceVerdict::failed_in_plane) report_face_fault(face, &normals(f.index()));
     if (verdict == FaceVerdict::failed) report_face_fault(face, nullptr);
     std::size_t i = 0;
@@ -702,6 +727,7 @@ class GlobalCheck {
   }
 
   void run() {
+    leaving_.assign(m_.num_faces(), std::nullopt);
     for (FaceId f : m_.faces())
       if (!below(f))
         not_convex("the surface is locally convex but not convex: an interior point lies above " +
@@ -728,22 +754,22 @@ class GlobalCheck {
     return sign;
   }
 
-  // S_f(o) < 0.
-  [[nodiscard]] bool below(FaceId f) const {
+  // S_f(o) < 0. The facet's plane also answers, when the filter can, the
+  // question ray_leaves_through asks later: its sign is kept in leaving_, so
+  // that each plane is made once.
+  [[nodiscard]] bool below(FaceId f) {
     const std::array<VertexId, 3> t = first_corners(m_, f);
     const PlaneFilter filter = plane(t);
-    if (const std::optional<Sign> side = counted(filter.sign_if_certain(filter.value(o_coords_))))
-      return *side == Sign::negative;
+    const double s_o = filter.value(o_coords_);
+    leaving_[f.index()] = difference_sign_if_certain(filter.value(g_coords_), s_o, filter.bound);
+    if (const std::optional<Sign> side = counted(filter.sign_if_certain(s_o))) return *side == Sign::negative;
     return orient3d(ref(t[0]), ref(t[1]), ref(t[2]), o_ref()) == Sign::negative;
   }
 
-  // dot(N_f, dir) > 0.
+  // dot(N_f, dir) > 0, i.e. S_f(g) > S_f(o).
   [[nodiscard]] bool ray_leaves_through(FaceId f) const {
+    if (const std::optional<Sign> s = counted(leaving_[f.index()])) return *s == Sign::positive;
     const std::array<VertexId, 3> t = first_corners(m_, f);
-    const PlaneFilter filter = plane(t);
-    if (const std::optional<Sign> s = counted(
-            difference_sign_if_certain(filter.value(g_coords_), filter.value(o_coords_), filter.bound)))
-      return *s == Sign::positive;
     return sign_triple_of_differences(dir_ref(), ref(t[0]), ref(t[1]), ref(t[0]), ref(t[2])) ==
            Sign::positive;
   }
@@ -770,6 +796,7 @@ class GlobalCheck {
   ApproxVec3 o_approx_{}, dir_approx_{};
   PlaneFilterScale scale_;
   Coords o_coords_{}, g_coords_{};
+  std::vector<std::optional<Sign>> leaving_;  // by facet: the filter's sign of S_f(g) - S_f(o), if proved
 };
 
 // from_mesh; `owned` is the mesh itself when the caller hands it over
