@@ -11,7 +11,7 @@
 
 namespace cvms::cli {
 
-/// Grows the heap in large virtual steps (pages are still backed only when
+/// Grows the heap in one large virtual step of 256 MiB (pages are still backed only when
 /// touched) and asks the kernel for transparent huge pages on the first step
 /// (madvise MADV_HUGEPAGE). Call once, first thing in main. Does nothing
 /// where the kernel or the C library cannot (not Linux with glibc, THP set to
