@@ -134,13 +134,16 @@ TEST(ParseUnsigned, SaturatesExactlyBeyond64Bits) {
   for (const char* token : {"0", "7", "000123", "1844674407370955161", "1844674407370955162", "18446744073709551609",
                             "18446744073709551610", "18446744073709551614", "18446744073709551615",
                             "18446744073709551616", "18446744073709551619", "18446744073709551620",
-                            "99999999999999999999", "0018446744073709551615", "123456789012345678901234567890"}) {
+                            "99999999999999999999", "0018446744073709551615", "123456789012345678901234567890",
+                            // 19 digits and fewer take the path without an overflow test
+                            "9999999999999999999", "1000000000000000000", "0000000000000000009", "10000000000000000000"}) {
     const mpz_class value(token, 10);  // base 10: base 0 reads a leading 0 as octal
     const std::optional<std::uint64_t> parsed = parse_unsigned(token);
     ASSERT_TRUE(parsed.has_value()) << token;
     EXPECT_EQ(mpz_class(std::to_string(*parsed)), value > max ? max : value) << token;
   }
-  for (const char* junk : {"", "-1", "+1", "1e3", "12a", " 1"}) EXPECT_FALSE(parse_unsigned(junk).has_value()) << junk;
+  for (const char* junk : {"", "-1", "+1", "1e3", "12a", " 1", "123456789012345678a", "1234567890123456789a"})
+    EXPECT_FALSE(parse_unsigned(junk).has_value()) << junk;
 }
 
 }  // namespace

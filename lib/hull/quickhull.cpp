@@ -136,19 +136,19 @@ class Quickhull {
  public:
   // Exact input: the filters run on the cached approximations, whose largest
   // error bound covers every point.
-  explicit Quickhull(std::span<const Vec3> points) : points_(points) {
+  explicit Quickhull(std::span<const Vec3> points) : points_(points), exact_input_(true) {
     n_ = checked_size(points.size());
-    approx_.reserve(n_);
     own_coords_.reserve(n_);
     PlaneFilterExtent extent;
     for (const Vec3& p : points) {
-      const ApproxVec3& a = approx_.emplace_back(ApproxVec3::of(p));
+      const ApproxVec3 a = ApproxVec3::of(p);
       own_coords_.push_back(coords_of(a));
       extent.add(a);
     }
     coords_ = own_coords_;
     error_ = extent.max_error;
     scale_ = extent.scale();
+    lazy_.assign(n_, none);
   }
 
   // Approximations only (double input is exact, with error 0): only the
@@ -189,17 +189,20 @@ class Quickhull {
     return static_cast<std::uint32_t>(n);
   }
 
-  // The exact point p with its approximation; for double input made on first
-  // use (deque: references stay valid).
+  // The exact point p with its own approximation, made on first use (deques:
+  // references stay valid): only the exact fallbacks and the output ask, for
+  // few points, and a per-point approximation made for all of them up front
+  // was 48 of the 72 bytes a point that every call touched (page faults
+  // under glibc's default policy, which returns freed memory).
   [[nodiscard]] Vec3Ref ref(std::uint32_t p) {
-    if (lazy_.empty()) return {points_[p], approx_[p]};
     if (lazy_[p] == none) {
-      lazy_[p] = static_cast<std::uint32_t>(lazy_points_.size());
-      lazy_approx_.push_back(ApproxVec3::of(lazy_points_.emplace_back(make_exact_(p))));
+      lazy_[p] = static_cast<std::uint32_t>(lazy_approx_.size());
+      const Vec3& point = exact_input_ ? points_[p] : lazy_points_.emplace_back(make_exact_(p));
+      lazy_approx_.push_back(ApproxVec3::of(point));
     }
-    return {lazy_points_[lazy_[p]], lazy_approx_[lazy_[p]]};
+    return {exact_input_ ? points_[p] : lazy_points_[lazy_[p]], lazy_approx_[lazy_[p]]};
   }
-  [[nodiscard]] const Vec3& exact(std::uint32_t p) { return ref(p).exact; }
+  [[nodiscard]] const Vec3& exact(std::uint32_t p) { return exact_input_ ? points_[p] : ref(p).exact; }
 
   // The approximation of p as the filters see it: its doubles with the error
   // error_ that bounds every point's, or the doubles alone when that is 0.
@@ -256,12 +259,11 @@ class Quickhull {
 
   [[nodiscard]] Sign evaluate_orient(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
     if (exact_orient_) return exact_orient_(a, b, c, d);
-    const Vec3Ref ra = ref(a), rb = ref(b), rc = ref(c), rd = ref(d);
-    if (const std::optional<Sign> s = dyadic_orient3d(ra.exact, rb.exact, rc.exact, rd.exact)) {
+    if (const std::optional<Sign> s = dyadic_orient3d(exact(a), exact(b), exact(c), exact(d))) {
       ++predicate_counters().exact;
       return *s;
     }
-    return orient3d(ra, rb, rc, rd);
+    return orient3d(ref(a), ref(b), ref(c), ref(d));
   }
 
   // Sign of point p with respect to triangle t: positive iff p is strictly
@@ -792,13 +794,14 @@ class Quickhull {
   }
 
   std::span<const Vec3> points_;  // exact input (empty for double input)
+  bool exact_input_ = false;      // points_ holds the input, else make_exact_ makes it
   std::uint32_t n_ = 0;
-  std::vector<ApproxVec3> approx_;
   std::span<const Coords> coords_;  // the double approximations
   std::vector<Coords> own_coords_;
   double error_ = 0;  // bounds |coords_ - exact| for every coordinate
   PlaneFilterScale scale_;
-  // Approximate input: lazy_[p] indexes the exact points made so far.
+  // lazy_[p] indexes the approximations made so far and, for approximate
+  // input, the exact points made with them.
   std::function<Vec3(std::uint32_t)> make_exact_;
   std::vector<std::uint32_t> lazy_;
   std::deque<Vec3> lazy_points_;
