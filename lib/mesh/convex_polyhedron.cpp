@@ -258,23 +258,19 @@ class FaceNormals {
   Vec3 general_;                  // keeps its limbs from face to face
 };
 
-// Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
-// p1 and the first pk off their line span the face's plane if it is planar,
-// and if it is moreover a convex polygon, the triangle p0 p1 pk (three of its
-// vertices in cyclic order, not collinear) turns like the polygon, so it
-// orients the plane like the face: its normal is a positive multiple of the
-// area vector and the polygon check against it decides as the check against
-// the area vector would. Writes that triple into `triple` and, for a face that
-// passes, the corner flags into `corner`.
-// Corners 0, 1 and k of the face are not collinear. A witness off their
-// plane proves it for most faces in a few floating-point operations: the
-// mesh's first vertex, or its last for faces through the first. Faces that
-// hold their witness or lie too near it in angle take the exact test.
-bool not_collinear(const FaceCorners& face, const Points& points, std::size_t k) {
+// A vertex to show a face's corners not collinear (not_collinear): the
+// mesh's first, or its last for a face through the first.
+VertexId collinearity_witness(const FaceCorners& face, const Points& points) {
+  const bool through_first = std::find(face.ids.begin(), face.ids.end(), 0u) != face.ids.end();
+  return through_first ? VertexId(points.size() - 1) : VertexId(0);
+}
+
+// Corners 0, 1 and k of the face are not collinear. The witness off their
+// plane proves it for most faces in a few floating-point operations; faces
+// that hold their witness, or that the filter cannot place, take the exact
+// test.
+bool not_collinear(const FaceCorners& face, const Points& points, VertexId witness, std::size_t k) {
   const std::array<VertexId, 3> t{VertexId(face.ids[0]), VertexId(face.ids[1]), VertexId(face.ids[k])};
-  const VertexId witness = std::find(face.ids.begin(), face.ids.end(), 0u) == face.ids.end()
-                               ? VertexId(0)
-                               : VertexId(points.size() - 1);
   if (points.surely_spans_plane(t, witness)) return true;
   return !collinear(face.pts[0], face.pts[1], face.pts[k]);
 }
@@ -285,12 +281,21 @@ enum class FaceVerdict {
   failed            // collinear or not planar
 };
 
+// Step 2 in O(m) predicates on small numbers, for a face that passes it: p0,
+// p1 and the first pk off their line span the face's plane if it is planar,
+// and if it is moreover a convex polygon, the triangle p0 p1 pk (three of its
+// vertices in cyclic order, not collinear) turns like the polygon, so it
+// orients the plane like the face: its normal is a positive multiple of the
+// area vector and the polygon check against it decides as the check against
+// the area vector would. Writes that triple into `triple` and, for a face that
+// passes, the corner flags into `corner`.
 FaceVerdict check_face(FaceCorners& face, const Points& points, FaceNormals& normals,
                        std::array<VertexId, 3>& triple, std::vector<char>& corner) {
   const std::vector<Vec3Ref>& pts = face.pts;
   const std::size_t m = pts.size();
   std::size_t k = 2;
-  while (k < m && !not_collinear(face, points, k)) ++k;
+  const VertexId witness = collinearity_witness(face, points);
+  while (k < m && !not_collinear(face, points, witness, k)) ++k;
   if (k == m) return FaceVerdict::failed;
   triple = {VertexId(face.ids[0]), VertexId(face.ids[1]), VertexId(face.ids[k])};
   if (m == 3) {

@@ -56,7 +56,9 @@ struct PlaneFilterExtent {
   void add_value(double x) noexcept {
     max_abs = std::fabs(x) <= max_abs ? max_abs : (std::isnan(x) ? infinity : std::fabs(x));
   }
-  void add_error(double e) noexcept { max_error = e <= max_error ? max_error : (std::isnan(e) ? infinity : e); }
+  void add_error(double e) noexcept {
+    max_error = e <= max_error ? max_error : (std::isnan(e) ? infinity : e);
+  }
   void add(const Approx& c) noexcept {
     add_value(c.value);
     add_error(c.error);

@@ -2,6 +2,7 @@
 // See heap_pages.hpp.
 #include "heap_pages.hpp"
 
+#include <climits>
 #include <cstdint>
 #include <cstdlib>  // first: it defines __GLIBC__, tested below
 
@@ -25,10 +26,14 @@ void* volatile below_first_huge_page = nullptr;
 void prefer_huge_heap_pages() noexcept {
 #if defined(__linux__) && defined(__GLIBC__)
   constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;  // x86-64 and most arm64 kernels
-  // Virtual: nothing is backed until touched. 64 MiB left the last 8 MiB of
-  // Sphere6 + rotated Sphere6 (74 MiB peak) on ordinary pages, 1,900 faults.
+  // Address space: nothing is backed until touched, but it counts against
+  // RLIMIT_AS/RLIMIT_DATA and strict overcommit; where the heap cannot grow
+  // that far, the probe below is mapped elsewhere and nothing is advised.
+  // 64 MiB left the last 8 MiB of Sphere6 + rotated Sphere6 (74 MiB peak)
+  // on ordinary pages, 1,900 faults.
   constexpr int reserve = 256 << 20;
-  constexpr int largest_heap_block = 32 << 20;  // glibc's maximum for M_MMAP_THRESHOLD
+  static_assert(reserve <= INT_MAX / 2, "M_TRIM_THRESHOLD takes 2 * reserve as an int");
+  constexpr int largest_heap_block = 32 << 20;  // glibc's maximum for M_MMAP_THRESHOLD (64-bit)
   constexpr int default_top_pad = 128 << 10;    // glibc's
   // Blocks up to 32 MiB come from the heap (glibc would map each block above
   // 128 KiB on its own, with 4 KiB pages again), and free() does not give
@@ -55,14 +60,16 @@ void prefer_huge_heap_pages() noexcept {
   // map it elsewhere (no room to grow the heap), or another allocator serves
   // malloc (valgrind), nothing is advised or held.
   if (!(at <= old_break && old_break < at + probe_size && begin < end)) return;
-  (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // fails harmlessly without THP
+  if (madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE) != 0) return;  // no THP
   // The freed probe went back to the top of the heap, from which glibc
   // carves new blocks in address order: the next ones would fill [at, begin)
-  // first, up to 2 MiB of ordinary pages below the first huge one (a fault
-  // each, 0 to 512 of them depending on where the randomised heap starts;
-  // `cvms check sphere6.off` took 370 to 890 faults). A block that lives as
-  // long as the process takes that stretch; only its first bytes are ever
-  // touched.
+  // first, 1 to 3 MiB of ordinary pages below the first huge one (a fault
+  // each; `cvms check sphere6.off` took 370 to 890 faults, depending on where
+  // the randomised heap starts). A block that lives as long as the process
+  // takes that stretch; of its pages only the one that held the top's
+  // header is ever backed. (Were there
+  // fastbin blocks, free() would consolidate them and the top would start a
+  // little lower: then a page or two below `begin` serve small blocks.)
   below_first_huge_page = std::malloc(begin - at);
 #endif
 }
