@@ -136,7 +136,7 @@ TEST(ParseUnsigned, SaturatesExactlyBeyond64Bits) {
         "18446744073709551610", "18446744073709551614", "18446744073709551615", "18446744073709551616",
         "18446744073709551619", "18446744073709551620", "99999999999999999999", "0018446744073709551615",
         "123456789012345678901234567890",
-        // 19 digits and fewer take the path without an overflow test
+        // at and just past the 19 digits that need no overflow test
         "9999999999999999999", "1000000000000000000", "0000000000000000009", "10000000000000000000"}) {
     const mpz_class value(token, 10);  // base 10: base 0 reads a leading 0 as octal
     const std::optional<std::uint64_t> parsed = parse_unsigned(token);

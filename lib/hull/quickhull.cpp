@@ -134,8 +134,8 @@ struct HorizonEdge {
 
 class Quickhull {
  public:
-  // Exact input: the filters run on the cached approximations, whose largest
-  // error bound covers every point.
+  // Exact input: the filters run on the points' doubles and the largest error
+  // bound of their approximations, which covers every point.
   explicit Quickhull(std::span<const Vec3> points) : points_(points), exact_input_(true) {
     n_ = checked_size(points.size());
     own_coords_.reserve(n_);

@@ -66,8 +66,8 @@ void prefer_huge_heap_pages() noexcept {
   // first, 1 to 3 MiB of ordinary pages below the first huge one (a fault
   // each; `cvms check sphere6.off` took 370 to 890 faults, depending on where
   // the randomised heap starts). A block that lives as long as the process
-  // takes that stretch; of its pages only the one that held the top's
-  // header is ever backed. (Were there
+  // takes that stretch; of its pages only its first (the probe's header)
+  // and the one that held the top's header are ever backed. (Were there
   // fastbin blocks, free() would consolidate them and the top would start a
   // little lower: then a page or two below `begin` serve small blocks.)
   below_first_huge_page = std::malloc(begin - at);

@@ -17,8 +17,9 @@ namespace cvms::cli {
 /// so that small blocks start on huge pages. Call once, first thing in main.
 /// Where the kernel or the C library cannot (not Linux with glibc, a kernel
 /// without THP, a heap that cannot grow that far), at most glibc's
-/// thresholds change; with THP set to "never" the advice has no effect. Only
-/// speed depends on it, never a result.
+/// thresholds change and the heap keeps up to 256 MiB of unbacked address
+/// space; with THP set to "never" the advice has no effect. Only speed
+/// depends on it, never a result.
 void prefer_huge_heap_pages() noexcept;
 
 }  // namespace cvms::cli
