@@ -113,12 +113,7 @@ class Points {
   // The side of x of the plane through the triple t when a filter proves it:
   // the semi-static one first, else the running-error one.
   [[nodiscard]] std::optional<Sign> side_if_certain(const std::array<VertexId, 3>& t, VertexId x) const {
-    const auto coords = [this](VertexId v) { return coords_of(approx_[v.index()]); };
-    const PlaneFilter plane = triple_plane(t, coords, scale_);
-    if (const std::optional<Sign> side = plane.sign_if_certain(plane.value(coords(x)))) {
-      ++counters_.filtered;
-      return side;
-    }
+    if (const std::optional<Sign> side = semi_static_side(t, x)) return side;
     return orient3d_if_certain((*this)[t[0]], (*this)[t[1]], (*this)[t[2]], (*this)[x]);
   }
 
@@ -126,14 +121,20 @@ class Points {
   // then t is not collinear (for three points on a line the determinant
   // vanishes at every x). False says nothing.
   [[nodiscard]] bool surely_spans_plane(const std::array<VertexId, 3>& t, VertexId x) const {
-    const auto coords = [this](VertexId v) { return coords_of(approx_[v.index()]); };
-    const PlaneFilter plane = triple_plane(t, coords, scale_);
-    if (!plane.sign_if_certain(plane.value(coords(x)))) return false;
-    ++counters_.filtered;
-    return true;
+    return semi_static_side(t, x).has_value();
   }
 
  private:
+  // The side of x of the plane through t when the semi-static filter
+  // proves it (counted as a filtered decision).
+  [[nodiscard]] std::optional<Sign> semi_static_side(const std::array<VertexId, 3>& t, VertexId x) const {
+    const auto coords = [this](VertexId v) { return coords_of(approx_[v.index()]); };
+    const PlaneFilter plane = triple_plane(t, coords, scale_);
+    const std::optional<Sign> side = plane.sign_if_certain(plane.value(coords(x)));
+    if (side) ++counters_.filtered;
+    return side;
+  }
+
   const Mesh& mesh_;
   PredicateCounters& counters_;
   std::vector<ApproxVec3> approx_;
