@@ -94,6 +94,15 @@ std::int64_t live_heap_bytes() noexcept { return live - base; }
 
 }  // namespace cvms_bench
 
+// The library's blocks on huge pages bypass operator new
+// (lib/numeric/huge_page_blocks.hpp): counted here as heap all the same.
+extern "C" void cvms_huge_pages_mapped(std::ptrdiff_t bytes) noexcept {
+  if (bytes >= 0)
+    cvms_bench::count_alloc(static_cast<std::size_t>(bytes));
+  else
+    cvms_bench::count_free(static_cast<std::size_t>(-bytes));
+}
+
 using cvms_bench::allocate;
 using cvms_bench::allocate_or_throw;
 using cvms_bench::deallocate;

@@ -4,7 +4,8 @@
 /// column. Linking heap_counter.cpp into a program replaces the global
 /// operator new/delete (every form) and installs GMP's allocation functions
 /// (mp_set_memory_functions), so both C++ containers and the limbs of
-/// mpz/mpq numbers are counted. Memory that a library takes with malloc
+/// mpz/mpq numbers are counted, and so are the library's large blocks on
+/// huge pages (cvms_huge_pages_mapped, lib/numeric/huge_page_blocks.hpp). Memory that a library takes with malloc
 /// directly (qhull) is not seen.
 ///
 /// The counters are per thread (no atomics on the allocation path): the

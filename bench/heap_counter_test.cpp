@@ -2,8 +2,11 @@
 // Checks that the heap counter behind the benchmarks' peak_heap_bytes sees
 // known allocations: a vector's buffer (operator new), an over-aligned
 // object (aligned operator new) and a large GMP integer (its limbs come from
-// the GMP allocation functions). Exits non-zero on the first failure.
+// the GMP allocation functions), and a large vector on the library's huge pages
+// (on huge pages, past operator new: huge_page_blocks.hpp). Exits non-zero on the first failure.
 #include "heap_counter.hpp"
+
+#include "huge_page_blocks.hpp"
 
 #include <gmpxx.h>
 
@@ -46,6 +49,15 @@ int main() {
   check(cvms_bench::peak_heap_bytes() >= kMiB, "the 1 MiB vector reached the peak");
   check(cvms_bench::peak_heap_bytes() < 2 * kMiB, "nothing else of that size was counted");
   check(cvms_bench::live_heap_bytes() == 0, "freeing the vector returns the live bytes to zero");
+
+  cvms_bench::reset_heap_peak();
+  {
+    cvms::detail::HugePageVector<unsigned char> large(4 * kMiB, 1);
+    sink = large.data();
+    check(cvms_bench::live_heap_bytes() >= static_cast<std::int64_t>(4 * kMiB), "a 4 MiB vector on huge pages is live");
+  }
+  check(cvms_bench::peak_heap_bytes() >= 4 * kMiB, "that vector reached the peak");
+  check(cvms_bench::live_heap_bytes() == 0, "freeing that vector returns the live bytes to zero");
 
   cvms_bench::reset_heap_peak();
   {

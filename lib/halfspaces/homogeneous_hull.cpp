@@ -22,6 +22,7 @@
 #include "approx.hpp"
 #include "filtered_predicates.hpp"
 #include "fixed_det4.hpp"
+#include "huge_page_blocks.hpp"
 #include "hull_soup.hpp"
 #include "index_hash.hpp"
 
@@ -100,10 +101,10 @@ class CofactorCache {
   // makes a worse choice of entry to replace. A returned reference is valid
   // until the next call (which may replace its entry); every caller uses it
   // within one expression.
-  explicit CofactorCache(std::size_t points) {
-    set_bits_ = std::max(cache_bits(points, 2, 12) - kWayBits, 1);
+  explicit CofactorCache(std::size_t points)
+      : set_bits_(std::max(cache_bits(points, 2, 12) - kWayBits, 1)), values_(std::size_t{1} << (set_bits_ + kWayBits)) {
     keys_.resize(std::size_t{1} << (set_bits_ + kWayBits));
-    values_.reset(new Slot[std::size_t{1} << (set_bits_ + kWayBits)]);  // default-initialised: left unwritten
+    // values_ is left unwritten
   }
 
   const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c, const std::vector<FixedRow<E>>& rows) {
@@ -136,8 +137,8 @@ class CofactorCache {
   };
   int set_bits_ = 1;
   std::uint32_t clock_ = 0;
-  std::vector<Key> keys_;
-  std::unique_ptr<Slot[]> values_;
+  HugePageVector<Key> keys_;
+  HugePageArray<Slot> values_;
 };
 
 // The pole of the plane of points i, j, k from their cofactors

@@ -75,6 +75,7 @@
 #include "error_bounds.hpp"
 #include "filter_polynomials.hpp"
 #include "filtered_predicates.hpp"
+#include "huge_page_blocks.hpp"
 #include "index_hash.hpp"
 #include "no_index.hpp"
 #include "plane_filter.hpp"
@@ -88,6 +89,7 @@ constexpr std::uint32_t none = detail::no_index;
 using FacePlane = std::array<std::uint32_t, 3>;
 using detail::cache_bits;
 using detail::index_slot;
+using detail::HugePageVector;
 
 constexpr std::uint32_t next3(std::uint32_t i) { return i == 2 ? 0 : i + 1; }
 constexpr std::uint32_t prev3(std::uint32_t i) { return i == 0 ? 2 : i - 1; }
@@ -797,34 +799,34 @@ class Quickhull {
   bool exact_input_ = false;      // points_ holds the input, else make_exact_ makes it
   std::uint32_t n_ = 0;
   std::span<const Coords> coords_;  // the double approximations
-  std::vector<Coords> own_coords_;
+  HugePageVector<Coords> own_coords_;
   double error_ = 0;  // bounds |coords_ - exact| for every coordinate
   PlaneFilterScale scale_;
   // lazy_[p] indexes the approximations made so far and, for approximate
   // input, the exact points made with them.
   std::function<Vec3(std::uint32_t)> make_exact_;
-  std::vector<std::uint32_t> lazy_;
+  HugePageVector<std::uint32_t> lazy_;
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
   ExactOrient exact_orient_;  // the caller's exact orient3d, if any
-  std::vector<ExactAnswer> answers_;  // exact_answer's slots
+  HugePageVector<ExactAnswer> answers_;  // exact_answer's slots
   int answer_bits_ = 0;               // log2 of their number
   ExactCompareOrient exact_compare_;  // the caller's exact farther-point test, if any
   bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
-  std::vector<PlaneFilter> planes_;    // per triangle slot
-  std::vector<double> far_value_;
-  std::vector<Conflict> pool_;               // the conflict lists
-  std::vector<std::uint32_t> live_lists_;    // compaction's scratch
+  HugePageVector<PlaneFilter> planes_;    // per triangle slot
+  HugePageVector<double> far_value_;
+  HugePageVector<Conflict> pool_;               // the conflict lists
+  HugePageVector<std::uint32_t> live_lists_;    // compaction's scratch
   std::uint32_t live_ = 0;                   // entries of pool_ in live lists
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sources_, moves_;
-  std::vector<std::uint32_t> count_, far_src_;
-  std::vector<std::uint32_t> start_of_;
-  std::vector<Triangle> tris_;
+  HugePageVector<std::uint32_t> count_, far_src_;
+  HugePageVector<std::uint32_t> start_of_;
+  HugePageVector<Triangle> tris_;
   // Exact normals, only for the few triangle slots whose farthest point
   // needed an exact comparison: normal_slot_[t] indexes them (a deque, as
   // moving rationals around would cost an allocation each).
-  std::vector<std::uint32_t> normal_slot_;
+  HugePageVector<std::uint32_t> normal_slot_;
   std::deque<Vec3> normals_;
   std::deque<ApproxVec3> normal_approx_;
   std::vector<std::uint32_t> free_;

@@ -926,8 +926,8 @@ bool ConvexPolyhedron::is_convex() const {
   if (euler_characteristic() != 2) return false;
   if (!approx_ || approx_->vertices.size() != m.num_vertices()) return false;
   const detail::FacetPlanes& made = planes();
-  const std::vector<Vec3>& normals = made.normals;
-  const std::vector<Rational>& offsets = made.offsets;
+  const auto& normals = made.normals;
+  const auto& offsets = made.offsets;
   if (normals.size() != m.num_faces() || made.normal_approx.size() != m.num_faces() ||
       offsets.size() != m.num_faces())
     return false;

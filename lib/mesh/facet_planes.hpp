@@ -22,15 +22,18 @@
 
 #include "approx.hpp"
 #include "cvms/mesh.hpp"
+#include "huge_page_blocks.hpp"
 #include "limb_arena.hpp"
 
 namespace cvms::detail {
 
 /// The planes of the output facets, index by index.
 struct FacetPlanes {
-  std::vector<Vec3> normals;              ///< outward primitive integer normals
-  std::vector<ApproxVec3> normal_approx;  ///< their approximations
-  std::vector<Rational> offsets;          ///< dot(normal, x) for x on the facet
+  // On huge pages when large (huge_page_blocks.hpp): a sum's output makes
+  // them anew in every call.
+  HugePageVector<Vec3> normals;              ///< outward primitive integer normals
+  HugePageVector<ApproxVec3> normal_approx;  ///< their approximations
+  HugePageVector<Rational> offsets;          ///< dot(normal, x) for x on the facet
 };
 
 /// The plane triple of face f: its first three corners, in order (not

@@ -13,6 +13,7 @@
 #include "cvms/error.hpp"
 #include "element_names.hpp"
 #include "face_lists.hpp"
+#include "huge_page_blocks.hpp"
 #include "no_index.hpp"
 #include "representation_order.hpp"
 
@@ -178,7 +179,7 @@ Corners corner_cycles(const std::vector<std::uint32_t>& offsets) {
 
 // Each corner keyed by the undirected vertex pair (smaller << 32 | larger)
 // of its directed edge.
-using KeyedCorners = std::vector<std::pair<std::uint64_t, std::uint32_t>>;
+using KeyedCorners = detail::HugePageVector<std::pair<std::uint64_t, std::uint32_t>>;
 
 // Group the directed edges by their undirected vertex pair, sorted by
 // (smaller, larger) vertex and then by corner: a counting sort by the

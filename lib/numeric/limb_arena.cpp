@@ -14,9 +14,15 @@ namespace {
 constexpr mp_limb_t zero_limb = 0;
 constexpr mp_limb_t one_limb = 1;
 
-// Blocks double from 4 KiB (first_block_limbs) up to 1 MiB: small results
-// stay small, large ones take about ten blocks.
-constexpr std::size_t max_block_limbs = std::size_t{1} << 17;
+// Blocks double from 4 KiB (first_block_limbs) up to 128 KiB, so small
+// results stay small; the next ones are 2 MiB, each one huge page
+// (huge_page_blocks.hpp).
+constexpr std::size_t max_block_limbs = std::size_t{1} << 18;
+
+std::size_t block_after(std::size_t limbs) noexcept {
+  const std::size_t doubled = limbs * 2;
+  return doubled * sizeof(mp_limb_t) >= huge_page_threshold ? max_block_limbs : doubled;
+}
 
 bool is_one(mpz_srcptr z) noexcept { return mpz_size(z) == 1 && mpz_sgn(z) > 0 && mpz_limbs_read(z)[0] == 1; }
 
@@ -79,11 +85,11 @@ mp_limb_t* LimbArena::allocate(std::size_t limbs) {
   if (limbs > free_limbs_) {
     const std::size_t size = std::max(limbs, next_block_limbs_);
     blocks_.reserve(blocks_.size() + 1);  // so that push_back below cannot throw and leak the block
-    blocks_.push_back(std::make_unique_for_overwrite<mp_limb_t[]>(size));
-    free_ = blocks_.back().get();
+    blocks_.emplace_back(size);
+    free_ = blocks_.back().data();
     free_limbs_ = size;
     capacity_limbs_ += size;
-    next_block_limbs_ = std::min(next_block_limbs_ * 2, max_block_limbs);
+    next_block_limbs_ = block_after(next_block_limbs_);
   }
   mp_limb_t* result = free_;
   free_ += limbs;

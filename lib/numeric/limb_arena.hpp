@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "cvms/rational.hpp"
+#include "huge_page_blocks.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms::detail {
@@ -83,7 +84,7 @@ class LimbArena {
  private:
   [[nodiscard]] mp_limb_t* allocate(std::size_t limbs);
 
-  std::vector<std::unique_ptr<mp_limb_t[]>> blocks_;
+  std::vector<HugePageArray<mp_limb_t>> blocks_;  // the large ones on huge pages
   mp_limb_t* free_ = nullptr;  ///< the unused tail of the newest block
   std::size_t free_limbs_ = 0;
   static constexpr std::size_t first_block_limbs = 512;

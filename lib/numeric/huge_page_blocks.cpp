@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// allocate_block and free_block (huge_page_blocks.hpp).
+#include "huge_page_blocks.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#if defined(__SANITIZE_ADDRESS__)
+#define CVMS_BLOCKS_ON_HEAP_ONLY 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CVMS_BLOCKS_ON_HEAP_ONLY 1
+#endif
+#endif
+#if !defined(__linux__) || !defined(MADV_HUGEPAGE)
+#define CVMS_BLOCKS_ON_HEAP_ONLY 1
+#endif
+
+#ifndef CVMS_BLOCKS_ON_HEAP_ONLY
+extern "C" __attribute__((weak)) void cvms_huge_pages_mapped(std::ptrdiff_t /*bytes*/) noexcept {}
+#endif
+
+namespace cvms::detail {
+namespace {
+
+#ifndef CVMS_BLOCKS_ON_HEAP_ONLY
+constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
+
+// `bytes` rounded up to whole huge pages. \pre bytes <= max_mapped_bytes.
+std::size_t mapped_length(std::size_t bytes) noexcept { return (bytes + huge_page_bytes - 1) & ~(huge_page_bytes - 1); }
+
+// Beyond this, the rounding and the alignment slack would overflow.
+constexpr std::size_t max_mapped_bytes = std::numeric_limits<std::size_t>::max() - 2 * huge_page_bytes;
+
+// A mapping of `length` bytes (a multiple of 2 MiB) at a 2 MiB boundary:
+// one 2 MiB longer, then the parts before the boundary and after the block
+// unmapped, so that every 2 MiB of it can be one huge page.
+void* map_huge(std::size_t length) {
+  const std::size_t reserved = length + huge_page_bytes;
+  void* raw = mmap(nullptr, reserved, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  const auto start = reinterpret_cast<std::uintptr_t>(raw);
+  const std::uintptr_t aligned = (start + huge_page_bytes - 1) & ~std::uintptr_t{huge_page_bytes - 1};
+  const std::size_t head = aligned - start;
+  if (head != 0) munmap(raw, head);
+  const std::size_t tail = reserved - head - length;
+  if (tail != 0) munmap(reinterpret_cast<void*>(aligned + length), tail);
+  // Only advice: without it the block is plain memory, as from malloc.
+  madvise(reinterpret_cast<void*>(aligned), length, MADV_HUGEPAGE);
+  return reinterpret_cast<void*>(aligned);
+}
+#endif
+
+}  // namespace
+
+bool on_huge_pages([[maybe_unused]] std::size_t bytes) noexcept {
+#ifndef CVMS_BLOCKS_ON_HEAP_ONLY
+  return bytes >= huge_page_threshold;
+#else
+  return false;
+#endif
+}
+
+void* allocate_block(std::size_t bytes) {
+#ifndef CVMS_BLOCKS_ON_HEAP_ONLY
+  if (on_huge_pages(bytes)) {
+    if (bytes > max_mapped_bytes) throw std::bad_alloc();
+    void* block = map_huge(mapped_length(bytes));
+    cvms_huge_pages_mapped(static_cast<std::ptrdiff_t>(bytes));
+    return block;
+  }
+#endif
+  return ::operator new(bytes);
+}
+
+void free_block(void* block, std::size_t bytes) noexcept {
+  if (block == nullptr) return;
+#ifndef CVMS_BLOCKS_ON_HEAP_ONLY
+  if (on_huge_pages(bytes)) {
+    munmap(block, mapped_length(bytes));
+    cvms_huge_pages_mapped(-static_cast<std::ptrdiff_t>(bytes));
+    return;
+  }
+#endif
+  ::operator delete(block, bytes);
+}
+
+}  // namespace cvms::detail
