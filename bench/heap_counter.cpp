@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <new>
 
+#include "huge_page_blocks.hpp"
+
 namespace cvms_bench {
 namespace {
 

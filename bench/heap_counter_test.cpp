@@ -52,7 +52,7 @@ int main() {
 
   cvms_bench::reset_heap_peak();
   {
-    cvms::detail::HugePageVector<unsigned char> large(4 * kMiB, 1);
+    cvms::detail::ScratchVector<unsigned char> large(4 * kMiB, 1);
     sink = large.data();
     check(cvms_bench::live_heap_bytes() >= static_cast<std::int64_t>(4 * kMiB), "a 4 MiB vector on huge pages is live");
   }

@@ -1,17 +1,25 @@
 // SPDX-License-Identifier: MIT
-// allocate_block and HugePageVector (lib/numeric/huge_page_blocks.hpp):
-// every block is writable over its whole length and keeps what is written,
-// blocks on huge pages are 2 MiB aligned, a vector keeps its contents while
-// it grows across the threshold, and impossible sizes throw instead of
-// crashing. ASan and valgrind check that each block is freed once and that
-// nothing is read or written past its end (the sanitizer builds take
-// operator new: huge_page_blocks.cpp).
+// allocate_block, ScratchVector, KeptVector and HugePageArray
+// (lib/numeric/huge_page_blocks.hpp): every block is writable over its whole
+// length and keeps what is written while other blocks come and go, mapped
+// blocks start at a 2 MiB boundary and are wholly unmapped when freed, a
+// vector keeps its contents while it grows across the thresholds, and
+// impossible sizes throw instead of crashing. Builds under ASan take operator
+// new for every block (ASan then checks bounds and frees); the mapped path is
+// checked here and by the suites that run on it.
 #include <gtest/gtest.h>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+#include <cerrno>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <new>
+#include <utility>
+#include <vector>
 
 #include "huge_page_blocks.hpp"
 
@@ -19,57 +27,138 @@ namespace cvms::detail {
 namespace {
 
 constexpr std::size_t MiB = std::size_t{1} << 20;
+constexpr BlockLife lives[] = {BlockLife::scratch, BlockLife::kept};
 
-TEST(HugePageBlocks, EveryByteOfEverySizeIsUsable) {
-  for (const std::size_t bytes : {std::size_t{1}, std::size_t{4096}, huge_page_threshold - 1, huge_page_threshold,
-                                  huge_page_threshold + 1, 2 * MiB - 1, 2 * MiB, 2 * MiB + 1, 5 * MiB + 3}) {
-    SCOPED_TRACE(bytes);
-    auto* block = static_cast<unsigned char*>(allocate_block(bytes));
-    ASSERT_NE(block, nullptr);
-    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % alignof(std::max_align_t), 0u);
-    if (on_huge_pages(bytes)) {
-      EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % (2 * MiB), 0u);
+unsigned char pattern(std::size_t i, std::size_t seed) { return static_cast<unsigned char>(i * 7 + seed); }
+
+void fill(unsigned char* block, std::size_t bytes, std::size_t seed) {
+  for (std::size_t i = 0; i < bytes; ++i) block[i] = pattern(i, seed);
+}
+
+bool holds(const unsigned char* block, std::size_t bytes, std::size_t seed) {
+  for (std::size_t i = 0; i < bytes; ++i)
+    if (block[i] != pattern(i, seed)) return false;
+  return true;
+}
+
+// Whether any page of [block, block + bytes) is still mapped: mincore fails
+// with ENOMEM exactly on unmapped ranges.
+[[maybe_unused]] bool any_page_mapped(const void* block, std::size_t bytes) {
+#if defined(__linux__)
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  std::vector<unsigned char> residency(1);
+  for (std::size_t offset = 0; offset < bytes; offset += page)
+    if (mincore(const_cast<unsigned char*>(static_cast<const unsigned char*>(block)) + offset, 1,
+                residency.data()) == 0 ||
+        errno != ENOMEM)
+      return true;
+#endif
+  return false;
+}
+
+const std::vector<std::size_t> sizes = {1,
+                                        4096,
+                                        scratch_threshold - 1,
+                                        scratch_threshold,
+                                        scratch_threshold + 1,
+                                        kept_threshold - 1,
+                                        kept_threshold,
+                                        kept_threshold + 1,
+                                        5 * MiB + 3};
+
+TEST(HugePageBlocks, EveryByteOfEverySizeIsUsableWhileOthersComeAndGo) {
+  for (const BlockLife life : lives) {
+    std::vector<std::pair<unsigned char*, std::size_t>> alive;
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+      SCOPED_TRACE(sizes[k]);
+      auto* block = static_cast<unsigned char*>(allocate_block(sizes[k], life));
+      ASSERT_NE(block, nullptr);
+      EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % alignof(std::max_align_t), 0u);
+      if (on_huge_pages(sizes[k], life)) {
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % (2 * MiB), 0u);
+      }
+      fill(block, sizes[k], k);
+      alive.emplace_back(block, sizes[k]);
+      if (k % 3 == 2) {  // free every third block's predecessor: its neighbours must be unharmed
+        auto [freed, bytes] = alive[alive.size() - 2];
+        free_block(freed, bytes, life);
+        alive.erase(alive.end() - 2);
+      }
     }
-    for (std::size_t i = 0; i < bytes; ++i) block[i] = static_cast<unsigned char>(i * 7 + 3);
-    bool kept = true;
-    for (std::size_t i = 0; i < bytes; ++i) kept = kept && block[i] == static_cast<unsigned char>(i * 7 + 3);
-    EXPECT_TRUE(kept);
-    free_block(block, bytes);
+    for (std::size_t k = 0; k < alive.size(); ++k) {
+      const auto [block, bytes] = alive[k];
+      std::size_t seed = 0;
+      while (sizes[seed] != bytes) ++seed;
+      EXPECT_TRUE(holds(block, bytes, seed)) << "block of " << bytes << " bytes";
+      free_block(block, bytes, life);
+    }
   }
 }
 
-TEST(HugePageBlocks, OnlyLargeBlocksGoOnHugePages) {
-  EXPECT_FALSE(on_huge_pages(0));
-  EXPECT_FALSE(on_huge_pages(huge_page_threshold - 1));
+TEST(HugePageBlocks, AMappedBlockIsWhollyUnmappedWhenFreed) {
+  for (const BlockLife life : lives) {
+    for (const std::size_t bytes : {kept_threshold, kept_threshold + 5000, 5 * MiB + 3}) {
+      if (!on_huge_pages(bytes, life)) continue;
+      auto* block = static_cast<unsigned char*>(allocate_block(bytes, life));
+      fill(block, bytes, 1);
+      free_block(block, bytes, life);
+      EXPECT_FALSE(any_page_mapped(block, bytes)) << bytes << " bytes";
+    }
+  }
 }
 
-TEST(HugePageBlocks, AVectorKeepsItsContentsAcrossTheThreshold) {
-  HugePageVector<std::uint64_t> values;
-  const std::size_t count = 3 * huge_page_threshold / sizeof(std::uint64_t) + 17;
-  for (std::uint64_t i = 0; i < count; ++i) values.push_back(i * i + 1);
-  ASSERT_EQ(values.size(), count);
-  for (std::uint64_t i = 0; i < count; ++i) ASSERT_EQ(values[i], i * i + 1) << "at " << i;
-  HugePageVector<std::uint64_t> copy = values;  // a second mapping, freed apart
-  values.clear();
-  values.shrink_to_fit();
+TEST(HugePageBlocks, LinuxBuildsWithoutSanitizersMapLargeBlocks) {
+#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(CVMS_NO_HUGE_PAGE_BLOCKS)
+  EXPECT_TRUE(huge_page_blocks_enabled());
+#endif
+  EXPECT_EQ(on_huge_pages(scratch_threshold, BlockLife::scratch), huge_page_blocks_enabled());
+  EXPECT_EQ(on_huge_pages(kept_threshold, BlockLife::kept), huge_page_blocks_enabled());
+  EXPECT_FALSE(on_huge_pages(scratch_threshold - 1, BlockLife::scratch));
+  EXPECT_FALSE(on_huge_pages(kept_threshold - 1, BlockLife::kept));
+}
+
+TEST(HugePageBlocks, VectorsKeepTheirContentsAcrossTheThresholds) {
+  ScratchVector<std::uint64_t> scratch;
+  KeptVector<std::uint64_t> kept;
+  const std::size_t count = 3 * kept_threshold / sizeof(std::uint64_t) + 17;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    scratch.push_back(i * i + 1);
+    kept.push_back(i * 3 + 2);
+  }
+  ASSERT_EQ(scratch.size(), count);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    ASSERT_EQ(scratch[i], i * i + 1) << "at " << i;
+    ASSERT_EQ(kept[i], i * 3 + 2) << "at " << i;
+  }
+  ScratchVector<std::uint64_t> copy = scratch;  // a second mapping, freed apart
+  scratch.clear();
+  scratch.shrink_to_fit();
   EXPECT_EQ(copy[count - 1], (count - 1) * (count - 1) + 1);
 }
 
-TEST(HugePageBlocks, AnUninitialisedArrayIsWritableWhereUsed) {
-  HugePageArray<std::uint32_t> slots(huge_page_threshold);  // 4 bytes each: above the threshold
+TEST(HugePageBlocks, UninitialisedArraysMoveTheirBlocks) {
+  HugePageArray<std::uint32_t, BlockLife::scratch> slots(
+      scratch_threshold);  // 4 bytes each: above the threshold
   slots[0] = 1;
-  slots[huge_page_threshold - 1] = 2;
-  EXPECT_EQ(slots[0] + slots[huge_page_threshold - 1], 3u);
+  slots[scratch_threshold - 1] = 2;
+  HugePageArray<std::uint32_t, BlockLife::scratch> other(3);
+  other[2] = 5;
+  other = std::move(slots);  // other's old block is freed, slots is left empty
+  EXPECT_EQ(other[0] + other[scratch_threshold - 1], 3u);
+  HugePageArray<std::uint32_t, BlockLife::scratch> moved(std::move(other));
+  EXPECT_EQ(moved[scratch_threshold - 1], 2u);
 }
 
 TEST(HugePageBlocks, ImpossibleSizesThrow) {
-  HugePageAllocator<std::uint64_t> allocator;
+  HugePageAllocator<std::uint64_t, BlockLife::scratch> allocator;
   EXPECT_THROW((void)allocator.allocate(std::numeric_limits<std::size_t>::max() / 4), std::bad_array_new_length);
   // Operator new under AddressSanitizer reports a size this large as an
   // error instead of throwing, so only the mapped path is asked.
-  if (!on_huge_pages(std::size_t{1} << 62)) GTEST_SKIP() << "blocks come from operator new in this build";
-  EXPECT_THROW((void)allocate_block(std::size_t{1} << 62), std::bad_alloc);
-  EXPECT_THROW((void)allocate_block(std::numeric_limits<std::size_t>::max()), std::bad_alloc);
+  if (!huge_page_blocks_enabled()) GTEST_SKIP() << "blocks come from operator new in this build";
+  for (const BlockLife life : lives) {
+    EXPECT_THROW((void)allocate_block(std::size_t{1} << 62, life), std::bad_alloc);
+    EXPECT_THROW((void)allocate_block(std::numeric_limits<std::size_t>::max(), life), std::bad_alloc);
+  }
 }
 
 }  // namespace

@@ -92,22 +92,22 @@ class CofactorCache {
   // alternating runs) 98 → 96 and 94 ms with freed memory kept and 120 →
   // 125 and 130 ms under glibc's default policy, which faults the larger
   // cache's pages in again at every call (3,900 → 5,100 page faults a call
-  // at 2^14). Only the keys are cleared; the cofactors are written when
-  // first used, so a cache larger than the hull needs is neither zeroed nor
-  // faulted in (zeroing it was a tenth of Sphere4's intersection, mostly
-  // page faults). (Keys from calloc, left to the kernel to zero, took
+  // at 2^14; those counts were before the entries went on huge pages,
+  // below). Only the keys are cleared; the cofactors are written when first
+  // used (zeroing them was a tenth of Sphere4's intersection, mostly page
+  // faults). From 256 KiB on (E = 3: 2^10 entries) the entries are one
+  // scratch block on huge pages (huge_page_blocks.hpp), which the kernel
+  // zeroes 2 MiB at a time on first use, one fault each. (Keys from calloc, left to the kernel to zero, took
   // Sphere6 in a benchmark loop from about 37,000 to 52,000 page faults,
   // and longer.) The recency clock may wrap after 2^32 questions: that only
   // makes a worse choice of entry to replace. A returned reference is valid
   // until the next call (which may replace its entry); every caller uses it
   // within one expression.
   explicit CofactorCache(std::size_t points)
-      : set_bits_(std::max(cache_bits(points, 2, 12) - kWayBits, 1)), values_(std::size_t{1} << (set_bits_ + kWayBits)) {
-    keys_.resize(std::size_t{1} << (set_bits_ + kWayBits));
-    // values_ is left unwritten
-  }
+      : set_bits_(set_bits_for(points)), keys_(entries(set_bits_)), values_(entries(set_bits_)) {}
 
-  const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c, const std::vector<FixedRow<E>>& rows) {
+  const Cofactors<E>& cofactors(std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                                const ScratchVector<FixedRow<E>>& rows) {
     const std::size_t first = index_slot(set_bits_, a, b, c) << kWayBits;
     ++clock_;
     std::size_t victim = first;
@@ -135,10 +135,13 @@ class CofactorCache {
   struct Slot {
     alignas(Cofactors<E>) unsigned char bytes[sizeof(Cofactors<E>)];
   };
-  int set_bits_ = 1;
+  static int set_bits_for(std::size_t points) { return std::max(cache_bits(points, 2, 12) - kWayBits, 1); }
+  static std::size_t entries(int set_bits) { return std::size_t{1} << (set_bits + kWayBits); }
+
+  int set_bits_;
   std::uint32_t clock_ = 0;
-  HugePageVector<Key> keys_;
-  HugePageArray<Slot> values_;
+  std::vector<Key> keys_;                           // at most 80 KiB
+  HugePageArray<Slot, BlockLife::scratch> values_;  // left unwritten
 };
 
 // The pole of the plane of points i, j, k from their cofactors
@@ -173,7 +176,7 @@ PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& 
 template <int E>
 PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const ApproximatePoints& approx,
                           std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles) {
-  std::vector<FixedRow<E>> rows;
+  ScratchVector<FixedRow<E>> rows;
   rows.reserve(points.size());
   for (const HomogeneousPoint& p : points)
     rows.push_back(fixed_row<E>({p.x.get_mpz_t(), p.y.get_mpz_t(), p.z.get_mpz_t(), p.w.get_mpz_t()}));

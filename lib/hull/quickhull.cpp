@@ -89,7 +89,7 @@ constexpr std::uint32_t none = detail::no_index;
 using FacePlane = std::array<std::uint32_t, 3>;
 using detail::cache_bits;
 using detail::index_slot;
-using detail::HugePageVector;
+using detail::ScratchVector;
 
 constexpr std::uint32_t next3(std::uint32_t i) { return i == 2 ? 0 : i + 1; }
 constexpr std::uint32_t prev3(std::uint32_t i) { return i == 0 ? 2 : i - 1; }
@@ -584,21 +584,16 @@ class Quickhull {
     return none;  // unreachable on a consistent triangulation
   }
 
-  // Room for the triangles of a hull of all n points (2n − 4, plus a cone)
-  // and for the conflict lists' growth, up to 2^20 triangles: growing these
-  // vectors copied them into fresh memory again and again (on Sphere6's
-  // dual points, a third of the page faults of a from_halfspaces call).
-  // Only what is used is ever touched: at the caps (n >= 2^19 points) the
-  // reservation is about 120 MB of address space, which large allocations
-  // map without committing; the conflict pool always holds the n initial
-  // conflicts, as before, and after the first distribution is compacted
-  // rather than grown (make_room).
+  // Room for the conflict lists' growth: the pool always holds the n
+  // initial conflicts, and after the first distribution is compacted rather
+  // than grown (make_room). The triangles are not reserved for: a hull of
+  // all n points needs 2n − 4, a cube's random points a few dozen. Large
+  // arrays lie on huge pages (huge_page_blocks.hpp), where a reservation is
+  // zeroed 2 MiB at a time on first use (reserving 2n + 8 made the hull of
+  // 10,000 points in a cube 1.36 times slower) and growing costs a copy but
+  // few page faults.
   void reserve_for_points() {
     const std::size_t n = n_;
-    const std::size_t triangles = std::min<std::size_t>(2 * n + 8, std::size_t{1} << 20);
-    tris_.reserve(triangles);
-    planes_.reserve(triangles);
-    normal_slot_.reserve(triangles);
     pool_.reserve(std::max(n, std::min<std::size_t>(2 * n, std::size_t{1} << 21)));
   }
 
@@ -799,34 +794,34 @@ class Quickhull {
   bool exact_input_ = false;      // points_ holds the input, else make_exact_ makes it
   std::uint32_t n_ = 0;
   std::span<const Coords> coords_;  // the double approximations
-  HugePageVector<Coords> own_coords_;
+  ScratchVector<Coords> own_coords_;
   double error_ = 0;  // bounds |coords_ - exact| for every coordinate
   PlaneFilterScale scale_;
   // lazy_[p] indexes the approximations made so far and, for approximate
   // input, the exact points made with them.
   std::function<Vec3(std::uint32_t)> make_exact_;
-  HugePageVector<std::uint32_t> lazy_;
+  ScratchVector<std::uint32_t> lazy_;
   std::deque<Vec3> lazy_points_;
   std::deque<ApproxVec3> lazy_approx_;
   ExactOrient exact_orient_;  // the caller's exact orient3d, if any
-  HugePageVector<ExactAnswer> answers_;  // exact_answer's slots
+  ScratchVector<ExactAnswer> answers_;  // exact_answer's slots
   int answer_bits_ = 0;               // log2 of their number
   ExactCompareOrient exact_compare_;  // the caller's exact farther-point test, if any
   bool copy_points_ = true;   // false: the caller knows its points by index
   std::uint64_t plane_decisions_ = 0;  // answers of the filters in this file
-  HugePageVector<PlaneFilter> planes_;    // per triangle slot
-  HugePageVector<double> far_value_;
-  HugePageVector<Conflict> pool_;               // the conflict lists
-  HugePageVector<std::uint32_t> live_lists_;    // compaction's scratch
+  ScratchVector<PlaneFilter> planes_;  // per triangle slot
+  ScratchVector<double> far_value_;
+  ScratchVector<Conflict> pool_;             // the conflict lists
+  ScratchVector<std::uint32_t> live_lists_;  // compaction's scratch
   std::uint32_t live_ = 0;                   // entries of pool_ in live lists
   std::vector<std::pair<std::uint32_t, std::uint32_t>> sources_, moves_;
-  HugePageVector<std::uint32_t> count_, far_src_;
-  HugePageVector<std::uint32_t> start_of_;
-  HugePageVector<Triangle> tris_;
+  ScratchVector<std::uint32_t> count_, far_src_;
+  ScratchVector<std::uint32_t> start_of_;
+  ScratchVector<Triangle> tris_;
   // Exact normals, only for the few triangle slots whose farthest point
   // needed an exact comparison: normal_slot_[t] indexes them (a deque, as
   // moving rationals around would cost an allocation each).
-  HugePageVector<std::uint32_t> normal_slot_;
+  ScratchVector<std::uint32_t> normal_slot_;
   std::deque<Vec3> normals_;
   std::deque<ApproxVec3> normal_approx_;
   std::vector<std::uint32_t> free_;

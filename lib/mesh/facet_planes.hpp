@@ -31,9 +31,9 @@ namespace cvms::detail {
 struct FacetPlanes {
   // On huge pages when large (huge_page_blocks.hpp): a sum's output makes
   // them anew in every call.
-  HugePageVector<Vec3> normals;              ///< outward primitive integer normals
-  HugePageVector<ApproxVec3> normal_approx;  ///< their approximations
-  HugePageVector<Rational> offsets;          ///< dot(normal, x) for x on the facet
+  KeptVector<Vec3> normals;              ///< outward primitive integer normals
+  KeptVector<ApproxVec3> normal_approx;  ///< their approximations
+  KeptVector<Rational> offsets;          ///< dot(normal, x) for x on the facet
 };
 
 /// The plane triple of face f: its first three corners, in order (not

@@ -29,11 +29,11 @@ struct FirstUse {
 /// is the keys' equality). O(n log n) comparisons.
 template <class Key, class Less>
 FirstUse first_use(const std::vector<Key>& keys, Less less) {
-  HugePageVector<std::size_t> order(keys.size());
+  ScratchVector<std::size_t> order(keys.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   // Stable: within a run of equal keys the first use comes first.
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return less(keys[a], keys[b]); });
-  HugePageVector<std::size_t> leader(keys.size());
+  ScratchVector<std::size_t> leader(keys.size());
   for (std::size_t k = 0; k < order.size(); ++k)
     leader[order[k]] = k > 0 && !less(keys[order[k - 1]], keys[order[k]]) ? leader[order[k - 1]] : order[k];
   FirstUse out;

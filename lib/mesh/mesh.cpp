@@ -179,7 +179,7 @@ Corners corner_cycles(const std::vector<std::uint32_t>& offsets) {
 
 // Each corner keyed by the undirected vertex pair (smaller << 32 | larger)
 // of its directed edge.
-using KeyedCorners = detail::HugePageVector<std::pair<std::uint64_t, std::uint32_t>>;
+using KeyedCorners = detail::ScratchVector<std::pair<std::uint64_t, std::uint32_t>>;
 
 // Group the directed edges by their undirected vertex pair, sorted by
 // (smaller, larger) vertex and then by corner: a counting sort by the

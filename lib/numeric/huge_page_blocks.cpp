@@ -8,16 +8,18 @@
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
-#if defined(__SANITIZE_ADDRESS__)
+// Sanitizers that check memory see only blocks from their own allocator.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_HWADDRESS__)
 #define CVMS_BLOCKS_ON_HEAP_ONLY 1
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
+#if __has_feature(address_sanitizer) || __has_feature(hwaddress_sanitizer) || __has_feature(memory_sanitizer)
 #define CVMS_BLOCKS_ON_HEAP_ONLY 1
 #endif
 #endif
-#if !defined(__linux__) || !defined(MADV_HUGEPAGE)
+#if !defined(__linux__) || !defined(MADV_HUGEPAGE) || defined(CVMS_NO_HUGE_PAGE_BLOCKS)
 #define CVMS_BLOCKS_ON_HEAP_ONLY 1
 #endif
 
@@ -30,16 +32,22 @@ namespace {
 
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
 constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
+// The mapping's length for `bytes` (see the file comment).
+// \pre bytes <= max_mapped_bytes.
+std::size_t mapped_length(std::size_t bytes, BlockLife life) noexcept {
+  const std::size_t unit =
+      life == BlockLife::scratch ? huge_page_bytes : static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  return (bytes + unit - 1) & ~(unit - 1);
+}
 
-// `bytes` rounded up to whole huge pages. \pre bytes <= max_mapped_bytes.
-std::size_t mapped_length(std::size_t bytes) noexcept { return (bytes + huge_page_bytes - 1) & ~(huge_page_bytes - 1); }
+// Beyond this, the rounding and the alignment slack would overflow, or the
+// hook's signed count.
+constexpr std::size_t max_mapped_bytes =
+    static_cast<std::size_t>(std::numeric_limits<std::ptrdiff_t>::max()) - 2 * huge_page_bytes;
 
-// Beyond this, the rounding and the alignment slack would overflow.
-constexpr std::size_t max_mapped_bytes = std::numeric_limits<std::size_t>::max() - 2 * huge_page_bytes;
-
-// A mapping of `length` bytes (a multiple of 2 MiB) at a 2 MiB boundary:
-// one 2 MiB longer, then the parts before the boundary and after the block
-// unmapped, so that every 2 MiB of it can be one huge page.
+// A mapping of `length` bytes starting at a 2 MiB boundary: one 2 MiB
+// longer, then the parts before the boundary and after the block unmapped,
+// so that every whole 2 MiB of it can be one huge page.
 void* map_huge(std::size_t length) {
   const std::size_t reserved = length + huge_page_bytes;
   void* raw = mmap(nullptr, reserved, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -58,19 +66,24 @@ void* map_huge(std::size_t length) {
 
 }  // namespace
 
-bool on_huge_pages([[maybe_unused]] std::size_t bytes) noexcept {
+bool huge_page_blocks_enabled() noexcept {
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
-  return bytes >= huge_page_threshold;
+  return true;
 #else
   return false;
 #endif
 }
 
-void* allocate_block(std::size_t bytes) {
+bool on_huge_pages(std::size_t bytes, BlockLife life) noexcept {
+  return huge_page_blocks_enabled() &&
+         bytes >= (life == BlockLife::scratch ? scratch_threshold : kept_threshold);
+}
+
+void* allocate_block(std::size_t bytes, BlockLife life) {
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
-  if (on_huge_pages(bytes)) {
+  if (on_huge_pages(bytes, life)) {
     if (bytes > max_mapped_bytes) throw std::bad_alloc();
-    void* block = map_huge(mapped_length(bytes));
+    void* block = map_huge(mapped_length(bytes, life));
     cvms_huge_pages_mapped(static_cast<std::ptrdiff_t>(bytes));
     return block;
   }
@@ -78,11 +91,11 @@ void* allocate_block(std::size_t bytes) {
   return ::operator new(bytes);
 }
 
-void free_block(void* block, std::size_t bytes) noexcept {
+void free_block(void* block, std::size_t bytes, [[maybe_unused]] BlockLife life) noexcept {
   if (block == nullptr) return;
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
-  if (on_huge_pages(bytes)) {
-    munmap(block, mapped_length(bytes));
+  if (on_huge_pages(bytes, life)) {
+    munmap(block, mapped_length(bytes, life));
     cvms_huge_pages_mapped(-static_cast<std::ptrdiff_t>(bytes));
     return;
   }

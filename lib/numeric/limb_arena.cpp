@@ -14,14 +14,17 @@ namespace {
 constexpr mp_limb_t zero_limb = 0;
 constexpr mp_limb_t one_limb = 1;
 
-// Blocks double from 4 KiB (first_block_limbs) up to 128 KiB, so small
-// results stay small; the next ones are 2 MiB, each one huge page
-// (huge_page_blocks.hpp).
-constexpr std::size_t max_block_limbs = std::size_t{1} << 18;
+// Blocks double from 4 KiB (first_block_limbs) up to 1 MiB: small results
+// stay small, large ones take about ten blocks. Where large blocks go on
+// huge pages (huge_page_blocks.hpp), the blocks after 1 MiB are 2 MiB, one
+// huge page each.
+constexpr std::size_t max_heap_block_limbs = std::size_t{1} << 17;
+constexpr std::size_t huge_block_limbs = kept_threshold / sizeof(mp_limb_t);
 
 std::size_t block_after(std::size_t limbs) noexcept {
-  const std::size_t doubled = limbs * 2;
-  return doubled * sizeof(mp_limb_t) >= huge_page_threshold ? max_block_limbs : doubled;
+  if (limbs >= max_heap_block_limbs)
+    return huge_page_blocks_enabled() ? huge_block_limbs : max_heap_block_limbs;
+  return limbs * 2;
 }
 
 bool is_one(mpz_srcptr z) noexcept { return mpz_size(z) == 1 && mpz_sgn(z) > 0 && mpz_limbs_read(z)[0] == 1; }
@@ -84,7 +87,6 @@ LimbArena& LimbArena::operator=(LimbArena&& other) noexcept {
 mp_limb_t* LimbArena::allocate(std::size_t limbs) {
   if (limbs > free_limbs_) {
     const std::size_t size = std::max(limbs, next_block_limbs_);
-    blocks_.reserve(blocks_.size() + 1);  // so that push_back below cannot throw and leak the block
     blocks_.emplace_back(size);
     free_ = blocks_.back().data();
     free_limbs_ = size;

@@ -84,7 +84,7 @@ class LimbArena {
  private:
   [[nodiscard]] mp_limb_t* allocate(std::size_t limbs);
 
-  std::vector<HugePageArray<mp_limb_t>> blocks_;  // the large ones on huge pages
+  std::vector<HugePageArray<mp_limb_t, BlockLife::kept>> blocks_;  // the large ones on huge pages
   mp_limb_t* free_ = nullptr;  ///< the unused tail of the newest block
   std::size_t free_limbs_ = 0;
   static constexpr std::size_t first_block_limbs = 512;
