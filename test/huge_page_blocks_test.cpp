@@ -41,20 +41,23 @@ bool holds(const unsigned char* block, std::size_t bytes, std::size_t seed) {
   return true;
 }
 
-// Whether any page of [block, block + bytes) is still mapped: mincore fails
-// with ENOMEM exactly on unmapped ranges.
-[[maybe_unused]] bool any_page_mapped(const void* block, std::size_t bytes) {
 #if defined(__linux__)
-  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-  std::vector<unsigned char> residency(1);
-  for (std::size_t offset = 0; offset < bytes; offset += page)
-    if (mincore(const_cast<unsigned char*>(static_cast<const unsigned char*>(block)) + offset, 1,
-                residency.data()) == 0 ||
-        errno != ENOMEM)
-      return true;
-#endif
-  return false;
+std::size_t page_bytes() { return static_cast<std::size_t>(sysconf(_SC_PAGESIZE)); }
+
+// Whether the page at `address` is mapped: mincore fails with ENOMEM exactly
+// on unmapped ranges.
+bool page_mapped(const unsigned char* address) {
+  unsigned char residency = 0;
+  const auto page = reinterpret_cast<std::uintptr_t>(address) & ~std::uintptr_t{page_bytes() - 1};
+  return mincore(reinterpret_cast<void*>(page), 1, &residency) == 0 || errno != ENOMEM;
 }
+
+// The length a mapped block takes (huge_page_blocks.hpp).
+std::size_t mapped_length(std::size_t bytes, BlockLife life) {
+  const std::size_t unit = life == BlockLife::scratch ? 2 * (std::size_t{1} << 20) : page_bytes();
+  return (bytes + unit - 1) / unit * unit;
+}
+#endif
 
 const std::vector<std::size_t> sizes = {1,
                                         4096,
@@ -95,20 +98,34 @@ TEST(HugePageBlocks, EveryByteOfEverySizeIsUsableWhileOthersComeAndGo) {
   }
 }
 
-TEST(HugePageBlocks, AMappedBlockIsWhollyUnmappedWhenFreed) {
+TEST(HugePageBlocks, AMappedBlockHasItsLengthAndIsWhollyUnmappedWhenFreed) {
+#if defined(__linux__)
   for (const BlockLife life : lives) {
-    for (const std::size_t bytes : {kept_threshold, kept_threshold + 5000, 5 * MiB + 3}) {
+    for (const std::size_t bytes :
+         {scratch_threshold, scratch_threshold + 5000, kept_threshold, kept_threshold + 5000, 5 * MiB + 3}) {
       if (!on_huge_pages(bytes, life)) continue;
+      SCOPED_TRACE(bytes);
       auto* block = static_cast<unsigned char*>(allocate_block(bytes, life));
+      const std::size_t length = mapped_length(bytes, life);
+      // The alignment slack around the block was given back; the block's
+      // own rounding was not.
+      EXPECT_TRUE(page_mapped(block + length - 1));
+      EXPECT_FALSE(page_mapped(block + length));
       fill(block, bytes, 1);
       free_block(block, bytes, life);
-      EXPECT_FALSE(any_page_mapped(block, bytes)) << bytes << " bytes";
+      bool any_mapped = false;
+      for (std::size_t offset = 0; offset < length; offset += page_bytes())
+        any_mapped = any_mapped || page_mapped(block + offset);
+      EXPECT_FALSE(any_mapped);
     }
   }
+#else
+  GTEST_SKIP() << "blocks are mapped on Linux only";
+#endif
 }
 
 TEST(HugePageBlocks, LinuxBuildsWithoutSanitizersMapLargeBlocks) {
-#if defined(__linux__) && !defined(__SANITIZE_ADDRESS__) && !defined(CVMS_NO_HUGE_PAGE_BLOCKS)
+#if !defined(CVMS_BLOCKS_ON_HEAP_ONLY) && defined(MADV_HUGEPAGE)
   EXPECT_TRUE(huge_page_blocks_enabled());
 #endif
   EXPECT_EQ(on_huge_pages(scratch_threshold, BlockLife::scratch), huge_page_blocks_enabled());

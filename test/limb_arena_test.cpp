@@ -79,6 +79,20 @@ TEST(LimbArena, StoredValuesEqualTheOriginalsAndBehaveAsRationals) {
   }
 }
 
+// Past 1 MiB the arena's blocks are 2 MiB, on huge pages where the build
+// maps large blocks (huge_page_blocks.hpp): more than 5 MiB of limbs, every
+// value read back against its original.
+TEST(LimbArena, LargeArenasKeepEveryValue) {
+  if (!LimbArena::holds_limbs()) GTEST_SKIP() << "values own their limbs with this GMP";
+  const mpz_class base = (mpz_class(1) << 1000) + 12345;  // 16 limbs
+  constexpr std::size_t count = 45000;                    // 45,000 * 16 * 8 bytes = 5.8 MB
+  LimbArena arena;
+  std::vector<Rational> stored(count);
+  for (std::size_t i = 0; i < count; ++i) arena.store(stored[i], Rational(base + i));
+  EXPECT_GE(arena.capacity_bytes(), count * 16 * sizeof(mp_limb_t));
+  for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(stored[i], Rational(base + i)) << i;
+}
+
 // Integers stored from their limbs: 0, 1 and -1 (views of constants), one
 // and two limbs of either sign, over values that held fractions before;
 // against the same integers made by GMP, as views when the arena holds limbs.

@@ -586,20 +586,22 @@ class Quickhull {
 
   // Room for the conflict lists' growth: the pool always holds the n
   // initial conflicts, and after the first distribution is compacted rather
-  // than grown (make_room). And room for the triangles of a hull of all n
-  // points (2n − 4, plus a cone) where most points are expected on the hull:
-  // the dual points of from_halfspaces (every irredundant row's is), the
-  // only caller with its own exact orient3d. Growing those arrays copied
-  // them into fresh memory again and again (on Sphere5's dual points 21.5
-  // against 17.6 ms). A point cloud's hull (a cube's random points: a few
-  // dozen triangles) reserves nothing: large arrays lie on huge pages
-  // (huge_page_blocks.hpp), where a reservation is zeroed 2 MiB at a time on
-  // first use (reserving 2n + 8 made the hull of 10,000 points in a cube
-  // 1.36 times slower).
+  // than grown (make_room). And, for from_halfspaces' dual points (the only
+  // caller with its own exact orient3d), room for the triangles of a hull
+  // of all n points (2n − 4, plus a cone), since every irredundant row's
+  // point is on the hull, but no more than one 2 MiB huge page holds
+  // (huge_page_blocks.hpp): growing through the smaller sizes made Sphere5's
+  // rows 21.5 against 17.9 ms, and reserving for all of 100,000 redundant
+  // rows zeroed 22 MB it did not use. A point cloud's hull (a cube's random
+  // points: a few dozen triangles) reserves nothing, as a reservation on
+  // huge pages is zeroed 2 MiB at a time on first use (reserving 2n + 8
+  // made the hull of 10,000 points in a cube 1.36 times slower).
   void reserve_for_points() {
     const std::size_t n = n_;
     if (exact_orient_) {
-      const std::size_t triangles = std::min<std::size_t>(2 * n + 8, std::size_t{1} << 20);
+      constexpr std::size_t one_huge_page =
+          (std::size_t{2} << 20) / std::max(sizeof(Triangle), sizeof(PlaneFilter));
+      const std::size_t triangles = std::min(2 * n + 8, one_huge_page);
       tris_.reserve(triangles);
       planes_.reserve(triangles);
       normal_slot_.reserve(triangles);

@@ -11,15 +11,7 @@
 #include <unistd.h>
 #endif
 
-// Sanitizers that check memory see only blocks from their own allocator.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_HWADDRESS__)
-#define CVMS_BLOCKS_ON_HEAP_ONLY 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(hwaddress_sanitizer) || __has_feature(memory_sanitizer)
-#define CVMS_BLOCKS_ON_HEAP_ONLY 1
-#endif
-#endif
-#if !defined(__linux__) || !defined(MADV_HUGEPAGE) || defined(CVMS_NO_HUGE_PAGE_BLOCKS)
+#if !defined(MADV_HUGEPAGE) && !defined(CVMS_BLOCKS_ON_HEAP_ONLY)
 #define CVMS_BLOCKS_ON_HEAP_ONLY 1
 #endif
 

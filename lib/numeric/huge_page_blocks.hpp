@@ -21,17 +21,19 @@
 //    little costs one huge page of zeroing where 4 KiB pages would have cost
 //    a few faults.
 //  - Kept, part of a result that may live long: from 2 MiB on, rounded up
-//    to 4 KiB only, so that every whole 2 MiB of it is a huge page and the
-//    tail takes what it touches, as from malloc; a result never holds more
-//    memory than before.
-// Where THP is "never" the advice changes nothing and the pages fault as
-// glibc's own mappings would; a program that tuned malloc to keep freed
-// memory then faults these blocks in again at every call. Smaller blocks,
-// other platforms, builds under a sanitizer that checks memory (which sees
-// only its own heap) and builds with CVMS_HUGE_PAGE_BLOCKS=OFF (CMake) take
-// operator new. valgrind sees the mappings but not their contents' use. No
-// state is kept anywhere: which path a block took follows from its kind and
-// size alone, so that freeing finds it.
+//    to the page size only, so that every whole 2 MiB of it is a huge page
+//    and the tail takes what it touches, as from malloc. The limb arena's
+//    blocks past 1 MiB are 2 MiB, wholly resident once first written: a
+//    result may hold up to one partly used 2 MiB block per arena more than
+//    before (a sum on two threads keeps two arenas).
+// The kernel may stall such a fault to compact memory for a huge page (THP
+// defrag setting "madvise", the usual default). Where THP is "never" the
+// advice changes nothing and the pages fault as glibc's own mappings would; a program that tuned malloc to
+// keep freed memory then faults these blocks in again at every call. Smaller blocks, other platforms, builds
+// under a sanitizer that checks memory (which sees only its own heap) and builds with
+// CVMS_HUGE_PAGE_BLOCKS=OFF (CMake) take operator new. valgrind sees the mappings but not their contents'
+// use. No state is kept anywhere: which path a block took follows from its kind and size alone, so that
+// freeing finds it.
 #pragma once
 
 #include <cstddef>
@@ -40,6 +42,18 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+// Sanitizers that check memory see only blocks from their own allocator;
+// mapping needs Linux's MADV_HUGEPAGE. Where this is defined, every block
+// comes from operator new.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_HWADDRESS__) || defined(CVMS_NO_HUGE_PAGE_BLOCKS) || \
+    !defined(__linux__)
+#define CVMS_BLOCKS_ON_HEAP_ONLY 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(hwaddress_sanitizer) || __has_feature(memory_sanitizer)
+#define CVMS_BLOCKS_ON_HEAP_ONLY 1
+#endif
+#endif
 
 /// Internal to cvms (not an API): called with +bytes when a block of
 /// `bytes` bytes is mapped and with -bytes when it is unmapped. A weak no-op
