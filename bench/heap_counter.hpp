@@ -5,8 +5,8 @@
 /// operator new/delete (every form) and installs GMP's allocation functions
 /// (mp_set_memory_functions), so both C++ containers and the limbs of
 /// mpz/mpq numbers are counted, and so are the library's large blocks on
-/// huge pages (cvms_huge_pages_mapped, lib/numeric/huge_page_blocks.hpp). Memory that a library takes with malloc
-/// directly (qhull) is not seen.
+/// huge pages (cvms_huge_pages_mapped, lib/numeric/huge_page_blocks.hpp).
+/// Memory that a library takes with malloc directly (qhull) is not seen.
 ///
 /// The counters are per thread (no atomics on the allocation path): the
 /// benchmarks are single-threaded. Bytes are the sizes requested, without

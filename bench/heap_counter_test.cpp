@@ -6,14 +6,14 @@
 // (on huge pages, past operator new: huge_page_blocks.hpp). Exits non-zero on the first failure.
 #include "heap_counter.hpp"
 
-#include "huge_page_blocks.hpp"
-
 #include <gmpxx.h>
 
 #include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <vector>
+
+#include "huge_page_blocks.hpp"
 
 namespace {
 
@@ -54,7 +54,8 @@ int main() {
   {
     cvms::detail::ScratchVector<unsigned char> large(4 * kMiB, 1);
     sink = large.data();
-    check(cvms_bench::live_heap_bytes() >= static_cast<std::int64_t>(4 * kMiB), "a 4 MiB vector on huge pages is live");
+    check(cvms_bench::live_heap_bytes() >= static_cast<std::int64_t>(4 * kMiB),
+          "a 4 MiB vector on huge pages is live");
   }
   check(cvms_bench::peak_heap_bytes() >= 4 * kMiB, "that vector reached the peak");
   check(cvms_bench::live_heap_bytes() == 0, "freeing that vector returns the live bytes to zero");

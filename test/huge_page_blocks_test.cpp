@@ -168,7 +168,8 @@ TEST(HugePageBlocks, UninitialisedArraysMoveTheirBlocks) {
 
 TEST(HugePageBlocks, ImpossibleSizesThrow) {
   HugePageAllocator<std::uint64_t, BlockLife::scratch> allocator;
-  EXPECT_THROW((void)allocator.allocate(std::numeric_limits<std::size_t>::max() / 4), std::bad_array_new_length);
+  EXPECT_THROW((void)allocator.allocate(std::numeric_limits<std::size_t>::max() / 4),
+               std::bad_array_new_length);
   // Operator new under AddressSanitizer reports a size this large as an
   // error instead of throwing, so only the mapped path is asked.
   if (!huge_page_blocks_enabled()) GTEST_SKIP() << "blocks come from operator new in this build";

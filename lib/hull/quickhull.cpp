@@ -56,8 +56,6 @@
 // the eye and c lie on opposite sides of that line; T and h run the edge
 // in opposite directions, so they have the same orientation in P, that is,
 // the same outward normal, which h's triple has too.
-#include "hull_soup.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -68,14 +66,15 @@
 #include <utility>
 
 #include "approx.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
-#include "cvms/convex_hull.hpp"
 #include "dyadic_orient.hpp"
 #include "error_bounds.hpp"
 #include "filter_polynomials.hpp"
 #include "filtered_predicates.hpp"
 #include "huge_page_blocks.hpp"
+#include "hull_soup.hpp"
 #include "index_hash.hpp"
 #include "no_index.hpp"
 #include "plane_filter.hpp"

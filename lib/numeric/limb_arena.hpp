@@ -36,8 +36,8 @@
 #include <vector>
 
 #include "cvms/rational.hpp"
-#include "huge_page_blocks.hpp"
 #include "cvms/vec.hpp"
+#include "huge_page_blocks.hpp"
 
 namespace cvms::detail {
 
