@@ -71,7 +71,7 @@ bool on_huge_pages(std::size_t bytes, BlockLife life) noexcept {
          bytes >= (life == BlockLife::scratch ? scratch_threshold : kept_threshold);
 }
 
-void* allocate_block(std::size_t bytes, BlockLife life) {
+void* allocate_block(std::size_t bytes, [[maybe_unused]] BlockLife life) {
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
   if (on_huge_pages(bytes, life)) {
     if (bytes > max_mapped_bytes) throw std::bad_alloc();
