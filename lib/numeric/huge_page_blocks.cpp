@@ -83,7 +83,7 @@ void* allocate_block(std::size_t bytes, [[maybe_unused]] BlockLife life) {
   return ::operator new(bytes);
 }
 
-void free_block(void* block, std::size_t bytes, [[maybe_unused]] BlockLife life) noexcept {
+void free_block(void* block, [[maybe_unused]] std::size_t bytes, [[maybe_unused]] BlockLife life) noexcept {
   if (block == nullptr) return;
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
   if (on_huge_pages(bytes, life)) {
@@ -92,7 +92,7 @@ void free_block(void* block, std::size_t bytes, [[maybe_unused]] BlockLife life)
     return;
   }
 #endif
-  ::operator delete(block, bytes);
+  ::operator delete(block);  // unsized: clang offers the sized form only with -fsized-deallocation
 }
 
 }  // namespace cvms::detail
