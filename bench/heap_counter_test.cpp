@@ -2,8 +2,9 @@
 // Checks that the heap counter behind the benchmarks' peak_heap_bytes sees
 // known allocations: a vector's buffer (operator new), an over-aligned
 // object (aligned operator new) and a large GMP integer (its limbs come from
-// the GMP allocation functions), and a large vector on the library's huge pages
-// (on huge pages, past operator new: huge_page_blocks.hpp). Exits non-zero on the first failure.
+// the GMP allocation functions), and a large vector on the library's huge
+// pages (past operator new: huge_page_blocks.hpp). Exits non-zero on the
+// first failure.
 #include "heap_counter.hpp"
 
 #include <gmpxx.h>

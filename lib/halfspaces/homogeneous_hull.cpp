@@ -97,9 +97,9 @@ class CofactorCache {
   // used (zeroing them was a tenth of Sphere4's intersection, mostly page
   // faults). From 256 KiB on (E = 3: 2^10 entries) the entries are one
   // scratch block on huge pages (huge_page_blocks.hpp), which the kernel
-  // zeroes 2 MiB at a time on first use, one fault each. (Keys from calloc, left to the kernel to zero, took
-  // Sphere6 in a benchmark loop from about 37,000 to 52,000 page faults,
-  // and longer.) The recency clock may wrap after 2^32 questions: that only
+  // zeroes 2 MiB at a time on first use, one fault each. (Keys from calloc,
+  // left to the kernel to zero, took Sphere6 in a benchmark loop from about
+  // 37,000 to 52,000 page faults, and longer.) The recency clock may wrap after 2^32 questions: that only
   // makes a worse choice of entry to replace. A returned reference is valid
   // until the next call (which may replace its entry); every caller uses it
   // within one expression.

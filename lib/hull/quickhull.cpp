@@ -412,7 +412,7 @@ class Quickhull {
       free_.pop_back();
     } else {
       t = static_cast<std::uint32_t>(tris_.size());
-      if (t == tris_.capacity()) reserve_triangles(t);
+      if (exact_orient_ && t == tris_.capacity()) reserve_dual_triangles(t);
       tris_.emplace_back();
       planes_.emplace_back();
       normal_slot_.push_back(none);
@@ -592,27 +592,26 @@ class Quickhull {
     pool_.reserve(std::max(n, std::min<std::size_t>(2 * n, std::size_t{1} << 21)));
   }
 
-  // Room for more triangles when `used` fill the arrays. They grow as
-  // vectors do, except for from_halfspaces' dual points (the only caller
-  // with its own exact orient3d), nearly all of which are on the hull when
-  // few rows are redundant: there, once past the 4,096 triangles that stay
-  // below the huge-page threshold, they take room for all of the 2n − 4 of a
-  // hull of all n points (plus a cone) at once, up to what one 2 MiB huge
-  // page holds (huge_page_blocks.hpp), then the rest of it. Growing through every size made
-  // Sphere5's rows 21.5 against 17.9 ms; reserving for all n up front
-  // zeroed huge pages that the small hulls of redundant rows never used
-  // (10,000 and 100,000 random rows 1.14 and 1.24 times slower), as it did
-  // for point clouds (10,000 random points in a cube 1.36 times slower).
-  void reserve_triangles(std::size_t used) {
+  // Room for more triangles of from_halfspaces' dual points (the only
+  // caller with its own exact orient3d) when `used` fill the arrays; other
+  // hulls' arrays grow as vectors do. Nearly all dual points are on the
+  // hull when few rows are redundant: once past the 4,096 triangles that
+  // stay below the huge-page threshold, the arrays take room for all of the
+  // 2n − 4 of a hull of all n points (plus a cone) at once, up to what one
+  // huge page holds (huge_page_blocks.hpp), then the rest of it; past that
+  // they grow as vectors do. Growing through every size made Sphere5's rows
+  // 21.5 against 17.9 ms; reserving for all n up front zeroed huge pages
+  // that the small hulls of redundant rows never used (10,000 and 100,000
+  // random rows 1.14 and 1.24 times slower), as it did for point clouds
+  // (10,000 random points in a cube 1.36 times slower).
+  void reserve_dual_triangles(std::size_t used) {
     constexpr std::size_t below_threshold = 4096;
     constexpr std::size_t one_huge_page =
-        (std::size_t{2} << 20) / std::max(sizeof(Triangle), sizeof(PlaneFilter));
-    const std::size_t doubled = std::max<std::size_t>(2 * used, 16);
+        detail::huge_page_bytes / std::max(sizeof(Triangle), sizeof(PlaneFilter));
     const std::size_t whole_hull = 2 * std::size_t{n_} + 8;
-    std::size_t room = doubled;
-    if (exact_orient_ && used < whole_hull)
-      room = used < below_threshold ? std::min(below_threshold, whole_hull)
-                                    : std::min(whole_hull, std::max(doubled, one_huge_page));
+    if (used >= whole_hull) return;
+    const std::size_t room = used < below_threshold ? std::min(below_threshold, whole_hull)
+                                                    : std::min(whole_hull, std::max(2 * used, one_huge_page));
     tris_.reserve(room);
     planes_.reserve(room);
     normal_slot_.reserve(room);

@@ -23,7 +23,6 @@ namespace cvms::detail {
 namespace {
 
 #ifndef CVMS_BLOCKS_ON_HEAP_ONLY
-constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
 // The mapping's length for `bytes` (see the file comment).
 // \pre bytes <= max_mapped_bytes.
 std::size_t mapped_length(std::size_t bytes, BlockLife life) noexcept {

@@ -28,11 +28,13 @@
 //    before (a sum on two threads keeps two arenas).
 // The kernel may stall such a fault to compact memory for a huge page (THP
 // defrag setting "madvise", the usual default). Where THP is "never" the
-// advice changes nothing and the pages fault as glibc's own mappings would; a program that tuned malloc to
-// keep freed memory then faults these blocks in again at every call. Smaller blocks, other platforms, builds
-// under a sanitizer that checks memory (which sees only its own heap) and builds with
-// CVMS_HUGE_PAGE_BLOCKS=OFF (CMake) take operator new. valgrind sees the mappings but not their contents'
-// use. No state is kept anywhere: which path a block took follows from its kind and size alone, so that
+// advice changes nothing and the pages fault as glibc's own mappings would;
+// a program that tuned malloc to keep freed memory then faults these blocks
+// in again at every call. Smaller blocks, other platforms, builds under a
+// sanitizer that checks memory (which sees only its own heap) and builds
+// with CVMS_HUGE_PAGE_BLOCKS=OFF (CMake) take operator new. valgrind sees
+// the mappings but not their contents' use. No state is kept anywhere:
+// which path a block took follows from its kind and size alone, so that
 // freeing finds it.
 #pragma once
 
@@ -66,10 +68,12 @@ namespace cvms::detail {
 /// How long a block lives (see the file comment).
 enum class BlockLife { scratch, kept };
 
+/// The size of a huge page (x86-64 and 4 KiB-page arm64 Linux).
+inline constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
 /// Scratch blocks of at least this many bytes go on huge pages.
 inline constexpr std::size_t scratch_threshold = std::size_t{1} << 18;
 /// Kept blocks of at least this many bytes (one huge page) do.
-inline constexpr std::size_t kept_threshold = std::size_t{2} << 20;
+inline constexpr std::size_t kept_threshold = huge_page_bytes;
 
 /// Whether this build maps large blocks itself at all.
 bool huge_page_blocks_enabled() noexcept;

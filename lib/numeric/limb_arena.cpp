@@ -19,7 +19,7 @@ constexpr mp_limb_t one_limb = 1;
 // huge pages (huge_page_blocks.hpp), the blocks after 1 MiB are 2 MiB, one
 // huge page each.
 constexpr std::size_t max_heap_block_limbs = std::size_t{1} << 17;
-constexpr std::size_t huge_block_limbs = kept_threshold / sizeof(mp_limb_t);
+constexpr std::size_t huge_block_limbs = huge_page_bytes / sizeof(mp_limb_t);
 
 std::size_t block_after(std::size_t limbs) noexcept {
   if (limbs >= max_heap_block_limbs)
