@@ -18,6 +18,7 @@
 #include <random>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
@@ -148,13 +149,14 @@ TEST(IntegerDualHull, RandomSystemsMatchTheTripleEnumeration) {
     SCOPED_TRACE("seed 1602 round " + std::to_string(round));
     const Vec3 x0{fraction(static_cast<long>(rng() % 11) - 5, 3), fraction(-2, 7), fraction(5, 11)};
     const std::vector<HalfspaceRow> rows = random_rows(rng, x0, 6 + round % 18);
-    const std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
+    std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
     ASSERT_EQ(v.has_value(), bounded_by_box(rows));
     if (!v) continue;
     ++bounded;
     EXPECT_EQ(sorted(v->vertices), test::brute_force_vertices(rows));
     expect_tight_rows_hold(*v, rows);
-    expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+    const ConvexPolyhedron hull = convex_hull(v->vertices);
+    expect_same_polyhedron(detail::intersection_polyhedron(std::move(*v)), hull);
   }
   EXPECT_GE(bounded, 100);
 }
@@ -162,23 +164,25 @@ TEST(IntegerDualHull, RandomSystemsMatchTheTripleEnumeration) {
 TEST(IntegerDualHull, SphereFacetPlanesThroughEveryVertex) {
   const ConvexPolyhedron s = shapes::geodesic_sphere(2);
   const HalfspaceSystem h = to_halfspaces(ConvexSet(s));
-  const std::optional<detail::DualVertices> v =
+  std::optional<detail::DualVertices> v =
       detail::bounded_vertices(lp_rows(h.inequalities), chart_point(Vec3{0, 0, 0}));
   ASSERT_TRUE(v.has_value());
   EXPECT_EQ(sorted(v->vertices), sorted(s.mesh().positions()));
   expect_tight_rows_hold(*v, h.inequalities);
-  expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
+  const ConvexPolyhedron hull = convex_hull(v->vertices);
+  expect_same_polyhedron(detail::intersection_polyhedron(std::move(*v)), hull);
 }
 
 // Whole-pipeline check of a system: the vertices against the triple
 // enumeration, the polyhedron against convex_hull of them (as sets).
 void expect_matches_oracles(const std::vector<HalfspaceRow>& rows, const Vec3& x0) {
-  const std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
+  std::optional<detail::DualVertices> v = detail::bounded_vertices(lp_rows(rows), chart_point(x0));
   ASSERT_TRUE(v.has_value());
   EXPECT_EQ(sorted(v->vertices), test::brute_force_vertices(rows));
   expect_tight_rows_hold(*v, rows);
-  expect_same_polyhedron(detail::intersection_polyhedron(*v), convex_hull(v->vertices));
-  expect_same_polyhedron(from_halfspaces(rows).polyhedron(), convex_hull(v->vertices));
+  const ConvexPolyhedron hull = convex_hull(v->vertices);
+  expect_same_polyhedron(detail::intersection_polyhedron(std::move(*v)), hull);
+  expect_same_polyhedron(from_halfspaces(rows).polyhedron(), hull);
 }
 
 // The integer hull decides as the quickhull on the rational points a/s
@@ -223,7 +227,8 @@ TEST(IntegerDualHull, DecidesAsTheRationalHull) {
     // (43 on the icosahedron's 20 rows, with the triangles of one plane
     // sharing its exact tests).
     EXPECT_GT(expect_same_soup_as_rational_hull(h.inequalities, Vec3{0, 0, 0}), 30u);
-    EXPECT_GT(expect_same_soup_as_rational_hull(h.inequalities, Vec3{fraction(1, 7), fraction(-1, 9), fraction(1, 11)}),
+    EXPECT_GT(expect_same_soup_as_rational_hull(h.inequalities,
+                                                Vec3{fraction(1, 7), fraction(-1, 9), fraction(1, 11)}),
               30u);
   }
   Rng rng(1607);
@@ -241,7 +246,7 @@ TEST(IntegerDualHull, ManyRowsThroughOneApex) {
   // at the apex (0, 0, 1) (one dual facet of 12 coplanar points), the
   // points (x_i, y_i) on the circle x^2 + y^2 = 25 (in convex position),
   // and a floor z >= −1; every row repeated once, one scaled by 3.
-  const long pts[12][2] = {{5, 0},  {4, 3},  {3, 4},  {0, 5},  {-3, 4}, {-4, 3},
+  const long pts[12][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
                            {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
   std::vector<HalfspaceRow> rows;
   for (int i = 0; i < 12; ++i) {
@@ -281,16 +286,18 @@ TEST(IntegerDualHull, UnboundedSystemsGiveNothing) {
   const Vec3 o{0, 0, 0};
   auto row = [](long x, long y, long z, long b) { return HalfspaceRow{Vec3{x, y, z}, Rational(b)}; };
   // Open towards −z: every normal has a_z >= 0.
-  const std::vector<HalfspaceRow> cone = {row(1, 0, 1, 1), row(-1, 0, 1, 1), row(0, 1, 1, 1), row(0, -1, 1, 1)};
+  const std::vector<HalfspaceRow> cone = {row(1, 0, 1, 1), row(-1, 0, 1, 1), row(0, 1, 1, 1),
+                                          row(0, -1, 1, 1)};
   EXPECT_FALSE(detail::bounded_vertices(lp_rows(cone), chart_point(o)));
   // A prism along z: the dual points span only a plane.
-  const std::vector<HalfspaceRow> prism = {row(1, 0, 0, 1), row(-1, 0, 0, 1), row(0, 1, 0, 1), row(0, -1, 0, 1),
-                                           row(1, 1, 0, 3)};
+  const std::vector<HalfspaceRow> prism = {row(1, 0, 0, 1), row(-1, 0, 0, 1), row(0, 1, 0, 1),
+                                           row(0, -1, 0, 1), row(1, 1, 0, 3)};
   EXPECT_FALSE(detail::bounded_vertices(lp_rows(prism), chart_point(o)));
   // Too few rows to bound anything, and a slab: the origin on a dual facet.
-  EXPECT_FALSE(detail::bounded_vertices(lp_rows({row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, 0, 1, 1)}), chart_point(o)));
-  const std::vector<HalfspaceRow> half_box = {row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, -1, 0, 1), row(0, 0, 1, 1),
-                                              row(0, 0, -1, 1)};
+  EXPECT_FALSE(
+      detail::bounded_vertices(lp_rows({row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, 0, 1, 1)}), chart_point(o)));
+  const std::vector<HalfspaceRow> half_box = {row(1, 0, 0, 1), row(0, 1, 0, 1), row(0, -1, 0, 1),
+                                              row(0, 0, 1, 1), row(0, 0, -1, 1)};
   EXPECT_FALSE(detail::bounded_vertices(lp_rows(half_box), chart_point(o)));
 }
 

@@ -202,5 +202,56 @@ TEST(LimbArena, StoresVectorsAndReusesScratch) {
   EXPECT_EQ(out, (Vec3{7, -5, Rational(0.125)}));
 }
 
+// A fraction stored from its two integers equals the rational GMP makes of
+// them; a denominator of more than one limb lives in the arena too (a view,
+// owning nothing), a one-limb one in the value's own limb. Every value is
+// stored into the same `out` objects twice, so that a view denominator is
+// also overwritten by a one-limb one and the other way round.
+TEST(LimbArena, StoresFractionsFromTheirIntegers) {
+  const std::vector<Rational> originals = random_values(31, 4000);
+  LimbArena arena;
+  std::vector<Rational> stored(originals.size());
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t i = 0; i < originals.size(); ++i) {
+      const Rational& q = originals[(i + static_cast<std::size_t>(pass) * 7) % originals.size()];
+      arena.store(stored[i], q.get_num_mpz_t(), q.get_den_mpz_t());
+    }
+    for (std::size_t i = 0; i < originals.size(); ++i) {
+      const Rational& q = originals[(i + static_cast<std::size_t>(pass) * 7) % originals.size()];
+      ASSERT_EQ(stored[i], q) << pass << " " << i;
+      ASSERT_EQ(to_string(stored[i] + 1), to_string(q + 1)) << pass << " " << i;
+      if (!LimbArena::holds_limbs()) continue;
+      const bool long_denominator = mpz_size(q.get_den_mpz_t()) > 1;
+      ASSERT_EQ(mpq_denref(stored[i].get_mpq_t())->_mp_alloc == 0, long_denominator) << pass << " " << i;
+    }
+  }
+}
+
+// Integers stored as views: equal to the originals, unaffected by later
+// changes of their source, and copies of them own their limbs.
+TEST(LimbArena, StoresIntegers) {
+  std::mt19937_64 rng(77);
+  LimbArena arena;
+  std::vector<mpz_class> originals, stored(3000);
+  mpz_class source;
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    source = mpz_class(static_cast<unsigned long>(rng())) << static_cast<unsigned>(rng() % 700);
+    if (i % 3 == 0) source = -source;
+    if (i % 11 == 0) source = i % 2 == 0 ? 0 : 1;
+    originals.push_back(source);
+    arena.store(stored[i], source.get_mpz_t());
+  }
+  source = 12345;
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    ASSERT_EQ(stored[i], originals[i]) << i;
+    mpz_class copy = stored[i];
+    copy += 1;
+    ASSERT_EQ(copy, originals[i] + 1) << i;
+    if (LimbArena::holds_limbs()) {
+      ASSERT_EQ(stored[i].get_mpz_t()->_mp_alloc, 0) << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cvms::detail

@@ -19,12 +19,16 @@
 
 #include "cvms/halfspaces.hpp"
 #include "homogeneous_orient.hpp"
+#include "limb_arena.hpp"
 #include "max_slack_lp.hpp"
 
 namespace cvms::detail {
 
-/// The rows as homogeneous dual points.
+/// The rows as homogeneous dual points. Their integers (not the origin's)
+/// keep their limbs in `limbs`, one arena for all rows instead of a heap
+/// block per integer: read-only views (limb_arena.hpp), valid while it lives.
 struct HomogeneousDual {
+  LimbArena limbs;                       ///< declared first: it outlives the views
   std::vector<HomogeneousPoint> points;  ///< (a_i, s_i): a_i the primitive row normal, s_i > 0
   std::vector<mpz_class> offsets;        ///< b_i of the primitive row (a_i, b_i)
   /// gcd(a_i) of the primitive row (usually 1): the facet's primitive

@@ -20,44 +20,44 @@
 namespace cvms::detail {
 namespace {
 
-// x = (y.x, y.y, y.z) / y.w in lowest terms, w > 0, made in place from y's
-// integers (a moved rational allocates again). A pole's integers often share
-// a large factor (the vertices of Sphere5's facet planes are doubles, and
-// their poles' 450-bit coordinates share all but a few bits): then the
-// factor g that reduces the first coordinate divides the others as well,
-// and reducing them over w / g costs a division each instead of a gcd of
-// two 450-bit numbers (9 → 4 M instructions on Sphere5's rows). Either way
-// (y/g)/(w/g) = y/w, and canonicalize reduces either form to the one
-// canonical rational.
-void write_over_common_denominator(HomogeneousPoint& y, Vec3& x) {
-  mpz_class* numerator[3] = {&y.x, &y.y, &y.z};
-  mpz_ptr first_numerator = mpq_numref(x[0].get_mpq_t()), first_denominator = mpq_denref(x[0].get_mpq_t());
-  mpz_swap(first_numerator, y.x.get_mpz_t());
-  const mpz_ptr g = first_denominator;  // gcd(x, w), until w / g takes its place
-  mpz_gcd(g, first_numerator, y.w.get_mpz_t());
-  mpz_divexact(first_numerator, first_numerator, g);
-  bool over_reduced[3] = {true, false, false};
+// The integers reused from vertex to vertex (their limbs, that is).
+struct VertexScratch {
+  mpz_class g, reduced_w;
+  Rational coordinate;
+};
+
+// x = (y.x, y.y, y.z) / y.w in lowest terms, w > 0, the values' limbs in
+// arena. A pole's integers often share a large factor (the vertices of
+// Sphere5's facet planes are doubles, and their poles' 450-bit coordinates
+// share all but a few bits): then the factor g that reduces the first
+// coordinate divides the others as well, and reducing them over w / g costs
+// a division each instead of a gcd of two 450-bit numbers (9 → 4 M
+// instructions on Sphere5's rows). Either way (y/g)/(w/g) = y/w, and
+// canonicalize reduces either form to the one canonical rational.
+void write_over_common_denominator(const HomogeneousPoint& y, Vec3& x, VertexScratch& s, LimbArena& arena) {
+  const mpz_srcptr numerator[3] = {y.x.get_mpz_t(), y.y.get_mpz_t(), y.z.get_mpz_t()};
+  const mpz_ptr g = s.g.get_mpz_t(), reduced_w = s.reduced_w.get_mpz_t();
+  const mpz_ptr num = mpq_numref(s.coordinate.get_mpq_t()), den = mpq_denref(s.coordinate.get_mpq_t());
+  mpz_gcd(g, numerator[0], y.w.get_mpz_t());
+  mpz_divexact(reduced_w, y.w.get_mpz_t(), g);
+  mpz_divexact(num, numerator[0], g);
+  arena.store(x[0], num, reduced_w);  // divided by their gcd: lowest terms
   for (int m = 1; m < 3; ++m) {
-    mpz_ptr p = mpq_numref(x[m].get_mpq_t());
-    mpz_swap(p, numerator[m]->get_mpz_t());
-    over_reduced[m] = mpz_divisible_p(p, g) != 0;
-    if (over_reduced[m]) mpz_divexact(p, p, g);
-  }
-  mpz_divexact(y.w.get_mpz_t(), y.w.get_mpz_t(), g);
-  mpz_swap(first_denominator, y.w.get_mpz_t());  // x[0] = (x / g) / (w / g); y.w = g
-  const mpz_srcptr reduced_w = first_denominator, factor = y.w.get_mpz_t();
-  for (int m = 1; m < 3; ++m) {
-    if (over_reduced[m])
-      mpz_set(mpq_denref(x[m].get_mpq_t()), reduced_w);
-    else
-      mpz_mul(mpq_denref(x[m].get_mpq_t()), reduced_w, factor);  // w
-    x[m].canonicalize();
+    if (mpz_divisible_p(numerator[m], g) != 0) {
+      mpz_divexact(num, numerator[m], g);
+      mpz_set(den, reduced_w);
+    } else {
+      mpz_set(num, numerator[m]);
+      mpz_set(den, y.w.get_mpz_t());
+    }
+    mpq_canonicalize(s.coordinate.get_mpq_t());
+    arena.store(x[m], num, den);
   }
 }
 
-// The vertex (X + y) / D of a facet with pole y, w > 0, written into x
-// (made in place from y's integers: a moved rational allocates again).
-void vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint& y, Vec3& x) {
+// The vertex (X + y) / D of a facet with pole y, w > 0, written into x.
+void vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint& y, Vec3& x, VertexScratch& s,
+                      LimbArena& arena) {
   const bool at_origin = sgn(origin.x) == 0 && sgn(origin.y) == 0 && sgn(origin.z) == 0 && origin.w == 1;
   if (!at_origin) {
     mpz_addmul(y.x.get_mpz_t(), origin.x.get_mpz_t(), y.w.get_mpz_t());
@@ -65,12 +65,13 @@ void vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint& y, Vec3&
     mpz_addmul(y.z.get_mpz_t(), origin.z.get_mpz_t(), y.w.get_mpz_t());
     y.w *= origin.w;
   }
-  write_over_common_denominator(y, x);
+  write_over_common_denominator(y, x, s, arena);
 }
 
 }  // namespace
 
-std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, const std::vector<Rational>& x0) {
+std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows,
+                                             const std::vector<Rational>& x0) {
   return bounded_vertices(homogeneous_dual(rows, x0));
 }
 
@@ -92,11 +93,12 @@ std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
   }
   out.vertices.reserve(soup.num_faces());
   out.tight.reserve(soup.face_indices.size());
+  VertexScratch scratch;
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     // A facet whose plane does not have the origin strictly below it: the
     // set is unbounded (integer_dual_hull.hpp).
     if (sgn(poles[f].w) <= 0) return std::nullopt;
-    vertex_from_pole(dual.origin, poles[f], out.vertices.emplace_back());
+    vertex_from_pole(dual.origin, poles[f], out.vertices.emplace_back(), scratch, out.limbs);
     for (std::uint32_t c : soup.face(f)) out.tight.push_back(row_of[c]);
     out.tight_offsets.push_back(static_cast<std::uint32_t>(out.tight.size()));
   }

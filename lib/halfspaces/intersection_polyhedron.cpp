@@ -19,8 +19,8 @@
 #include <algorithm>
 #include <limits>
 #include <span>
-#include <utility>
 #include <tuple>
+#include <utility>
 
 #include "cvms/error.hpp"
 #include "polyhedron_builder.hpp"
@@ -60,34 +60,55 @@ std::vector<Corner> sorted_corners(const DualVertices& v) {
 }
 
 // The plane a·x == b of row r as an outward primitive integer normal and
-// its offset: the primitive row divided by the gcd c of its normal, made in
-// place from the row's integers (each row stands for one facet, so they are
-// taken over; a rational moved or built from a temporary would allocate a
-// denominator once more). The offset b / c needs no reduction: the row is
-// primitive, so gcd(b, c) = gcd(a_x, a_y, a_z, b) = 1. A content that is a
-// power of two (rows with dyadic offsets, scaled to integers) divides by a
-// shift.
-void add_plane(DualVertices& v, std::uint32_t r, FacetPlanes& planes) {
-  HomogeneousPoint& a = v.dual.points[r];
-  const mpz_class& content = v.dual.normal_contents[r];
-  const bool reduce = content != 1;
-  const mp_bitcnt_t twos = reduce ? mpz_scan1(content.get_mpz_t(), 0) : 0;
-  const bool power_of_two = reduce && twos + 1 == mpz_sizeinbase(content.get_mpz_t(), 2);
+// its offset, their limbs in arena: the primitive row divided by the gcd c
+// of its normal (in `quotient`, whose limbs are reused from row to row).
+// The offset b / c needs no reduction: the row is primitive, so gcd(b, c) =
+// gcd(a_x, a_y, a_z, b) = 1. A content that is a power of two (rows with
+// dyadic offsets, scaled to integers) divides by a shift.
+void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes, LimbArena& arena,
+               mpz_class& quotient) {
+  const HomogeneousPoint& a = v.dual.points[r];
+  const mpz_srcptr content = v.dual.normal_contents[r].get_mpz_t();
+  const bool reduce = mpz_cmp_ui(content, 1) != 0;
+  const mp_bitcnt_t twos = reduce ? mpz_scan1(content, 0) : 0;
+  const bool power_of_two = reduce && twos + 1 == mpz_sizeinbase(content, 2);
+  const mp_limb_t one_limb = 1;
+  mpz_t one;
+  mpz_roinit_n(one, &one_limb, 1);
   Vec3& n = planes.normals.emplace_back();
-  Rational& offset = planes.offsets.emplace_back();
-  mpz_class* row[3] = {&a.x, &a.y, &a.z};
+  const mpz_class* row[3] = {&a.x, &a.y, &a.z};
   for (int m = 0; m < 3; ++m) {
-    mpz_ptr numerator = mpq_numref(n[m].get_mpq_t());
-    mpz_swap(numerator, row[m]->get_mpz_t());
-    if (!reduce) continue;
-    if (power_of_two)
-      mpz_tdiv_q_2exp(numerator, numerator, twos);
-    else
-      mpz_divexact(numerator, numerator, content.get_mpz_t());
+    mpz_srcptr numerator = row[m]->get_mpz_t();
+    if (reduce) {
+      if (power_of_two)
+        mpz_tdiv_q_2exp(quotient.get_mpz_t(), numerator, twos);
+      else
+        mpz_divexact(quotient.get_mpz_t(), numerator, content);
+      numerator = quotient.get_mpz_t();
+    }
+    arena.store(n[m], numerator, one);
   }
-  mpz_swap(mpq_numref(offset.get_mpq_t()), v.dual.offsets[r].get_mpz_t());
-  if (reduce) mpz_set(mpq_denref(offset.get_mpq_t()), content.get_mpz_t());
+  arena.store(planes.offsets.emplace_back(), v.dual.offsets[r].get_mpz_t(), content);
   planes.normal_approx.push_back(ApproxVec3::of(n));
+}
+
+// points[k] = points[order[k]] for every k, by swaps (a rational's swap
+// exchanges pointers; its move would allocate a denominator). order is a
+// permutation.
+void gather(std::vector<Vec3>& points, const std::vector<std::uint32_t>& order) {
+  std::vector<bool> placed(order.size(), false);
+  for (std::size_t start = 0; start < order.size(); ++start) {
+    // Along the cycle through start, each swap puts one point in place and
+    // carries the displaced one on, until the point the cycle closes with
+    // is the one that start held.
+    std::size_t k = start;
+    while (!placed[k] && order[k] != start) {
+      for (int m = 0; m < 3; ++m) mpq_swap(points[k][m].get_mpq_t(), points[order[k]][m].get_mpq_t());
+      placed[k] = true;
+      k = order[k];
+    }
+    placed[k] = true;
+  }
 }
 
 }  // namespace
@@ -96,10 +117,9 @@ ConvexPolyhedron intersection_polyhedron(DualVertices v) {
   const std::vector<Corner> corners = sorted_corners(v);
   constexpr std::uint32_t unnumbered = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> number(v.vertices.size(), unnumbered);
+  std::vector<std::uint32_t> order;  // the vertices as numbered
+  order.reserve(v.vertices.size());
   PolygonSoup soup;
-  soup.points.reserve(v.vertices.size());
-  std::vector<ApproxVec3> approx;
-  approx.reserve(v.vertices.size());
   // Reserved up front: a reallocation would copy every rational (Vec3's
   // move is not noexcept).
   std::size_t facets = 0;
@@ -111,28 +131,39 @@ ConvexPolyhedron intersection_polyhedron(DualVertices v) {
   soup.face_offsets.reserve(facets + 1);
   soup.face_indices.reserve(corners.size());
   std::vector<std::uint32_t> face;
+  mpz_class quotient;
   for (auto group = corners.begin(); group != corners.end();) {
-    const auto group_end = std::find_if(group, corners.end(), [&](const Corner& c) { return c.row != group->row; });
+    const auto group_end =
+        std::find_if(group, corners.end(), [&](const Corner& c) { return c.row != group->row; });
     face.clear();
     auto c = group;
     do {
       if (number[c->vertex] == unnumbered) {
-        number[c->vertex] = static_cast<std::uint32_t>(soup.points.size());
-        soup.points.push_back(std::move(v.vertices[c->vertex]));  // numbered once, so used once
-        approx.push_back(ApproxVec3::of(soup.points.back()));
+        number[c->vertex] = static_cast<std::uint32_t>(order.size());
+        order.push_back(c->vertex);
       }
       face.push_back(number[c->vertex]);
       // The facet across the edge previous–row holds row just before previous.
       const std::uint32_t previous = c->previous;
       c = std::lower_bound(group, group_end, Corner{c->row, previous, 0, 0}, before);
       if (c == group_end || c->next != previous || face.size() > v.vertices.size())
-        throw Error(ErrorCategory::invalid_argument, "intersection_polyhedron: an open ring of facets");  // unreachable
+        throw Error(ErrorCategory::invalid_argument,
+                    "intersection_polyhedron: an open ring of facets");  // unreachable
     } while (c != group);
     soup.add_face(face);
-    add_plane(v, group->row, planes);
+    add_plane(v, group->row, planes, v.limbs, quotient);
     group = group_end;
   }
-  return assemble(output_mesh(std::move(soup)), std::move(approx), std::move(planes));
+  // Every vertex is a corner of the three or more facets of its tight rows.
+  if (order.size() != v.vertices.size())
+    throw Error(ErrorCategory::invalid_argument,
+                "intersection_polyhedron: a vertex on no facet");  // unreachable
+  gather(v.vertices, order);
+  soup.points = std::move(v.vertices);
+  std::vector<ApproxVec3> approx;
+  approx.reserve(soup.points.size());
+  for (const Vec3& p : soup.points) approx.push_back(ApproxVec3::of(p));
+  return assemble(output_mesh(std::move(soup)), std::move(approx), std::move(planes), std::move(v.limbs));
 }
 
 }  // namespace cvms::detail

@@ -23,15 +23,16 @@ bool dyadic_exponent(const Rational* const values[], std::size_t count, mp_bitcn
 
 }  // namespace
 
-mpz_class scale_to_common_denominator(const Rational* const values[], std::size_t count, mpz_class out[]) {
-  mpz_class l = 1;
+void scale_to_common_denominator(const Rational* const values[], std::size_t count, mpz_class out[],
+                                 mpz_class& l) {
+  l = 1;
   mp_bitcnt_t exponent = 0;
   if (dyadic_exponent(values, count, exponent)) {
     mpz_mul_2exp(l.get_mpz_t(), l.get_mpz_t(), exponent);
     for (std::size_t i = 0; i < count; ++i)
       mpz_mul_2exp(out[i].get_mpz_t(), values[i]->get_num_mpz_t(),
                    exponent - log2_of_power_of_two(values[i]->get_den_mpz_t()));
-    return l;
+    return;
   }
   for (std::size_t i = 0; i < count; ++i)
     if (mpz_cmp_ui(values[i]->get_den_mpz_t(), 1) != 0)
@@ -44,7 +45,6 @@ mpz_class scale_to_common_denominator(const Rational* const values[], std::size_
     mpz_divexact(out[i].get_mpz_t(), l.get_mpz_t(), values[i]->get_den_mpz_t());
     out[i] *= values[i]->get_num();
   }
-  return l;
 }
 
 }  // namespace cvms::detail

@@ -100,19 +100,46 @@ mp_limb_t* LimbArena::allocate(std::size_t limbs) {
 }
 
 void LimbArena::store(Rational& out, const Rational& value) {
+  store(out, mpq_numref(value.get_mpq_t()), mpq_denref(value.get_mpq_t()));
+}
+
+void LimbArena::store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominator) {
+  mpq_ptr o = out.get_mpq_t();
   if (!holds_limbs()) {
-    out = value;
+    mpz_set(mpq_numref(o), numerator);
+    mpz_set(mpq_denref(o), denominator);
     return;
   }
-  mpz_srcptr num = mpq_numref(value.get_mpq_t());
-  const std::size_t num_limbs = limbs_needed(num);
-  // Everything that can throw comes before out's numerator is given up.
-  mp_limb_t* limbs = num_limbs > 0 ? allocate(num_limbs) : nullptr;
-  mpq_ptr o = out.get_mpq_t();
-  mpz_set(mpq_denref(o), mpq_denref(value.get_mpq_t()));
-  if (num_limbs > 0) std::memcpy(limbs, mpz_limbs_read(num), num_limbs * sizeof(mp_limb_t));
+  const std::size_t num_limbs = limbs_needed(numerator);
+  // A one-limb denominator (1, or a power of two below 2^64: almost all)
+  // goes into the limb mpq_init gave out; a longer one would reallocate
+  // that limb, so it comes here.
+  const std::size_t den_limbs = mpz_size(denominator) > 1 ? mpz_size(denominator) : 0;
+  // Everything that can throw comes before out is given up.
+  mp_limb_t* limbs = num_limbs + den_limbs > 0 ? allocate(num_limbs + den_limbs) : nullptr;
+  mpz_ptr den = mpq_denref(o);
+  if (den_limbs == 0) {
+    mpz_set(den, denominator);
+  } else {
+    std::memcpy(limbs + num_limbs, mpz_limbs_read(denominator), den_limbs * sizeof(mp_limb_t));
+    mpz_clear(den);
+    view(den, limbs + num_limbs, denominator);
+  }
+  if (num_limbs > 0) std::memcpy(limbs, mpz_limbs_read(numerator), num_limbs * sizeof(mp_limb_t));
   mpz_clear(mpq_numref(o));
-  view(mpq_numref(o), num_limbs > 0 ? limbs : &one_limb, num);
+  view(mpq_numref(o), num_limbs > 0 ? limbs : &one_limb, numerator);
+}
+
+void LimbArena::store(mpz_class& out, mpz_srcptr value) {
+  if (!holds_limbs()) {
+    mpz_set(out.get_mpz_t(), value);
+    return;
+  }
+  const std::size_t n = limbs_needed(value);
+  mp_limb_t* limbs = n > 0 ? allocate(n) : nullptr;
+  if (n > 0) std::memcpy(limbs, mpz_limbs_read(value), n * sizeof(mp_limb_t));
+  mpz_clear(out.get_mpz_t());
+  view(out.get_mpz_t(), n > 0 ? limbs : &one_limb, value);
 }
 
 void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t high, bool negative) {

@@ -16,8 +16,9 @@
 // fresh ones without copying them). Its owner enforces both: ConvexPolyhedron
 // keeps the arena beside the values and exposes them only as const.
 //
-// The denominator stays in the limb mpq_init gave it (enough for 1 and for
-// every power of two below 2^64, i.e. almost all of them): freeing that limb
+// A one-limb denominator stays in the limb mpq_init gave it (enough for 1
+// and for every power of two below 2^64, i.e. almost all of them; a longer
+// one, which would reallocate that limb, comes here too): freeing that limb
 // to move the denominator here as well was measured slower on the 2-core
 // machine (Sphere6 + rotated Sphere6: about 200 ms against 130 ms before and
 // 107-124 ms with this split, minimum of 5, glibc's default malloc policy).
@@ -57,12 +58,20 @@ class LimbArena {
   /// library would free the arena's limbs one by one).
   [[nodiscard]] static bool holds_limbs() noexcept;
 
-  /// out = value, with out's numerator here (its denominator stays in out's
-  /// own limb). out's own numerator limbs are freed.
+  /// out = value, with out's numerator here (a one-limb denominator stays in
+  /// out's own limb, a longer one comes here). out's own limbs are freed.
   /// \pre out does not alias value. Afterwards out is never the output of
   ///   a GMP operation (storing into it again is fine): it may be read,
   ///   copied from and destroyed, but read only while this arena lives.
   void store(Rational& out, const Rational& value);
+  /// out = numerator / denominator, a fraction in lowest terms with a
+  /// positive denominator, made from integers the caller computed (no
+  /// rational in between): the numerator's limbs here; the denominator's in
+  /// out's own limb when one limb holds it, else here as well.
+  /// \pre as for store(); neither integer aliases out's.
+  void store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominator);
+  /// out = value, its limbs here: a view of a copy, read-only as above.
+  void store(mpz_class& out, mpz_srcptr value);
   /// store() per coordinate.
   void store(Vec3& out, const Vec3& value);
   /// out = the integer -+(high 2^64 + low), stored like store() stores it,
