@@ -198,9 +198,10 @@ std::uint64_t expect_same_soup_as_rational_hull(const std::vector<HalfspaceRow>&
   std::vector<std::uint32_t> source, homogeneous_source;
   const PolygonSoup expected = hull_soup(q, &source);
   const std::uint64_t exact_before = predicate_counters().exact;
-  std::vector<HomogeneousPoint> poles;
+  detail::FacePoles face_poles;
   const PolygonSoup got = detail::homogeneous_hull(
-      dual.points, [&](std::uint32_t i) { return q[i]; }, homogeneous_source, &poles);
+      dual.points, [&](std::uint32_t i) { return q[i]; }, homogeneous_source, &face_poles);
+  const std::vector<HomogeneousPoint>& poles = face_poles.poles;
   const std::uint64_t exact = predicate_counters().exact - exact_before;
   // Each face's pole y: a·y_xyz == s y_w at every corner (a, s), y_w > 0
   // for a bounded system (the origin strictly below every dual facet).

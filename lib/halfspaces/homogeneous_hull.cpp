@@ -144,28 +144,34 @@ class CofactorCache {
   HugePageArray<Slot, BlockLife::scratch> values_;  // left unwritten
 };
 
-// The pole of the plane of points i, j, k from their cofactors
+// y = the pole of the plane of points i, j, k from their cofactors
 // (homogeneous_hull.hpp).
 template <int E>
-HomogeneousPoint pole_from(const Cofactors<E>& c) {
-  HomogeneousPoint y;
+void pole_from(const Cofactors<E>& c, HomogeneousPoint& y) {
   mpz_class* coordinate[4] = {&y.x, &y.y, &y.z, &y.w};
   for (int m = 0; m < 4; ++m) assign_to(coordinate[m]->get_mpz_t(), c[static_cast<std::size_t>(m)], m < 3);
-  return y;
 }
 
 // hull_soup with the exact stages given, and, when face_poles is asked for,
-// the pole of each face's plane triple by pole_of(i, j, k).
+// the pole of each face's plane triple by pole_of(i, j, k, y), written into
+// one scratch point whose limbs are reused and stored from there.
 template <class PoleOf>
 PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& orient, const ExactCompareOrient& compare,
-                            std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles,
-                            const PoleOf& pole_of) {
+                            std::vector<std::uint32_t>& source_index, FacePoles* face_poles, const PoleOf& pole_of) {
   if (!face_poles) return hull_soup(approx, orient, compare, source_index);
   std::vector<std::array<std::uint32_t, 3>> planes;
   PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes);
-  face_poles->clear();
-  face_poles->reserve(planes.size());
-  for (const auto& [i, j, k] : planes) face_poles->push_back(pole_of(i, j, k));
+  *face_poles = FacePoles();
+  face_poles->poles.reserve(planes.size());
+  HomogeneousPoint y;
+  for (const auto& [i, j, k] : planes) {
+    pole_of(i, j, k, y);
+    HomogeneousPoint& stored = face_poles->poles.emplace_back();
+    face_poles->limbs.store(stored.x, y.x.get_mpz_t());
+    face_poles->limbs.store(stored.y, y.y.get_mpz_t());
+    face_poles->limbs.store(stored.z, y.z.get_mpz_t());
+    face_poles->limbs.store(stored.w, y.w.get_mpz_t());
+  }
   return soup;
 }
 
@@ -175,7 +181,7 @@ PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& 
 // cofactors cached, from which the poles come too.
 template <int E>
 PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const ApproximatePoints& approx,
-                          std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles) {
+                          std::vector<std::uint32_t>& source_index, FacePoles* face_poles) {
   ScratchVector<FixedRow<E>> rows;
   rows.reserve(points.size());
   for (const HomogeneousPoint& p : points)
@@ -192,9 +198,10 @@ PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const App
     ++predicate_counters().exact;
     return sign_of(-fixed_det4_cross_sign<E>(cache.cofactors(a, b, c, rows), rows[p], rows[q]));
   };
-  return hull_with_poles(approx, orient, compare, source_index, face_poles, [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
-    return pole_from<E>(cache.cofactors(i, j, k, rows));
-  });
+  return hull_with_poles(approx, orient, compare, source_index, face_poles,
+                         [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, HomogeneousPoint& y) {
+                           pole_from<E>(cache.cofactors(i, j, k, rows), y);
+                         });
 }
 
 mpz_class dot(const std::array<mpz_class, 3>& u, const HomogeneousPoint& p) { return u[0] * p.x + u[1] * p.y + u[2] * p.z; }
@@ -203,22 +210,21 @@ std::array<mpz_class, 3> cross(const HomogeneousPoint& p, const HomogeneousPoint
   return {p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x};
 }
 
-// The pole of the plane of points i, j, k by Cramer's rule in mpz
+// y = the pole of the plane of points i, j, k by Cramer's rule in mpz
 // (homogeneous_hull.hpp), for entries too long for the fixed widths.
-HomogeneousPoint mpz_pole(const std::vector<HomogeneousPoint>& points, std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+void mpz_pole(const std::vector<HomogeneousPoint>& points, std::uint32_t i, std::uint32_t j, std::uint32_t k,
+              HomogeneousPoint& y) {
   const HomogeneousPoint &a = points[i], &b = points[j], &c = points[k];
   const std::array<mpz_class, 3> bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
-  HomogeneousPoint y;
   y.w = dot(bc, a);
   mpz_class* coordinate[3] = {&y.x, &y.y, &y.z};
   for (std::size_t m = 0; m < 3; ++m) *coordinate[m] = a.w * bc[m] + b.w * ca[m] + c.w * ab[m];
-  return y;
 }
 
 }  // namespace
 
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>& source_index, std::vector<HomogeneousPoint>* face_poles) {
+                             std::vector<std::uint32_t>& source_index, FacePoles* face_poles) {
   const Approximation approx = approximate(points);
   const ApproximatePoints approximate_points{approx.coords, approx.max_error, exact};
   switch (width(points)) {
@@ -236,7 +242,9 @@ PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const 
     return homogeneous_compare_orient3d(points[a], points[b], points[c], points[p], points[q]);
   };
   return hull_with_poles(approximate_points, orient, compare, source_index, face_poles,
-                         [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) { return mpz_pole(points, i, j, k); });
+                         [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, HomogeneousPoint& y) {
+                           mpz_pole(points, i, j, k, y);
+                         });
 }
 
 }  // namespace cvms::detail

@@ -12,6 +12,7 @@
 
 #include "cvms/polygon_soup.hpp"
 #include "homogeneous_orient.hpp"
+#include "limb_arena.hpp"
 
 namespace cvms::detail {
 
@@ -36,8 +37,15 @@ Vec3 standing_for(const HomogeneousPoint& p);
 /// predicates have mostly computed for that plane already.
 /// \pre exact(i) == standing_for(points[i]).
 /// \throw Error(degenerate) as hull_soup.
+/// The poles of the hull's facets' planes, facet by facet, their integers'
+/// limbs in one arena (read-only views, limb_arena.hpp) instead of a heap
+/// block each.
+struct FacePoles {
+  LimbArena limbs;  ///< declared first: it outlives the views
+  std::vector<HomogeneousPoint> poles;
+};
+
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>& source_index,
-                             std::vector<HomogeneousPoint>* face_poles = nullptr);
+                             std::vector<std::uint32_t>& source_index, FacePoles* face_poles = nullptr);
 
 }  // namespace cvms::detail

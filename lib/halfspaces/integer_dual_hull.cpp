@@ -22,6 +22,7 @@ namespace {
 
 // The integers reused from vertex to vertex (their limbs, that is).
 struct VertexScratch {
+  HomogeneousPoint shifted;
   mpz_class g, reduced_w;
   Rational coordinate;
 };
@@ -55,17 +56,25 @@ void write_over_common_denominator(const HomogeneousPoint& y, Vec3& x, VertexScr
   }
 }
 
-// The vertex (X + y) / D of a facet with pole y, w > 0, written into x.
-void vertex_from_pole(const HomogeneousPoint& origin, HomogeneousPoint& y, Vec3& x, VertexScratch& s,
+// The vertex (X + y) / D of a facet with pole y, w > 0, written into x (y
+// is a view of an arena's limbs, never written: limb_arena.hpp).
+void vertex_from_pole(const HomogeneousPoint& origin, const HomogeneousPoint& y, Vec3& x, VertexScratch& s,
                       LimbArena& arena) {
   const bool at_origin = sgn(origin.x) == 0 && sgn(origin.y) == 0 && sgn(origin.z) == 0 && origin.w == 1;
-  if (!at_origin) {
-    mpz_addmul(y.x.get_mpz_t(), origin.x.get_mpz_t(), y.w.get_mpz_t());
-    mpz_addmul(y.y.get_mpz_t(), origin.y.get_mpz_t(), y.w.get_mpz_t());
-    mpz_addmul(y.z.get_mpz_t(), origin.z.get_mpz_t(), y.w.get_mpz_t());
-    y.w *= origin.w;
+  if (at_origin) {
+    write_over_common_denominator(y, x, s, arena);
+    return;
   }
-  write_over_common_denominator(y, x, s, arena);
+  HomogeneousPoint& shifted = s.shifted;
+  const mpz_class* from[3] = {&y.x, &y.y, &y.z};
+  const mpz_class* origin_coordinate[3] = {&origin.x, &origin.y, &origin.z};
+  mpz_class* to[3] = {&shifted.x, &shifted.y, &shifted.z};
+  for (int m = 0; m < 3; ++m) {
+    mpz_set(to[m]->get_mpz_t(), from[m]->get_mpz_t());
+    mpz_addmul(to[m]->get_mpz_t(), origin_coordinate[m]->get_mpz_t(), y.w.get_mpz_t());
+  }
+  mpz_mul(shifted.w.get_mpz_t(), y.w.get_mpz_t(), origin.w.get_mpz_t());
+  write_over_common_denominator(shifted, x, s, arena);
 }
 
 }  // namespace
@@ -81,7 +90,7 @@ std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
   const HomogeneousDual& dual = out.dual;
   PolygonSoup soup;
   std::vector<std::uint32_t> row_of;
-  std::vector<HomogeneousPoint> poles;
+  FacePoles poles;
   try {
     soup = homogeneous_hull(
         dual.points, [&](std::uint32_t i) { return standing_for(dual.points[i]); }, row_of, &poles);
@@ -97,8 +106,8 @@ std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     // A facet whose plane does not have the origin strictly below it: the
     // set is unbounded (integer_dual_hull.hpp).
-    if (sgn(poles[f].w) <= 0) return std::nullopt;
-    vertex_from_pole(dual.origin, poles[f], out.vertices.emplace_back(), scratch, out.limbs);
+    if (sgn(poles.poles[f].w) <= 0) return std::nullopt;
+    vertex_from_pole(dual.origin, poles.poles[f], out.vertices.emplace_back(), scratch, out.limbs);
     for (std::uint32_t c : soup.face(f)) out.tight.push_back(row_of[c]);
     out.tight_offsets.push_back(static_cast<std::uint32_t>(out.tight.size()));
   }
