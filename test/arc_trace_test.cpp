@@ -59,7 +59,10 @@ std::size_t expect_walk_matches_brute_force(const ConvexPolyhedron& a, const Con
   }
   std::size_t found = 0;
   std::uint64_t steps = 0;
-  std::vector<HalfedgeId> got;
+  // One scratch for all edges, as the algorithm reuses it: d_A of each
+  // edge overwrites the previous one's.
+  ArcTraceScratch scratch;
+  std::vector<HalfedgeId>& got = scratch.crossed;
   for (HalfedgeId ha : a.mesh().halfedges()) {
     const auto c1 = cv.of(a.mesh().face(ha));
     const auto c2 = cv.of(a.mesh().face(Mesh::twin(ha)));
@@ -69,7 +72,7 @@ std::size_t expect_walk_matches_brute_force(const ConvexPolyhedron& a, const Con
       continue;
     }
     got.clear();
-    trace_edge_facets(a, ha, b, c1, c2, got, steps);
+    trace_edge_facets(a, ha, b, c1, c2, scratch, steps);
     std::sort(got.begin(), got.end());
     EXPECT_EQ(got, brute_force_crossings(a, ha, b)) << "halfedge " << ha.index();
     found += got.size();

@@ -55,6 +55,7 @@
 
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
+#include "dyadic.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 
@@ -167,10 +168,11 @@ ConeExit leave_normal_cone(const ConvexPolyhedron& b, VertexId u, Vec3Ref da) {
 }  // namespace
 
 void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPolyhedron& b,
-                       std::span<const VertexId> c1, std::span<const VertexId> c2,
-                       std::vector<HalfedgeId>& out, std::uint64_t& steps) {
-  const Mesh& mb = b.mesh();
-  const Vec3 da = a.edge_vector(ha);
+                       std::span<const VertexId> c1, std::span<const VertexId> c2, ArcTraceScratch& scratch,
+                       std::uint64_t& steps) {
+  const Mesh &ma = a.mesh(), &mb = b.mesh();
+  Vec3& da = scratch.edge_direction;  // a.edge_vector(ha), in the scratch's limbs
+  for (int i = 0; i < 3; ++i) subtract_into(da[i], a.vertex(ma.to(ha))[i], a.vertex(ma.from(ha))[i]);
   const ApproxVec3 da_approx = ApproxVec3::of(da);
   const Vec3Ref da_ref{da, da_approx};
   auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
@@ -208,7 +210,7 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
     // exists (file comment).
     const ConeExit exit = leave_normal_cone(b, at.u, da_ref);
     if (exit.crossing) {
-      out.push_back(Mesh::twin(exit.h));
+      scratch.crossed.push_back(Mesh::twin(exit.h));
       at.u = mb.to(exit.h);
     } else {
       at.event = mb.face(exit.h);

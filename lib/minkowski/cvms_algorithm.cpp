@@ -155,10 +155,11 @@ namespace {
 // search's order, so both modes build the identical polyhedron.
 std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const ContributingVertices& cv_a, HalfedgeId ha,
-                              std::vector<HalfedgeId>& crossed, SumFacetBuilder& out, std::uint64_t& steps) {
+                              ArcTraceScratch& scratch, SumFacetBuilder& out, std::uint64_t& steps) {
   const Mesh& ma = a.mesh();
+  std::vector<HalfedgeId>& crossed = scratch.crossed;
   crossed.clear();
-  trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), crossed, steps);
+  trace_edge_facets(a, ha, b, cv_a.of(ma.face(ha)), cv_a.of(ma.face(Mesh::twin(ha))), scratch, steps);
   std::sort(crossed.begin(), crossed.end(),
             [](HalfedgeId x, HalfedgeId y) { return Mesh::edge(x) < Mesh::edge(y); });
   for (HalfedgeId g : crossed) out.add_edge_plus_edge(ha, g, Sign::positive);
@@ -168,11 +169,11 @@ std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron&
 // Step 3 with the arc walk, for the edges of A that pass Property 1.
 void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
                       const EdgeFacetBudget& budget, SumFacetBuilder& out, Stats& stats) {
-  std::vector<HalfedgeId> crossed;
+  ArcTraceScratch scratch;
   std::uint64_t found = 0;
   for (HalfedgeId ha : edges_passing_property1(a, cv_a)) {
     budget.check(found);
-    found += add_traced_facets(a, b, cv_a, ha, crossed, out, stats.edge_candidates);
+    found += add_traced_facets(a, b, cv_a, ha, scratch, out, stats.edge_candidates);
   }
   stats.edge_facets += found;
   budget.check(found);
@@ -220,7 +221,7 @@ class ThreadedTrace {
       for (std::size_t e = c * chunk_size; e < std::min((c + 1) * chunk_size, facets_of_edge_.size()); ++e) {
         const HalfedgeId ha = Mesh::halfedge(EdgeId(static_cast<std::uint32_t>(e)));
         if (!may_produce_edge_facets(a_, cv_a_, ha)) continue;
-        facets_of_edge_[e] = add_traced_facets(a_, b_, cv_a_, ha, lane.crossed, lane.out, lane.steps);
+        facets_of_edge_[e] = add_traced_facets(a_, b_, cv_a_, ha, lane.scratch, lane.out, lane.steps);
         found += facets_of_edge_[e];
       }
       chunk_ends_[c] = {thread, lane.out.num_facets()};
@@ -252,7 +253,7 @@ class ThreadedTrace {
     Lane(const ConvexPolyhedron& a, const ConvexPolyhedron& b) : out(a, b) {}
     SumFacetBuilder out;
     std::uint64_t steps = 0;
-    std::vector<HalfedgeId> crossed;
+    ArcTraceScratch scratch;
   };
   // Where a chunk's facets end in the builder of the thread that traced it
   // (they start where that thread's previous chunk ended).
