@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "cvms/convex_hull.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
 #include "limb_arena.hpp"
@@ -107,6 +108,65 @@ TEST_P(ArenaStorage, SumsCopiesAndMovesKeepTheirValues) {
   EXPECT_TRUE(twice.is_convex());
   const PolygonSoup soup = twice.to_soup();
   EXPECT_EQ(soup.points.size(), twice.num_vertices());
+}
+
+// Operands moved by offsets over 3^45 and 7^30, so that the sum's vertices
+// and offsets have denominators of several limbs, which the arena holds too
+// (views, like the numerators). Translation commutes with the sum, so the
+// values must be those of the sum of the unmoved operands, moved by the sum
+// of the offsets (made by translated(), which computes its own values), and
+// a copy, a move and a copy that outlives the original keep them. Cube ⊕
+// tetrahedron moved the same way is checked against the exact hull of its
+// pairwise vertex sums.
+TEST_P(ArenaStorage, LongDenominatorsLiveInTheArenaToo) {
+  mpz_class p3, p7;
+  mpz_ui_pow_ui(p3.get_mpz_t(), 3, 45);
+  mpz_ui_pow_ui(p7.get_mpz_t(), 7, 30);
+  const Vec3 t{Rational(mpz_class(1), p3), Rational(mpz_class(2), p7), 0};
+  const Vec3 u{Rational(mpz_class(1), p7), 0, Rational(mpz_class(-1), p3)};
+  Options options;
+  options.threads = GetParam();
+  detail::ResearchOptions research;
+  research.worker_minimums.oversubscribe = true;
+  auto sum_of = [&](const ConvexPolyhedron& x, const ConvexPolyhedron& y) {
+    return detail::minkowski_sum(x, y, options, research).polyhedron;
+  };
+  const ConvexPolyhedron a = shapes::geodesic_sphere(3), b = shapes::rotated_geodesic_sphere(3);
+  const ExactValues expected = copies_of(sum_of(a, b).translated(t + u));
+  ConvexPolyhedron copy;
+  {
+    ConvexPolyhedron sum = sum_of(a.translated(t), b.translated(u));
+    expect_values(sum, expected);
+    std::size_t long_denominators = 0;
+    for (VertexId v : sum.mesh().vertices())
+      for (int i = 0; i < 3; ++i) {
+        mpz_srcptr den = mpq_denref(sum.vertex(v)[i].get_mpq_t());
+        if (mpz_size(den) < 2) continue;
+        ++long_denominators;
+        if (detail::LimbArena::holds_limbs()) {
+          ASSERT_EQ(den->_mp_alloc, 0) << "vertex " << v.index();
+        }
+      }
+    EXPECT_GT(long_denominators, sum.num_vertices());
+    copy = sum;
+    ConvexPolyhedron moved = std::move(sum);
+    expect_values(moved, expected);
+  }
+  expect_values(copy, expected);
+  EXPECT_TRUE(copy.is_convex());
+
+  const ConvexPolyhedron cube = ConvexPolyhedron::from_soup(test::cube_quads()).translated(t);
+  const ConvexPolyhedron tetra = ConvexPolyhedron::from_soup(test::tetrahedron()).translated(u);
+  std::vector<Vec3> pairwise;
+  for (VertexId v : cube.mesh().vertices())
+    for (VertexId w : tetra.mesh().vertices()) pairwise.push_back(cube.vertex(v) + tetra.vertex(w));
+  const ConvexPolyhedron hull = convex_hull(pairwise);
+  const ConvexPolyhedron small_sum = sum_of(cube, tetra);
+  std::vector<Vec3> got = small_sum.mesh().positions(), want = hull.mesh().positions();
+  std::sort(got.begin(), got.end());
+  std::sort(want.begin(), want.end());
+  EXPECT_EQ(got, want);
+  EXPECT_EQ(small_sum.num_facets(), hull.num_facets());
 }
 
 INSTANTIATE_TEST_SUITE_P(Threads, ArenaStorage, ::testing::Values(1u, 2u, 4u));

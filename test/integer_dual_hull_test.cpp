@@ -279,8 +279,38 @@ TEST(IntegerDualHull, RowsBeyondTheFixedWidthTakeMpz) {
     if (!bounded_by_box(rows)) continue;
     ++bounded;
     expect_matches_oracles(rows, x0);
+    // The poles from Cramer's rule in mpz satisfy their facets' rows.
+    expect_same_soup_as_rational_hull(rows, x0);
   }
   EXPECT_GE(bounded, 10);
+}
+
+// A row whose normal has a content of more than one limb: (c, 2c, 3c)·x <= 1
+// cuts a box near the origin, and its facet's offset is 1 / c, a fraction
+// whose denominator the polyhedron's arena holds as well. c = 2^70 + 1 takes
+// the exact division, c = 2^70 the shift by 70 bits (more than a limb).
+TEST(IntegerDualHull, RowsWithALongContentKeepTheirOffsetsExact) {
+  for (const mpz_class& c : {mpz_class((mpz_class(1) << 70) + 1), mpz_class(mpz_class(1) << 70)}) {
+    SCOPED_TRACE("c = " + c.get_str());
+    std::vector<HalfspaceRow> rows;
+    for (int axis = 0; axis < 3; ++axis)
+      for (const long sign : {1L, -1L}) {
+        Vec3 n{0, 0, 0};
+        n[axis] = sign;
+        rows.push_back({n, Rational(1)});
+      }
+    rows.push_back({Vec3{Rational(c), Rational(2 * c), Rational(3 * c)}, Rational(1)});
+    expect_matches_oracles(rows, Vec3{0, 0, 0});
+    expect_matches_oracles(rows, Vec3{fraction(-1, 2), fraction(-1, 3), fraction(-1, 5)});
+    const ConvexPolyhedron p = from_halfspaces(rows).polyhedron();
+    bool cut = false;
+    for (FaceId f : p.mesh().faces()) {
+      if (p.normal(f) != Vec3{1, 2, 3}) continue;
+      cut = true;
+      EXPECT_EQ(p.plane_offset(f), Rational(mpz_class(1), c));
+    }
+    EXPECT_TRUE(cut);
+  }
 }
 
 TEST(IntegerDualHull, UnboundedSystemsGiveNothing) {

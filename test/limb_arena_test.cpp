@@ -227,6 +227,30 @@ TEST(LimbArena, StoresFractionsFromTheirIntegers) {
   }
 }
 
+// The edges of store(numerator, denominator): a one-limb numerator over a
+// long power of two, a negative numerator over a denominator just past one
+// limb, -1 and 0 over 1; into a value whose own denominator owns several
+// limbs, and into one whose denominator is already a view.
+TEST(LimbArena, StoresFractionsIntoEveryKindOfValue) {
+  const mpz_class two_200 = mpz_class(1) << 200, past_one_limb = (mpz_class(1) << 64) + 1;
+  const mpz_class one = 1, minus_one = -1, zero = 0;
+  const std::pair<const mpz_class*, const mpz_class*> fractions[] = {
+      {&one, &two_200}, {&minus_one, &past_one_limb}, {&minus_one, &one}, {&zero, &one}, {&two_200, &past_one_limb}};
+  LimbArena arena;
+  for (const auto& [num, den] : fractions) {
+    const Rational expected(*num, *den);
+    Rational owning(mpz_class(5), (mpz_class(1) << 300) + 7);  // its denominator owns five limbs
+    ASSERT_GE(mpq_denref(owning.get_mpq_t())->_mp_alloc, 2);
+    arena.store(owning, num->get_mpz_t(), den->get_mpz_t());
+    EXPECT_EQ(owning, expected) << to_string(expected);
+    Rational viewed;
+    arena.store(viewed, mpz_class(3).get_mpz_t(), two_200.get_mpz_t());  // a view denominator first
+    arena.store(viewed, num->get_mpz_t(), den->get_mpz_t());
+    EXPECT_EQ(viewed, expected) << to_string(expected);
+    EXPECT_EQ(to_string(viewed * 2), to_string(expected * 2));
+  }
+}
+
 // Integers stored as views: equal to the originals, unaffected by later
 // changes of their source, and copies of them own their limbs.
 TEST(LimbArena, StoresIntegers) {
@@ -242,6 +266,8 @@ TEST(LimbArena, StoresIntegers) {
     arena.store(stored[i], source.get_mpz_t());
   }
   source = 12345;
+  arena.store(stored[0], source.get_mpz_t());  // storing again into a stored integer
+  originals[0] = 12345;
   for (std::size_t i = 0; i < stored.size(); ++i) {
     ASSERT_EQ(stored[i], originals[i]) << i;
     mpz_class copy = stored[i];

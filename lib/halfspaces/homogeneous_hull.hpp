@@ -19,6 +19,14 @@ namespace cvms::detail {
 /// The point p stands for, reduced.
 Vec3 standing_for(const HomogeneousPoint& p);
 
+/// The poles of the hull's facets' planes, facet by facet, their integers'
+/// limbs in one arena (read-only views, limb_arena.hpp) instead of a heap
+/// block each.
+struct FacePoles {
+  LimbArena limbs;  ///< declared first: it outlives the views
+  std::vector<HomogeneousPoint> poles;
+};
+
 /// hull_soup of the points the homogeneous points stand for, with the same
 /// decisions (hence the same faces) as on those rational points, but no
 /// soup points: source_index maps each face index to its input point.
@@ -37,14 +45,6 @@ Vec3 standing_for(const HomogeneousPoint& p);
 /// predicates have mostly computed for that plane already.
 /// \pre exact(i) == standing_for(points[i]).
 /// \throw Error(degenerate) as hull_soup.
-/// The poles of the hull's facets' planes, facet by facet, their integers'
-/// limbs in one arena (read-only views, limb_arena.hpp) instead of a heap
-/// block each.
-struct FacePoles {
-  LimbArena limbs;  ///< declared first: it outlives the views
-  std::vector<HomogeneousPoint> poles;
-};
-
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
                              std::vector<std::uint32_t>& source_index, FacePoles* face_poles = nullptr);
 

@@ -34,7 +34,7 @@ namespace cvms::detail {
 
 /// The vertices of a bounded set and the rows tight at each.
 struct DualVertices {
-  LimbArena limbs;                        ///< where the vertices' values keep their limbs (limb_arena.hpp)
+  LimbArena limbs;                        ///< declared first: the vertices' and planes' limbs
   HomogeneousDual dual;                   ///< the rows, index by index
   std::vector<Vec3> vertices;             ///< one per facet of the dual hull
   std::vector<std::uint32_t> tight_offsets{0};  ///< vertex v: tight[tight_offsets[v] .. tight_offsets[v + 1])

@@ -92,7 +92,7 @@ void add_plane(const DualVertices& v, std::uint32_t r, FacetPlanes& planes, Limb
   planes.normal_approx.push_back(ApproxVec3::of(n));
 }
 
-// points[k] = points[order[k]] for every k, by swaps (a rational's swap
+// points[k] = the old points[order[k]] for every k, by swaps (a rational's swap
 // exchanges pointers; its move would allocate a denominator). order is a
 // permutation.
 void gather(std::vector<Vec3>& points, const std::vector<std::uint32_t>& order) {

@@ -304,13 +304,14 @@ struct SumFacetBuilder::PlaneScratch {
   Vec3 normal;
   Rational offset;
   DotScratch dot;
-  LimbArena& limbs;  // where this thread's planes keep their numerators
+  LimbArena& limbs;  // where this thread's planes keep their numerators (and long denominators)
 };
 
 FacetPlanes SumFacetBuilder::sized_planes() const {
   // Default-constructed rationals (each allocates its denominator, which it
-  // keeps) whose numerators write_planes makes views of its arena: moving a
-  // rational into place would re-initialise the source, which allocates.
+  // keeps unless it needs more than one limb) whose numerators write_planes
+  // makes views of its arena: moving a rational into place would
+  // re-initialise the source, which allocates.
   const std::size_t n = num_facets();
   FacetPlanes planes;
   planes.normals.resize(n);

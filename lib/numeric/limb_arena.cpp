@@ -3,6 +3,7 @@
 #include "limb_arena.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cstring>
 #include <iterator>
 #include <utility>
@@ -104,6 +105,7 @@ void LimbArena::store(Rational& out, const Rational& value) {
 }
 
 void LimbArena::store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominator) {
+  assert(mpz_sgn(denominator) > 0);
   mpq_ptr o = out.get_mpq_t();
   if (!holds_limbs()) {
     mpz_set(mpq_numref(o), numerator);

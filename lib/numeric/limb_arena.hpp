@@ -1,20 +1,25 @@
 // SPDX-License-Identifier: MIT
-// Compact exact storage (issue 14): the numerators of many rationals in a few
-// large blocks, so that an output polyhedron's hundreds of thousands of exact
-// numbers cost one heap block each instead of two, and destroying the
-// polyhedron frees half as many blocks.
+// Compact exact storage (issue 14): the limbs of many exact numbers in a few
+// large blocks (the numerators of rationals, their denominators longer than
+// one limb, and integers), so that an output polyhedron's hundreds of
+// thousands of exact numbers cost one heap block each instead of two or more,
+// and destroying the polyhedron frees half as many blocks.
 //
-// The rationals stay mpq_class objects (so every `const Vec3&` accessor and
-// every predicate reads them as before); only where their numerators live
-// changes. Why that is sound: since GMP 6.2 every variable starts out lazily,
+// The numbers stay mpq_class and mpz_class objects (so every `const Vec3&`
+// accessor and every predicate reads them as before); only where their limbs
+// live changes. Why that is sound: since GMP 6.2 every variable starts out lazily,
 // with _mp_alloc == 0 and _mp_d pointing at a limb GMP does not own, and
 // mpz_clear/mpq_clear free only what _mp_alloc says they own. mpz_roinit_n
 // makes exactly such a variable over limbs of ours. A stored numerator is
 // therefore destroyed like a fresh variable (nothing is freed) and read like
 // any other; the arena must outlive every read, and a stored value must
 // never be an output of a GMP function again (GMP would replace its limbs by
-// fresh ones without copying them). Its owner enforces both: ConvexPolyhedron
-// keeps the arena beside the values and exposes them only as const.
+// fresh ones without copying them; an in-place operation would read
+// garbage). Its owners enforce both: ConvexPolyhedron keeps the arena beside
+// the values and exposes them only as const; the half-space intersection's
+// working structs (HomogeneousDual, FacePoles, DualVertices) declare their
+// arena first and are only read once built, every new value worked out in
+// scratch integers and stored.
 //
 // A one-limb denominator stays in the limb mpq_init gave it (enough for 1
 // and for every power of two below 2^64, i.e. almost all of them; a longer
@@ -58,8 +63,10 @@ class LimbArena {
   /// library would free the arena's limbs one by one).
   [[nodiscard]] static bool holds_limbs() noexcept;
 
-  /// out = value, with out's numerator here (a one-limb denominator stays in
-  /// out's own limb, a longer one comes here). out's own limbs are freed.
+  /// out = value, with out's numerator here. A one-limb denominator is
+  /// written into out's own denominator (its mpq_init limb, kept; should
+  /// that be a view, GMP allocates a limb for it), a longer one comes here
+  /// and out's own denominator limbs are freed; so are its numerator's.
   /// \pre out does not alias value. Afterwards out is never the output of
   ///   a GMP operation (storing into it again is fine): it may be read,
   ///   copied from and destroyed, but read only while this arena lives.
@@ -70,7 +77,8 @@ class LimbArena {
   /// out's own limb when one limb holds it, else here as well.
   /// \pre as for store(); neither integer aliases out's.
   void store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominator);
-  /// out = value, its limbs here: a view of a copy, read-only as above.
+  /// out = value, its limbs here: a view of a copy, read-only as above
+  /// (out's own limbs are freed; storing into it again is fine).
   void store(mpz_class& out, mpz_srcptr value);
   /// store() per coordinate.
   void store(Vec3& out, const Vec3& value);
