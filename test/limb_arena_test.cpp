@@ -234,8 +234,11 @@ TEST(LimbArena, StoresFractionsFromTheirIntegers) {
 TEST(LimbArena, StoresFractionsIntoEveryKindOfValue) {
   const mpz_class two_200 = mpz_class(1) << 200, past_one_limb = (mpz_class(1) << 64) + 1;
   const mpz_class one = 1, minus_one = -1, zero = 0;
-  const std::pair<const mpz_class*, const mpz_class*> fractions[] = {
-      {&one, &two_200}, {&minus_one, &past_one_limb}, {&minus_one, &one}, {&zero, &one}, {&two_200, &past_one_limb}};
+  const std::pair<const mpz_class*, const mpz_class*> fractions[] = {{&one, &two_200},
+                                                                     {&minus_one, &past_one_limb},
+                                                                     {&minus_one, &one},
+                                                                     {&zero, &one},
+                                                                     {&two_200, &past_one_limb}};
   LimbArena arena;
   for (const auto& [num, den] : fractions) {
     const Rational expected(*num, *den);
