@@ -15,7 +15,9 @@ def runs(path, time_field):
     for b in json.load(open(path))["benchmarks"]:
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
             continue
-        name = b["name"]
+        # An aggregate's name has its statistic appended ("..._median");
+        # run_name is the repetitions' own.
+        name = b.get("run_name", b["name"])
         wall = name.endswith("/real_time")
         if wall:
             if time_field == "cpu_time":
