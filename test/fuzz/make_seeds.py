@@ -105,6 +105,7 @@ def main():
     pts = [(rng.randint(-3, 3), rng.randint(-3, 3), rng.choice([-1, 0, 1])) for _ in range(12)]
     write("minkowski", "flat_ish_prisms.bin", bytes([0, 8]) + cloud(pts) + bytes([8]) + cloud(pts[::-1]))
     sets_seeds()
+    halfspace_seeds()
 
 
 def grid(points):
@@ -134,6 +135,48 @@ def sets_seeds():
     write("sets", "point_tetra.bin", point((1, -1, 2)) + solid(TETRA))
     write("sets", "octa_rational_plane.bin", solid(OCTA) + bytes([5, 3]) + cloud([(1, 0, 0), (0, (1, 3), 0), (-1, 0, 0), (0, -1, 0)]) +
           bytes([3, 1, coord(1, 2)]))
+
+
+def halfspace_seeds():
+    """read_halfspaces: a mode byte (0 cdd H, 1 plain, 2 cdd V) and the text.
+    halfspaces: [mode, box radius byte if mode bit 0, row count, rows, scale
+    byte if mode bit 3] then a set B as in sets_seeds. A row is [op, earlier
+    row index (from the second row on)] and then: for a new row (op % 8 < 4,
+    and always the first) its normal (grid or coord bytes by mode bit 1) and
+    offset coord; op 4 (earlier scaled) two bytes; op 5 (opposite) a slack
+    byte; op 6 (zero row) an offset coord; op 7 (tiny move) two bytes."""
+    for target in ("read_halfspaces", "halfspaces"):
+        os.makedirs(os.path.join(HERE, target), exist_ok=True)
+    cube_ine = ("H-representation\nbegin\n6 4 integer\n1 -1 0 0\n1 1 0 0\n1 0 -1 0\n1 0 1 0\n"
+                "1 0 0 -1\n1 0 0 1\nend\n")
+    write("read_halfspaces", "cube.ine", b"\0" + cube_ine.encode())
+    square_ine = "* a square in z = 0\nlinearity 1 1\nbegin\n5 4 rational\n0 0 0 1\n1 -1 0 0\n1 1 0 0\n1/2 0 -1 0\n1/2 0 1 0\nend\n"
+    write("read_halfspaces", "square_linearity.ine", b"\0" + square_ine.encode())
+    cross_ine = ("begin\n10 4 real\n" + "".join(f"1 {a} {b} {c}\n" for a in (-1, 1) for b in (-1, 1) for c in (-1, 1)) +
+                 "2.5 -1 0 0\n1e1 0 0 1\nend\nmaximize\n0 1 1 1\n")
+    write("read_halfspaces", "octahedron_redundant.ine", b"\0" + cross_ine.encode())
+    write("read_halfspaces", "cube.txt", b"\1" + b"1 0 0 1\n-1 0 0 1\n0 1 0 1\n0 -1 0 1\n0 0 1 1\n0 0 -1 1  # top\n")
+    write("read_halfspaces", "unbounded.txt", b"\1" + b"1 0 0 1\n0 1 0 1\n0 0 1 1\n")
+    write("read_halfspaces", "empty.txt", b"\1" + b"1 0 0 -1\n-1 0 0 -1\n0 1 0 1\n0 -1 0 1\n0 0 1 1\n0 0 -1 1\n")
+    write("read_halfspaces", "tetra.ext", b"\2" + b"V-representation\nbegin\n4 4 rational\n1 0 0 0\n1 1 0 0\n1 0 1 0\n1 0 0 1/3\nend\n")
+
+    def row(normal, offset, first=False):  # a new row on the grid
+        return bytes([0] + ([] if first else [0])) + grid([normal]) + bytes([coord(offset)])
+    cube_b = bytes([0, len(CUBE) - 1]) + grid(CUBE)
+    point_b = bytes([3, 0]) + grid([(1, 0, -1)])
+    segment_b = bytes([2, 1]) + grid([(0, 0, 0), (1, 0, 0)]) + grid([(1, 1, 0)])
+    square_b = bytes([1, 3]) + grid([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]) + bytes([2, 2, coord(0)])
+    write("halfspaces", "box_point.bin", bytes([1, 1, 0]) + point_b)
+    write("halfspaces", "box_cut_cube.bin", bytes([3, 2, 1]) + row((1, 1, 1), 1, True) + cube_b)
+    # z <= 0 and its opposite (slack byte 2: slack 0): the square z = 0 of the box
+    write("halfspaces", "implied_equality_segment.bin", bytes([3, 1, 2]) + row((0, 0, 1), 0, True) + bytes([5, 0, 2]) + segment_b)
+    write("halfspaces", "unbounded_octant.bin",
+          bytes([2, 3]) + row((1, 0, 0), 1, True) + row((0, 1, 0), 1) + row((0, 0, 1), 1) + point_b)
+    write("halfspaces", "empty_box.bin", bytes([3, 0, 1]) + row((0, 0, 1), -5, True) + point_b)
+    # a row, the same scaled, a zero row, a tiny move of the first, an extreme scale
+    write("halfspaces", "scaled_zero_tiny_extreme.bin",
+          bytes([11, 3, 4]) + row((1, 1, 0), 1, True) + bytes([4, 0, 2, 1, 6, 0, coord(2), 7, 0, 5, 30, 0x80 + 1]) + square_b)
+    write("halfspaces", "equality_first.bin", bytes([5, 1, 1]) + bytes([0, coord(1), coord(0), coord(-1), coord(1)]) + square_b)
 
 
 if __name__ == "__main__":

@@ -58,8 +58,28 @@ void minkowski_target(std::span<const std::uint8_t> data);
 /// exactly the hull of the pairwise vertex sums (support/set_oracle.hpp).
 void sets_target(std::span<const std::uint8_t> data);
 
+/// The half-space readers (fuzz_halfspace_targets.cpp): the first byte picks
+/// cdd's H-representation, the plain form or cdd's V-representation
+/// (mode % 3), the rest is the text. An accepted system has canonical
+/// entries within the limits, survives write_halfspaces and reading back
+/// exactly, and, when small, is intersected and checked as in
+/// halfspaces_target; accepted points, hulled, survive write_cdd_points and
+/// reading back.
+void read_halfspaces_target(std::span<const std::uint8_t> data);
+
+/// A small system decoded from the bytes (an optional bounding box, then
+/// rows: new ones on a grid or of small fractions, earlier ones scaled,
+/// opposed (implied equalities, thin slabs, empty sets), moved by tiny
+/// steps, zero rows; optionally an equality and an extreme scale), and a
+/// small convex set B. intersect_halfspaces must match the brute-force
+/// triple enumeration (or name a valid direction of unboundedness, which
+/// from_halfspaces must refuse), to_halfspaces must give primitive rows that
+/// give the set back, and pontryagin_difference(set, B) must match the
+/// brute-force intersection of the set's translates with (A ⊖ B) ⊕ B ⊆ A.
+void halfspaces_target(std::span<const std::uint8_t> data);
+
 /// A target by name ("read_off", "read_obj", "read_stl", "read_points",
-/// "from_soup", "minkowski", "sets"); nullptr for an unknown name.
+/// "from_soup", "minkowski", "sets", "read_halfspaces", "halfspaces"); nullptr for an unknown name.
 using Target = void (*)(std::span<const std::uint8_t>);
 Target target_by_name(const std::string& name);
 /// All target names, in a fixed order.
