@@ -76,7 +76,7 @@ int width(const std::vector<HomogeneousPoint>& points) {
 template <int E>
 class CofactorCache {
  public:
-  // 2^bits entries, at least half as many as points, up to 2^12, in sets of
+  // 2^bits entries, at least half as many as points, up to 2^14, in sets of
   // 8 with the least recently used entry replaced. The triangles of one
   // plane share an entry (quickhull.cpp), so fewer planes than points are
   // alive at a time: Sphere5's dual (5,120 points) asks about 2,925 planes,
@@ -86,23 +86,25 @@ class CofactorCache {
   // Sphere4's 40.1 → 37.5 M; 16 ways gained 0.4 % more, 2 ways half as
   // much). Every entry is 340 bytes (E = 3) of memory first touched in the
   // call, and on this machine a page fault costs about 13 µs: with 2^11
-  // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer.
-  // On Sphere6's dual (20,480 points), 2^13 and 2^14 entries instead of
-  // 2^12 take 729 → 664 and 614 M instructions, but in time (minimum of 4
-  // alternating runs) 98 → 96 and 94 ms with freed memory kept and 120 →
-  // 125 and 130 ms under glibc's default policy, which faults the larger
-  // cache's pages in again at every call (3,900 → 5,100 page faults a call
-  // at 2^14; those counts were before the entries went on huge pages,
-  // below). Only the keys are cleared; the cofactors are written when first
+  // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer
+  // (on 4 KiB pages, before the entries went on huge pages, below). The cap
+  // was 2^12 while the entries faulted in 4 KiB at a time: on Sphere6's dual
+  // (20,480 points) 2^14 entries took 3,900 → 5,100 page faults a call and
+  // longer under glibc's default policy. On huge pages the faults a call are
+  // the same at 2^12 and 2^14 (about 2,140 for the whole from_halfspaces),
+  // and 2^14 entries recompute far fewer evicted planes: from_halfspaces on
+  // Sphere6's facet planes 695 → 580 M instructions a call (callgrind; the
+  // cofactors alone 197 → 84 M), 0.90× the time in alternating runs. Only
+  // the keys are cleared; the cofactors are written when first
   // used (zeroing them was a tenth of Sphere4's intersection, mostly page
   // faults). From 256 KiB on (E = 3: 2^10 entries) the entries are one
   // scratch block on huge pages (huge_page_blocks.hpp), which the kernel
   // zeroes 2 MiB at a time on first use, one fault each. (Keys from calloc,
   // left to the kernel to zero, took Sphere6 in a benchmark loop from about
-  // 37,000 to 52,000 page faults, and longer.) The recency clock may wrap after 2^32 questions: that only
-  // makes a worse choice of entry to replace. A returned reference is valid
-  // until the next call (which may replace its entry); every caller uses it
-  // within one expression.
+  // 37,000 to 52,000 page faults, and longer.) The recency clock may wrap
+  // after 2^32 questions: that only makes a worse choice of entry to
+  // replace. A returned reference is valid until the next call (which may
+  // replace its entry); every caller uses it within one expression.
   explicit CofactorCache(std::size_t points)
       : set_bits_(set_bits_for(points)), keys_(entries(set_bits_)), values_(entries(set_bits_)) {}
 
@@ -135,12 +137,12 @@ class CofactorCache {
   struct Slot {
     alignas(Cofactors<E>) unsigned char bytes[sizeof(Cofactors<E>)];
   };
-  static int set_bits_for(std::size_t points) { return std::max(cache_bits(points, 2, 12) - kWayBits, 1); }
+  static int set_bits_for(std::size_t points) { return std::max(cache_bits(points, 2, 14) - kWayBits, 1); }
   static std::size_t entries(int set_bits) { return std::size_t{1} << (set_bits + kWayBits); }
 
   int set_bits_;
   std::uint32_t clock_ = 0;
-  std::vector<Key> keys_;                           // at most 80 KiB
+  std::vector<Key> keys_;                           // at most 320 KiB
   HugePageArray<Slot, BlockLife::scratch> values_;  // left unwritten
 };
 
