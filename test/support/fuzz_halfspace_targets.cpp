@@ -22,15 +22,6 @@
 namespace cvms::fuzz {
 namespace {
 
-std::vector<HalfspaceRow> as_inequalities(const HalfspaceSystem& s) {
-  std::vector<HalfspaceRow> rows = s.inequalities;
-  for (const HalfspaceRow& e : s.equalities) {
-    rows.push_back(e);
-    rows.push_back({-e.normal, -e.offset});
-  }
-  return rows;
-}
-
 bool canonical_rows(const std::vector<HalfspaceRow>& rows) {
   return std::all_of(rows.begin(), rows.end(), [](const HalfspaceRow& r) {
     return is_canonical(r.normal.x) && is_canonical(r.normal.y) && is_canonical(r.normal.z) &&
@@ -107,7 +98,7 @@ void check_intersection(const HalfspaceSystem& system, const std::string& who, c
   }
   const std::string bad = test::check_set_invariants(got.set);
   if (!bad.empty()) finding(who + ": " + bad);
-  const test::SetShape expected = test::brute_force_intersection(as_inequalities(system));
+  const test::SetShape expected = test::brute_force_intersection(test::as_inequalities(system));
   const test::SetShape actual = test::describe_set(got.set);
   if (actual != expected)
     finding(who +

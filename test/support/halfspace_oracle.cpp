@@ -13,6 +13,8 @@ bool satisfies(const Vec3& x, std::span<const HalfspaceRow> rows) {
   return std::all_of(rows.begin(), rows.end(), [&](const HalfspaceRow& r) { return dot(r.normal, x) <= r.offset; });
 }
 
+}  // namespace
+
 std::vector<HalfspaceRow> as_inequalities(const HalfspaceSystem& s) {
   std::vector<HalfspaceRow> rows = s.inequalities;
   for (const HalfspaceRow& e : s.equalities) {
@@ -21,8 +23,6 @@ std::vector<HalfspaceRow> as_inequalities(const HalfspaceSystem& s) {
   }
   return rows;
 }
-
-}  // namespace
 
 std::vector<Vec3> brute_force_vertices(std::span<const HalfspaceRow> rows) {
   std::set<Vec3> found;

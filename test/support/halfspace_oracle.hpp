@@ -15,6 +15,9 @@
 
 namespace cvms::test {
 
+/// The system as inequalities only: each equality as two opposite rows.
+std::vector<HalfspaceRow> as_inequalities(const HalfspaceSystem& s);
+
 /// The vertices of {x : every row} by the triple enumeration (no duplicates).
 std::vector<Vec3> brute_force_vertices(std::span<const HalfspaceRow> rows);
 
