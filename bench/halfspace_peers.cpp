@@ -1,21 +1,55 @@
 // SPDX-License-Identifier: MIT
-// Peer rows of cvms_halfspace_bench (built only with CVMS_BENCH_PEERS and a
-// found qhull): qhull's half-space intersection on the same rows as the
-// BM_FromHalfspaces_* rows (halfspace_operands.hpp), with the same interior
-// point given. The exact rows are rounded to the nearest doubles before the
-// timed loop: the sphere planes have primitive integer normals of about 100
-// bits, so qhull intersects planes within rounding of ours, in floating
-// point, and its vertex count may differ from the exact one.
+// Peer rows of cvms_halfspace_bench (built only with CVMS_BENCH_PEERS, each
+// peer when found): qhull's half-space intersection and CGAL's exact
+// halfspace_intersection_3 on the same rows as the BM_FromHalfspaces_* rows
+// (halfspace_operands.hpp), with the same interior point given. For qhull
+// the exact rows are rounded to the nearest doubles before the timed loop:
+// the sphere planes have primitive integer normals of about 100 bits, so
+// qhull intersects planes within rounding of ours, in floating point, and
+// its vertex count may differ from the exact one. CGAL takes them exactly.
 #include <benchmark/benchmark.h>
-
-#ifdef CVMS_BENCH_HAVE_QHULL
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "halfspace_operands.hpp"
+#include "peer_cgal.hpp"
 #include "peer_qhalf.hpp"
+
+#ifdef CVMS_BENCH_HAVE_CGAL
+namespace {
+
+// CGAL goes through the convex hull of the planes' dual points about the
+// interior point, as from_halfspaces does, in its exact-constructions
+// kernel (Epeck: interval filters, lazy exact numbers).
+void cgal_halfspaces(benchmark::State& state, const cvms_bench::HalfspaceOperands& in) {
+  const cvms_bench::CgalExactPlanes planes(in.rows, in.interior);
+  cvms_bench::CgalIntersection r;
+  for (auto _ : state) {
+    r = planes.intersect();
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * in.rows.size()));
+  state.counters["rows"] = static_cast<double>(in.rows.size());
+  state.counters["V"] = static_cast<double>(r.vertices);
+}
+
+void BM_CgalHalfspaces_Sphere(benchmark::State& state) {
+  cgal_halfspaces(state, cvms_bench::sphere_rows(static_cast<int>(state.range(0))));
+}
+BENCHMARK(BM_CgalHalfspaces_Sphere)->DenseRange(4, 6)->Unit(benchmark::kMillisecond);
+
+void BM_CgalHalfspaces_Redundant(benchmark::State& state) {
+  cgal_halfspaces(state, cvms_bench::redundant_rows(static_cast<int>(state.range(0))));
+}
+BENCHMARK(BM_CgalHalfspaces_Redundant)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+#endif  // CVMS_BENCH_HAVE_CGAL
+
+#ifdef CVMS_BENCH_HAVE_QHULL
 
 namespace {
 

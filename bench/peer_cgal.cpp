@@ -4,6 +4,14 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
+#include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
+#include <CGAL/version.h>
+
+#if CGAL_VERSION_NR < 1060000000
+#include <boost/optional.hpp>
+#else
+#include <optional>
+#endif
 
 #include <type_traits>
 #include <vector>
@@ -53,6 +61,33 @@ std::size_t CgalExactPoints::size() const { return impl_->points.size(); }
 CgalHull CgalExactPoints::convex_hull() const {
   CGAL::Surface_mesh<Point> mesh;
   CGAL::convex_hull_3(impl_->points.begin(), impl_->points.end(), mesh);
+  return {mesh.number_of_faces(), mesh.number_of_vertices()};
+}
+
+struct CgalExactPlanes::Impl {
+  std::vector<Kernel::Plane_3> planes;
+  Point interior;
+};
+
+CgalExactPlanes::CgalExactPlanes(std::span<const cvms::HalfspaceRow> rows, const cvms::Vec3& interior)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->planes.reserve(rows.size());
+  for (const cvms::HalfspaceRow& r : rows)
+    impl_->planes.emplace_back(exact(r.normal.x), exact(r.normal.y), exact(r.normal.z), exact(-r.offset));
+  impl_->interior = exact(interior);
+}
+
+CgalExactPlanes::~CgalExactPlanes() = default;
+
+CgalIntersection CgalExactPlanes::intersect() const {
+  CGAL::Surface_mesh<Point> mesh;
+  // CGAL 6 takes the interior point as std::optional, earlier versions as boost::optional.
+#if CGAL_VERSION_NR < 1060000000
+  const boost::optional<Point> origin(impl_->interior);
+#else
+  const std::optional<Point> origin(impl_->interior);
+#endif
+  CGAL::halfspace_intersection_3(impl_->planes.begin(), impl_->planes.end(), mesh, origin);
   return {mesh.number_of_faces(), mesh.number_of_vertices()};
 }
 
