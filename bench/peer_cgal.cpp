@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "peer_cgal.hpp"
 
+#include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
-#include <CGAL/Convex_hull_3/dual/halfspace_intersection_3.h>
 #include <CGAL/version.h>
 
 #if CGAL_VERSION_NR < 1060000000
