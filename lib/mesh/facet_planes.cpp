@@ -40,15 +40,13 @@ FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<Approx
   out.normal_approx.resize(mesh.num_faces());
   out.offsets.resize(mesh.num_faces());
   const auto ref = [&](VertexId v) { return Vec3Ref{mesh.position(v), vertex_approx[v.index()]}; };
-  Vec3 general;  // these three keep their limbs from facet to facet
+  Vec3 general;  // these two keep their limbs from facet to facet
   DotScratch scratch;
-  Rational offset;
   for (FaceId f : mesh.faces()) {
     const std::array<VertexId, 3> t = first_corners(mesh, f);
     Vec3& normal = out.normals[f.index()];
     primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, normal, out.normal_approx[f.index()]);
-    integer_dot(normal, mesh.position(t[0]), scratch, offset);
-    arena.store(out.offsets[f.index()], offset);
+    store_integer_dot(arena, out.offsets[f.index()], normal, mesh.position(t[0]), scratch);
   }
   return out;
 }

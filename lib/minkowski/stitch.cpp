@@ -253,18 +253,23 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
   soup.points.reserve(corners / 3 + 1);  // each vertex is in at least three facets
 
   if (approx != nullptr) approx->reserve(soup.points.capacity());
-  Vec3 arena_sum;  // reused: only its copy in the arena is kept
+  Vec3 arena_sum;  // reused scratch of store_sum's general path
   auto new_vertex = [&](const VertexPair& p) {
     const VertexId va(p.a), vb(p.b);
     // Built in place: moving an mpq_class re-initialises the source, which allocates.
     Vec3& point = soup.points.emplace_back();
-    Vec3& sum = limbs != nullptr ? arena_sum : point;
-    for (int i = 0; i < 3; ++i) add_into(sum[i], a_.vertex(va)[i], b_.vertex(vb)[i]);
-    if (limbs != nullptr) limbs->store(point, sum);
+    const Vec3 &pa = a_.vertex(va), &pb = b_.vertex(vb);
+    for (int i = 0; i < 3; ++i) {
+      if (limbs != nullptr) {
+        store_sum(*limbs, point[i], pa[i], pb[i], arena_sum[i]);
+      } else {
+        add_into(point[i], pa[i], pb[i]);
+      }
+    }
     if (approx != nullptr) {
       const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
-      approx->push_back(
-          {approx_sum(xa.x, xb.x, sum.x), approx_sum(xa.y, xb.y, sum.y), approx_sum(xa.z, xb.z, sum.z)});
+      approx->push_back({approx_sum(xa.x, xb.x, point.x), approx_sum(xa.y, xb.y, point.y),
+                         approx_sum(xa.z, xb.z, point.z)});
     }
     return static_cast<std::uint32_t>(soup.points.size() - 1);
   };
@@ -302,7 +307,6 @@ struct SumFacetBuilder::PlaneScratch {
   EdgeDirections directions_b;
   Vec3 first_vertex_sum;
   Vec3 normal;
-  Rational offset;
   DotScratch dot;
   LimbArena& limbs;  // where this thread's planes keep their numerators (and long denominators)
 };
@@ -336,8 +340,7 @@ void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::
       const Vec3 &va = a_.vertex(VertexId(first.a)), &vb = b_.vertex(VertexId(first.b));
       for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
     }
-    integer_dot(normal, *first_vertex, scratch.dot, scratch.offset);
-    scratch.limbs.store(planes.offsets[i], scratch.offset);
+    store_integer_dot(scratch.limbs, planes.offsets[i], normal, *first_vertex, scratch.dot);
   }
 }
 
@@ -347,9 +350,13 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
   switch (source.kind) {
     case NormalKind::facet_a:
     case NormalKind::facet_b: {
+      // The operand's approximation is ApproxVec3::of of the same normal:
+      // copied, not worked out again.
       const ConvexPolyhedron& p = source.kind == NormalKind::facet_a ? a_ : b_;
-      normal = &p.normal(FaceId(source.index));
-      break;
+      const Vec3Ref operand_normal = detail::normal_ref(p, FaceId(source.index));
+      planes.normal_approx[i] = operand_normal.approx;
+      scratch.limbs.store(planes.normals[i], operand_normal.exact);
+      return operand_normal.exact;
     }
     case NormalKind::edges_positive:
     case NormalKind::edges_negative: {

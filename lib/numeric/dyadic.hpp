@@ -7,10 +7,28 @@
 // temporaries that such values do not need. Every function gives exactly the
 // canonical result of the general operation and falls back to it for other
 // rationals.
+//
+// The fixed-width paths (FixedDyadic) go further for the common case of
+// short values: a dot product of a primitive normal with a vertex, or the
+// sum of two vertices' coordinates, is computed in machine words and stored
+// into an arena with no GMP call at all. They take dyadic coordinates whose
+// numerator and denominator fit one limb each (a double of magnitude at
+// least 2^-11: every coordinate of the unit sphere but those near zero) and
+// normals of at most two limbs. The bounds: with exponents below 64, a
+// numerator brought to the common denominator is below 2^(64 + 63); a sum
+// of two is below 2^128 (two limbs), and a normal's
+// coordinate times one below 2^(128 + 64 + 63), so a dot product of three
+// is below 2^257: five limbs in two's complement. Outside those bounds the
+// general path runs; the results are the same canonical values either way.
 #pragma once
+
+#include <optional>
+#include <span>
 
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
+#include "fixed_int.hpp"
+#include "limb_arena.hpp"
 #include "power_of_two.hpp"
 
 namespace cvms::detail {
@@ -36,6 +54,7 @@ struct DotScratch {
   mpz_class denominator;  ///< common denominator of the point
   mpz_class sum;          ///< numerator being accumulated
   mpz_class term;         ///< one scaled coordinate
+  Rational value;         ///< a result on its way into an arena
 };
 
 /// out = dot(n, p), canonical, for an integer vector n and a rational point p: with
@@ -46,5 +65,39 @@ struct DotScratch {
 /// Writing into an existing out reuses its storage (no Rational is moved:
 /// a moved-from mpq_class is re-initialised, which allocates).
 void integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& out);
+
+/// numerator / 2^exponent in fixed limbs, not necessarily in lowest terms.
+template <int L>
+struct FixedDyadic {
+  FixedInt<L> numerator;
+  mp_bitcnt_t exponent = 0;
+};
+
+/// x + y in fixed limbs, when both are dyadic with a numerator and a
+/// denominator of one limb each (see the file comment); nullopt otherwise.
+[[nodiscard]] std::optional<FixedDyadic<2>> fixed_sum(const Rational& x, const Rational& y) noexcept;
+
+/// dot(n, p) in fixed limbs, when n's coordinates are integers of at most
+/// two limbs and p's are dyadic with a numerator and a denominator of one
+/// limb each; nullopt otherwise.
+/// \pre n has integer coordinates.
+[[nodiscard]] std::optional<FixedDyadic<5>> fixed_integer_dot(const Vec3& n, const Vec3& p) noexcept;
+
+/// Divides magnitude / 2^exponent by the largest power of two dividing both
+/// (in place) and returns the new exponent.
+mp_bitcnt_t reduce_dyadic(std::span<std::uint64_t> magnitude, mp_bitcnt_t exponent) noexcept;
+
+/// out = value in lowest terms, its limbs in arena (LimbArena::store_dyadic).
+template <int L>
+void store_dyadic(LimbArena& arena, Rational& out, FixedDyadic<L> value) {
+  const mp_bitcnt_t exponent = reduce_dyadic(value.numerator.magnitude, value.exponent);
+  arena.store_dyadic(out, value.numerator.magnitude.data(), L, value.numerator.negative, exponent);
+}
+
+/// out = x + y like add_into, its limbs in arena. \pre out is not x or y.
+void store_sum(LimbArena& arena, Rational& out, const Rational& x, const Rational& y, Rational& scratch);
+
+/// out = dot(n, p) like integer_dot, its limbs in arena.
+void store_integer_dot(LimbArena& arena, Rational& out, const Vec3& n, const Vec3& p, DotScratch& scratch);
 
 }  // namespace cvms::detail

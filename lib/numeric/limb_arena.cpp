@@ -168,6 +168,43 @@ void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t hi
   mpz_roinit_n(num, view_limbs, negative ? -size : size);
 }
 
+void LimbArena::store_dyadic(Rational& out, const std::uint64_t* magnitude, std::size_t size, bool negative,
+                             mp_bitcnt_t exponent) {
+  static_assert(sizeof(std::uint64_t) == sizeof(mp_limb_t));
+  while (size > 0 && magnitude[size - 1] == 0) --size;
+  const auto signed_size =
+      static_cast<mp_size_t>(negative ? -static_cast<mp_size_t>(size) : static_cast<mp_size_t>(size));
+  mpq_ptr o = out.get_mpq_t();
+  mpz_ptr num = mpq_numref(o);
+  mpz_ptr den = mpq_denref(o);
+  const bool one_limb_denominator = exponent < GMP_NUMB_BITS;
+  if (!holds_limbs()) {
+    mp_limb_t* limbs = mpz_limbs_write(num, size == 0 ? 1 : static_cast<mp_size_t>(size));
+    if (size > 0) std::memcpy(limbs, magnitude, size * sizeof(mp_limb_t));
+    mpz_limbs_finish(num, signed_size);
+    mpz_set_ui(den, 0);
+    mpz_setbit(den, exponent);
+    return;
+  }
+  const bool is_one = size == 1 && magnitude[0] == 1;
+  const std::size_t num_limbs = size == 0 || is_one ? 0 : size;
+  const std::size_t den_limbs = one_limb_denominator ? 0 : exponent / GMP_NUMB_BITS + 1;
+  // As in store(): everything that can throw comes before out is given up.
+  mp_limb_t* limbs = num_limbs + den_limbs > 0 ? allocate(num_limbs + den_limbs) : nullptr;
+  if (one_limb_denominator) {
+    mpz_set_ui(den, mp_limb_t{1} << exponent);
+  } else {
+    mp_limb_t* d = limbs + num_limbs;
+    std::fill(d, d + den_limbs, mp_limb_t{0});
+    d[den_limbs - 1] = mp_limb_t{1} << (exponent % GMP_NUMB_BITS);
+    mpz_clear(den);
+    mpz_roinit_n(den, d, static_cast<mp_size_t>(den_limbs));
+  }
+  if (num_limbs > 0) std::memcpy(limbs, magnitude, num_limbs * sizeof(mp_limb_t));
+  mpz_clear(num);
+  mpz_roinit_n(num, size == 0 ? &zero_limb : (is_one ? &one_limb : limbs), signed_size);
+}
+
 void LimbArena::negate_stored(Rational& out) const {
   mpz_ptr num = mpq_numref(out.get_mpq_t());
   // A value that owns its limbs (never a view) is negated by GMP: made into

@@ -86,6 +86,14 @@ class LimbArena {
   /// without a GMP value to copy from.
   void store_integer(Rational& out, std::uint64_t low, std::uint64_t high, bool negative);
 
+  /// out = (negative ? -m : m) / 2^exponent for the integer m whose `size`
+  /// limbs (least significant first; high zero limbs allowed) are at
+  /// `magnitude`, stored like store() stores it: without a GMP value to copy
+  /// from or a gcd to take.
+  /// \pre the fraction is in lowest terms (m is odd or exponent is 0).
+  void store_dyadic(Rational& out, const std::uint64_t* magnitude, std::size_t size, bool negative,
+                    mp_bitcnt_t exponent);
+
   /// out = -out. A view (a value an arena stored) is made anew over the
   /// same limbs with the other sign, so nothing is written to them and
   /// nothing is stored; a value that owns its limbs is negated in place.
