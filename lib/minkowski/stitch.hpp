@@ -75,11 +75,17 @@ class SumFacetBuilder {
 
  private:
   // The planes of the facets: sized_planes() allocates them all, and
-  // write_planes fills facets [begin, end) (taking the offsets' points from
-  // the output mesh if it is given). Threads may write disjoint ranges.
+  // write_planes fills facets [begin, end), taking the offsets' points from
+  // the output vertices if they are given (facet i's plane at vertex
+  // first_vertex[i] of output_positions), else summing them. Threads may
+  // write disjoint ranges.
   struct PlaneScratch;
   [[nodiscard]] FacetPlanes sized_planes() const;
-  void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, const Mesh* mesh,
+  struct OutputVertices {
+    const std::vector<Vec3>* positions = nullptr;  ///< null: not built yet
+    std::span<const std::uint32_t> first_vertex;
+  };
+  void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, OutputVertices vertices,
                     PlaneScratch& scratch) const;
   // Facet i's normal and its approximation into planes; returns the normal
   // it stored from (an operand's or the scratch's), for the offset.
