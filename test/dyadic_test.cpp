@@ -154,13 +154,22 @@ TEST(Dyadic, FixedSumEqualsRationalSumWithinItsBounds) {
   const std::uint64_t seed = 20261204;
   const auto v = fixed_path_samples(seed);
   LimbArena arena;
-  Rational scratch;
+  Rational scratch, reused;
   for (const Rational& x : v)
     for (const Rational& y : v) {
       const Rational expected = x + y;
       const bool in_bounds = short_dyadic_value(x) && short_dyadic_value(y);
       const auto fixed = fixed_sum(x, y);
       ASSERT_EQ(fixed.has_value(), in_bounds) << "seed " << seed << ": " << x << " + " << y;
+      ASSERT_EQ(fixed_difference(x, y).has_value(), in_bounds) << "seed " << seed << ": " << x << " - " << y;
+      // add_into and subtract_into take the same path, into a value reused
+      // from pair to pair.
+      add_into(reused, x, y);
+      ASSERT_EQ(reused, expected) << "seed " << seed << ": " << x << " + " << y;
+      ASSERT_EQ(reused.get_den(), expected.get_den()) << "canonical: " << x << " + " << y;
+      subtract_into(reused, x, y);
+      ASSERT_EQ(reused, x - y) << "seed " << seed << ": " << x << " - " << y;
+      ASSERT_EQ(reused.get_den(), Rational(x - y).get_den()) << "canonical: " << x << " - " << y;
       Rational stored;
       store_sum(arena, stored, x, y, scratch);
       ASSERT_EQ(stored, expected) << "seed " << seed << ": " << x << " + " << y;

@@ -26,11 +26,20 @@ void set_reduced_dyadic(mpq_ptr out, mpz_ptr num, mp_bitcnt_t k) {
 
 namespace {
 
-// out = x + y or x - y (canonical): the operand with the smaller power-of-two
-// denominator is brought to the larger one. With different denominators the
-// finer numerator is odd and the other term even, so the result is already
+void assign_dyadic(Rational& out, std::span<const std::uint64_t> magnitude, bool negative,
+                   mp_bitcnt_t exponent);
+
+// out = x + y or x - y (canonical): in machine words when both are short
+// (fixed_sum), else the operand with the smaller power-of-two denominator is
+// brought to the larger one. With different denominators the finer
+// numerator is odd and the other term even, so the result is already
 // canonical and set_reduced_dyadic only writes the denominator.
 void add_or_subtract(Rational& out, const Rational& x, const Rational& y, bool subtract) {
+  if (std::optional<FixedDyadic<2>> fixed = subtract ? fixed_difference(x, y) : fixed_sum(x, y)) {
+    const mp_bitcnt_t exponent = reduce_dyadic(fixed->numerator.magnitude, fixed->exponent);
+    assign_dyadic(out, fixed->numerator.magnitude, fixed->numerator.negative, exponent);
+    return;
+  }
   if (!is_dyadic(x) || !is_dyadic(y)) {
     (subtract ? mpq_sub : mpq_add)(out.get_mpq_t(), x.get_mpq_t(), y.get_mpq_t());
     return;
@@ -161,9 +170,13 @@ mp_bitcnt_t reduce_dyadic(std::span<std::uint64_t> magnitude, mp_bitcnt_t expone
   return exponent - common;
 }
 
-std::optional<FixedDyadic<2>> fixed_sum(const Rational& x, const Rational& y) noexcept {
+namespace {
+
+std::optional<FixedDyadic<2>> fixed_combination(const Rational& x, const Rational& y,
+                                                bool subtract) noexcept {
   OneLimbDyadic a, b;
   if (!read_one_limb(x, a) || !read_one_limb(y, b)) return std::nullopt;
+  b.negative = b.negative != subtract;
   const unsigned k = std::max(a.exponent, b.exponent);
   // Each term is below 2^(64 + 63), so their sum is below 2^128.
   const Word2 ta = Word2{a.magnitude} << (k - a.exponent);
@@ -182,6 +195,16 @@ std::optional<FixedDyadic<2>> fixed_sum(const Rational& x, const Rational& y) no
   r.numerator.magnitude[0] = static_cast<std::uint64_t>(m);
   r.numerator.magnitude[1] = static_cast<std::uint64_t>(m >> 64);
   return r;
+}
+
+}  // namespace
+
+std::optional<FixedDyadic<2>> fixed_sum(const Rational& x, const Rational& y) noexcept {
+  return fixed_combination(x, y, false);
+}
+
+std::optional<FixedDyadic<2>> fixed_difference(const Rational& x, const Rational& y) noexcept {
+  return fixed_combination(x, y, true);
 }
 
 std::optional<FixedDyadic<5>> fixed_integer_dot(const Vec3& n, const Vec3& p) noexcept {

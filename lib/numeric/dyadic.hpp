@@ -36,7 +36,8 @@ namespace cvms::detail {
 /// Whether the (canonical) q has a power-of-two denominator.
 [[nodiscard]] inline bool is_dyadic(const Rational& q) noexcept { return is_power_of_two(q.get_den_mpz_t()); }
 
-/// out = x + y, canonical. out may alias neither x nor y.
+/// out = x + y, canonical (in machine words when fixed_sum applies). out
+/// may alias neither x nor y.
 void add_into(Rational& out, const Rational& x, const Rational& y);
 
 /// out = x - y, canonical. out may alias neither x nor y.
@@ -76,6 +77,9 @@ struct FixedDyadic {
 /// x + y in fixed limbs, when both are dyadic with a numerator and a
 /// denominator of one limb each (see the file comment); nullopt otherwise.
 [[nodiscard]] std::optional<FixedDyadic<2>> fixed_sum(const Rational& x, const Rational& y) noexcept;
+
+/// x - y, as fixed_sum.
+[[nodiscard]] std::optional<FixedDyadic<2>> fixed_difference(const Rational& x, const Rational& y) noexcept;
 
 /// dot(n, p) in fixed limbs, when n's coordinates are integers of at most
 /// two limbs and p's are dyadic with a numerator and a denominator of one
