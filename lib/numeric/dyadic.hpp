@@ -10,16 +10,17 @@
 //
 // The fixed-width paths (FixedDyadic) go further for the common case of
 // short values: a dot product of a primitive normal with a vertex, or the
-// sum of two vertices' coordinates, is computed in machine words and stored
-// into an arena with no GMP call at all. They take dyadic coordinates whose
-// numerator and denominator fit one limb each (a double of magnitude at
-// least 2^-11: every coordinate of the unit sphere but those near zero) and
-// normals of at most two limbs. The bounds: with exponents below 64, a
-// numerator brought to the common denominator is below 2^(64 + 63); a sum
-// of two is below 2^128 (two limbs), and a normal's
-// coordinate times one below 2^(128 + 64 + 63), so a dot product of three
-// is below 2^257: five limbs in two's complement. Outside those bounds the
-// general path runs; the results are the same canonical values either way.
+// sum or difference of two coordinates, is computed in machine words and
+// written (into an arena, or into a value's own limbs) with no GMP call at
+// all. They take dyadic coordinates whose numerator and denominator fit one
+// limb each (a double of magnitude at least 2^-11: every coordinate of the
+// unit sphere but those near zero) and normals of at most two limbs. The
+// bounds: with exponents below 64, a numerator brought to the common
+// denominator is below 2^(64 + 63); a sum of two is below 2^128 (two limbs);
+// a normal's coordinate times one is below 2^(128 + 64 + 63), so a dot
+// product of three is below 2^257: five limbs in two's complement. Outside
+// those bounds the general path runs; the results are the same canonical
+// values either way.
 #pragma once
 
 #include <optional>
@@ -40,7 +41,8 @@ namespace cvms::detail {
 /// may alias neither x nor y.
 void add_into(Rational& out, const Rational& x, const Rational& y);
 
-/// out = x - y, canonical. out may alias neither x nor y.
+/// out = x - y, canonical (in machine words when fixed_difference applies).
+/// out may alias neither x nor y.
 void subtract_into(Rational& out, const Rational& x, const Rational& y);
 
 /// x + y coordinatewise (add_into per coordinate).
