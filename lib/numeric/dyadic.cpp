@@ -22,24 +22,12 @@ void set_reduced_dyadic(mpq_ptr out, mpz_ptr num, mp_bitcnt_t k) {
   mpz_setbit(mpq_denref(out), k - common);
 }
 
-}  // namespace
-
-namespace {
-
-void assign_dyadic(Rational& out, std::span<const std::uint64_t> magnitude, bool negative,
-                   mp_bitcnt_t exponent);
-
-// out = x + y or x - y (canonical): in machine words when both are short
-// (fixed_sum), else the operand with the smaller power-of-two denominator is
-// brought to the larger one. With different denominators the finer
-// numerator is odd and the other term even, so the result is already
+// out = x + y or x - y (canonical) in GMP, for operands the machine-word
+// path (fixed_sum) declined: the operand with the smaller power-of-two
+// denominator is brought to the larger one. With different denominators the
+// finer numerator is odd and the other term even, so the result is already
 // canonical and set_reduced_dyadic only writes the denominator.
-void add_or_subtract(Rational& out, const Rational& x, const Rational& y, bool subtract) {
-  if (std::optional<FixedDyadic<2>> fixed = subtract ? fixed_difference(x, y) : fixed_sum(x, y)) {
-    const mp_bitcnt_t exponent = reduce_dyadic(fixed->numerator.magnitude, fixed->exponent);
-    assign_dyadic(out, fixed->numerator.magnitude, fixed->numerator.negative, exponent);
-    return;
-  }
+void exact_add_or_subtract(Rational& out, const Rational& x, const Rational& y, bool subtract) {
   if (!is_dyadic(x) || !is_dyadic(y)) {
     (subtract ? mpq_sub : mpq_add)(out.get_mpq_t(), x.get_mpq_t(), y.get_mpq_t());
     return;
@@ -57,6 +45,20 @@ void add_or_subtract(Rational& out, const Rational& x, const Rational& y, bool s
     combine(num, num, y.get_num_mpz_t());
   }
   set_reduced_dyadic(out.get_mpq_t(), num, k);
+}
+
+template <int L>
+void assign_fixed(Rational& out, FixedDyadic<L> value) {
+  const mp_bitcnt_t exponent = reduce_dyadic(value.numerator.magnitude, value.exponent);
+  assign_dyadic(out, value.numerator.magnitude.data(), L, value.numerator.negative, exponent);
+}
+
+void add_or_subtract(Rational& out, const Rational& x, const Rational& y, bool subtract) {
+  if (std::optional<FixedDyadic<2>> fixed = subtract ? fixed_difference(x, y) : fixed_sum(x, y)) {
+    assign_fixed(out, *fixed);
+  } else {
+    exact_add_or_subtract(out, x, y, subtract);
+  }
 }
 
 }  // namespace
@@ -78,25 +80,6 @@ Vec3 subtract(const Vec3& x, const Vec3& y) {
 }
 
 namespace {
-
-// out = (negative ? -m : m) / 2^exponent in out's own limbs.
-// \pre in lowest terms.
-void assign_dyadic(Rational& out, std::span<const std::uint64_t> magnitude, bool negative,
-                   mp_bitcnt_t exponent) {
-  std::size_t size = magnitude.size();
-  while (size > 0 && magnitude[size - 1] == 0) --size;
-  mpz_ptr num = mpq_numref(out.get_mpq_t());
-  mp_limb_t* limbs = mpz_limbs_write(num, size == 0 ? 1 : static_cast<mp_size_t>(size));
-  std::copy_n(magnitude.begin(), size, limbs);
-  mpz_limbs_finish(num, negative ? -static_cast<mp_size_t>(size) : static_cast<mp_size_t>(size));
-  mpz_ptr den = mpq_denref(out.get_mpq_t());
-  if (exponent < GMP_NUMB_BITS) {
-    mpz_set_ui(den, mp_limb_t{1} << exponent);
-  } else {
-    mpz_set_ui(den, 0);
-    mpz_setbit(den, exponent);
-  }
-}
 
 __extension__ using Word2 = unsigned __int128;
 
@@ -242,30 +225,10 @@ std::optional<FixedDyadic<5>> fixed_integer_dot(const Vec3& n, const Vec3& p) no
   return FixedDyadic<5>{sum.value(), k};
 }
 
-void store_sum(LimbArena& arena, Rational& out, const Rational& x, const Rational& y, Rational& scratch) {
-  if (const std::optional<FixedDyadic<2>> sum = fixed_sum(x, y)) {
-    store_dyadic(arena, out, *sum);
-    return;
-  }
-  add_into(scratch, x, y);
-  arena.store(out, scratch);
-}
+namespace {
 
-void store_integer_dot(LimbArena& arena, Rational& out, const Vec3& n, const Vec3& p, DotScratch& scratch) {
-  if (const std::optional<FixedDyadic<5>> dot = fixed_integer_dot(n, p)) {
-    store_dyadic(arena, out, *dot);
-    return;
-  }
-  integer_dot(n, p, scratch, scratch.value);
-  arena.store(out, scratch.value);
-}
-
-void integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& out) {
-  if (std::optional<FixedDyadic<5>> dot = fixed_integer_dot(n, p)) {
-    const mp_bitcnt_t exponent = reduce_dyadic(dot->numerator.magnitude, dot->exponent);
-    assign_dyadic(out, dot->numerator.magnitude, dot->numerator.negative, exponent);
-    return;
-  }
+// integer_dot in GMP, for the operands fixed_integer_dot declined.
+void exact_integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& out) {
   mpz_class& sum = scratch.sum;
   mpz_class& term = scratch.term;
   sum = 0;
@@ -293,6 +256,34 @@ void integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& ou
   mpz_set(mpq_numref(out.get_mpq_t()), sum.get_mpz_t());
   mpz_set(mpq_denref(out.get_mpq_t()), l.get_mpz_t());
   out.canonicalize();
+}
+
+}  // namespace
+
+void store_sum(LimbArena& arena, Rational& out, const Rational& x, const Rational& y, Rational& scratch) {
+  if (const std::optional<FixedDyadic<2>> sum = fixed_sum(x, y)) {
+    store_dyadic(arena, out, *sum);
+    return;
+  }
+  exact_add_or_subtract(scratch, x, y, false);
+  arena.store(out, scratch);
+}
+
+void store_integer_dot(LimbArena& arena, Rational& out, const Vec3& n, const Vec3& p, DotScratch& scratch) {
+  if (const std::optional<FixedDyadic<5>> dot = fixed_integer_dot(n, p)) {
+    store_dyadic(arena, out, *dot);
+    return;
+  }
+  exact_integer_dot(n, p, scratch, scratch.value);
+  arena.store(out, scratch.value);
+}
+
+void integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Rational& out) {
+  if (std::optional<FixedDyadic<5>> dot = fixed_integer_dot(n, p)) {
+    assign_fixed(out, *dot);
+  } else {
+    exact_integer_dot(n, p, scratch, out);
+  }
 }
 
 }  // namespace cvms::detail

@@ -168,9 +168,29 @@ void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t hi
   mpz_roinit_n(num, view_limbs, negative ? -size : size);
 }
 
+void assign_dyadic(Rational& out, const std::uint64_t* magnitude, std::size_t size, bool negative,
+                   mp_bitcnt_t exponent) {
+  static_assert(sizeof(std::uint64_t) == sizeof(mp_limb_t));
+  while (size > 0 && magnitude[size - 1] == 0) --size;
+  mpz_ptr num = mpq_numref(out.get_mpq_t());
+  mp_limb_t* limbs = mpz_limbs_write(num, size == 0 ? 1 : static_cast<mp_size_t>(size));
+  if (size > 0) std::memcpy(limbs, magnitude, size * sizeof(mp_limb_t));
+  mpz_limbs_finish(num, negative ? -static_cast<mp_size_t>(size) : static_cast<mp_size_t>(size));
+  mpz_ptr den = mpq_denref(out.get_mpq_t());
+  if (exponent < GMP_NUMB_BITS) {
+    mpz_set_ui(den, mp_limb_t{1} << exponent);
+  } else {
+    mpz_set_ui(den, 0);
+    mpz_setbit(den, exponent);
+  }
+}
+
 void LimbArena::store_dyadic(Rational& out, const std::uint64_t* magnitude, std::size_t size, bool negative,
                              mp_bitcnt_t exponent) {
-  static_assert(sizeof(std::uint64_t) == sizeof(mp_limb_t));
+  if (!holds_limbs()) {
+    assign_dyadic(out, magnitude, size, negative, exponent);
+    return;
+  }
   while (size > 0 && magnitude[size - 1] == 0) --size;
   const auto signed_size =
       static_cast<mp_size_t>(negative ? -static_cast<mp_size_t>(size) : static_cast<mp_size_t>(size));
@@ -178,14 +198,6 @@ void LimbArena::store_dyadic(Rational& out, const std::uint64_t* magnitude, std:
   mpz_ptr num = mpq_numref(o);
   mpz_ptr den = mpq_denref(o);
   const bool one_limb_denominator = exponent < GMP_NUMB_BITS;
-  if (!holds_limbs()) {
-    mp_limb_t* limbs = mpz_limbs_write(num, size == 0 ? 1 : static_cast<mp_size_t>(size));
-    if (size > 0) std::memcpy(limbs, magnitude, size * sizeof(mp_limb_t));
-    mpz_limbs_finish(num, signed_size);
-    mpz_set_ui(den, 0);
-    mpz_setbit(den, exponent);
-    return;
-  }
   const bool is_one = size == 1 && magnitude[0] == 1;
   const std::size_t num_limbs = size == 0 || is_one ? 0 : size;
   const std::size_t den_limbs = one_limb_denominator ? 0 : exponent / GMP_NUMB_BITS + 1;

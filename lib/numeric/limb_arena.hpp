@@ -47,6 +47,14 @@
 
 namespace cvms::detail {
 
+/// out = (negative ? -m : m) / 2^exponent in out's own limbs, m the integer
+/// whose `size` limbs (least significant first; high zero limbs allowed)
+/// are at `magnitude`: what LimbArena::store_dyadic writes when the arena
+/// cannot hold limbs, and what the gcd-free arithmetic (dyadic.hpp) writes
+/// into values that are not stored. \pre in lowest terms.
+void assign_dyadic(Rational& out, const std::uint64_t* magnitude, std::size_t size, bool negative,
+                   mp_bitcnt_t exponent);
+
 class LimbArena {
  public:
   LimbArena() = default;
@@ -110,7 +118,7 @@ class LimbArena {
   [[nodiscard]] mp_limb_t* allocate(std::size_t limbs);
 
   std::vector<HugePageArray<mp_limb_t, BlockLife::kept>> blocks_;  // the large ones on huge pages
-  mp_limb_t* free_ = nullptr;  ///< the unused tail of the newest block
+  mp_limb_t* free_ = nullptr;                                      ///< the unused tail of the newest block
   std::size_t free_limbs_ = 0;
   static constexpr std::size_t first_block_limbs = 512;
   std::size_t next_block_limbs_ = first_block_limbs;
