@@ -6,14 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <limits>
-
 #include <random>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/shapes.hpp"
-#include "support/random_clouds.hpp"
+#include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
+#include "support/random_clouds.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -120,9 +120,10 @@ TEST(ContributingVertices, StoredPerFacet) {
 
 // The walk (BFS over facets + hill-climbing) against the brute-force maxima,
 // on tie-heavy pairs: every facet of p with the maximisers of its normal.
-void expect_walk_matches_brute_force(const ConvexPolyhedron& p, const ConvexPolyhedron& q) {
+void expect_walk_matches_brute_force(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
+                                     WalkSplit split = {}) {
   ContributingVertices cv(p.num_facets());
-  contributing_vertices_walk(p, q, {}, cv);
+  contributing_vertices_walk(p, q, {}, cv, split);
   ASSERT_EQ(cv.num_facets(), p.num_facets());
   for (FaceId f : p.mesh().faces()) {
     const std::vector<VertexId> expected = brute_force_maximisers(q, p.normal(f));
@@ -165,6 +166,42 @@ TEST(ContributingVerticesWalk, RandomPairsMatchBruteForce) {
     expect_walk_matches_brute_force(p.a, p.b);
     expect_walk_matches_brute_force(p.b, p.a);
   }
+}
+
+// The walk cut into pieces (each climbing from its own seeds) on several
+// threads: the same lists as the brute force, and for a given cut the same
+// predicates evaluated on any number of threads (4 and 8 oversubscribe).
+TEST(ContributingVerticesWalk, PiecesOnThreadsMatchBruteForceAndCountAlike) {
+  const auto s3 = shapes::geodesic_sphere(3);
+  const auto r3 = shapes::rotated_geodesic_sphere(3);
+  const auto p8 = shapes::prism(8, 3);
+  const auto side = shapes::prism(5, 2).transformed(quarter_turn_x(), {});
+  const test::RandomPair random = test::random_pair(7);
+  const std::vector<std::pair<const ConvexPolyhedron*, const ConvexPolyhedron*>> pairs = {
+      {&s3, &r3}, {&r3, &s3}, {&s3, &s3}, {&p8, &side}, {&random.a, &random.b}};
+  for (const auto& [p, q] : pairs) {
+    for (unsigned pieces : {2u, 3u, 5u, 8u, 1000u}) {
+      std::uint64_t one_thread = 0;
+      for (unsigned threads : {1u, 2u, 4u, 8u}) {
+        SCOPED_TRACE("pieces " + std::to_string(pieces) + ", threads " + std::to_string(threads));
+        const PredicateCounters before = predicate_counters();
+        expect_walk_matches_brute_force(*p, *q, {pieces, threads});
+        const PredicateCounters& after = predicate_counters();
+        const std::uint64_t evaluated = after.filtered + after.exact - before.filtered - before.exact;
+        if (threads == 1) one_thread = evaluated;
+        EXPECT_EQ(evaluated, one_thread);
+      }
+    }
+  }
+}
+
+TEST(ContributingVerticesWalk, PiecesFollowTheSizeAlone) {
+  EXPECT_EQ(walk_pieces(0, 8192), 1u);
+  EXPECT_EQ(walk_pieces(16383, 8192), 1u);
+  EXPECT_EQ(walk_pieces(16384, 8192), 2u);
+  EXPECT_EQ(walk_pieces(20480, 8192), 2u);
+  EXPECT_EQ(walk_pieces(1u << 30, 8192), max_walk_pieces);
+  EXPECT_EQ(walk_pieces(1u << 30, 0), 1u);
 }
 
 TEST(ContributingVerticesWalk, PartnersAreTakenWithoutClimbing) {

@@ -4,9 +4,11 @@
 #include "contributing_vertices.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
+#include "worker.hpp"
 
 namespace cvms::detail {
 
@@ -101,53 +103,103 @@ void climb(const ConvexPolyhedron& q, Vec3Ref n, VertexId start, std::vector<Ver
 
 }  // namespace
 
-void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
-                                std::span<const FaceId> partner, ContributingVertices& out) {
-  const Mesh& mp = p.mesh();
-  const std::uint32_t nf = p.num_facets();
-  // Facets in breadth-first order (the queue is the order itself). Each
-  // climbs from the answer of its neighbour that was done last, not of the
-  // one that queued it: all the neighbours of a facet of high degree are
-  // queued by it, and climbing each from its answer would cross half the
-  // operand every time (two n-gon prisms with perpendicular axes: the n side
-  // facets of A, queued by a cap, climbed n/4 vertices of B each, O(n^2)).
-  // The neighbour done last is usually the previous facet around that cap.
-  std::vector<std::uint32_t> done_at(nf, 0);  // 1 + position in the order; 0: not done
-  std::vector<VertexId> answer(nf);           // the first contributing vertex, once done
-  std::vector<bool> queued(nf, false);
-  std::vector<FaceId> queue;
-  queue.reserve(nf);
-  std::vector<VertexId> list;
-  queue.push_back(FaceId(0));
+namespace {
+
+// The facets of p in breadth-first order from facet 0 over their adjacency
+// (the queue is the order itself), and each facet's position in it.
+struct FacetOrder {
+  std::vector<FaceId> facets;
+  std::vector<std::uint32_t> position;
+};
+
+FacetOrder breadth_first_facets(const Mesh& mp, std::uint32_t num_facets) {
+  FacetOrder order;
+  order.facets.reserve(num_facets);
+  order.position.assign(num_facets, 0);
+  std::vector<bool> queued(num_facets, false);
+  order.facets.push_back(FaceId(0));
   queued[0] = true;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const FaceId f = queue[head];
+  for (std::size_t head = 0; head < order.facets.size(); ++head) {
+    const FaceId f = order.facets[head];
+    order.position[f.index()] = static_cast<std::uint32_t>(head);
+    for (HalfedgeId h : mp.face_halfedges(f)) {
+      const FaceId next = mp.face(Mesh::twin(h));
+      if (queued[next.index()]) continue;
+      queued[next.index()] = true;
+      order.facets.push_back(next);
+    }
+  }
+  // The queue reaches every facet: a ConvexPolyhedron's surface is connected.
+  return order;
+}
+
+// Walks the facets order.facets[begin, end), appending their lists to out in
+// that order. Each climbs from the answer of its neighbour in the same piece
+// that was done last, not of the one that queued it: all the neighbours of a
+// facet of high degree are queued by it, and climbing each from its answer
+// would cross half the operand every time (two n-gon prisms with
+// perpendicular axes: the n side facets of A, queued by a cap, climbed n/4
+// vertices of B each, O(n^2)). The neighbour done last is usually the
+// previous facet around that cap. A facet with no such neighbour (the
+// piece's first) climbs from the previous facet's answer, or from vertex 0.
+// answer[f] is written for the piece's facets only, so pieces may run at
+// once.
+void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, std::span<const FaceId> partner,
+                const FacetOrder& order, std::size_t begin, std::size_t end, std::span<VertexId> answer,
+                ContributingVertices& out) {
+  const Mesh& mp = p.mesh();
+  std::vector<VertexId> list;
+  for (std::size_t i = begin; i < end; ++i) {
+    const FaceId f = order.facets[i];
     const FaceId g = partner.empty() ? FaceId() : partner[f.index()];
     if (g.is_valid()) {
       sorted_facet_vertices(q, g, list);
     } else {
-      VertexId seed(0);
-      std::uint32_t latest = 0;
+      VertexId seed = i > begin ? answer[order.facets[i - 1].index()] : VertexId(0);
+      std::size_t latest = begin;  // positions in [begin, i) are done in this piece
       for (HalfedgeId h : mp.face_halfedges(f)) {
         const std::uint32_t k = mp.face(Mesh::twin(h)).index();
-        if (done_at[k] > latest) {
-          latest = done_at[k];
+        const std::size_t at = order.position[k];
+        if (at >= latest && at < i) {
+          latest = at + 1;
           seed = answer[k];
         }
       }
       climb(q, detail::normal_ref(p, f), seed, list);
     }
-    out.assign(f, list);
+    out.append(list);
     answer[f.index()] = list.front();
-    done_at[f.index()] = static_cast<std::uint32_t>(head + 1);
-    for (HalfedgeId h : mp.face_halfedges(f)) {
-      const FaceId next = mp.face(Mesh::twin(h));
-      if (queued[next.index()]) continue;
-      queued[next.index()] = true;
-      queue.push_back(next);
-    }
   }
-  // The queue reaches every facet: a ConvexPolyhedron's surface is connected.
+}
+
+}  // namespace
+
+unsigned walk_pieces(std::uint32_t num_facets, std::uint32_t facets_per_piece) noexcept {
+  const std::uint32_t pieces = facets_per_piece == 0 ? 1 : num_facets / facets_per_piece;
+  return std::clamp<std::uint32_t>(pieces, 1, max_walk_pieces);
+}
+
+void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
+                                std::span<const FaceId> partner, ContributingVertices& out, WalkSplit split) {
+  const std::uint32_t nf = p.num_facets();
+  const FacetOrder order = breadth_first_facets(p.mesh(), nf);
+  const unsigned pieces = std::clamp(split.pieces, 1u, std::max(nf, 1u));
+  std::vector<VertexId> answer(nf);  // each facet's first contributing vertex, once done
+  std::vector<ContributingVertices> lists(pieces);
+  const auto piece_begin = [&](unsigned k) { return std::size_t{nf} * k / pieces; };
+  // Pieces handed out in order by an atomic counter: any number of threads
+  // walks the same pieces from the same seeds, so the lists and the
+  // predicates evaluated do not depend on it.
+  std::atomic<unsigned> next{0};
+  run_on_threads(std::min(split.threads, pieces), [&](unsigned) {
+    for (unsigned k = next.fetch_add(1); k < pieces; k = next.fetch_add(1))
+      walk_piece(p, q, partner, order, piece_begin(k), piece_begin(k + 1), answer, lists[k]);
+  });
+  for (unsigned k = 0; k < pieces; ++k) {
+    const std::size_t begin = piece_begin(k);
+    for (std::size_t i = begin; i < piece_begin(k + 1); ++i)
+      out.assign(order.facets[i], lists[k].of(FaceId(static_cast<std::uint32_t>(i - begin))));
+  }
 }
 
 }  // namespace cvms::detail

@@ -83,8 +83,22 @@ class ContributingVertices {
 /// The lists equal those of maximising_vertices exactly.
 /// Cost: O(sum over facets of the climb length times the degrees met) predicates,
 /// in practice O(f_p + v_q) for operands of similar resolution.
+/// How contributing_vertices_walk shares its work: the breadth-first order
+/// is cut into `pieces` runs of facets, each climbing from its own seeds, so
+/// that the lists and the predicates evaluated depend on the pieces alone;
+/// up to `threads` threads walk them.
+struct WalkSplit {
+  unsigned pieces = 1;
+  unsigned threads = 1;
+};
+/// The most pieces walk_pieces gives.
+inline constexpr std::uint32_t max_walk_pieces = 8;
+/// The pieces for num_facets facets: one per facets_per_piece (at least
+/// one, at most max_walk_pieces), a function of the input alone.
+[[nodiscard]] unsigned walk_pieces(std::uint32_t num_facets, std::uint32_t facets_per_piece) noexcept;
 void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
-                                std::span<const FaceId> partner, ContributingVertices& out);
+                                std::span<const FaceId> partner, ContributingVertices& out,
+                                WalkSplit split = {});
 
 /// True iff two sorted vertex lists have no vertex in common.
 bool disjoint_sorted(std::span<const VertexId> x, std::span<const VertexId> y) noexcept;

@@ -154,8 +154,8 @@ namespace {
 // arc order; sorting them by edge index emits the facets in the paper
 // search's order, so both modes build the identical polyhedron.
 std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
-                              const ContributingVertices& cv_a, HalfedgeId ha,
-                              ArcTraceScratch& scratch, SumFacetBuilder& out, std::uint64_t& steps) {
+                              const ContributingVertices& cv_a, HalfedgeId ha, ArcTraceScratch& scratch,
+                              SumFacetBuilder& out, std::uint64_t& steps) {
   const Mesh& ma = a.mesh();
   std::vector<HalfedgeId>& crossed = scratch.crossed;
   crossed.clear();
@@ -297,14 +297,14 @@ void check_search_modes(const ResearchOptions& research) {
   }
 }
 
-// The contributing vertices of every facet of p in q, by walking or by the
-// paper's scan. partner[f], if partner is non-empty and it is valid, is the
+// The contributing vertices of every facet of p in q, by walking (in the
+// pieces of `split`) or by the paper's scan. partner[f], if partner is non-empty and it is valid, is the
 // facet of q with f's normal: its vertices are the list, with no search.
 ContributingVertices find_contributing_vertices(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
-                                                std::span<const FaceId> partner, bool walk) {
+                                                std::span<const FaceId> partner, bool walk, WalkSplit split) {
   ContributingVertices cv(p.num_facets());
   if (walk) {
-    contributing_vertices_walk(p, q, partner, cv);
+    contributing_vertices_walk(p, q, partner, cv, split);
     return cv;
   }
   std::vector<VertexId> list;
@@ -390,7 +390,13 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
   SumFacetBuilder out(a, b);
 
-  const ContributingVertices cv_a = find_contributing_vertices(a, b, {}, walk_vertices);
+  // A's walk is the one step before the threads part ways: its pieces share
+  // them. B's walk overlaps step 3 on one thread.
+  const unsigned threads = usable_threads(options, research);
+  const bool large = std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace;
+  const WalkSplit split_a{walk_pieces(a.num_facets(), research.walk_piece_facets), large ? threads : 1};
+  const WalkSplit split_b{walk_pieces(b.num_facets(), research.walk_piece_facets), 1};
+  const ContributingVertices cv_a = find_contributing_vertices(a, b, {}, walk_vertices, split_a);
   const std::vector<FaceId> partner = add_translated_facets(a, b, cv_a, out, stats);
 
   // The translated and corner facets are known now, before any of step 2
@@ -404,7 +410,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   // the vertices of the partner (the face of A supporting A in that
   // direction); we record them for Property 1 without a search.
   auto corner_facets = [&] {
-    const ContributingVertices cv_b = find_contributing_vertices(b, a, partner, walk_vertices);
+    const ContributingVertices cv_b = find_contributing_vertices(b, a, partner, walk_vertices, split_b);
     add_corner_facets(b, cv_b, partner, out, stats);
     return cv_b;
   };
@@ -417,9 +423,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   // own. More: all trace chunks of edges after step 2 (ThreadedTrace), which
   // on two cores measured no faster, and in some runs slower (its workers'
   // malloc arenas: README, Performance), hence only with more cores.
-  const unsigned threads = usable_threads(options, research);
-  if (threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk &&
-      std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace) {
+  if (threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk && large) {
     if (threads == 2) {
       SumFacetBuilder tracer_out(a, b);
       Stats tracer_stats;

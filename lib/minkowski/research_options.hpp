@@ -60,11 +60,15 @@ struct ResearchOptions {
   ContributingVertexSearch contributing_vertex_search = ContributingVertexSearch::walk;
   EdgeFacetSearch edge_facet_search = EdgeFacetSearch::walk;
   WorkerMinimums worker_minimums;
+  /// The contributing-vertex walk's facets per piece (walk_pieces): the
+  /// pieces of A's walk share the threads. Part of the search, so that
+  /// every thread count evaluates the same predicates.
+  std::uint32_t walk_piece_facets = 8192;
 };
 
 /// The paper-faithful CVMS: linear scans and the horizon-edge search.
 inline ResearchOptions paper_search() {
-  return {ContributingVertexSearch::scan, EdgeFacetSearch::paper, {}};
+  return {ContributingVertexSearch::scan, EdgeFacetSearch::paper, {}, 8192};
 }
 
 /// minkowski_sum with the research switches; the same checks, result and Stats.
