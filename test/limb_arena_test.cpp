@@ -5,6 +5,8 @@
 // that absorbed it) lives, and destroying values and arenas in either order
 // frees everything once (ASan and valgrind check the last two). The
 // polyhedra that keep their values in arenas: arena_storage_test.cpp.
+#include "limb_arena.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,8 +14,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include "limb_arena.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -102,8 +102,15 @@ TEST(LimbArena, StoresIntegersFromTheirLimbs) {
     std::uint64_t low, high;
     bool negative;
   };
-  const Case cases[] = {{0, 0, false}, {0, 0, true}, {1, 0, false},  {1, 0, true}, {2, 0, true},
-                        {~0ull, 0, false}, {0, 1, true}, {12345, ~0ull >> 3, false}, {~0ull, ~0ull >> 3, true}};
+  const Case cases[] = {{0, 0, false},
+                        {0, 0, true},
+                        {1, 0, false},
+                        {1, 0, true},
+                        {2, 0, true},
+                        {~0ull, 0, false},
+                        {0, 1, true},
+                        {12345, ~0ull >> 3, false},
+                        {~0ull, ~0ull >> 3, true}};
   std::vector<Rational> stored(std::size(cases), Rational(-7, 3));
   for (std::size_t i = 0; i < std::size(cases); ++i) {
     const Case& c = cases[i];
@@ -127,8 +134,8 @@ TEST(LimbArena, NegatesStoredAndOwnValuesInPlace) {
   LimbArena arena;
   mpz_class big;
   mpz_ui_pow_ui(big.get_mpz_t(), 3, 200);
-  const Rational values[] = {Rational(0), Rational(1), Rational(-1), Rational(7, 3), Rational(-5),
-                             Rational(big, 7), Rational(-big)};
+  const Rational values[] = {Rational(0),  Rational(1),      Rational(-1),  Rational(7, 3),
+                             Rational(-5), Rational(big, 7), Rational(-big)};
   for (const Rational& value : values) {
     Rational stored;
     arena.store(stored, value);
@@ -158,7 +165,8 @@ TEST(LimbArena, ValuesStayValidInAnArenaThatAbsorbedTheirs) {
   std::vector<Rational> stored(originals.size());
   {
     LimbArena first, second;
-    for (std::size_t i = 0; i < originals.size(); ++i) (i % 2 == 0 ? first : second).store(stored[i], originals[i]);
+    for (std::size_t i = 0; i < originals.size(); ++i)
+      (i % 2 == 0 ? first : second).store(stored[i], originals[i]);
     kept.absorb(std::move(first));
     kept.absorb(std::move(second));
     EXPECT_EQ(first.capacity_bytes(), 0u);  // NOLINT(bugprone-use-after-move): absorb empties it
@@ -251,6 +259,54 @@ TEST(LimbArena, StoresFractionsIntoEveryKindOfValue) {
     arena.store(viewed, num->get_mpz_t(), den->get_mpz_t());
     EXPECT_EQ(viewed, expected) << to_string(expected);
     EXPECT_EQ(to_string(viewed * 2), to_string(expected * 2));
+  }
+}
+
+// A rational whose denominator limb was given back (what the threaded
+// output build does for its planes) holds every kind of value stored into
+// it, a power-of-two denominator as a view (no heap block of its own), any
+// other as GMP allocates it; reads, copies and storing again behave as for
+// any value, and destroying it frees once (ASan, valgrind).
+TEST(LimbArena, GivenBackDenominatorsHoldEveryValue) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::vector<Rational> originals = random_values(seed, 2000);
+    LimbArena arena;
+    std::vector<Rational> stored;
+    stored.reserve(originals.size());
+    for (std::size_t i = 0; i < originals.size(); ++i) {
+      Rational& fresh = stored.emplace_back();
+      LimbArena::give_back_denominator(fresh);
+      ASSERT_EQ(fresh, 0);
+      if (i % 4 == 1) arena.store(fresh, Rational(1, 3));  // a denominator GMP allocates first
+      if (i % 4 == 2) arena.store_integer(fresh, 7, 0, true);
+      if (i % 4 == 3) {
+        arena.store(fresh, mpq_numref(originals[i].get_mpq_t()), mpq_denref(originals[i].get_mpq_t()));
+      } else {
+        arena.store(fresh, originals[i]);
+      }
+    }
+    for (std::size_t i = 0; i < originals.size(); ++i) {
+      ASSERT_EQ(stored[i], originals[i]) << i;
+      ASSERT_EQ(to_string(stored[i]), to_string(originals[i])) << i;
+      Rational copy = stored[i];
+      copy -= 1;
+      ASSERT_EQ(copy, originals[i] - 1) << i;
+      const mpz_srcptr den = mpq_denref(stored[i].get_mpq_t());
+      const bool power_of_two_below_2_64 = mpz_size(den) == 1 && mpz_popcount(den) == 1;
+      if (LimbArena::holds_limbs() && power_of_two_below_2_64 && i % 4 != 1) {
+        ASSERT_EQ(den->_mp_alloc, 0) << i;
+      }
+    }
+    // Dyadic values stored again, over whatever each denominator is now.
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      const std::uint64_t magnitude = 2 * i + 1;
+      arena.store_dyadic(stored[i], &magnitude, 1, i % 2 == 0, i % 70);
+      ASSERT_EQ(stored[i],
+                Rational(mpz_class(i % 2 == 0 ? -static_cast<long>(magnitude) : static_cast<long>(magnitude)),
+                         mpz_class(1) << static_cast<unsigned>(i % 70)))
+          << i;
+    }
   }
 }
 

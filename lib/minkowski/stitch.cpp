@@ -353,16 +353,25 @@ struct SumFacetBuilder::PlaneScratch {
   LimbArena& limbs;  // where this thread's planes keep their numerators (and long denominators)
 };
 
-FacetPlanes SumFacetBuilder::sized_planes() const {
-  // Default-constructed rationals (each allocates its denominator, which it
-  // keeps unless it needs more than one limb) whose numerators write_planes
-  // makes views of its arena: moving a rational into place would
-  // re-initialise the source, which allocates.
+FacetPlanes SumFacetBuilder::sized_planes(bool give_back_denominators) const {
+  // Rationals constructed in place, whose numerators write_planes makes
+  // views of its arena: moving a rational into place would re-initialise
+  // the source, which allocates.
   const std::size_t n = num_facets();
   FacetPlanes planes;
-  planes.normals.resize(n);
   planes.normal_approx.resize(n);
-  planes.offsets.resize(n);
+  if (!give_back_denominators) {
+    planes.normals.resize(n);
+    planes.offsets.resize(n);
+    return planes;
+  }
+  planes.normals.reserve(n);
+  planes.offsets.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3& normal = planes.normals.emplace_back();
+    for (int k = 0; k < 3; ++k) LimbArena::give_back_denominator(normal[k]);
+    LimbArena::give_back_denominator(planes.offsets.emplace_back());
+  }
   return planes;
 }
 
@@ -452,7 +461,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   const auto output_vertices = [&] { return OutputVertices{&mesh.positions(), first_vertex}; };
   if (threads <= 1) {
     build_mesh();
-    FacetPlanes planes = sized_planes();
+    FacetPlanes planes = sized_planes(false);
     PlaneScratch scratch(*this, limbs);
     write_planes(planes, 0, num_facets(), output_vertices(), scratch);
     return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
@@ -477,7 +486,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
     Worker worker;
     worker.start([&] {
       try {
-        planes = sized_planes();
+        planes = sized_planes(true);
       } catch (...) {
         next = n;            // nothing for anyone to write
         sized.count_down();  // also on failure: the other thread waits for this

@@ -3,8 +3,11 @@
 #include "limb_arena.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cassert>
 #include <cstring>
+#include <functional>
 #include <iterator>
 #include <utility>
 
@@ -26,6 +29,40 @@ std::size_t block_after(std::size_t limbs) noexcept {
   if (limbs >= max_heap_block_limbs)
     return huge_page_blocks_enabled() ? huge_block_limbs : max_heap_block_limbs;
   return limbs * 2;
+}
+
+// Every power of two below 2^64, for denominators: a view of one of these
+// takes neither a heap block nor arena space.
+constexpr auto powers_of_two = [] {
+  std::array<mp_limb_t, GMP_NUMB_BITS> table{};
+  for (std::size_t k = 0; k < table.size(); ++k) table[k] = mp_limb_t{1} << k;
+  return table;
+}();
+
+// Whether den is a view of the table: a denominator given back
+// (give_back_denominator) or stored since. std::less orders pointers into
+// different objects too.
+bool views_powers_of_two(mpz_srcptr den) noexcept {
+  const std::less<const mp_limb_t*> before;
+  return den->_mp_alloc == 0 && !before(den->_mp_d, powers_of_two.data()) &&
+         before(den->_mp_d, powers_of_two.data() + powers_of_two.size());
+}
+
+// den = 2^exponent: a view of the table where den is one already, else
+// written into den's own limb (GMP allocates one if den is a view of
+// something else).
+void set_power_of_two(mpz_ptr den, mp_bitcnt_t exponent) {
+  if (views_powers_of_two(den)) {
+    mpz_roinit_n(den, &powers_of_two[exponent], 1);
+  } else {
+    mpz_set_ui(den, powers_of_two[exponent]);
+  }
+}
+
+bool is_power_of_two_limb(mpz_srcptr z) noexcept {
+  if (mpz_size(z) != 1 || mpz_sgn(z) < 0) return false;
+  const mp_limb_t d = mpz_getlimbn(z, 0);
+  return (d & (d - 1)) == 0;
 }
 
 bool is_one(mpz_srcptr z) noexcept { return mpz_size(z) == 1 && mpz_sgn(z) > 0 && mpz_limbs_read(z)[0] == 1; }
@@ -120,7 +157,9 @@ void LimbArena::store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominato
   // Everything that can throw comes before out is given up.
   mp_limb_t* limbs = num_limbs + den_limbs > 0 ? allocate(num_limbs + den_limbs) : nullptr;
   mpz_ptr den = mpq_denref(o);
-  if (den_limbs == 0) {
+  if (is_power_of_two_limb(denominator)) {
+    set_power_of_two(den, static_cast<mp_bitcnt_t>(std::countr_zero(mpz_getlimbn(denominator, 0))));
+  } else if (den_limbs == 0) {
     mpz_set(den, denominator);
   } else {
     std::memcpy(limbs + num_limbs, mpz_limbs_read(denominator), den_limbs * sizeof(mp_limb_t));
@@ -147,9 +186,9 @@ void LimbArena::store(mpz_class& out, mpz_srcptr value) {
 void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t high, bool negative) {
   const mp_size_t size = high != 0 ? 2 : (low != 0 ? 1 : 0);
   mpq_ptr o = out.get_mpq_t();
-  if (mpz_cmp_ui(mpq_denref(o), 1) != 0) mpz_set_ui(mpq_denref(o), 1);
   mpz_ptr num = mpq_numref(o);
   if (!holds_limbs()) {
+    if (mpz_cmp_ui(mpq_denref(o), 1) != 0) mpz_set_ui(mpq_denref(o), 1);
     mp_limb_t* limbs = mpz_limbs_write(num, size == 0 ? 1 : size);
     limbs[0] = low;
     if (size == 2) limbs[1] = high;
@@ -157,6 +196,7 @@ void LimbArena::store_integer(Rational& out, std::uint64_t low, std::uint64_t hi
     return;
   }
   // As in store(): 0 and 1 are views of constants, the rest of new limbs.
+  if (mpz_cmp_ui(mpq_denref(o), 1) != 0) set_power_of_two(mpq_denref(o), 0);
   const mp_limb_t* view_limbs = size == 0 ? &zero_limb : &one_limb;
   if (size == 2 || (size == 1 && low != 1)) {
     mp_limb_t* limbs = allocate(static_cast<std::size_t>(size));
@@ -204,7 +244,7 @@ void LimbArena::store_dyadic(Rational& out, const std::uint64_t* magnitude, std:
   // As in store(): everything that can throw comes before out is given up.
   mp_limb_t* limbs = num_limbs + den_limbs > 0 ? allocate(num_limbs + den_limbs) : nullptr;
   if (one_limb_denominator) {
-    mpz_set_ui(den, mp_limb_t{1} << exponent);
+    set_power_of_two(den, exponent);
   } else {
     mp_limb_t* d = limbs + num_limbs;
     std::fill(d, d + den_limbs, mp_limb_t{0});
@@ -215,6 +255,14 @@ void LimbArena::store_dyadic(Rational& out, const std::uint64_t* magnitude, std:
   if (num_limbs > 0) std::memcpy(limbs, magnitude, num_limbs * sizeof(mp_limb_t));
   mpz_clear(num);
   mpz_roinit_n(num, size == 0 ? &zero_limb : (is_one ? &one_limb : limbs), signed_size);
+}
+
+void LimbArena::give_back_denominator(Rational& fresh) noexcept {
+  mpz_ptr den = mpq_denref(fresh.get_mpq_t());
+  assert(is_one(den));
+  if (!holds_limbs() || den->_mp_alloc == 0) return;
+  mpz_clear(den);
+  mpz_roinit_n(den, &powers_of_two[0], 1);
 }
 
 void LimbArena::negate_stored(Rational& out) const {
