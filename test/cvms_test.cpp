@@ -646,6 +646,39 @@ TEST(MinkowskiSum, ThreadsComputeIndependently) {
             expected_ab.stats.predicate_exact + expected_ab.stats.predicate_filtered);
 }
 
+// A's contributing-vertex walk cut into pieces (here one per 16 facets, at
+// most 8; the default cuts only operands of 16,384 facets or more) on 1, 2,
+// 4 and 8 threads: the same polyhedron as the default one-piece walk, and
+// the same Stats on every thread count for the same pieces.
+TEST(MinkowskiSum, WalkPiecesOnThreadsGiveTheSameSum) {
+  std::vector<std::pair<ConvexPolyhedron, ConvexPolyhedron>> pairs;
+  pairs.emplace_back(shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3));
+  pairs.emplace_back(shapes::geodesic_sphere(3), shapes::geodesic_sphere(2));
+  pairs.emplace_back(shapes::prism(40, 3), shapes::truncated_cube());
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    test::RandomPair p = test::random_pair(seed);
+    pairs.emplace_back(std::move(p.a), std::move(p.b));
+  }
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    SCOPED_TRACE("pair " + std::to_string(i));
+    const auto& [a, b] = pairs[i];
+    const MinkowskiResult one_piece = minkowski_sum(a, b);
+    MinkowskiResult first;
+    for (const unsigned n : {1u, 2u, 4u, 8u}) {
+      Options options;
+      options.threads = n;
+      detail::ResearchOptions research;
+      research.worker_minimums = {0, 0, true};
+      research.walk_piece_facets = 16;
+      const MinkowskiResult pieces = detail::minkowski_sum(a, b, options, research);
+      const std::string what = "pieces on " + std::to_string(n) + " threads";
+      EXPECT_EQ(same_result(one_piece, pieces, what), "");
+      if (n == 1) first = pieces;
+      EXPECT_TRUE(same_stats(first.stats, pieces.stats)) << what;
+    }
+  }
+}
+
 // The threaded edge-facet search stops where one thread stops: it traces
 // chunks of edges on every thread and replays one thread's budget checks when
 // it merges them, so the error (with the count where the search stopped) is

@@ -133,20 +133,22 @@ FacetOrder breadth_first_facets(const Mesh& mp, std::uint32_t num_facets) {
   return order;
 }
 
-// Walks the facets order.facets[begin, end), appending their lists to out in
-// that order. Each climbs from the answer of its neighbour in the same piece
+// Walks the facets order.facets[begin, end), handing each facet and its list
+// to record(f, list) in that order. Each climbs from the answer of its neighbour in the same piece
 // that was done last, not of the one that queued it: all the neighbours of a
 // facet of high degree are queued by it, and climbing each from its answer
 // would cross half the operand every time (two n-gon prisms with
 // perpendicular axes: the n side facets of A, queued by a cap, climbed n/4
 // vertices of B each, O(n^2)). The neighbour done last is usually the
-// previous facet around that cap. A facet with no such neighbour (the
-// piece's first) climbs from the previous facet's answer, or from vertex 0.
+// previous facet around that cap. A facet with no such neighbour (all its
+// neighbours done are in earlier pieces) climbs from the previous facet's
+// answer; the piece's first facet from vertex 0.
 // answer[f] is written for the piece's facets only, so pieces may run at
 // once.
+template <class Record>
 void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, std::span<const FaceId> partner,
                 const FacetOrder& order, std::size_t begin, std::size_t end, std::span<VertexId> answer,
-                ContributingVertices& out) {
+                Record&& record) {
   const Mesh& mp = p.mesh();
   std::vector<VertexId> list;
   for (std::size_t i = begin; i < end; ++i) {
@@ -167,7 +169,7 @@ void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, std::span<
       }
       climb(q, detail::normal_ref(p, f), seed, list);
     }
-    out.append(list);
+    record(f, std::span<const VertexId>(list));
     answer[f.index()] = list.front();
   }
 }
@@ -182,9 +184,15 @@ unsigned walk_pieces(std::uint32_t num_facets, std::uint32_t facets_per_piece) n
 void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
                                 std::span<const FaceId> partner, ContributingVertices& out, WalkSplit split) {
   const std::uint32_t nf = p.num_facets();
+  if (nf == 0) return;
   const FacetOrder order = breadth_first_facets(p.mesh(), nf);
-  const unsigned pieces = std::clamp(split.pieces, 1u, std::max(nf, 1u));
   std::vector<VertexId> answer(nf);  // each facet's first contributing vertex, once done
+  const unsigned pieces = std::clamp(split.pieces, 1u, nf);
+  if (pieces == 1) {
+    walk_piece(p, q, partner, order, 0, nf, answer,
+               [&](FaceId f, std::span<const VertexId> list) { out.assign(f, list); });
+    return;
+  }
   std::vector<ContributingVertices> lists(pieces);
   const auto piece_begin = [&](unsigned k) { return std::size_t{nf} * k / pieces; };
   // Pieces handed out in order by an atomic counter: any number of threads
@@ -193,7 +201,8 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
   std::atomic<unsigned> next{0};
   run_on_threads(std::min(split.threads, pieces), [&](unsigned) {
     for (unsigned k = next.fetch_add(1); k < pieces; k = next.fetch_add(1))
-      walk_piece(p, q, partner, order, piece_begin(k), piece_begin(k + 1), answer, lists[k]);
+      walk_piece(p, q, partner, order, piece_begin(k), piece_begin(k + 1), answer,
+                 [&list = lists[k]](FaceId, std::span<const VertexId> vertices) { list.append(vertices); });
   });
   for (unsigned k = 0; k < pieces; ++k) {
     const std::size_t begin = piece_begin(k);

@@ -68,21 +68,6 @@ class ContributingVertices {
   std::vector<VertexId> vertices_;
 };
 
-/// The contributing vertices of every facet of p with respect to q, found by
-/// walking instead of scanning (output-sensitive CVMS): the facets of p are
-/// visited in breadth-first order over their adjacency, and each facet's
-/// maximiser is found by hill-climbing on the vertex graph of q from the
-/// maximiser of the facet it was reached from. A linear function on a convex
-/// polyhedron has no local maximum that is not global, so the climb (move to
-/// any strictly better neighbour) ends at a maximiser v; the ties are then
-/// v's neighbours with the same value: none (one contributing vertex), one
-/// (an edge of q perpendicular to the normal) or two (then v lies on the
-/// facet of q with the same normal, whose vertices are the list).
-/// partner[f], if valid (and partner is non-empty), is a facet of q known to
-/// have the normal of f: its vertices are taken without climbing.
-/// The lists equal those of maximising_vertices exactly.
-/// Cost: O(sum over facets of the climb length times the degrees met) predicates,
-/// in practice O(f_p + v_q) for operands of similar resolution.
 /// How contributing_vertices_walk shares its work: the breadth-first order
 /// is cut into `pieces` runs of facets, each climbing from its own seeds, so
 /// that the lists and the predicates evaluated depend on the pieces alone;
@@ -96,6 +81,22 @@ inline constexpr std::uint32_t max_walk_pieces = 8;
 /// The pieces for num_facets facets: one per facets_per_piece (at least
 /// one, at most max_walk_pieces), a function of the input alone.
 [[nodiscard]] unsigned walk_pieces(std::uint32_t num_facets, std::uint32_t facets_per_piece) noexcept;
+/// The contributing vertices of every facet of p with respect to q, found by
+/// walking instead of scanning (output-sensitive CVMS): the facets of p are
+/// visited in breadth-first order over their adjacency, and each facet's
+/// maximiser is found by hill-climbing on the vertex graph of q from the
+/// maximiser of a neighbouring facet done before it (in the same piece of
+/// `split`). A linear function on a convex
+/// polyhedron has no local maximum that is not global, so the climb (move to
+/// any strictly better neighbour) ends at a maximiser v; the ties are then
+/// v's neighbours with the same value: none (one contributing vertex), one
+/// (an edge of q perpendicular to the normal) or two (then v lies on the
+/// facet of q with the same normal, whose vertices are the list).
+/// partner[f], if valid (and partner is non-empty), is a facet of q known to
+/// have the normal of f: its vertices are taken without climbing.
+/// The lists equal those of maximising_vertices exactly.
+/// Cost: O(sum over facets of the climb length times the degrees met) predicates,
+/// in practice O(f_p + v_q) for operands of similar resolution.
 void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
                                 std::span<const FaceId> partner, ContributingVertices& out,
                                 WalkSplit split = {});

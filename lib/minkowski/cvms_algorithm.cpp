@@ -298,8 +298,9 @@ void check_search_modes(const ResearchOptions& research) {
 }
 
 // The contributing vertices of every facet of p in q, by walking (in the
-// pieces of `split`) or by the paper's scan. partner[f], if partner is non-empty and it is valid, is the
-// facet of q with f's normal: its vertices are the list, with no search.
+// pieces of `split`) or by the paper's scan. partner[f], if partner is
+// non-empty and it is valid, is the facet of q with f's normal: its vertices
+// are the list, with no search.
 ContributingVertices find_contributing_vertices(const ConvexPolyhedron& p, const ConvexPolyhedron& q,
                                                 std::span<const FaceId> partner, bool walk, WalkSplit split) {
   ContributingVertices cv(p.num_facets());
@@ -391,11 +392,11 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   SumFacetBuilder out(a, b);
 
   // A's walk is the one step before the threads part ways: its pieces share
-  // them. B's walk overlaps step 3 on one thread.
+  // them. B's walk overlaps step 3 on one thread, in one piece.
   const unsigned threads = usable_threads(options, research);
   const bool large = std::min<std::size_t>(a.num_edges(), b.num_facets()) >= research.worker_minimums.trace;
   const WalkSplit split_a{walk_pieces(a.num_facets(), research.walk_piece_facets), large ? threads : 1};
-  const WalkSplit split_b{walk_pieces(b.num_facets(), research.walk_piece_facets), 1};
+  const WalkSplit split_b{1, 1};
   const ContributingVertices cv_a = find_contributing_vertices(a, b, {}, walk_vertices, split_a);
   const std::vector<FaceId> partner = add_translated_facets(a, b, cv_a, out, stats);
 

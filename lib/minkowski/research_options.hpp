@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "cvms/minkowski.hpp"
 
@@ -54,6 +55,9 @@ struct WorkerMinimums {
   bool oversubscribe = false;
 };
 
+/// ResearchOptions::walk_piece_facets by default.
+inline constexpr std::uint32_t default_walk_piece_facets = 8192;
+
 /// The defaults are what minkowski_sum runs; {scan, paper} is the
 /// paper-faithful reference mode. CVMS only.
 struct ResearchOptions {
@@ -63,12 +67,12 @@ struct ResearchOptions {
   /// The contributing-vertex walk's facets per piece (walk_pieces): the
   /// pieces of A's walk share the threads. Part of the search, so that
   /// every thread count evaluates the same predicates.
-  std::uint32_t walk_piece_facets = 8192;
+  std::uint32_t walk_piece_facets = default_walk_piece_facets;
 };
 
 /// The paper-faithful CVMS: linear scans and the horizon-edge search.
 inline ResearchOptions paper_search() {
-  return {ContributingVertexSearch::scan, EdgeFacetSearch::paper, {}, 8192};
+  return {ContributingVertexSearch::scan, EdgeFacetSearch::paper, {}, default_walk_piece_facets};
 }
 
 /// minkowski_sum with the research switches; the same checks, result and Stats.

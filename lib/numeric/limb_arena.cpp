@@ -52,6 +52,7 @@ bool views_powers_of_two(mpz_srcptr den) noexcept {
 // written into den's own limb (GMP allocates one if den is a view of
 // something else).
 void set_power_of_two(mpz_ptr den, mp_bitcnt_t exponent) {
+  assert(exponent < GMP_NUMB_BITS);
   if (views_powers_of_two(den)) {
     mpz_roinit_n(den, &powers_of_two[exponent], 1);
   } else {
@@ -151,8 +152,9 @@ void LimbArena::store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominato
   }
   const std::size_t num_limbs = limbs_needed(numerator);
   // A one-limb denominator (1, or a power of two below 2^64: almost all)
-  // goes into the limb mpq_init gave out; a longer one would reallocate
-  // that limb, so it comes here.
+  // goes into the limb mpq_init gave out, or stays a view of the table in a
+  // value whose limb was given back (set_power_of_two); a longer one would
+  // reallocate that limb, so it comes here.
   const std::size_t den_limbs = mpz_size(denominator) > 1 ? mpz_size(denominator) : 0;
   // Everything that can throw comes before out is given up.
   mp_limb_t* limbs = num_limbs + den_limbs > 0 ? allocate(num_limbs + den_limbs) : nullptr;
@@ -259,8 +261,8 @@ void LimbArena::store_dyadic(Rational& out, const std::uint64_t* magnitude, std:
 
 void LimbArena::give_back_denominator(Rational& fresh) noexcept {
   mpz_ptr den = mpq_denref(fresh.get_mpq_t());
-  assert(is_one(den));
-  if (!holds_limbs() || den->_mp_alloc == 0) return;
+  if (!holds_limbs() || den->_mp_alloc == 0 || !is_one(den) || mpz_sgn(mpq_numref(fresh.get_mpq_t())) != 0)
+    return;
   mpz_clear(den);
   mpz_roinit_n(den, &powers_of_two[0], 1);
 }

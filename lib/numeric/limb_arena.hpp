@@ -33,8 +33,8 @@
 //
 // A builder may instead give a fresh rational's denominator limb back at once
 // (give_back_denominator): the denominator becomes a view of a constant table
-// of 2^0 ... 2^63 and stays one whenever a power of two below 2^64 is stored
-// into it, so that constructing a whole array reuses one heap block. The
+// of 2^0 ... 2^63 and stays one as long as only powers of two below 2^64 are
+// stored into it, so that constructing a whole array reuses one heap block. The
 // two-thread output build does this for the planes its worker sizes: there
 // the 256,000 denominators of Sphere6 + rotated Sphere6 would each be a new
 // block in the worker's own malloc arena, faulted in afresh by every sum
@@ -120,11 +120,15 @@ class LimbArena {
 
   /// For a rational just constructed (0, its denominator 1 in the limb
   /// mpq_init allocated): frees that limb and makes the denominator a view
-  /// of a constant 1. Stores into it keep a power-of-two denominator a view
-  /// (of a constant table) rather than writing it into an own limb.
-  /// Constructing and giving back in turn reuses one heap block for a whole
-  /// array of values. No-op where stored values own their limbs
-  /// (holds_limbs()).
+  /// of a constant 1. As long as only powers of two below 2^64 are stored
+  /// into it, the denominator stays a view (of a constant table) rather
+  /// than writing an own limb. Constructing and giving back in turn reuses
+  /// one heap block for a whole array of values. From then on the value is
+  /// like a stored one: it may be stored into, read, copied and destroyed,
+  /// never the output of a GMP operation (an in-place one would read a
+  /// denominator GMP reallocates without copying). No-op where stored
+  /// values own their limbs (holds_limbs()) or on a value that is not a
+  /// fresh 0.
   static void give_back_denominator(Rational& fresh) noexcept;
 
   /// out = -out. A view (a value an arena stored) is made anew over the
