@@ -56,6 +56,18 @@ bool numerators_are_views(const ConvexPolyhedron& p, bool views) {
   return true;
 }
 
+// Whether every denominator of p's planes is a view (owns no limb), or every
+// one owns its limb.
+bool plane_denominators_are_views(const ConvexPolyhedron& p, bool views) {
+  auto matches = [views](const Rational& q) { return (mpq_denref(q.get_mpq_t())->_mp_alloc == 0) == views; };
+  for (FaceId f : p.mesh().faces()) {
+    for (int i = 0; i < 3; ++i)
+      if (!matches(p.normal(f)[i])) return false;
+    if (!matches(p.plane_offset(f))) return false;
+  }
+  return true;
+}
+
 void expect_values(const ConvexPolyhedron& p, const ExactValues& expected) {
   ASSERT_EQ(p.num_vertices(), expected.vertices.size());
   ASSERT_EQ(p.num_facets(), expected.normals.size());
@@ -82,6 +94,11 @@ TEST_P(ArenaStorage, SumsCopiesAndMovesKeepTheirValues) {
   const ExactValues expected = copies_of(sum);
   if (detail::LimbArena::holds_limbs()) {
     EXPECT_TRUE(numerators_are_views(sum, true));
+    // The planes' denominators (1 for the integer normals, powers of two
+    // for these offsets): on two threads or more the worker that sizes
+    // them gives each heap limb back, so they are views; on one thread
+    // they keep their own limbs.
+    EXPECT_TRUE(plane_denominators_are_views(sum, GetParam() > 1));
   }
 
   ConvexPolyhedron copy;
