@@ -134,17 +134,16 @@ FacetOrder breadth_first_facets(const Mesh& mp, std::uint32_t num_facets) {
 }
 
 // Walks the facets order.facets[begin, end), handing each facet and its list
-// to record(f, list) in that order. Each climbs from the answer of its neighbour in the same piece
-// that was done last, not of the one that queued it: all the neighbours of a
-// facet of high degree are queued by it, and climbing each from its answer
-// would cross half the operand every time (two n-gon prisms with
-// perpendicular axes: the n side facets of A, queued by a cap, climbed n/4
-// vertices of B each, O(n^2)). The neighbour done last is usually the
-// previous facet around that cap. A facet with no such neighbour (all its
-// neighbours done are in earlier pieces) climbs from the previous facet's
-// answer; the piece's first facet from vertex 0.
-// answer[f] is written for the piece's facets only, so pieces may run at
-// once.
+// to record(f, list) in that order. Each climbs from the answer of its
+// neighbour in the same piece that was done last, not of the one that queued
+// it: all the neighbours of a facet of high degree are queued by it, and
+// climbing each from its answer would cross half the operand every time (two
+// n-gon prisms with perpendicular axes: the n side facets of A, queued by a
+// cap, climbed n/4 vertices of B each, O(n^2)). The neighbour done last is
+// usually the previous facet around that cap. A facet with no such neighbour
+// (all its neighbours done are in earlier pieces) climbs from the previous
+// facet's answer; the piece's first facet from vertex 0. answer[f] is
+// written for the piece's facets only, so pieces may run at once.
 template <class Record>
 void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, std::span<const FaceId> partner,
                 const FacetOrder& order, std::size_t begin, std::size_t end, std::span<VertexId> answer,

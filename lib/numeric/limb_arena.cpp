@@ -4,12 +4,13 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cassert>
 #include <cstring>
 #include <functional>
 #include <iterator>
 #include <utility>
+
+#include "power_of_two.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -58,12 +59,6 @@ void set_power_of_two(mpz_ptr den, mp_bitcnt_t exponent) {
   } else {
     mpz_set_ui(den, powers_of_two[exponent]);
   }
-}
-
-bool is_power_of_two_limb(mpz_srcptr z) noexcept {
-  if (mpz_size(z) != 1 || mpz_sgn(z) < 0) return false;
-  const mp_limb_t d = mpz_getlimbn(z, 0);
-  return (d & (d - 1)) == 0;
 }
 
 bool is_one(mpz_srcptr z) noexcept { return mpz_size(z) == 1 && mpz_sgn(z) > 0 && mpz_limbs_read(z)[0] == 1; }
@@ -159,8 +154,8 @@ void LimbArena::store(Rational& out, mpz_srcptr numerator, mpz_srcptr denominato
   // Everything that can throw comes before out is given up.
   mp_limb_t* limbs = num_limbs + den_limbs > 0 ? allocate(num_limbs + den_limbs) : nullptr;
   mpz_ptr den = mpq_denref(o);
-  if (is_power_of_two_limb(denominator)) {
-    set_power_of_two(den, static_cast<mp_bitcnt_t>(std::countr_zero(mpz_getlimbn(denominator, 0))));
+  if (den_limbs == 0 && is_power_of_two(denominator)) {
+    set_power_of_two(den, log2_of_power_of_two(denominator));
   } else if (den_limbs == 0) {
     mpz_set(den, denominator);
   } else {
