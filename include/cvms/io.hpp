@@ -198,6 +198,12 @@ void write_stl(std::ostream& out, const PolygonSoup& soup);
 /// `coordinates`); their errors.
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
+/// Writes a polyhedron's vertices and facets (those of p.to_soup()) to a
+/// stream, read straight from the polyhedron (no copy of its coordinates);
+/// as write(out, p.to_soup(), format, coordinates) otherwise.
+/// \throw Error(invalid_argument), Error(io) as write_off.
+void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format,
+           Coordinates coordinates = Coordinates::exact);
 /// Writes a file in the format of its extension (format_from_extension).
 /// The write is atomic: the bytes go to a new temporary file in the target's
 /// directory (".<name>.cvms-<random>.tmp"), which is renamed over the target

@@ -128,6 +128,11 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
   write_view(out, io_detail::SoupView::of(soup), format, coordinates);
 }
 
+void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
+  const detail::FaceLists faces = detail::face_lists(p.mesh());
+  write_view(out, {p.mesh().positions(), faces.offsets, faces.indices}, format, coordinates);
+}
+
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,
                 Coordinates coordinates) {
   write_view_to_file(path, io_detail::SoupView::of(soup), format, coordinates);

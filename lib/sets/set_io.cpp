@@ -58,12 +58,16 @@ void write_file(const std::filesystem::path& path, const ConvexSet& set, Coordin
 
 void write_file(const std::filesystem::path& path, const ConvexSet& set, FileFormat format, Coordinates coordinates) {
   check_format_holds(set, format, path.string());
+  // A solid straight from its polyhedron: to_soup would copy every exact
+  // coordinate first.
+  if (set.dimension() == 3) return write_file(path, set.polyhedron(), format, coordinates);
   write_file(path, set.to_soup(), format, coordinates);
 }
 
 void write(std::ostream& out, const ConvexSet& set, FileFormat format, const std::string& name,
            Coordinates coordinates) {
   check_format_holds(set, format, name);
+  if (set.dimension() == 3) return write(out, set.polyhedron(), format, coordinates);
   write(out, set.to_soup(), format, coordinates);
 }
 

@@ -132,7 +132,7 @@ void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordi
                       const std::string& format) {
   const FileFormat chosen = output_format(path, format);
   if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates);
-  write_stdout([&](std::ostream& out) { write(out, p.to_soup(), chosen, coordinates); });
+  write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates); });
 }
 
 void write_stdout(const std::function<void(std::ostream&)>& write) {
