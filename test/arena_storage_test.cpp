@@ -241,9 +241,13 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
     }
     if (detail::LimbArena::holds_limbs()) {
       EXPECT_TRUE(plane_numerators_are_views(p, true));
+      // Made once per polyhedron, the planes gave their denominators'
+      // limbs back (limb_arena.hpp): views of the constant powers of two.
+      EXPECT_TRUE(plane_denominators_are_views(p, true));
     }
     const ConvexPolyhedron copy = p;
     EXPECT_TRUE(plane_numerators_are_views(copy, false));
+    EXPECT_TRUE(plane_denominators_are_views(copy, false));
     for (FaceId f : p.mesh().faces()) ASSERT_EQ(copy.normal(f), p.normal(f));
   }
 }

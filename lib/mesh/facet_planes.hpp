@@ -36,6 +36,14 @@ struct FacetPlanes {
   KeptVector<Rational> offsets;          ///< dot(normal, x) for x on the facet
 };
 
+/// Planes for `facets` facets, every value 0 and ready to be stored into
+/// by a LimbArena. Rationals are constructed in place, never moved there
+/// (moving one re-initialises its source, which allocates). With
+/// give_back_denominators each denominator's limb is freed as soon as it is
+/// made (LimbArena::give_back_denominator), so that sizing reuses one heap
+/// block instead of keeping four per facet.
+[[nodiscard]] FacetPlanes sized_planes(std::size_t facets, bool give_back_denominators);
+
 /// The plane triple of face f: its first three corners, in order (not
 /// collinear and turning like the face when the face is strictly convex).
 [[nodiscard]] inline std::array<VertexId, 3> first_corners(const Mesh& mesh, FaceId f) {

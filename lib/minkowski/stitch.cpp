@@ -16,6 +16,7 @@
 #include "error_bounds.hpp"
 #include "first_use.hpp"
 #include "polyhedron_builder.hpp"
+#include "prefetch_exact.hpp"
 #include "small_direction.hpp"
 #include "worker.hpp"
 
@@ -242,30 +243,6 @@ void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, st
   normals_.append(other.normals_.begin() + begin, other.normals_.begin() + end);
 }
 
-namespace {
-
-// A vertex's exact coordinates sit behind two dependent loads, its
-// mpq_structs and then their limbs, none of them in cache by the time the
-// planes read them: perf put 72 % of the offsets' time on those two misses
-// (Sphere6 + rot. Sphere6). Fetching both ahead, the structs `far` facets
-// ahead and the limbs `near` facets ahead, lets the misses overlap.
-constexpr std::size_t prefetch_far = 16;
-constexpr std::size_t prefetch_near = 8;
-
-void prefetch_structs(const Vec3& p) {
-  __builtin_prefetch(&p);
-  __builtin_prefetch(reinterpret_cast<const char*>(&p) + 64);
-}
-
-void prefetch_limbs(const Vec3& p) {
-  for (int k = 0; k < 3; ++k) {
-    __builtin_prefetch(p[k].get_num_mpz_t()->_mp_d);
-    __builtin_prefetch(p[k].get_den_mpz_t()->_mp_d);
-  }
-}
-
-}  // namespace
-
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr, nullptr); }
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
@@ -353,28 +330,6 @@ struct SumFacetBuilder::PlaneScratch {
   LimbArena& limbs;  // where this thread's planes keep their numerators (and long denominators)
 };
 
-FacetPlanes SumFacetBuilder::sized_planes(bool give_back_denominators) const {
-  // Rationals constructed in place, whose numerators write_planes makes
-  // views of its arena: moving a rational into place would re-initialise
-  // the source, which allocates.
-  const std::size_t n = num_facets();
-  FacetPlanes planes;
-  planes.normal_approx.resize(n);
-  if (!give_back_denominators) {
-    planes.normals.resize(n);
-    planes.offsets.resize(n);
-    return planes;
-  }
-  planes.normals.reserve(n);
-  planes.offsets.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec3& normal = planes.normals.emplace_back();
-    for (int k = 0; k < 3; ++k) LimbArena::give_back_denominator(normal[k]);
-    LimbArena::give_back_denominator(planes.offsets.emplace_back());
-  }
-  return planes;
-}
-
 void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end,
                                    OutputVertices vertices, PlaneScratch& scratch) const {
   // The offset is taken at the facet's first vertex a_i + b_j: read from the
@@ -461,7 +416,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   const auto output_vertices = [&] { return OutputVertices{&mesh.positions(), first_vertex}; };
   if (threads <= 1) {
     build_mesh();
-    FacetPlanes planes = sized_planes(false);
+    FacetPlanes planes = sized_planes(num_facets(), false);
     PlaneScratch scratch(*this, limbs);
     write_planes(planes, 0, num_facets(), output_vertices(), scratch);
     return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
@@ -486,7 +441,7 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
     Worker worker;
     worker.start([&] {
       try {
-        planes = sized_planes(true);
+        planes = sized_planes(num_facets(), true);
       } catch (...) {
         next = n;            // nothing for anyone to write
         sized.count_down();  // also on failure: the other thread waits for this

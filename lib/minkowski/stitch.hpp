@@ -74,15 +74,12 @@ class SumFacetBuilder {
   [[nodiscard]] PolygonSoup soup() const;
 
  private:
-  // The planes of the facets: sized_planes() allocates them all (with
-  // give_back_denominators, each rational's denominator limb is freed as
-  // soon as it is made: LimbArena::give_back_denominator), and
-  // write_planes fills facets [begin, end), taking the offsets' points from
-  // the output vertices if they are given (facet i's plane at vertex
-  // first_vertex[i] of output_positions), else summing them. Threads may
-  // write disjoint ranges.
+  // The planes of the facets, once sized_planes (facet_planes.hpp) has
+  // allocated them all: write_planes fills facets [begin, end), taking the
+  // offsets' points from the output vertices if they are given (facet i's
+  // plane at vertex first_vertex[i] of output_positions), else summing
+  // them. Threads may write disjoint ranges.
   struct PlaneScratch;
-  [[nodiscard]] FacetPlanes sized_planes(bool give_back_denominators) const;
   struct OutputVertices {
     const std::vector<Vec3>* positions = nullptr;  ///< null: not built yet
     std::span<const std::uint32_t> first_vertex;
