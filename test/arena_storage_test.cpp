@@ -231,7 +231,14 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
     return soup;
   }();
   const PolygonSoup merging_inward = test::reversed(merging);
-  for (const PolygonSoup* soup : {&outward, &inward, &merging, &merging_inward}) {
+  // Non-dyadic coordinates (thirds and sevenths): offsets with denominators
+  // that are not powers of two, stored into denominators given back.
+  const PolygonSoup rational = [&] {
+    PolygonSoup soup = outward;
+    for (Vec3& q : soup.points) q = Vec3{q.x + q.y / 3, q.y - q.z / 7, q.z + Rational(1, 3)};
+    return soup;
+  }();
+  for (const PolygonSoup* soup : {&outward, &inward, &merging, &merging_inward, &rational}) {
     const ConvexPolyhedron p = ConvexPolyhedron::from_soup(*soup);
     ASSERT_EQ(p.num_facets(), soup == &merging || soup == &merging_inward ? 6u : outward.num_faces());
     for (FaceId f : p.mesh().faces()) {
@@ -242,13 +249,19 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
     if (detail::LimbArena::holds_limbs()) {
       EXPECT_TRUE(plane_numerators_are_views(p, true));
       // Made once per polyhedron, the planes gave their denominators'
-      // limbs back (limb_arena.hpp): views of the constant powers of two.
-      EXPECT_TRUE(plane_denominators_are_views(p, true));
+      // limbs back (limb_arena.hpp): views of the constant powers of two
+      // (a denominator of 3 or 7 gets a limb of its own again).
+      if (soup != &rational) {
+        EXPECT_TRUE(plane_denominators_are_views(p, true));
+      }
     }
     const ConvexPolyhedron copy = p;
     EXPECT_TRUE(plane_numerators_are_views(copy, false));
     EXPECT_TRUE(plane_denominators_are_views(copy, false));
-    for (FaceId f : p.mesh().faces()) ASSERT_EQ(copy.normal(f), p.normal(f));
+    for (FaceId f : p.mesh().faces()) {
+      ASSERT_EQ(copy.normal(f), p.normal(f));
+      ASSERT_EQ(copy.plane_offset(f), p.plane_offset(f));
+    }
   }
 }
 

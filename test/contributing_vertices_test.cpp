@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
 #include <random>
 #include <vector>
@@ -157,6 +158,31 @@ TEST(ContributingVerticesWalk, TieHeavyPairsMatchBruteForce) {
   const auto s3 = shapes::geodesic_sphere(3);
   expect_walk_matches_brute_force(s3, r3);
   expect_walk_matches_brute_force(r3, s3);
+}
+
+// The climbs' semi-static filter (dot_order_filter.hpp) on an operand of
+// large, inexact coordinates (a sheared sphere scaled by 2^40 with
+// non-dyadic offsets, so every approximation has an error) against a small
+// copy of itself: every facet's climb ends on a whole parallel facet, ties
+// the filter must leave to the exact test, whose values differ by the
+// approximations' errors. A filter bounded by the wrong operand's extent,
+// or one ignoring the points' errors, claims an order among tied vertices.
+TEST(ContributingVerticesWalk, LargeInexactOperandsKeepTheirTies) {
+  Mat3 big = Mat3::identity();
+  for (int i = 0; i < 3; ++i) big.m[i][i] = Rational(mpz_class(1) << 40);
+  big.m[0][1] = Rational(mpz_class(1) << 40, 3);
+  big.m[2][0] = Rational(-(mpz_class(1) << 38), 7);
+  const auto q =
+      shapes::geodesic_sphere(3).transformed(big, {Rational(1, 3), Rational(1, 7), Rational(-1, 11)});
+  Mat3 small = Mat3::identity();
+  for (int i = 0; i < 3; ++i) small.m[i][i] = Rational(1, 1 << 20);
+  const auto p = q.transformed(small, {Rational(5, 3), 0, 0});
+  double largest_error = 0;
+  for (VertexId v : q.mesh().vertices()) largest_error = std::max(largest_error, vertex_approx(q, v).x.error);
+  ASSERT_GT(largest_error, 0.0);
+  expect_walk_matches_brute_force(p, q);
+  expect_walk_matches_brute_force(q, p);
+  expect_walk_matches_brute_force(q, q);
 }
 
 TEST(ContributingVerticesWalk, RandomPairsMatchBruteForce) {

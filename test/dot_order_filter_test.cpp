@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -42,7 +44,8 @@ void check_claims(const std::vector<Vec3>& exact, const std::vector<ApproxVec3>&
       ++tally.total;
       if (!claim) continue;
       ++tally.decided;
-      ASSERT_EQ(*claim, compare_dot(exact[i], exact[j], n)) << "points " << i << ", " << j << " (seed " << seed << ")";
+      ASSERT_EQ(*claim, compare_dot(exact[i], exact[j], n))
+          << "points " << i << ", " << j << " (seed " << seed << ")";
     }
 }
 
@@ -78,14 +81,17 @@ TEST(DotOrderFilter, ClaimsAreExactOnDoubles) {
   // Scales from subnormal products to the filter's limit of 2^300.
   const double scales[] = {1.0, 1e-5, 1e5, 0x1p290, 1e-150, 1e-300, 0x1p-1060};
   for (double scale : scales) {
-    SCOPED_TRACE("scale " + std::to_string(scale));
+    std::ostringstream trace;
+    trace << "scale " << std::hexfloat << scale;
+    SCOPED_TRACE(trace.str());
     Tally tally;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
       std::mt19937_64 rng(seed);
       // An integer normal (what the walk's directions are) and a double one.
-      const Vec3 n = seed % 2 ? Vec3{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
-                                     static_cast<long>(rng() % 1000) + 1}
-                              : Vec3{Rational(0.3 + 1e-9 * static_cast<double>(seed)), Rational(-0.7), Rational(1.1)};
+      const Vec3 n =
+          seed % 2 ? Vec3{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
+                          static_cast<long>(rng() % 1000) + 1}
+                   : Vec3{Rational(0.3 + 1e-9 * static_cast<double>(seed)), Rational(-0.7), Rational(1.1)};
       check_claims(near_ties(rng, n, scale, 25), n, ApproxVec3::of(n), tally, seed);
       if (HasFatalFailure()) return;
     }
@@ -134,24 +140,50 @@ TEST(DotOrderFilter, ClaimsAreExactWithCoarseApproximations) {
   Tally tally;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     std::mt19937_64 rng(seed);
-    const Vec3 n{static_cast<long>(rng() % 7) + 1, -static_cast<long>(rng() % 7), static_cast<long>(rng() % 7) + 1};
+    const Vec3 n{static_cast<long>(rng() % 7) + 1, -static_cast<long>(rng() % 7),
+                 static_cast<long>(rng() % 7) + 1};
     const Vec3 along = cross(n, Vec3{1, 2, 4});
     std::vector<Vec3> exact;
     const Vec3 base{Rational(static_cast<long>(rng() % 2001) - 1000, 300), 1, 2};
     for (int i = 0; i < 24; ++i) {
       const Rational s(static_cast<long>(rng() % 2001) - 1000, 997);
       Vec3 p = base + s * along;
-      if (i % 3 == 0) p.z += Rational(static_cast<long>(rng() % 201) - 100, 64);  // off the plane by up to 1.6
+      if (i % 3 == 0)
+        p.z += Rational(static_cast<long>(rng() % 201) - 100, 64);  // off the plane by up to 1.6
       exact.push_back(p);
     }
     std::vector<ApproxVec3> approx;
     for (const Vec3& p : exact) {
       ApproxVec3 a;
       Approx* c[3] = {&a.x, &a.y, &a.z};
-      for (int k = 0; k < 3; ++k) *c[k] = {std::round(to_double_nearest(p[k]) * 4096.0) / 4096.0, 1.0 / 8192 + 1e-12};
+      for (int k = 0; k < 3; ++k)
+        *c[k] = {std::round(to_double_nearest(p[k]) * 4096.0) / 4096.0, 1.0 / 8192 + 1e-12};
       approx.push_back(a);
     }
     check_claims(exact, approx, n, ApproxVec3::of(n), tally, seed);
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(tally.decided, tally.total / 10) << tally.decided << " of " << tally.total;
+}
+
+TEST(DotOrderFilter, ClaimsAreExactWithACoarseDirection) {
+  // An exact direction known only roughly (errors of 2^-7 per coordinate):
+  // the direction's error, not rounding or the points', dominates the bound,
+  // and points tied exactly along N have values that differ along n.
+  const Vec3 n{1, 2, 3};
+  const ApproxVec3 coarse{{1.0 + 0x1p-8, 0x1p-7}, {2.0 - 0x1p-8, 0x1p-7}, {3.0, 0x1p-7}};
+  Tally tally;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    std::mt19937_64 rng(seed);
+    const Vec3 along = cross(n, Vec3{1, 0, 0});  // orthogonal to n
+    const Vec3 base{static_cast<long>(rng() % 2001) - 1000, 3, -7};
+    std::vector<Vec3> exact;
+    for (int i = 0; i < 24; ++i) {
+      Vec3 p = base + Rational(static_cast<long>(rng() % 2001) - 1000, 16) * along;
+      if (i % 3 == 0) p.x += static_cast<long>(rng() % 201) - 100;  // off the tie
+      exact.push_back(p);
+    }
+    check_claims(exact, n, coarse, tally, seed);
     if (HasFatalFailure()) return;
   }
   EXPECT_GT(tally.decided, tally.total / 10) << tally.decided << " of " << tally.total;
@@ -165,12 +197,25 @@ TEST(DotOrderFilter, BeyondItsRangeItClaimsNothing) {
   for (const Vec3& p : exact) approx.push_back(ApproxVec3::of(p));
   const DotOrderFilter filter(ApproxVec3::of(n), extent_of(approx));
   for (const ApproxVec3& a : approx)
-    for (const ApproxVec3& b : approx) EXPECT_FALSE(filter.compare(filter.value(a), filter.value(b)).has_value());
+    for (const ApproxVec3& b : approx)
+      EXPECT_FALSE(filter.compare(filter.value(a), filter.value(b)).has_value());
   // A non-finite extent (a NaN would be folded into it) decides nothing either.
   PlaneFilterExtent nan_extent;
   nan_extent.add_value(std::nan(""));
   const DotOrderFilter blind(ApproxVec3::of(n), nan_extent);
   EXPECT_FALSE(blind.compare(1.0, -1.0).has_value());
+  // Nor does a direction whose approximation is not finite, or beyond the
+  // bound's range.
+  PlaneFilterExtent unit;
+  unit.add_value(1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const ApproxVec3& direction :
+       {ApproxVec3{{inf, 0}, {0, 0}, {0, 0}}, ApproxVec3{{1, std::nan("")}, {0, 0}, {0, 0}},
+        ApproxVec3{{0x1p700, 0}, {0, 0}, {0, 0}}}) {
+    const DotOrderFilter filter(direction, unit);
+    EXPECT_FALSE(filter.compare(1.0, -1.0).has_value());
+    EXPECT_FALSE(filter.compare(-1e300, 1e300).has_value());
+  }
 }
 
 }  // namespace

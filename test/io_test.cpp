@@ -19,9 +19,7 @@
 #include <random>
 #include <sstream>
 
-#include "cvms/convex_set.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/set_io.hpp"
 #include "cvms/shapes.hpp"
 #include "support/io_expect.hpp"
 
@@ -431,8 +429,8 @@ std::string file_bytes(const std::filesystem::path& path) {
 // write_file of a polyhedron writes from its mesh without copying it into a
 // soup; the oracle is the soup writer on to_soup(), byte for byte, for every
 // format and both coordinate modes, on a sum (whose values live in an arena)
-// and on a polyhedron with rational, non-dyadic coordinates; so do the
-// stream writer and a solid ConvexSet's writers.
+// and on a polyhedron with rational, non-dyadic coordinates; so does the
+// stream writer.
 TEST(Write, PolyhedronIsWrittenAsItsSoup) {
   TempDir dir;
   const ConvexPolyhedron sphere = shapes::geodesic_sphere(2);
@@ -452,18 +450,13 @@ TEST(Write, PolyhedronIsWrittenAsItsSoup) {
         const std::string bytes = file_bytes(direct);
         EXPECT_GT(bytes.size(), 100u);
         EXPECT_EQ(bytes, file_bytes(via_soup));
-        // The stream writer, and a solid ConvexSet's writers, which use them.
+        // The stream writer.
         const FileFormat format = format_from_extension(direct);
-        std::ostringstream streamed, soup_streamed, set_streamed;
+        std::ostringstream streamed, soup_streamed;
         write(streamed, *p, format, c);
         write(soup_streamed, p->to_soup(), format, c);
-        write(set_streamed, ConvexSet(*p), format, "set", c);
         EXPECT_EQ(streamed.str(), bytes);
         EXPECT_EQ(soup_streamed.str(), bytes);
-        EXPECT_EQ(set_streamed.str(), bytes);
-        const auto set_file = dir.path / (std::string("set") + ext);
-        write_file(set_file, ConvexSet(*p), c);
-        EXPECT_EQ(file_bytes(set_file), bytes);
       }
     }
   }

@@ -3,15 +3,20 @@
 // OBJ; STL for polygons), a flat OBJ as a modelling tool exports it (every
 // z = 0, a few hundred vertices, fan-triangulated) read as the polygon,
 // points-only files through the hull, and errors that name the file.
+#include "cvms/set_io.hpp"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
 
 #include "cvms/error.hpp"
-#include "cvms/set_io.hpp"
+#include "cvms/io.hpp"
+#include "cvms/minkowski.hpp"
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
@@ -65,6 +70,45 @@ TEST(SetIo, EveryDimensionRoundTrips) {
   } catch (const Error& e) {
     EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
     EXPECT_NE(std::string(e.what()).find("point.stl: STL cannot hold a set of dimension 0"), std::string::npos);
+  }
+}
+
+std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A solid is written straight from its polyhedron (no copy of its
+// coordinates into a soup first): the oracle is the soup writer on
+// to_soup(), byte for byte, to files and streams, for every format and both
+// coordinate modes, on a sum (values in an arena) and on rational,
+// non-dyadic coordinates.
+TEST(SetIo, SolidsAreWrittenAsTheirSoup) {
+  TempDir dir;
+  const ConvexPolyhedron sphere = shapes::geodesic_sphere(2);
+  Mat3 skew = Mat3::identity();
+  skew.m[0][1] = Rational(1, 3);
+  skew.m[2][0] = Rational(-2, 7);
+  const std::vector<ConvexSet> solids{
+      ConvexSet(minkowski_sum(sphere, shapes::rotated_geodesic_sphere(2)).polyhedron),
+      ConvexSet(sphere.transformed(skew, {Rational(1, 10), 0, 5}))};
+  for (const ConvexSet& solid : solids) {
+    ASSERT_EQ(solid.dimension(), 3);
+    for (const char* ext : {".off", ".obj", ".stl"}) {
+      for (Coordinates c : {Coordinates::exact, Coordinates::double_}) {
+        SCOPED_TRACE(std::string(ext) + (c == Coordinates::exact ? " exact" : " double"));
+        const auto direct = dir.path / (std::string("direct") + ext);
+        const auto via_soup = dir.path / (std::string("soup") + ext);
+        write_file(direct, solid, c);
+        write_file(via_soup, solid.polyhedron().to_soup(), c);
+        const std::string bytes = file_bytes(via_soup);
+        EXPECT_GT(bytes.size(), 100u);
+        EXPECT_EQ(file_bytes(direct), bytes);
+        std::ostringstream streamed;
+        write(streamed, solid, format_from_extension(direct), "solid", c);
+        EXPECT_EQ(streamed.str(), bytes);
+      }
+    }
   }
 }
 

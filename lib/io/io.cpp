@@ -114,12 +114,17 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
   }
 }
 
-// The polyhedron's own points with its faces' index lists: no copy of an
-// exact coordinate.
+// The polyhedron's own points with its faces' index lists (made into
+// `faces`, which the view reads): no copy of an exact coordinate.
+io_detail::SoupView polyhedron_view(const ConvexPolyhedron& p, detail::FaceLists& faces) {
+  faces = detail::face_lists(p.mesh());
+  return {p.mesh().positions(), faces.offsets, faces.indices};
+}
+
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                               Coordinates coordinates) {
-  const detail::FaceLists faces = detail::face_lists(p.mesh());
-  write_view_to_file(path, {p.mesh().positions(), faces.offsets, faces.indices}, format, coordinates);
+  detail::FaceLists faces;
+  write_view_to_file(path, polyhedron_view(p, faces), format, coordinates);
 }
 
 }  // namespace
@@ -129,8 +134,8 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
 }
 
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
-  const detail::FaceLists faces = detail::face_lists(p.mesh());
-  write_view(out, {p.mesh().positions(), faces.offsets, faces.indices}, format, coordinates);
+  detail::FaceLists faces;
+  write_view(out, polyhedron_view(p, faces), format, coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,

@@ -64,8 +64,10 @@ FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<Approx
   for (std::uint32_t i = 0; i < faces; ++i) {
     // The offset reads the first corner's exact coordinates, which facet
     // order visits out of order (prefetch_exact.hpp).
-    if (i + prefetch_far < faces) prefetch_structs(mesh.position(mesh.from(mesh.halfedge(FaceId(i + prefetch_far)))));
-    if (i + prefetch_near < faces) prefetch_limbs(mesh.position(mesh.from(mesh.halfedge(FaceId(i + prefetch_near)))));
+    if (i + prefetch_far < faces)
+      prefetch_structs(mesh.position(mesh.from(mesh.halfedge(FaceId(i + prefetch_far)))));
+    if (i + prefetch_near < faces)
+      prefetch_limbs(mesh.position(mesh.from(mesh.halfedge(FaceId(i + prefetch_near)))));
     const FaceId f(i);
     const std::array<VertexId, 3> t = first_corners(mesh, f);
     Vec3& normal = out.normals[f.index()];

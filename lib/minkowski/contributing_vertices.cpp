@@ -8,8 +8,8 @@
 
 #include "dot_order_filter.hpp"
 #include "filtered_predicates.hpp"
-#include "prefetch_exact.hpp"
 #include "polyhedron_builder.hpp"
+#include "prefetch_exact.hpp"
 #include "worker.hpp"
 
 namespace cvms::detail {
@@ -172,7 +172,11 @@ void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, const Plan
     // Breadth-first order visits p's normals out of index order: a climb
     // started by waiting for its direction's approximation (a third of the
     // climbs' time on Sphere6 + rot. Sphere6).
-    if (i + prefetch_near < end) __builtin_prefetch(&detail::normal_approx(p, order.facets[i + prefetch_near]));
+    if (i + prefetch_near < end) {
+      const FaceId ahead = order.facets[i + prefetch_near];
+      if (partner.empty() || !partner[ahead.index()].is_valid())
+        prefetch_bytes(&detail::normal_approx(p, ahead), sizeof(ApproxVec3));
+    }
     const FaceId f = order.facets[i];
     const FaceId g = partner.empty() ? FaceId() : partner[f.index()];
     if (g.is_valid()) {

@@ -32,7 +32,8 @@ class DotOrderFilter {
   /// For direction n over a set of the given extent.
   DotOrderFilter(const ApproxVec3& n, const PlaneFilterExtent& extent) noexcept
       : n_{n.x.value, n.y.value, n.z.value},
-        margin_(filtered::difference_margin * filtered::dot_filter_bound(n, extent.max_abs, extent.max_error)) {}
+        margin_(filtered::difference_margin *
+                filtered::dot_filter_bound(n, extent.max_abs, extent.max_error)) {}
 
   /// fl(p . n), in the order the bound assumes.
   [[nodiscard]] double value(const ApproxVec3& p) const noexcept {

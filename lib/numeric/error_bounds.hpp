@@ -2,8 +2,9 @@
 // Every error bound of the library's double filters, each constant next to
 // the proof that justifies it. The filters themselves live with the code
 // that uses them (filtered_arithmetic.hpp: running error; plane_filter.hpp:
-// orient3d against a fixed triangle; approx.cpp: Approx::of; the quickhull's
-// dot-product scan); what they may assume about doubles and what each bound
+// orient3d against a fixed triangle; approx.cpp: Approx::of; the dot-product
+// scan of the quickhull and of the contributing-vertex walk's climbs,
+// dot_order_filter.hpp); what they may assume about doubles and what each bound
 // is worth is here, so that checking the numerics means reading one file.
 // Private to the library.
 //
@@ -202,7 +203,8 @@ inline double plane_filter_bound(double span, double q, double slack) noexcept {
   return plane_rounding * span * q + slack;
 }
 
-// The dot-product scan (the quickhull's initial simplex). A bound on
+// The dot-product scan (the quickhull's initial simplex; DotOrderFilter in
+// dot_order_filter.hpp, the contributing-vertex walk's climbs). A bound on
 // |P . N - fl(p . n)| for every point P of the set and the direction N with
 // approximation n (|n_k - N_k| <= f_k):
 //   |P . N - p . N| <= e |N|_1 <= e (|n|_1 + |f|_1),

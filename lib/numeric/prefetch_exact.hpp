@@ -17,11 +17,17 @@ namespace cvms::detail {
 inline constexpr std::size_t prefetch_far = 16;
 inline constexpr std::size_t prefetch_near = 8;
 
-/// The cache lines of p's three mpq_structs.
-inline void prefetch_structs(const Vec3& p) noexcept {
-  __builtin_prefetch(&p);
-  __builtin_prefetch(reinterpret_cast<const char*>(&p) + 64);
+/// Every cache line of the object at `at`, `bytes` long (its first and
+/// last byte included whatever its alignment: a 96-byte Vec3 may span three
+/// lines, a 48-byte ApproxVec3 two).
+inline void prefetch_bytes(const void* at, std::size_t bytes) noexcept {
+  const char* first = static_cast<const char*>(at);
+  for (std::size_t offset = 0; offset < bytes; offset += 64) __builtin_prefetch(first + offset);
+  __builtin_prefetch(first + bytes - 1);
 }
+
+/// The cache lines of p's three mpq_structs.
+inline void prefetch_structs(const Vec3& p) noexcept { prefetch_bytes(&p, sizeof p); }
 
 /// The first limb of each numerator and denominator of p (read through the
 /// structs: call it once prefetch_structs had time to bring them).
