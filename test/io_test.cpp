@@ -27,6 +27,7 @@ namespace cvms {
 namespace {
 
 using test::data_path;
+using test::file_bytes;
 using test::faces_of;
 using test::make_soup;
 using test::throws_error;
@@ -419,11 +420,6 @@ TEST(ErrorMessage, IsWhatWithoutTheCategoryPrefix) {
   EXPECT_STREQ(e.what(), "not_convex: cube.off: reflex edge (0, 4)");
   EXPECT_STREQ(e.message(), "cube.off: reflex edge (0, 4)");
   EXPECT_STREQ(Error(ErrorCategory::invalid_argument, "").message(), "");
-}
-
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // write_file of a polyhedron writes from its mesh without copying it into a

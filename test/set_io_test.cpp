@@ -20,11 +20,13 @@
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 #include "support/hand_solids.hpp"
+#include "support/io_expect.hpp"
 #include "support/set_oracle.hpp"
 
 namespace cvms {
 namespace {
 
+using test::file_bytes;
 using test::v3;
 
 struct TempDir {
@@ -71,11 +73,6 @@ TEST(SetIo, EveryDimensionRoundTrips) {
     EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
     EXPECT_NE(std::string(e.what()).find("point.stl: STL cannot hold a set of dimension 0"), std::string::npos);
   }
-}
-
-std::string file_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // A solid is written straight from its polyhedron (no copy of its

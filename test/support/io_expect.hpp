@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <ostream>
 #include <span>
 #include <sstream>
@@ -26,6 +28,12 @@ inline void PrintTo(const Vec3& v, std::ostream* os) {
 }  // namespace cvms
 
 namespace cvms::test {
+
+/// The whole content of a file, bytes as they are (empty if it cannot be read).
+inline std::string file_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 /// How much slower than a plain build the time bounds of the hostile-input
 /// tests allow (AddressSanitizer builds run several times slower).
