@@ -153,28 +153,33 @@ void check_distinct_points(const std::vector<Vec3>& pts) {
     fail("vertices " + str(first) + " and " + str(second) + " are at the same point (duplicate point)");
 }
 
-// Corners: the directed edge of corner c runs from indices[c] to
-// indices[next[c]].
-struct Corners {
-  std::vector<std::uint32_t> face;
-  std::vector<std::uint32_t> next;
-  std::vector<std::uint32_t> prev;
-};
+// Corners: corner c of face f (offsets[f] <= c < offsets[f + 1]) is the
+// directed edge from indices[c] to indices[next_corner(c, ...)]. Read off
+// the offsets face by face rather than stored: three arrays of a corner each
+// were a fifth of building a sum's output mesh (issue 14).
+std::uint32_t next_corner(std::uint32_t c, std::uint32_t begin, std::uint32_t end) noexcept {
+  return c + 1 == end ? begin : c + 1;
+}
 
-Corners corner_cycles(const std::vector<std::uint32_t>& offsets) {
-  const std::uint32_t num_corners = offsets.back();
+std::uint32_t previous_corner(std::uint32_t c, std::uint32_t begin, std::uint32_t end) noexcept {
+  return c == begin ? end - 1 : c - 1;
+}
+
+// The face of corner c, for messages. \pre every face has a corner
+// (check_faces), so the offsets increase strictly.
+std::uint32_t face_of_corner(const std::vector<std::uint32_t>& offsets, std::uint32_t c) {
+  return static_cast<std::uint32_t>(std::upper_bound(offsets.begin(), offsets.end(), c) - offsets.begin() - 1);
+}
+
+// Calls visit(c, next) for every corner c and the corner after it in its
+// face, face by face.
+template <class Visit>
+void for_each_corner(const std::vector<std::uint32_t>& offsets, Visit&& visit) {
   const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
-  Corners corners{std::vector<std::uint32_t>(num_corners), std::vector<std::uint32_t>(num_corners),
-                  std::vector<std::uint32_t>(num_corners)};
   for (std::uint32_t f = 0; f < num_faces; ++f) {
     const std::uint32_t b = offsets[f], e = offsets[f + 1];
-    for (std::uint32_t c = b; c < e; ++c) {
-      corners.face[c] = f;
-      corners.next[c] = (c + 1 == e) ? b : c + 1;
-      corners.prev[c] = (c == b) ? e - 1 : c - 1;
-    }
+    for (std::uint32_t c = b; c < e; ++c) visit(c, next_corner(c, b, e));
   }
-  return corners;
 }
 
 // Each corner keyed by the undirected vertex pair (smaller << 32 | larger)
@@ -185,19 +190,20 @@ using KeyedCorners = detail::ScratchVector<std::pair<std::uint64_t, std::uint32_
 // (smaller, larger) vertex and then by corner: a counting sort by the
 // smaller vertex (stable, so corners stay in order), then each bucket,
 // about a vertex degree long, sorted by the larger vertex.
-KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const Corners& corners,
+KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const std::vector<std::uint32_t>& offsets,
                              std::uint32_t n) {
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
   KeyedCorners keyed(num_corners);
   std::vector<std::uint32_t> bucket_start(std::size_t{n} + 1, 0);
-  for (std::uint32_t c = 0; c < num_corners; ++c)
-    ++bucket_start[std::min(indices[c], indices[corners.next[c]]) + 1];
+  for_each_corner(offsets, [&](std::uint32_t c, std::uint32_t next) {
+    ++bucket_start[std::min(indices[c], indices[next]) + 1];
+  });
   for (std::uint32_t v = 0; v < n; ++v) bucket_start[v + 1] += bucket_start[v];
   std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
-  for (std::uint32_t c = 0; c < num_corners; ++c) {
-    const std::uint64_t a = indices[c], b = indices[corners.next[c]];
+  for_each_corner(offsets, [&](std::uint32_t c, std::uint32_t next) {
+    const std::uint64_t a = indices[c], b = indices[next];
     keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c};
-  }
+  });
   for (std::uint32_t v = 0; v < n; ++v)
     std::sort(keyed.begin() + bucket_start[v], keyed.begin() + bucket_start[v + 1]);
   return keyed;
@@ -207,19 +213,23 @@ KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const Co
 // number of edges. Scan all groups first, then report by severity: a
 // non-manifold edge explains the orientation and boundary symptoms it causes.
 std::uint32_t check_edge_groups(const KeyedCorners& keyed, const std::vector<std::uint32_t>& indices,
-                                const Corners& corners) {
+                                const std::vector<std::uint32_t>& offsets) {
+  const auto face_of = [&](std::uint32_t c) { return face_of_corner(offsets, c); };
   std::string non_manifold, inconsistent, boundary;
   std::uint32_t num_edges = 0;
   for (std::size_t i = 0; i < keyed.size();) {
     std::size_t j = i;
     while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
     const std::uint32_t c0 = keyed[i].second;
-    const std::uint32_t a = indices[c0], b = indices[corners.next[c0]];
+    // c0 runs from a to b, the other vertex of the pair.
+    const auto smaller = static_cast<std::uint32_t>(keyed[i].first >> 32);
+    const auto larger = static_cast<std::uint32_t>(keyed[i].first);
+    const std::uint32_t a = indices[c0], b = a == smaller ? larger : smaller;
     if (j - i > 2) {
       if (non_manifold.empty()) {
         non_manifold = edge_name(a, b) + " is shared by " + std::to_string(j - i) + " faces (";
         for (std::size_t k = i; k < j && k < i + 6; ++k)
-          non_manifold += (k == i ? "" : ", ") + str(corners.face[keyed[k].second]);
+          non_manifold += (k == i ? "" : ", ") + str(face_of(keyed[k].second));
         non_manifold += (j - i > 6 ? ", ...)" : ")");
         non_manifold += ": non-manifold edge";
       }
@@ -227,10 +237,10 @@ std::uint32_t check_edge_groups(const KeyedCorners& keyed, const std::vector<std
       const std::uint32_t c1 = keyed[i + 1].second;
       if (indices[c1] == a && inconsistent.empty())
         inconsistent = edge_name(a, b) + " is used in the same direction " + str(a) + " -> " + str(b) +
-                       " by faces " + str(corners.face[c0]) + " and " + str(corners.face[c1]) +
+                       " by faces " + str(face_of(c0)) + " and " + str(face_of(c1)) +
                        ": inconsistent orientation (flipped face?)";
     } else if (boundary.empty()) {
-      boundary = edge_name(a, b) + " of face " + str(corners.face[c0]) +
+      boundary = edge_name(a, b) + " of face " + str(face_of(c0)) +
                  " has no opposite face: the surface is open (boundary edge)";
     }
     ++num_edges;
@@ -256,17 +266,17 @@ struct Connectivity {
 
 // Edge e's corners are keyed[2e] and keyed[2e + 1]; halfedge 2e runs from the
 // smaller to the larger vertex.
-Connectivity link_halfedges(const PolygonSoup& soup, const Corners& corners, const KeyedCorners& keyed,
-                            std::uint32_t num_edges) {
+Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, std::uint32_t num_edges) {
   const auto& indices = soup.face_indices;
+  const auto& offsets = soup.face_offsets;
   const auto n = static_cast<std::uint32_t>(soup.points.size());
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
-  const auto num_faces = static_cast<std::uint32_t>(soup.face_offsets.size() - 1);
+  const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
   std::vector<HalfedgeId> corner_he(num_corners);
   for (std::uint32_t e = 0; e < num_edges; ++e) {
     for (std::uint32_t k = 0; k < 2; ++k) {
-      const std::uint32_t c = keyed[2 * e + k].second;
-      const bool ascending = indices[c] < indices[corners.next[c]];
+      const auto [key, c] = keyed[2 * e + k];
+      const bool ascending = indices[c] == static_cast<std::uint32_t>(key >> 32);  // from the smaller vertex
       corner_he[c] = HalfedgeId(2 * e + (ascending ? 0u : 1u));
     }
   }
@@ -275,12 +285,16 @@ Connectivity link_halfedges(const PolygonSoup& soup, const Corners& corners, con
   m.he_next.resize(num_corners);
   m.he_prev.resize(num_corners);
   m.he_face.resize(num_corners);
-  for (std::uint32_t c = 0; c < num_corners; ++c) {
-    const std::uint32_t h = corner_he[c].index();
-    m.he_to[h] = VertexId(indices[corners.next[c]]);
-    m.he_next[h] = corner_he[corners.next[c]];
-    m.he_prev[h] = corner_he[corners.prev[c]];
-    m.he_face[h] = FaceId(corners.face[c]);
+  for (std::uint32_t f = 0; f < num_faces; ++f) {
+    const std::uint32_t b = offsets[f], e = offsets[f + 1];
+    for (std::uint32_t c = b; c < e; ++c) {
+      const std::uint32_t h = corner_he[c].index();
+      const std::uint32_t next = next_corner(c, b, e);
+      m.he_to[h] = VertexId(indices[next]);
+      m.he_next[h] = corner_he[next];
+      m.he_prev[h] = corner_he[previous_corner(c, b, e)];
+      m.he_face[h] = FaceId(f);
+    }
   }
   m.face_he.resize(num_faces);
   for (std::uint32_t f = 0; f < num_faces; ++f) m.face_he[f] = corner_he[soup.face_offsets[f]];
@@ -336,10 +350,9 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points) {
     check_distinct_points(soup.points);
   }
   const auto n = static_cast<std::uint32_t>(soup.points.size());
-  const Corners corners = corner_cycles(soup.face_offsets);
-  const KeyedCorners keyed = corners_by_edge(soup.face_indices, corners, n);
-  const std::uint32_t num_edges = check_edge_groups(keyed, soup.face_indices, corners);
-  Connectivity c = link_halfedges(soup, corners, keyed, num_edges);
+  const KeyedCorners keyed = corners_by_edge(soup.face_indices, soup.face_offsets, n);
+  const std::uint32_t num_edges = check_edge_groups(keyed, soup.face_indices, soup.face_offsets);
+  Connectivity c = link_halfedges(soup, keyed, num_edges);
 
   Mesh m;
   m.positions_ = std::move(soup.points);
