@@ -154,32 +154,31 @@ void check_distinct_points(const std::vector<Vec3>& pts) {
 }
 
 // Corners: corner c of face f (offsets[f] <= c < offsets[f + 1]) is the
-// directed edge from indices[c] to indices[next_corner(c, ...)]. Read off
+// directed edge from indices[c] to indices of the next corner of f. Read off
 // the offsets face by face rather than stored: three arrays of a corner each
 // were a fifth of building a sum's output mesh (issue 14).
-std::uint32_t next_corner(std::uint32_t c, std::uint32_t begin, std::uint32_t end) noexcept {
-  return c + 1 == end ? begin : c + 1;
-}
+struct Corner {
+  std::uint32_t at;        ///< c
+  std::uint32_t next;      ///< the corner after c in its face
+  std::uint32_t previous;  ///< the corner before c in its face
+  std::uint32_t face;
+};
 
-std::uint32_t previous_corner(std::uint32_t c, std::uint32_t begin, std::uint32_t end) noexcept {
-  return c == begin ? end - 1 : c - 1;
-}
-
-// The face of corner c, for messages. \pre every face has a corner
-// (check_faces), so the offsets increase strictly.
-std::uint32_t face_of_corner(const std::vector<std::uint32_t>& offsets, std::uint32_t c) {
-  return static_cast<std::uint32_t>(std::upper_bound(offsets.begin(), offsets.end(), c) - offsets.begin() - 1);
-}
-
-// Calls visit(c, next) for every corner c and the corner after it in its
-// face, face by face.
+// Calls visit(corner) for every corner, face by face.
 template <class Visit>
 void for_each_corner(const std::vector<std::uint32_t>& offsets, Visit&& visit) {
   const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
   for (std::uint32_t f = 0; f < num_faces; ++f) {
     const std::uint32_t b = offsets[f], e = offsets[f + 1];
-    for (std::uint32_t c = b; c < e; ++c) visit(c, next_corner(c, b, e));
+    for (std::uint32_t c = b; c < e; ++c) visit(Corner{c, c + 1 == e ? b : c + 1, c == b ? e - 1 : c - 1, f});
   }
+}
+
+// The face of corner c, for messages. \pre every face has a corner
+// (check_faces), so the offsets increase strictly.
+std::uint32_t face_of_corner(const std::vector<std::uint32_t>& offsets, std::uint32_t c) {
+  return static_cast<std::uint32_t>(std::upper_bound(offsets.begin(), offsets.end(), c) - offsets.begin() -
+                                    1);
 }
 
 // Each corner keyed by the undirected vertex pair (smaller << 32 | larger)
@@ -195,14 +194,13 @@ KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const st
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
   KeyedCorners keyed(num_corners);
   std::vector<std::uint32_t> bucket_start(std::size_t{n} + 1, 0);
-  for_each_corner(offsets, [&](std::uint32_t c, std::uint32_t next) {
-    ++bucket_start[std::min(indices[c], indices[next]) + 1];
-  });
+  for_each_corner(offsets,
+                  [&](const Corner& c) { ++bucket_start[std::min(indices[c.at], indices[c.next]) + 1]; });
   for (std::uint32_t v = 0; v < n; ++v) bucket_start[v + 1] += bucket_start[v];
   std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
-  for_each_corner(offsets, [&](std::uint32_t c, std::uint32_t next) {
-    const std::uint64_t a = indices[c], b = indices[next];
-    keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c};
+  for_each_corner(offsets, [&](const Corner& c) {
+    const std::uint64_t a = indices[c.at], b = indices[c.next];
+    keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c.at};
   });
   for (std::uint32_t v = 0; v < n; ++v)
     std::sort(keyed.begin() + bucket_start[v], keyed.begin() + bucket_start[v + 1]);
@@ -285,17 +283,13 @@ Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, 
   m.he_next.resize(num_corners);
   m.he_prev.resize(num_corners);
   m.he_face.resize(num_corners);
-  for (std::uint32_t f = 0; f < num_faces; ++f) {
-    const std::uint32_t b = offsets[f], e = offsets[f + 1];
-    for (std::uint32_t c = b; c < e; ++c) {
-      const std::uint32_t h = corner_he[c].index();
-      const std::uint32_t next = next_corner(c, b, e);
-      m.he_to[h] = VertexId(indices[next]);
-      m.he_next[h] = corner_he[next];
-      m.he_prev[h] = corner_he[previous_corner(c, b, e)];
-      m.he_face[h] = FaceId(f);
-    }
-  }
+  for_each_corner(offsets, [&](const Corner& c) {
+    const std::uint32_t h = corner_he[c.at].index();
+    m.he_to[h] = VertexId(indices[c.next]);
+    m.he_next[h] = corner_he[c.next];
+    m.he_prev[h] = corner_he[c.previous];
+    m.he_face[h] = FaceId(c.face);
+  });
   m.face_he.resize(num_faces);
   for (std::uint32_t f = 0; f < num_faces; ++f) m.face_he[f] = corner_he[soup.face_offsets[f]];
   m.vertex_he.assign(n, HalfedgeId());

@@ -118,10 +118,6 @@ void climb(const ConvexPolyhedron& q, const PlaneFilterExtent& extent, Vec3Ref n
   sorted_facet_vertices(q, facet_with_normal(q, v, n), out);
 }
 
-}  // namespace
-
-namespace {
-
 // The facets of p in breadth-first order from facet 0 over their adjacency
 // (the queue is the order itself), and each facet's position in it.
 struct FacetOrder {
