@@ -39,9 +39,13 @@ ExactValues copies_of(const ConvexPolyhedron& p) {
   return out;
 }
 
+// Which of a polyhedron's exact values a check reads: the offsets may be
+// made after the rest (on first use, into the polyhedron's own arena).
+enum class Offsets { included, excluded };
+
 // Whether every nonzero numerator of p's values is a view (owns no limb) or
 // every one owns its limbs: a sum's are views, a copy's are its own.
-bool numerators_are_views(const ConvexPolyhedron& p, bool views) {
+bool numerators_are_views(const ConvexPolyhedron& p, bool views, Offsets offsets = Offsets::included) {
   auto matches = [views](const Rational& q) {
     return sgn(q) == 0 || (mpq_numref(q.get_mpq_t())->_mp_alloc == 0) == views;
   };
@@ -51,21 +55,30 @@ bool numerators_are_views(const ConvexPolyhedron& p, bool views) {
   for (FaceId f : p.mesh().faces()) {
     for (int i = 0; i < 3; ++i)
       if (!matches(p.normal(f)[i])) return false;
-    if (!matches(p.plane_offset(f))) return false;
+    if (offsets == Offsets::included && !matches(p.plane_offset(f))) return false;
   }
   return true;
 }
 
-// Whether every denominator of p's planes is a view (owns no limb), or every
-// one owns its limb.
-bool plane_denominators_are_views(const ConvexPolyhedron& p, bool views) {
+// Whether every denominator of p's normals is a view (owns no limb), or
+// every one owns its limb.
+bool normal_denominators_are_views(const ConvexPolyhedron& p, bool views) {
   auto matches = [views](const Rational& q) { return (mpq_denref(q.get_mpq_t())->_mp_alloc == 0) == views; };
-  for (FaceId f : p.mesh().faces()) {
+  for (FaceId f : p.mesh().faces())
     for (int i = 0; i < 3; ++i)
       if (!matches(p.normal(f)[i])) return false;
-    if (!matches(p.plane_offset(f))) return false;
-  }
   return true;
+}
+
+// The same for the offsets.
+bool offset_denominators_are_views(const ConvexPolyhedron& p, bool views) {
+  for (FaceId f : p.mesh().faces())
+    if ((mpq_denref(p.plane_offset(f).get_mpq_t())->_mp_alloc == 0) != views) return false;
+  return true;
+}
+
+bool plane_denominators_are_views(const ConvexPolyhedron& p, bool views) {
+  return normal_denominators_are_views(p, views) && offset_denominators_are_views(p, views);
 }
 
 void expect_values(const ConvexPolyhedron& p, const ExactValues& expected) {
@@ -94,18 +107,21 @@ TEST_P(ArenaStorage, SumsCopiesAndMovesKeepTheirValues) {
   const ExactValues expected = copies_of(sum);
   if (detail::LimbArena::holds_limbs()) {
     EXPECT_TRUE(numerators_are_views(sum, true));
-    // The planes' denominators (1 for the integer normals, powers of two
-    // for these offsets): on two threads or more the worker that sizes
-    // them gives each heap limb back, so they are views; on one thread
-    // they keep their own limbs.
-    EXPECT_TRUE(plane_denominators_are_views(sum, GetParam() > 1));
+    // The normals' denominators (1): on two threads or more the worker
+    // that sizes them gives each heap limb back, so they are views; on one
+    // thread they keep their own limbs. The offsets' (powers of two) are
+    // made on first use, once per polyhedron, and give theirs back always.
+    EXPECT_TRUE(normal_denominators_are_views(sum, GetParam() > 1));
+    EXPECT_TRUE(offset_denominators_are_views(sum, true));
   }
 
   ConvexPolyhedron copy;
   {
     ConvexPolyhedron original = sum_of(a, b);
     copy = original;
-    EXPECT_TRUE(numerators_are_views(copy, false));
+    // Taken before the original made its offsets: the copy makes its own
+    // when first asked (into its own arena), after the original is gone.
+    EXPECT_TRUE(numerators_are_views(copy, false, Offsets::excluded));
     ConvexPolyhedron moved = std::move(original);
     expect_values(moved, expected);
     ConvexPolyhedron assigned;
@@ -304,6 +320,61 @@ TEST(ArenaStorage, LoadedPlanesAreMadeOnceForConcurrentReaders) {
       ASSERT_EQ(copy_before.plane_offset(f), offset) << "facet " << f.index() << " of the copy";
     }
     EXPECT_NE(&copy_before.normal(FaceId(0)), &p.normal(FaceId(0)));
+  }
+}
+
+// A sum's output has its normals from its builder and makes its offsets when
+// one is first asked for (lib/mesh/facet_planes.hpp). Readers on several
+// threads that ask at once all read the one set made (the same addresses),
+// and every offset is dot(normal, x) for every vertex x of its facet, worked
+// out here in rationals; a copy taken before makes its own equal set, one
+// taken after copies it (and owns its limbs). Under TSan this is the test of
+// the once-only construction of the offsets.
+TEST(ArenaStorage, SumOffsetsAreMadeOnceForConcurrentReaders) {
+  const ConvexPolyhedron a = shapes::geodesic_sphere(3);
+  const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(3).translated(Vec3{Rational(1, 3), 0, 5});
+  constexpr int num_readers = 4;
+  for (const unsigned threads : {1u, 2u}) {
+    Options options;
+    options.threads = threads;
+    detail::ResearchOptions research;
+    research.worker_minimums.oversubscribe = true;
+    const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
+    const ConvexPolyhedron copy_before = p;
+    std::vector<std::vector<const Rational*>> seen(num_readers);
+    std::vector<std::thread> readers;
+    std::latch start(num_readers);
+    for (int t = 0; t < num_readers; ++t)
+      readers.emplace_back([&p, &seen, &start, t] {
+        start.arrive_and_wait();
+        const std::uint32_t n = p.num_facets();
+        for (std::uint32_t i = 0; i < n; ++i) {  // each thread starts elsewhere
+          const FaceId f((i + static_cast<std::uint32_t>(t) * n / num_readers) % n);
+          seen[static_cast<std::size_t>(t)].push_back(&p.plane_offset(f));
+        }
+      });
+    for (std::thread& r : readers) r.join();
+    for (int t = 1; t < num_readers; ++t) {
+      std::vector<const Rational*> x = seen[0], y = seen[static_cast<std::size_t>(t)];
+      std::sort(x.begin(), x.end());
+      std::sort(y.begin(), y.end());
+      ASSERT_EQ(x, y) << "reader " << t << " read another set of offsets (" << threads << " threads)";
+    }
+    const ConvexPolyhedron copy_after = p;
+    for (FaceId f : p.mesh().faces()) {
+      for (HalfedgeId h : p.mesh().face_halfedges(f))
+        ASSERT_EQ(p.plane_offset(f), dot(p.normal(f), p.vertex(p.mesh().from(h)))) << "facet " << f.index();
+      ASSERT_EQ(copy_before.plane_offset(f), p.plane_offset(f))
+          << "facet " << f.index() << " of the copy before";
+      ASSERT_EQ(copy_after.plane_offset(f), p.plane_offset(f))
+          << "facet " << f.index() << " of the copy after";
+    }
+    EXPECT_NE(&copy_before.plane_offset(FaceId(0)), &p.plane_offset(FaceId(0)));
+    EXPECT_TRUE(numerators_are_views(copy_after, false));
+    if (detail::LimbArena::holds_limbs()) {
+      EXPECT_TRUE(numerators_are_views(p, true));
+      EXPECT_TRUE(numerators_are_views(copy_before, false, Offsets::excluded));
+    }
   }
 }
 

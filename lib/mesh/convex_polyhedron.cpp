@@ -858,8 +858,9 @@ ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
 // A copy's exact values own their limbs (copying a rational allocates them),
-// so it does not keep the original's arena alive: planes made already are
-// copied, planes not yet made are made by the copy when it needs them.
+// so it does not keep the original's arena alive: planes and offsets made
+// already are copied, those not yet made are made by the copy when it needs
+// them (into an arena of its own).
 ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other) : mesh_(other.mesh_), approx_(other.approx_) {
   if (!other.planes_) return;
   const detail::FacetPlanes* made = other.planes_made_.load(std::memory_order_acquire);
@@ -867,7 +868,10 @@ ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other) : mesh_(other.
     planes_ = std::make_shared<detail::PlaneStore>();
     return;
   }
-  planes_ = std::make_shared<detail::PlaneStore>(*made, nullptr);
+  detail::FacetPlanes copied = *made;
+  if (const auto* offsets = other.planes_->offsets_if_made(); offsets != nullptr && copied.offsets.empty())
+    copied.offsets = *offsets;
+  planes_ = std::make_shared<detail::PlaneStore>(std::move(copied), nullptr);
   planes_made_.store(&planes_->get(mesh_, approx_->vertices), std::memory_order_release);
 }
 ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept
@@ -911,7 +915,9 @@ const detail::FacetPlanes& ConvexPolyhedron::make_planes() const {
 }
 
 const Vec3& ConvexPolyhedron::normal(FaceId f) const { return planes().normals[f.index()]; }
-const Rational& ConvexPolyhedron::plane_offset(FaceId f) const { return planes().offsets[f.index()]; }
+const Rational& ConvexPolyhedron::plane_offset(FaceId f) const {
+  return planes_->offsets(mesh_, approx_->vertices)[f.index()];
+}
 
 ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) { return checked_polyhedron(mesh, nullptr); }
 
@@ -924,10 +930,10 @@ bool ConvexPolyhedron::is_convex() const {
     return false;
   }
   if (euler_characteristic() != 2) return false;
-  if (!approx_ || approx_->vertices.size() != m.num_vertices()) return false;
+  if (!approx_ || !planes_ || approx_->vertices.size() != m.num_vertices()) return false;
   const detail::FacetPlanes& made = planes();
   const auto& normals = made.normals;
-  const auto& offsets = made.offsets;
+  const auto& offsets = planes_->offsets(m, approx_->vertices);
   if (normals.size() != m.num_faces() || made.normal_approx.size() != m.num_faces() ||
       offsets.size() != m.num_faces())
     return false;
@@ -1010,9 +1016,9 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
   for (VertexId v : p.mesh.vertices()) p.vertex_approx.push_back(ApproxVec3::of(p.mesh.position(v)));
   const detail::FacetPlanes& old = planes();
   detail::FacetPlanes moved{old.normals, old.normal_approx, {}};
-  moved.offsets.reserve(old.offsets.size());
+  moved.offsets.reserve(num_facets());
   for (FaceId f : mesh_.faces()) {
-    moved.offsets.push_back(old.offsets[f.index()] + dot(old.normals[f.index()], offset));
+    moved.offsets.push_back(plane_offset(f) + dot(old.normals[f.index()], offset));
     moved.offsets.back().canonicalize();
   }
   p.planes = std::move(moved);

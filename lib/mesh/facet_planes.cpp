@@ -39,15 +39,12 @@ FacetPlanes sized_planes(std::size_t facets, bool give_back_denominators) {
   planes.normal_approx.resize(facets);
   if (!give_back_denominators) {
     planes.normals.resize(facets);
-    planes.offsets.resize(facets);
     return planes;
   }
   planes.normals.reserve(facets);
-  planes.offsets.reserve(facets);
   for (std::size_t i = 0; i < facets; ++i) {
     Vec3& normal = planes.normals.emplace_back();
     for (int k = 0; k < 3; ++k) LimbArena::give_back_denominator(normal[k]);
-    LimbArena::give_back_denominator(planes.offsets.emplace_back());
   }
   return planes;
 }
@@ -58,27 +55,41 @@ FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<Approx
   // their own (unlike a sum's on the calling thread: limb_arena.hpp).
   FacetPlanes out = sized_planes(mesh.num_faces(), true);
   const auto ref = [&](VertexId v) { return Vec3Ref{mesh.position(v), vertex_approx[v.index()]}; };
-  Vec3 general;  // these two keep their limbs from facet to facet
-  DotScratch scratch;
+  Vec3 general;  // keeps its limbs from facet to facet
+  for (FaceId f : mesh.faces()) {
+    const std::array<VertexId, 3> t = first_corners(mesh, f);
+    primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, out.normals[f.index()],
+                     out.normal_approx[f.index()]);
+  }
+  return out;
+}
+
+KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, const KeptVector<Vec3>& normals,
+                                                LimbArena& arena) {
   const std::uint32_t faces = mesh.num_faces();
+  KeptVector<Rational> out;
+  out.reserve(faces);
+  DotScratch scratch;
   for (std::uint32_t i = 0; i < faces; ++i) {
-    // The offset reads the first corner's exact coordinates, which facet
-    // order visits out of order (prefetch_exact.hpp).
+    // The first corner's exact coordinates, which facet order visits out of
+    // order (prefetch_exact.hpp).
     if (i + prefetch_far < faces)
       prefetch_structs(mesh.position(mesh.from(mesh.halfedge(FaceId(i + prefetch_far)))));
     if (i + prefetch_near < faces)
       prefetch_limbs(mesh.position(mesh.from(mesh.halfedge(FaceId(i + prefetch_near)))));
-    const FaceId f(i);
-    const std::array<VertexId, 3> t = first_corners(mesh, f);
-    Vec3& normal = out.normals[f.index()];
-    primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, normal, out.normal_approx[f.index()]);
-    store_integer_dot(arena, out.offsets[f.index()], normal, mesh.position(t[0]), scratch);
+    // Made once per polyhedron: no heap block per denominator (limb_arena.hpp).
+    Rational& offset = out.emplace_back();
+    LimbArena::give_back_denominator(offset);
+    store_integer_dot(arena, offset, normals[i], mesh.position(mesh.from(mesh.halfedge(FaceId(i)))), scratch);
   }
   return out;
 }
 
 PlaneStore::PlaneStore(FacetPlanes planes, std::shared_ptr<const LimbArena> limbs)
-    : given_limbs_(std::move(limbs)), given_(true), planes_(std::move(planes)) {}
+    : given_limbs_(std::move(limbs)), given_(true), planes_(std::move(planes)) {
+  if (planes_.offsets.size() == planes_.normals.size())
+    offsets_ready_.store(&planes_.offsets, std::memory_order_release);
+}
 
 PlaneStore::PlaneStore() : given_(false) {}
 
@@ -86,6 +97,17 @@ const FacetPlanes& PlaneStore::get(const Mesh& mesh, const std::vector<ApproxVec
   if (!given_)
     std::call_once(made_, [&] { planes_ = planes_from_first_corners(mesh, vertex_approx, made_limbs_); });
   return planes_;
+}
+
+const KeptVector<Rational>& PlaneStore::offsets(const Mesh& mesh,
+                                                const std::vector<ApproxVec3>& vertex_approx) {
+  const FacetPlanes& planes = get(mesh, vertex_approx);
+  if (planes.offsets.size() == planes.normals.size()) return planes.offsets;  // given with the normals
+  std::call_once(offsets_made_, [&] {
+    made_offsets_ = offsets_from_first_corners(mesh, planes.normals, offset_limbs_);
+    offsets_ready_.store(&made_offsets_, std::memory_order_release);
+  });
+  return made_offsets_;
 }
 
 }  // namespace cvms::detail

@@ -8,7 +8,12 @@
 // orientations of its vertices, so a program that loads and checks such a
 // polyhedron, or only reads its vertices, never pays for the primitive
 // normals' gcds and the offsets' products, which were half of loading a
-// triangulated sphere. Why this is still exact and the same:
+// triangulated sphere. The offsets are made later still, when one is first
+// asked for (ConvexPolyhedron::plane_offset), also for a sum's output, whose
+// builder knows the normals: no algorithm of the library's searches reads
+// them (the filters decide with normals and vertices), and in the sum they
+// were a sixth of the time (an exact dot product per facet, its rational
+// and its limbs). Why this is still exact and the same:
 // a facet is a strictly convex polygon, counterclockwise from outside, so its
 // first three corners a, b, c are not collinear and cross(b - a, c - a) is a
 // positive multiple of its outward normal; the primitive integer vector of
@@ -16,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -33,15 +39,17 @@ struct FacetPlanes {
   // them anew in every call.
   KeptVector<Vec3> normals;              ///< outward primitive integer normals
   KeptVector<ApproxVec3> normal_approx;  ///< their approximations
-  KeptVector<Rational> offsets;          ///< dot(normal, x) for x on the facet
+  /// dot(normal, x) for x on the facet; or empty, to be made on first use
+  /// (PlaneStore::offsets).
+  KeptVector<Rational> offsets;
 };
 
-/// Planes for `facets` facets, every value 0 and ready to be stored into
-/// by a LimbArena. Rationals are constructed in place, never moved there
-/// (moving one re-initialises its source, which allocates). With
-/// give_back_denominators each denominator's limb is freed as soon as it is
-/// made (LimbArena::give_back_denominator), so that sizing reuses one heap
-/// block instead of keeping four per facet.
+/// Planes for `facets` facets without offsets, every value 0 and ready to
+/// be stored into by a LimbArena. Rationals are constructed in place, never
+/// moved there (moving one re-initialises its source, which allocates).
+/// With give_back_denominators each denominator's limb is freed as soon as
+/// it is made (LimbArena::give_back_denominator), so that sizing reuses one
+/// heap block instead of keeping three per facet.
 [[nodiscard]] FacetPlanes sized_planes(std::size_t facets, bool give_back_denominators);
 
 /// The plane triple of face f: its first three corners, in order (not
@@ -61,11 +69,16 @@ void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, LimbArena& arena, Vec3& g
                       ApproxVec3& approx);
 
 /// The planes of every face of mesh from its first three corners (see the
-/// file comment), their values' limbs kept in arena.
+/// file comment), their values' limbs kept in arena; without offsets.
 /// \pre every face is a strictly convex polygon, counterclockwise seen from
 ///   outside, and vertex_approx[v] approximates vertex v.
 FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
                                       LimbArena& arena);
+
+/// The offset dot(normals[f], x) of every face f of mesh, x its first
+/// corner, the limbs kept in arena. \pre normals[f] is normal to face f.
+KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, const KeptVector<Vec3>& normals,
+                                                LimbArena& arena);
 
 /// A ConvexPolyhedron's planes (a move takes them along; a copy copies those
 /// made, or makes its own): either given when it was built, or made from its
@@ -81,17 +94,31 @@ class PlaneStore {
   PlaneStore(const PlaneStore&) = delete;
   PlaneStore& operator=(const PlaneStore&) = delete;
 
-  /// The planes of mesh, made now if they were not given or made before.
+  /// The planes of mesh, made now if they were not given or made before;
+  /// their offsets may be empty (see offsets()).
   /// \pre mesh and vertex_approx are those of the polyhedron (or of a copy).
   const FacetPlanes& get(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx);
+  /// The planes' offsets: given with them, or made now from the normals and
+  /// each facet's first corner if they were not made before (once, as the
+  /// planes are). \pre as for get().
+  const KeptVector<Rational>& offsets(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx);
+  /// The offsets if they are made or were given, else null (for a copy:
+  /// it takes what is made, and makes the rest itself when asked).
+  [[nodiscard]] const KeptVector<Rational>* offsets_if_made() const noexcept {
+    return offsets_ready_.load(std::memory_order_acquire);
+  }
 
  private:
-  // Declared first so that it outlives the values that point into it.
+  // Declared first so that they outlive the values that point into them.
   std::shared_ptr<const LimbArena> given_limbs_;
   LimbArena made_limbs_;
+  LimbArena offset_limbs_;
   std::once_flag made_;
+  std::once_flag offsets_made_;
   bool given_;
   FacetPlanes planes_;
+  KeptVector<Rational> made_offsets_;  // when planes_ has none
+  std::atomic<const KeptVector<Rational>*> offsets_ready_{nullptr};
 };
 
 }  // namespace cvms::detail

@@ -36,8 +36,8 @@ Mesh output_mesh(PolygonSoup soup) { return Mesh::from_soup(std::move(soup), Dis
 
 ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes, LimbArena limbs) {
   const std::size_t faces = planes.normals.size();
-  if (planes.normal_approx.size() != faces || planes.offsets.size() != faces || faces != mesh.num_faces() ||
-      vertex_approx.size() != mesh.num_vertices())
+  if (planes.normal_approx.size() != faces || (!planes.offsets.empty() && planes.offsets.size() != faces) ||
+      faces != mesh.num_faces() || vertex_approx.size() != mesh.num_vertices())
     throw Error(ErrorCategory::invalid_argument,
                 "assemble: " + std::to_string(faces) + " planes and " + std::to_string(vertex_approx.size()) +
                     " approximations for " + std::to_string(mesh.num_faces()) + " faces and " +

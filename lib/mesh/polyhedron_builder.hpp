@@ -59,8 +59,9 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
 Mesh output_mesh(PolygonSoup soup);
 
 /// The polyhedron from its mesh, the approximations of its vertices and the
-/// planes of its faces (index by index), with the arena of every value
-/// stored in one (the polyhedron keeps it). Geometry is not checked.
+/// planes of its faces (index by index; without offsets, the polyhedron
+/// makes them on first use), with the arena of every value stored in one
+/// (the polyhedron keeps it). Geometry is not checked.
 /// \pre the guarantee holds and the planes are exact.
 /// \throw Error(invalid_argument) if the counts do not match.
 ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes,

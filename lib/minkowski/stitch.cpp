@@ -222,10 +222,6 @@ std::vector<VertexPair> SumFacetBuilder::facet(std::size_t i) const {
   return {pairs_.data() + offsets_[i], pairs_.data() + offsets_[i + 1]};
 }
 
-VertexPair SumFacetBuilder::first_corner(std::size_t facet) const {
-  return is_edge_facet(normals_[facet]) ? edge_cycle(normals_[facet])[0] : pairs_[offsets_[facet]];
-}
-
 std::vector<std::uint32_t> SumFacetBuilder::corner_offsets() const {
   std::vector<std::uint32_t> offsets;
   offsets.reserve(num_facets() + 1);
@@ -317,46 +313,24 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
   return soup;
 }
 
-// What one thread needs to write planes: reused scratch and its own lazy
-// caches of edge directions.
+// What one thread needs to write normals: its own lazy caches of edge
+// directions, and reused scratch.
 struct SumFacetBuilder::PlaneScratch {
   PlaneScratch(const SumFacetBuilder& builder, LimbArena& arena)
       : directions_a(builder.a_), directions_b(builder.b_), limbs(arena) {}
   EdgeDirections directions_a;
   EdgeDirections directions_b;
-  Vec3 first_vertex_sum;
   Vec3 normal;
-  DotScratch dot;
-  LimbArena& limbs;  // where this thread's planes keep their numerators (and long denominators)
+  LimbArena& limbs;  // where this thread's normals keep their numerators (and long denominators)
 };
 
 void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end,
-                                   OutputVertices vertices, PlaneScratch& scratch) const {
-  // The offset is taken at the facet's first vertex a_i + b_j: read from the
-  // output vertices once they exist, else summed here (6 % more
-  // instructions, but it lets this run while another thread builds them).
-  const std::vector<Vec3>* positions = vertices.positions;
-  for (std::size_t i = begin; i < end; ++i) {
-    if (positions != nullptr) {
-      if (i + prefetch_far < end) prefetch_structs((*positions)[vertices.first_vertex[i + prefetch_far]]);
-      if (i + prefetch_near < end) prefetch_limbs((*positions)[vertices.first_vertex[i + prefetch_near]]);
-    }
-    const Vec3& normal = write_normal(planes, i, scratch);
-    const Vec3* first_vertex = &scratch.first_vertex_sum;
-    if (positions != nullptr) {
-      first_vertex = &(*positions)[vertices.first_vertex[i]];
-    } else {
-      const VertexPair first = first_corner(i);
-      const Vec3 &va = a_.vertex(VertexId(first.a)), &vb = b_.vertex(VertexId(first.b));
-      for (int k = 0; k < 3; ++k) add_into(scratch.first_vertex_sum[k], va[k], vb[k]);
-    }
-    store_integer_dot(scratch.limbs, planes.offsets[i], normal, *first_vertex, scratch.dot);
-  }
+                                   PlaneScratch& scratch) const {
+  for (std::size_t i = begin; i < end; ++i) write_normal(planes, i, scratch);
 }
 
-const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const {
+void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const {
   const NormalSource& source = normals_[i];
-  const Vec3* normal = &scratch.normal;
   switch (source.kind) {
     case NormalKind::facet_a:
     case NormalKind::facet_b: {
@@ -366,7 +340,7 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
       const Vec3Ref operand_normal = detail::normal_ref(p, FaceId(source.index));
       planes.normal_approx[i] = operand_normal.approx;
       scratch.limbs.store(planes.normals[i], operand_normal.exact);
-      return operand_normal.exact;
+      return;
     }
     case NormalKind::edges_positive:
     case NormalKind::edges_negative: {
@@ -382,7 +356,7 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
         if (flip) small.negate();
         planes.normal_approx[i] = small.approx();
         small.store(scratch.limbs, planes.normals[i]);
-        return planes.normals[i];
+        return;
       }
       primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), scratch.normal);
       if (flip)
@@ -390,9 +364,8 @@ const Vec3& SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, Pl
       break;
     }
   }
-  planes.normal_approx[i] = ApproxVec3::of(*normal);
-  scratch.limbs.store(planes.normals[i], *normal);
-  return *normal;
+  planes.normal_approx[i] = ApproxVec3::of(scratch.normal);
+  scratch.limbs.store(planes.normals[i], scratch.normal);
 }
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
@@ -401,41 +374,29 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
   Mesh mesh;
-  // Each facet's first corner, kept from the soup: the offsets read their
-  // vertices in facet order through it, one sequential array, not through
-  // the mesh's halfedges (a cache miss per facet). Any vertex of a facet
-  // gives the same offset.
-  std::vector<std::uint32_t> first_vertex;
-  auto build_mesh = [&] {
-    PolygonSoup faces = soup(&vertex_approx, &limbs);
-    first_vertex.resize(faces.num_faces());
-    for (std::size_t f = 0; f < first_vertex.size(); ++f)
-      first_vertex[f] = faces.face_indices[faces.face_offsets[f]];
-    mesh = output_mesh(std::move(faces));
-  };
-  const auto output_vertices = [&] { return OutputVertices{&mesh.positions(), first_vertex}; };
+  auto build_mesh = [&] { mesh = output_mesh(soup(&vertex_approx, &limbs)); };
   if (threads <= 1) {
     build_mesh();
     FacetPlanes planes = sized_planes(num_facets(), false);
     PlaneScratch scratch(*this, limbs);
-    write_planes(planes, 0, num_facets(), output_vertices(), scratch);
+    write_planes(planes, 0, num_facets(), scratch);
     return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
   }
-  // Two parts: the vertices with the mesh (one thread), and the facet planes
-  // (the larger part, shared). A worker starts on the planes at once; this
-  // thread joins it when the mesh is done. Facets are handed out in chunks by
-  // an atomic counter, so the split adapts to the input, and any split gives
-  // the same exact planes.
+  // Two parts: the vertices with the mesh (one thread), and the facet
+  // normals (shared). A worker starts on the normals at once; this thread
+  // joins it when the mesh is done. Facets are handed out in chunks by an
+  // atomic counter, so the split adapts to the input, and any split gives
+  // the same exact normals.
   constexpr std::size_t chunk = 256;
   const std::size_t n = num_facets();
   LimbArena worker_limbs;
   FacetPlanes planes;
   std::atomic<std::size_t> next{0};
   std::latch sized(1);
-  auto take_chunks = [&](OutputVertices vertices, LimbArena& arena) {
+  auto take_chunks = [&](LimbArena& arena) {
     PlaneScratch scratch(*this, arena);
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
-      write_planes(planes, begin, std::min(begin + chunk, n), vertices, scratch);
+      write_planes(planes, begin, std::min(begin + chunk, n), scratch);
   };
   {
     Worker worker;
@@ -448,11 +409,11 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
         throw;
       }
       sized.count_down();
-      take_chunks(OutputVertices{}, worker_limbs);
+      take_chunks(worker_limbs);
     });
     build_mesh();  // if this throws, the worker joins before the exception leaves
     sized.wait();
-    take_chunks(output_vertices(), limbs);
+    take_chunks(limbs);
     worker.join();  // rethrows the worker's exception
   }
   limbs.absorb(std::move(worker_limbs));

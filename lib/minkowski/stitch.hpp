@@ -63,9 +63,10 @@ class SumFacetBuilder {
   /// The normals are not recomputed from the output: each is the known
   /// normal of the facet of A or B it is parallel to, or, for e_A + e_B, the
   /// primitive direction of +-cross(d_A, d_B).
-  /// threads > 1 computes the facet planes on a second thread while this
+  /// The planes' offsets are made on first use (ConvexPolyhedron::plane_offset).
+  /// threads > 1 computes the facet normals on a second thread while this
   /// one builds the vertices and the mesh, then shares the rest of the
-  /// planes (same result).
+  /// normals (same result).
   [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
 
   /// The glued facets as a soup: one point per distinct vertex pair (its
@@ -74,21 +75,13 @@ class SumFacetBuilder {
   [[nodiscard]] PolygonSoup soup() const;
 
  private:
-  // The planes of the facets, once sized_planes (facet_planes.hpp) has
-  // allocated them all: write_planes fills facets [begin, end), taking the
-  // offsets' points from the output vertices if they are given (facet i's
-  // plane at vertex first_vertex[i] of output_positions), else summing
-  // them. Threads may write disjoint ranges.
+  // The normals of the facets, once sized_planes (facet_planes.hpp) has
+  // allocated them all: write_planes fills facets [begin, end). Threads may
+  // write disjoint ranges. (The offsets are made on first use.)
   struct PlaneScratch;
-  struct OutputVertices {
-    const std::vector<Vec3>* positions = nullptr;  ///< null: not built yet
-    std::span<const std::uint32_t> first_vertex;
-  };
-  void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, OutputVertices vertices,
-                    PlaneScratch& scratch) const;
-  // Facet i's normal and its approximation into planes; returns the normal
-  // it stored from (an operand's or the scratch's), for the offset.
-  const Vec3& write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const;
+  void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, PlaneScratch& scratch) const;
+  // Facet i's normal and its approximation into planes.
+  void write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const;
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.
   [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const;
@@ -123,7 +116,6 @@ class SumFacetBuilder {
       }
     }
   }
-  [[nodiscard]] VertexPair first_corner(std::size_t facet) const;
   void close_facet(NormalSource normal) {
     offsets_.push_back(static_cast<std::uint32_t>(pairs_.size()));
     normals_.push_back(normal);
