@@ -111,8 +111,11 @@ class ConvexPolyhedron {
   /// that loading and checking alone never pay for them.
   /// \throw std::bad_alloc only then, if memory runs out.
   [[nodiscard]] const Vec3& normal(FaceId f) const;
-  /// dot(normal(f), x) == plane_offset(f) for every point x of facet f
-  /// (made with the normals).
+  /// dot(normal(f), x) == plane_offset(f) for every point x of facet f.
+  /// Made when one is first asked for (once, for all facets; safe from
+  /// concurrent readers), after the normals: the sums and the validation
+  /// never read them, so a sum or a load that never asks never pays for them.
+  /// \throw std::bad_alloc only then, if memory runs out.
   [[nodiscard]] const Rational& plane_offset(FaceId f) const;
 
   /// The direction of the edge of h: vertex(to(h)) - vertex(from(h)).

@@ -10,8 +10,8 @@
 // normals' gcds and the offsets' products, which were half of loading a
 // triangulated sphere. The offsets are made later still, when one is first
 // asked for (ConvexPolyhedron::plane_offset), also for a sum's output, whose
-// builder knows the normals: no algorithm of the library's searches reads
-// them (the filters decide with normals and vertices), and in the sum they
+// builder knows the normals: the sums and the validation never read them
+// (their filters decide with normals and vertices), and in the sum they
 // were a sixth of the time (an exact dot product per facet, its rational
 // and its limbs). Why this is still exact and the same:
 // a facet is a strictly convex polygon, counterclockwise from outside, so its
