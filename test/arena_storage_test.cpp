@@ -281,6 +281,29 @@ TEST(ArenaStorage, FromSoupKeepsExactPlanesInItsArena) {
   }
 }
 
+// What readers on several threads, started at once so that they race for
+// one computation, read through read(p, f) for every facet f (each reader
+// starting elsewhere): the addresses, sorted, per reader.
+template <class Read>
+std::vector<std::vector<const void*>> addresses_read_at_once(const ConvexPolyhedron& p, int num_readers,
+                                                             Read read) {
+  std::vector<std::vector<const void*>> seen(static_cast<std::size_t>(num_readers));
+  std::vector<std::thread> readers;
+  std::latch start(num_readers);
+  for (int t = 0; t < num_readers; ++t)
+    readers.emplace_back([&, t] {
+      start.arrive_and_wait();
+      const std::uint32_t n = p.num_facets();
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const FaceId f((i + static_cast<std::uint32_t>(t) * n / static_cast<std::uint32_t>(num_readers)) % n);
+        seen[static_cast<std::size_t>(t)].push_back(read(p, f));
+      }
+    });
+  for (std::thread& r : readers) r.join();
+  for (std::vector<const void*>& addresses : seen) std::sort(addresses.begin(), addresses.end());
+  return seen;
+}
+
 // A loaded polyhedron makes its planes when one is first asked for
 // (lib/mesh/facet_planes.hpp). Readers on several threads that ask at once
 // all get the one set made (the same addresses), and it is the right one; a
@@ -292,26 +315,13 @@ TEST(ArenaStorage, LoadedPlanesAreMadeOnceForConcurrentReaders) {
   for (int round = 0; round < 3; ++round) {
     const ConvexPolyhedron p = ConvexPolyhedron::from_soup(soup);
     const ConvexPolyhedron copy_before = p;
-    std::vector<std::vector<const Vec3*>> seen(num_readers);
-    std::vector<std::thread> readers;
-    std::latch start(num_readers);  // all ask at once, so that they race for the one computation
-    for (int t = 0; t < num_readers; ++t)
-      readers.emplace_back([&p, &seen, &start, t] {
-        start.arrive_and_wait();
-        const std::uint32_t n = p.num_facets();
-        for (std::uint32_t i = 0; i < n; ++i) {  // each thread starts elsewhere
-          const FaceId f((i + static_cast<std::uint32_t>(t) * n / num_readers) % n);
-          seen[static_cast<std::size_t>(t)].push_back(&p.normal(f));
-          (void)p.plane_offset(f);
-        }
-      });
-    for (std::thread& r : readers) r.join();
-    for (int t = 1; t < num_readers; ++t) {
-      std::vector<const Vec3*> a = seen[0], b = seen[static_cast<std::size_t>(t)];
-      std::sort(a.begin(), a.end());
-      std::sort(b.begin(), b.end());
-      ASSERT_EQ(a, b) << "reader " << t << " read another set of planes (round " << round << ")";
-    }
+    const auto seen = addresses_read_at_once(p, num_readers, [](const ConvexPolyhedron& q, FaceId f) {
+      (void)q.plane_offset(f);
+      return static_cast<const void*>(&q.normal(f));
+    });
+    for (int t = 1; t < num_readers; ++t)
+      ASSERT_EQ(seen[0], seen[static_cast<std::size_t>(t)])
+          << "reader " << t << " read another set of planes (round " << round << ")";
     for (FaceId f : p.mesh().faces()) {
       const auto [n, offset] = outward_plane(p, f);
       ASSERT_EQ(p.normal(f), n) << "facet " << f.index();
@@ -341,25 +351,12 @@ TEST(ArenaStorage, SumOffsetsAreMadeOnceForConcurrentReaders) {
     research.worker_minimums.oversubscribe = true;
     const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
     const ConvexPolyhedron copy_before = p;
-    std::vector<std::vector<const Rational*>> seen(num_readers);
-    std::vector<std::thread> readers;
-    std::latch start(num_readers);
-    for (int t = 0; t < num_readers; ++t)
-      readers.emplace_back([&p, &seen, &start, t] {
-        start.arrive_and_wait();
-        const std::uint32_t n = p.num_facets();
-        for (std::uint32_t i = 0; i < n; ++i) {  // each thread starts elsewhere
-          const FaceId f((i + static_cast<std::uint32_t>(t) * n / num_readers) % n);
-          seen[static_cast<std::size_t>(t)].push_back(&p.plane_offset(f));
-        }
-      });
-    for (std::thread& r : readers) r.join();
-    for (int t = 1; t < num_readers; ++t) {
-      std::vector<const Rational*> x = seen[0], y = seen[static_cast<std::size_t>(t)];
-      std::sort(x.begin(), x.end());
-      std::sort(y.begin(), y.end());
-      ASSERT_EQ(x, y) << "reader " << t << " read another set of offsets (" << threads << " threads)";
-    }
+    const auto seen = addresses_read_at_once(p, num_readers, [](const ConvexPolyhedron& q, FaceId f) {
+      return static_cast<const void*>(&q.plane_offset(f));
+    });
+    for (int t = 1; t < num_readers; ++t)
+      ASSERT_EQ(seen[0], seen[static_cast<std::size_t>(t)])
+          << "reader " << t << " read another set of offsets (" << threads << " threads)";
     const ConvexPolyhedron copy_after = p;
     for (FaceId f : p.mesh().faces()) {
       for (HalfedgeId h : p.mesh().face_halfedges(f))
