@@ -12,7 +12,7 @@
 // asked for (ConvexPolyhedron::plane_offset), also for a sum's output, whose
 // builder knows the normals: the sums and the validation never read them
 // (their filters decide with normals and vertices), and in the sum they
-// were a sixth of the time (an exact dot product per facet, its rational
+// were an eighth of the time (an exact dot product per facet, its rational
 // and its limbs). Why this is still exact and the same:
 // a facet is a strictly convex polygon, counterclockwise from outside, so its
 // first three corners a, b, c are not collinear and cross(b - a, c - a) is a
