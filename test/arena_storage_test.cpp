@@ -351,6 +351,9 @@ TEST(ArenaStorage, SumOffsetsAreMadeOnceForConcurrentReaders) {
     research.worker_minimums.oversubscribe = true;
     const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
     const ConvexPolyhedron copy_before = p;
+    // Translated before any offset is made: the image makes its own.
+    const Vec3 shift{Rational(-2, 3), 7, Rational(1, 1024)};
+    const ConvexPolyhedron shifted = p.translated(shift);
     const auto seen = addresses_read_at_once(p, num_readers, [](const ConvexPolyhedron& q, FaceId f) {
       return static_cast<const void*>(&q.plane_offset(f));
     });
@@ -366,11 +369,18 @@ TEST(ArenaStorage, SumOffsetsAreMadeOnceForConcurrentReaders) {
       ASSERT_EQ(copy_after.plane_offset(f), p.plane_offset(f))
           << "facet " << f.index() << " of the copy after";
     }
-    EXPECT_NE(&copy_before.plane_offset(FaceId(0)), &p.plane_offset(FaceId(0)));
-    EXPECT_TRUE(numerators_are_views(copy_after, false));
+    for (FaceId f : shifted.mesh().faces())
+      ASSERT_EQ(shifted.plane_offset(f), p.plane_offset(f) + dot(p.normal(f), shift))
+          << "facet " << f.index();
+    EXPECT_TRUE(numerators_are_views(copy_after, false));  // copied, not made again
     if (detail::LimbArena::holds_limbs()) {
       EXPECT_TRUE(numerators_are_views(p, true));
+      // Made by the copy itself, into its own arena: views.
       EXPECT_TRUE(numerators_are_views(copy_before, false, Offsets::excluded));
+      for (FaceId f : copy_before.mesh().faces())
+        ASSERT_TRUE(sgn(copy_before.plane_offset(f)) == 0 ||
+                    mpq_numref(copy_before.plane_offset(f).get_mpq_t())->_mp_alloc == 0)
+            << "facet " << f.index() << " of the copy before";
     }
   }
 }

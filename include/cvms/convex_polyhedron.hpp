@@ -148,12 +148,16 @@ class ConvexPolyhedron {
   // The approximations the library's predicates use; the type is incomplete
   // outside the library. Precondition: the instance is not empty.
   [[nodiscard]] const detail::PolyhedronApproximations& approximations() const noexcept { return *approx_; }
-  // The facets' planes (normals, their approximations, offsets), made now if
-  // they were not yet; the type is incomplete outside the library.
+  // The facets' planes (normals, their approximations; offsets only if they
+  // came with them, else empty: read offsets through plane_offset()), made
+  // now if they were not yet; the type is incomplete outside the library.
   [[nodiscard]] const detail::FacetPlanes& planes() const {
     const detail::FacetPlanes* made = planes_made_.load(std::memory_order_acquire);
     return made != nullptr ? *made : make_planes();
   }
+  // The offsets if they are made already (one per facet), else null: what a
+  // derived polyhedron can reuse without making them.
+  [[nodiscard]] const Rational* made_offsets() const noexcept;
   /// \endcond
 
  private:

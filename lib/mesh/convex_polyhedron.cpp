@@ -916,7 +916,14 @@ const detail::FacetPlanes& ConvexPolyhedron::make_planes() const {
 
 const Vec3& ConvexPolyhedron::normal(FaceId f) const { return planes().normals[f.index()]; }
 const Rational& ConvexPolyhedron::plane_offset(FaceId f) const {
+  if (const Rational* made = made_offsets()) return made[f.index()];
+  (void)planes();  // published, so that a copy takes them rather than making its own
   return planes_->offsets(mesh_, approx_->vertices)[f.index()];
+}
+
+const Rational* ConvexPolyhedron::made_offsets() const noexcept {
+  const auto* offsets = planes_ ? planes_->offsets_if_made() : nullptr;
+  return offsets != nullptr && !offsets->empty() ? offsets->data() : nullptr;
 }
 
 ConvexPolyhedron ConvexPolyhedron::from_mesh(const Mesh& mesh) { return checked_polyhedron(mesh, nullptr); }
@@ -1016,10 +1023,14 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
   for (VertexId v : p.mesh.vertices()) p.vertex_approx.push_back(ApproxVec3::of(p.mesh.position(v)));
   const detail::FacetPlanes& old = planes();
   detail::FacetPlanes moved{old.normals, old.normal_approx, {}};
-  moved.offsets.reserve(num_facets());
-  for (FaceId f : mesh_.faces()) {
-    moved.offsets.push_back(plane_offset(f) + dot(old.normals[f.index()], offset));
-    moved.offsets.back().canonicalize();
+  // Offsets not made here are not made for the image either: it makes its
+  // own when asked, equal to these shifted.
+  if (const Rational* offsets = made_offsets()) {
+    moved.offsets.reserve(num_facets());
+    for (FaceId f : mesh_.faces()) {
+      moved.offsets.push_back(offsets[f.index()] + dot(old.normals[f.index()], offset));
+      moved.offsets.back().canonicalize();
+    }
   }
   p.planes = std::move(moved);
   return ConvexPolyhedron(std::move(p));

@@ -101,6 +101,7 @@ const FacetPlanes& PlaneStore::get(const Mesh& mesh, const std::vector<ApproxVec
 
 const KeptVector<Rational>& PlaneStore::offsets(const Mesh& mesh,
                                                 const std::vector<ApproxVec3>& vertex_approx) {
+  if (const KeptVector<Rational>* made = offsets_if_made()) return *made;
   const FacetPlanes& planes = get(mesh, vertex_approx);
   if (planes.offsets.size() == planes.normals.size()) return planes.offsets;  // given with the normals
   std::call_once(offsets_made_, [&] {

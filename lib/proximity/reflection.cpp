@@ -29,11 +29,14 @@ ConvexPolyhedron reflection(const ConvexPolyhedron& p) {
   FacetPlanes planes;
   planes.normals.reserve(p.num_facets());
   planes.normal_approx.reserve(p.num_facets());
-  planes.offsets.reserve(p.num_facets());
+  // The offsets stay those of p (dot(-n, -x) = dot(n, x)); not made there,
+  // they are made by -P when asked (a sum's operand never is).
+  const Rational* offsets = p.made_offsets();
+  if (offsets != nullptr) planes.offsets.reserve(p.num_facets());
   for (FaceId f : p.mesh().faces()) {
     planes.normals.push_back(-p.normal(f));
     planes.normal_approx.push_back(negated(normal_approx(p, f)));
-    planes.offsets.push_back(p.plane_offset(f));
+    if (offsets != nullptr) planes.offsets.push_back(offsets[f.index()]);
   }
   return assemble(output_mesh(std::move(soup)), std::move(vertices), std::move(planes));
 }
