@@ -101,9 +101,9 @@ const FacetPlanes& PlaneStore::get(const Mesh& mesh, const std::vector<ApproxVec
 
 const KeptVector<Rational>& PlaneStore::offsets(const Mesh& mesh,
                                                 const std::vector<ApproxVec3>& vertex_approx) {
+  // Given with the planes, or made before (both published: the constructor, the once-call).
   if (const KeptVector<Rational>* made = offsets_if_made()) return *made;
   const FacetPlanes& planes = get(mesh, vertex_approx);
-  if (planes.offsets.size() == planes.normals.size()) return planes.offsets;  // given with the normals
   std::call_once(offsets_made_, [&] {
     made_offsets_ = offsets_from_first_corners(mesh, planes.normals, offset_limbs_);
     offsets_ready_.store(&made_offsets_, std::memory_order_release);

@@ -295,7 +295,7 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
     };
     const std::size_t vertices = numbered.first.size();
     for (std::size_t j = 0; j < vertices; ++j) {
-      // The operands' exact coordinates, fetched ahead as in write_planes.
+      // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
       if (j + prefetch_far < vertices) {
         const VertexPair ahead = pair_of(j + prefetch_far);
         prefetch_structs(a_.vertex(VertexId(ahead.a)));
@@ -315,8 +315,8 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
 
 // What one thread needs to write normals: its own lazy caches of edge
 // directions, and reused scratch.
-struct SumFacetBuilder::PlaneScratch {
-  PlaneScratch(const SumFacetBuilder& builder, LimbArena& arena)
+struct SumFacetBuilder::NormalScratch {
+  NormalScratch(const SumFacetBuilder& builder, LimbArena& arena)
       : directions_a(builder.a_), directions_b(builder.b_), limbs(arena) {}
   EdgeDirections directions_a;
   EdgeDirections directions_b;
@@ -324,12 +324,12 @@ struct SumFacetBuilder::PlaneScratch {
   LimbArena& limbs;  // where this thread's normals keep their numerators (and long denominators)
 };
 
-void SumFacetBuilder::write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end,
-                                   PlaneScratch& scratch) const {
+void SumFacetBuilder::write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end,
+                                    NormalScratch& scratch) const {
   for (std::size_t i = begin; i < end; ++i) write_normal(planes, i, scratch);
 }
 
-void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const {
+void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScratch& scratch) const {
   const NormalSource& source = normals_[i];
   switch (source.kind) {
     case NormalKind::facet_a:
@@ -378,8 +378,8 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   if (threads <= 1) {
     build_mesh();
     FacetPlanes planes = sized_planes(num_facets(), false);
-    PlaneScratch scratch(*this, limbs);
-    write_planes(planes, 0, num_facets(), scratch);
+    NormalScratch scratch(*this, limbs);
+    write_normals(planes, 0, num_facets(), scratch);
     return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
   }
   // Two parts: the vertices with the mesh (one thread), and the facet
@@ -394,9 +394,9 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   std::atomic<std::size_t> next{0};
   std::latch sized(1);
   auto take_chunks = [&](LimbArena& arena) {
-    PlaneScratch scratch(*this, arena);
+    NormalScratch scratch(*this, arena);
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
-      write_planes(planes, begin, std::min(begin + chunk, n), scratch);
+      write_normals(planes, begin, std::min(begin + chunk, n), scratch);
   };
   {
     Worker worker;

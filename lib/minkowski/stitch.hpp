@@ -76,12 +76,12 @@ class SumFacetBuilder {
 
  private:
   // The normals of the facets, once sized_planes (facet_planes.hpp) has
-  // allocated them all: write_planes fills facets [begin, end). Threads may
+  // allocated them all: write_normals fills facets [begin, end). Threads may
   // write disjoint ranges. (The offsets are made on first use.)
-  struct PlaneScratch;
-  void write_planes(FacetPlanes& planes, std::size_t begin, std::size_t end, PlaneScratch& scratch) const;
+  struct NormalScratch;
+  void write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end, NormalScratch& scratch) const;
   // Facet i's normal and its approximation into planes.
-  void write_normal(FacetPlanes& planes, std::size_t i, PlaneScratch& scratch) const;
+  void write_normal(FacetPlanes& planes, std::size_t i, NormalScratch& scratch) const;
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.
   [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const;
