@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <latch>
+#include <limits>
 #include <span>
 #include <utility>
 
@@ -241,37 +242,12 @@ void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, st
 
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr, nullptr); }
 
-PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
+template <typename NewVertex>
+void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
+                                     NewVertex&& new_vertex) const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
-  PolygonSoup soup;
-  soup.face_offsets = corner_offsets();
-  const std::size_t corners = soup.face_offsets.back();
-  soup.face_indices.resize(corners);
-  soup.points.reserve(corners / 3 + 1);  // each vertex is in at least three facets
-
-  if (approx != nullptr) approx->reserve(soup.points.capacity());
-  Vec3 arena_sum;  // reused scratch of store_sum's general path
-  auto new_vertex = [&](const VertexPair& p) {
-    const VertexId va(p.a), vb(p.b);
-    // Built in place: moving an mpq_class re-initialises the source, which allocates.
-    Vec3& point = soup.points.emplace_back();
-    const Vec3 &pa = a_.vertex(va), &pb = b_.vertex(vb);
-    for (int i = 0; i < 3; ++i) {
-      if (limbs != nullptr) {
-        store_sum(*limbs, point[i], pa[i], pb[i], arena_sum[i]);
-      } else {
-        add_into(point[i], pa[i], pb[i]);
-      }
-    }
-    if (approx != nullptr) {
-      const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
-      approx->push_back({approx_sum(xa.x, xb.x, point.x), approx_sum(xa.y, xb.y, point.y),
-                         approx_sum(xa.z, xb.z, point.z)});
-    }
-    return static_cast<std::uint32_t>(soup.points.size() - 1);
-  };
-
+  const std::size_t corners = soup.face_indices.size();
   if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{corners}) {
     constexpr std::uint32_t unset = ~std::uint32_t{0};
     std::vector<std::uint32_t> index(table_size, unset);
@@ -281,35 +257,92 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
       if (slot == unset) slot = new_vertex(p);
       soup.face_indices[i++] = slot;
     });
-  } else {
-    // Sparse: numbered by sorting, not hashing (std::hash of an integer is
-    // the identity, so keys j * nb + v that an input lines up modulo the
-    // bucket count would make a hash map quadratic; issue 18, item 1).
-    std::vector<std::uint64_t> keys;
-    keys.reserve(corners);
-    for_each_corner([&](const VertexPair& p) { keys.push_back(p.a * nb + p.b); });
-    const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
-    const auto pair_of = [&](std::size_t j) -> VertexPair {
-      const std::uint64_t key = keys[numbered.first[j]];
-      return {static_cast<std::uint32_t>(key / nb), static_cast<std::uint32_t>(key % nb)};
-    };
-    const std::size_t vertices = numbered.first.size();
-    for (std::size_t j = 0; j < vertices; ++j) {
-      // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
-      if (j + prefetch_far < vertices) {
-        const VertexPair ahead = pair_of(j + prefetch_far);
-        prefetch_structs(a_.vertex(VertexId(ahead.a)));
-        prefetch_structs(b_.vertex(VertexId(ahead.b)));
-      }
-      if (j + prefetch_near < vertices) {
-        const VertexPair ahead = pair_of(j + prefetch_near);
-        prefetch_limbs(a_.vertex(VertexId(ahead.a)));
-        prefetch_limbs(b_.vertex(VertexId(ahead.b)));
-      }
-      new_vertex(pair_of(j));
-    }
-    for (std::size_t i = 0; i < corners; ++i) soup.face_indices[i] = numbered.index[i];
+    return;
   }
+  // Sparse: numbered by sorting, not hashing (std::hash of an integer is
+  // the identity, so keys j * nb + v that an input lines up modulo the
+  // bucket count would make a hash map quadratic; issue 18, item 1).
+  std::vector<std::uint64_t> keys;
+  keys.reserve(corners);
+  for_each_corner([&](const VertexPair& p) { keys.push_back(p.a * nb + p.b); });
+  const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
+  const auto pair_of = [&](std::size_t j) -> VertexPair {
+    const std::uint64_t key = keys[numbered.first[j]];
+    return {static_cast<std::uint32_t>(key / nb), static_cast<std::uint32_t>(key % nb)};
+  };
+  const std::size_t vertices = numbered.first.size();
+  for (std::size_t j = 0; j < vertices; ++j) {
+    // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
+    if (prefetch_operands && j + prefetch_far < vertices) {
+      const VertexPair ahead = pair_of(j + prefetch_far);
+      prefetch_structs(a_.vertex(VertexId(ahead.a)));
+      prefetch_structs(b_.vertex(VertexId(ahead.b)));
+    }
+    if (prefetch_operands && j + prefetch_near < vertices) {
+      const VertexPair ahead = pair_of(j + prefetch_near);
+      prefetch_limbs(a_.vertex(VertexId(ahead.a)));
+      prefetch_limbs(b_.vertex(VertexId(ahead.b)));
+    }
+    new_vertex(pair_of(j));
+  }
+  for (std::size_t i = 0; i < corners; ++i) soup.face_indices[i] = numbered.index[i];
+}
+
+PolygonSoup SumFacetBuilder::faces_without_points() const {
+  PolygonSoup soup;
+  soup.face_offsets = corner_offsets();
+  soup.face_indices.resize(soup.face_offsets.back());
+  return soup;
+}
+
+void SumFacetBuilder::write_vertex(const VertexPair& p, const VertexOutput& out, std::size_t j,
+                                   Vec3& scratch) const {
+  const VertexId va(p.a), vb(p.b);
+  Vec3& point = out.points[j];
+  const Vec3 &pa = a_.vertex(va), &pb = b_.vertex(vb);
+  for (int i = 0; i < 3; ++i) {
+    if (out.limbs != nullptr) {
+      store_sum(*out.limbs, point[i], pa[i], pb[i], scratch[i]);
+    } else {
+      add_into(point[i], pa[i], pb[i]);
+    }
+  }
+  if (out.approx != nullptr) {
+    const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
+    out.approx[j] = {approx_sum(xa.x, xb.x, point.x), approx_sum(xa.y, xb.y, point.y),
+                     approx_sum(xa.z, xb.z, point.z)};
+  }
+}
+
+void SumFacetBuilder::write_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
+                                     const VertexOutput& out, Vec3& scratch) const {
+  for (std::size_t j = begin; j < end; ++j) {
+    // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
+    if (j + prefetch_far < end) {
+      prefetch_structs(a_.vertex(VertexId(pairs[j + prefetch_far].a)));
+      prefetch_structs(b_.vertex(VertexId(pairs[j + prefetch_far].b)));
+    }
+    if (j + prefetch_near < end) {
+      prefetch_limbs(a_.vertex(VertexId(pairs[j + prefetch_near].a)));
+      prefetch_limbs(b_.vertex(VertexId(pairs[j + prefetch_near].b)));
+    }
+    write_vertex(pairs[j], out, j, scratch);
+  }
+}
+
+PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
+  PolygonSoup soup = faces_without_points();
+  soup.points.reserve(soup.face_indices.size() / 3 + 1);  // each vertex is in at least three facets
+  if (approx != nullptr) approx->reserve(soup.points.capacity());
+  Vec3 scratch;  // reused by store_sum's general path
+  number_corners(soup, true, [&](const VertexPair& p) {
+    // Built in place: moving an mpq_class re-initialises the source, which allocates.
+    soup.points.emplace_back();
+    if (approx != nullptr) approx->emplace_back();
+    const std::size_t j = soup.points.size() - 1;
+    write_vertex(p, {soup.points.data(), approx != nullptr ? approx->data() : nullptr, limbs}, j, scratch);
+    return static_cast<std::uint32_t>(j);
+  });
   return soup;
 }
 
@@ -369,51 +402,134 @@ void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScr
 }
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
-  // Each thread keeps the numerators it computes in an arena of its own;
-  // the result keeps both.
+  if (threads > 1) return build_on_two_threads();
+  // The numerators keep their limbs in one arena, which the result keeps.
   LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
-  Mesh mesh;
-  auto build_mesh = [&] { mesh = output_mesh(soup(&vertex_approx, &limbs)); };
-  if (threads <= 1) {
-    build_mesh();
-    FacetPlanes planes = sized_planes(num_facets(), false);
-    NormalScratch scratch(*this, limbs);
-    write_normals(planes, 0, num_facets(), scratch);
-    return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
+  Mesh mesh = output_mesh(soup(&vertex_approx, &limbs));
+  FacetPlanes planes = sized_planes(num_facets(), false);
+  NormalScratch scratch(*this, limbs);
+  write_normals(planes, 0, num_facets(), scratch);
+  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
+}
+
+namespace {
+
+// Counts a latch down once: when called, or else when destroyed, so that a
+// thread that throws never leaves the other one waiting.
+class CountDownOnce {
+ public:
+  explicit CountDownOnce(std::latch& latch) noexcept : latch_(&latch) {}
+  CountDownOnce(const CountDownOnce&) = delete;
+  CountDownOnce& operator=(const CountDownOnce&) = delete;
+  ~CountDownOnce() { (*this)(); }
+  void operator()() noexcept {
+    if (latch_ != nullptr) latch_->count_down();
+    latch_ = nullptr;
   }
-  // Two parts: the vertices with the mesh (one thread), and the facet
-  // normals (shared). A worker starts on the normals at once; this thread
-  // joins it when the mesh is done. Facets are handed out in chunks by an
-  // atomic counter, so the split adapts to the input, and any split gives
-  // the same exact normals.
-  constexpr std::size_t chunk = 256;
-  const std::size_t n = num_facets();
-  LimbArena worker_limbs;
+
+ private:
+  std::latch* latch_;
+};
+
+// Hands out [0, n) in chunks to whichever thread asks, until none is left
+// or a thread gives up for all (after a failure, so that the other one
+// takes no more work). Any split gives the same values. n may be set after
+// construction, before any thread takes (the threads synchronise on that).
+class ChunkCounter {
+ public:
+  explicit ChunkCounter(std::size_t chunk) noexcept : chunk_(chunk) {}
+  void set_size(std::size_t n) noexcept { n_ = n; }
+  template <typename Work>
+  void take(Work&& work) {
+    for (std::size_t begin = next_.fetch_add(chunk_); begin < n_; begin = next_.fetch_add(chunk_))
+      work(begin, std::min(begin + chunk_, n_));
+  }
+  // Writes only the atomic counter, so that a thread may give up while the
+  // other one still sets the size.
+  void give_up() noexcept { next_ = none_left; }
+
+ private:
+  // Beyond every size, and far from overflowing fetch_add.
+  static constexpr std::size_t none_left = std::numeric_limits<std::size_t>::max() / 2;
+  std::size_t n_ = 0;
+  std::size_t chunk_;
+  std::atomic<std::size_t> next_{0};
+};
+
+}  // namespace
+
+ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
+  // Three parts: the numbering of the vertices with the mesh's topology
+  // (this thread; it reads no coordinate), the facet normals (a worker
+  // starts on them at once, into planes it sizes), and the vertices'
+  // coordinates, written into the mesh's points once the mesh stands. Both
+  // threads take normals, then vertices, in chunks. Each thread keeps the
+  // numerators it computes in an arena of its own; the result keeps both.
+  const std::size_t facets = num_facets();
+  LimbArena limbs, worker_limbs;
   FacetPlanes planes;
-  std::atomic<std::size_t> next{0};
-  std::latch sized(1);
-  auto take_chunks = [&](LimbArena& arena) {
+  ChunkCounter normals(256), vertices(512);
+  normals.set_size(facets);
+  // Set by this thread before `meshed` is counted down, read-only after.
+  ScratchVector<VertexPair> pairs;  // by output vertex
+  std::vector<ApproxVec3> vertex_approx;
+  VertexOutput points{};
+  std::latch sized(1), meshed(1);
+  auto take_normals = [&](LimbArena& arena) {
     NormalScratch scratch(*this, arena);
-    for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk))
-      write_normals(planes, begin, std::min(begin + chunk, n), scratch);
+    normals.take([&](std::size_t begin, std::size_t end) { write_normals(planes, begin, end, scratch); });
   };
+  auto take_vertices = [&](LimbArena& arena) {
+    Vec3 scratch;  // reused by store_sum's general path
+    const VertexOutput out{points.points, points.approx, &arena};
+    vertices.take(
+        [&](std::size_t begin, std::size_t end) { write_vertices(pairs, begin, end, out, scratch); });
+  };
+  Mesh mesh;
   {
     Worker worker;
     worker.start([&] {
+      CountDownOnce sized_done(sized);
       try {
-        planes = sized_planes(num_facets(), true);
+        planes = sized_planes(facets, true);
+        sized_done();
+        take_normals(worker_limbs);
+        meshed.wait();
+        take_vertices(worker_limbs);
       } catch (...) {
-        next = n;            // nothing for anyone to write
-        sized.count_down();  // also on failure: the other thread waits for this
+        normals.give_up();
+        vertices.give_up();
         throw;
       }
-      sized.count_down();
-      take_chunks(worker_limbs);
     });
-    build_mesh();  // if this throws, the worker joins before the exception leaves
-    sized.wait();
-    take_chunks(limbs);
+    CountDownOnce meshed_done(meshed);
+    try {
+      PolygonSoup soup = faces_without_points();
+      // Reserved as soup() reserves them, which keeps glibc's heap in the
+      // same shape as one thread's (see build()).
+      soup.points.reserve(soup.face_indices.size() / 3 + 1);
+      number_corners(soup, false, [&](const VertexPair& p) {
+        pairs.push_back(p);
+        return static_cast<std::uint32_t>(pairs.size() - 1);
+      });
+      soup.points.resize(pairs.size());
+      vertex_approx.resize(pairs.size());
+      mesh = output_mesh(std::move(soup));
+      // The topology reads only the number of points: both threads write
+      // their values into the mesh's own positions now. (The mesh is this
+      // function's until it returns; its positions are not const objects.)
+      points = {const_cast<Vec3*>(mesh.positions().data()), vertex_approx.data(), nullptr};
+      vertices.set_size(pairs.size());
+      meshed_done();
+      sized.wait();
+      take_normals(limbs);
+      take_vertices(limbs);
+    } catch (...) {
+      normals.give_up();
+      vertices.give_up();
+      throw;  // the worker joins before the exception leaves
+    }
     worker.join();  // rethrows the worker's exception
   }
   limbs.absorb(std::move(worker_limbs));

@@ -65,8 +65,9 @@ class SumFacetBuilder {
   /// primitive direction of +-cross(d_A, d_B).
   /// The planes' offsets are made on first use (ConvexPolyhedron::plane_offset).
   /// threads > 1 computes the facet normals on a second thread while this
-  /// one builds the vertices and the mesh, then shares the rest of the
-  /// normals (same result).
+  /// one numbers the vertices and builds the mesh's topology; then both
+  /// share what is left of the normals and the vertices' coordinates (same
+  /// result).
   [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
 
   /// The glued facets as a soup: one point per distinct vertex pair (its
@@ -82,9 +83,33 @@ class SumFacetBuilder {
   void write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end, NormalScratch& scratch) const;
   // Facet i's normal and its approximation into planes.
   void write_normal(FacetPlanes& planes, std::size_t i, NormalScratch& scratch) const;
+  [[nodiscard]] ConvexPolyhedron build_on_two_threads() const;
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.
   [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const;
+  // A soup with the facets' corner lists sized (offsets set, indices not
+  // yet) and no points.
+  [[nodiscard]] PolygonSoup faces_without_points() const;
+  // Numbers the distinct vertex pairs by first use in facet order, calling
+  // new_vertex(pair) -> its number for each in that order, and writes the
+  // numbers into soup.face_indices. With prefetch_operands, the operands'
+  // vertices of the next pairs are fetched ahead (for a new_vertex that
+  // reads them).
+  template <typename NewVertex>
+  void number_corners(PolygonSoup& soup, bool prefetch_operands, NewVertex&& new_vertex) const;
+  // Where output vertex j goes: points[j], and approx[j] and the numerators'
+  // limbs if those are not null.
+  struct VertexOutput {
+    Vec3* points;
+    ApproxVec3* approx;
+    LimbArena* limbs;
+  };
+  // Output vertex j, the sum of the vertices of pair p, into out.
+  void write_vertex(const VertexPair& p, const VertexOutput& out, std::size_t j, Vec3& scratch) const;
+  // write_vertex for the vertices [begin, end) of pairs. Threads may write
+  // disjoint ranges.
+  void write_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
+                      const VertexOutput& out, Vec3& scratch) const;
   void add_planar_sum(Operand which, FaceId f, std::span<const VertexId> other);
   // Where the normal of an output facet comes from: facet `index` of A or B,
   // or the edges of halfedges (index, other) with the given orientation.
