@@ -65,10 +65,16 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
   }
 }
 
-// Options::threads = 2, 4, 8 build the same polyhedron (numbering included)
-// on workers plus the caller as one thread, and it equals CHMS's, the
-// independent oracle. 4 and 8 threads run as many, whatever the cores
-// (oversubscribe).
+// Options::threads = 2, 4, 8 build the same polyhedron (numbering and
+// cached approximations included) on workers plus the caller as one thread,
+// and it equals CHMS's, the independent oracle. The search runs 4 and 8
+// threads whatever the cores (oversubscribe) and the size of the sum; the
+// output build uses two.
+bool same_approximations(const ApproxVec3& x, const ApproxVec3& y) {
+  const auto same = [](const Approx& a, const Approx& b) { return a.value == b.value && a.error == b.error; };
+  return same(x.x, y.x) && same(x.y, y.y) && same(x.z, y.z);
+}
+
 void expect_threads_build_the_same(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   const ConvexPolyhedron one_thread = minkowski_sum(a, b).polyhedron;
   const PolygonSoup one_soup = one_thread.to_soup();
@@ -80,7 +86,7 @@ void expect_threads_build_the_same(const ConvexPolyhedron& a, const ConvexPolyhe
     Options options;
     options.threads = n;
     detail::ResearchOptions research;
-    research.worker_minimums.oversubscribe = true;
+    research.worker_minimums = {0, 0, true};  // workers however small the sum
     const ConvexPolyhedron threaded = detail::minkowski_sum(a, b, options, research).polyhedron;
     const PolygonSoup soup = threaded.to_soup();
     ASSERT_EQ(soup.points, one_soup.points);
@@ -89,7 +95,14 @@ void expect_threads_build_the_same(const ConvexPolyhedron& a, const ConvexPolyhe
     for (FaceId f : one_thread.mesh().faces()) {
       ASSERT_EQ(threaded.normal(f), one_thread.normal(f));
       ASSERT_EQ(threaded.plane_offset(f), one_thread.plane_offset(f));
+      ASSERT_TRUE(same_approximations(normal_ref(threaded, f).approx, normal_ref(one_thread, f).approx))
+          << "facet " << f.index();
     }
+    // One thread's approximations bound the exact values
+    // (OutputApproximationsAndPlanesAreExact); equal ones do too.
+    for (VertexId v : one_thread.mesh().vertices())
+      ASSERT_TRUE(same_approximations(vertex_approx(threaded, v), vertex_approx(one_thread, v)))
+          << "vertex " << v.index();
     EXPECT_TRUE(threaded.is_convex());
   }
 }

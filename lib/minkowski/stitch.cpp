@@ -157,7 +157,7 @@ Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) n
 }
 
 // A dense pair -> output-index table is used when it is not much larger than
-// the output itself; otherwise a hash map.
+// the output itself; otherwise the pairs are numbered by sorting.
 constexpr std::uint64_t dense_table_limit = 1u << 16;
 
 }  // namespace
@@ -471,7 +471,9 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   FacetPlanes planes;
   ChunkCounter normals(256), vertices(512);
   normals.set_size(facets);
-  // Set by this thread before `meshed` is counted down, read-only after.
+  // Sized (and `points` set) by this thread before `meshed` is counted
+  // down; after that the arrays' elements are written by both threads, in
+  // disjoint chunks, and nothing is resized.
   ScratchVector<VertexPair> pairs;  // by output vertex
   std::vector<ApproxVec3> vertex_approx;
   VertexOutput points{};
@@ -507,8 +509,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     try {
       PolygonSoup soup = faces_without_points();
       // Reserved for soup()'s bound, as on one thread: reserving the exact
-      // count (known below) measured no faster, and glibc's heap then takes
-      // the same shape on one and two threads.
+      // count (known below) measured no faster.
       soup.points.reserve(soup.face_indices.size() / 3 + 1);
       number_corners(soup, false, [&](const VertexPair& p) {
         pairs.push_back(p);
