@@ -65,16 +65,16 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
   }
 }
 
-// Options::threads = 2, 4, 8 build the same polyhedron (numbering and
-// cached approximations included) on workers plus the caller as one thread,
-// and it equals CHMS's, the independent oracle. The search runs 4 and 8
-// threads whatever the cores (oversubscribe) and the size of the sum; the
-// output build uses two.
 bool same_approximations(const ApproxVec3& x, const ApproxVec3& y) {
   const auto same = [](const Approx& a, const Approx& b) { return a.value == b.value && a.error == b.error; };
   return same(x.x, y.x) && same(x.y, y.y) && same(x.z, y.z);
 }
 
+// Options::threads = 2, 4, 8 build the same polyhedron (numbering and
+// cached approximations included) on workers plus the caller as one thread,
+// and it equals CHMS's, the independent oracle. The search runs 4 and 8
+// threads whatever the cores (oversubscribe) and the size of the sum; the
+// output build uses two.
 void expect_threads_build_the_same(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   const ConvexPolyhedron one_thread = minkowski_sum(a, b).polyhedron;
   const PolygonSoup one_soup = one_thread.to_soup();

@@ -242,6 +242,21 @@ void SumFacetBuilder::append(const SumFacetBuilder& other, std::size_t begin, st
 
 PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr, nullptr); }
 
+template <typename PairAt>
+void SumFacetBuilder::prefetch_operand_vertices(std::size_t j, std::size_t end, PairAt&& pair_at) const {
+  // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
+  if (j + prefetch_far < end) {
+    const VertexPair ahead = pair_at(j + prefetch_far);
+    prefetch_structs(a_.vertex(VertexId(ahead.a)));
+    prefetch_structs(b_.vertex(VertexId(ahead.b)));
+  }
+  if (j + prefetch_near < end) {
+    const VertexPair ahead = pair_at(j + prefetch_near);
+    prefetch_limbs(a_.vertex(VertexId(ahead.a)));
+    prefetch_limbs(b_.vertex(VertexId(ahead.b)));
+  }
+}
+
 template <typename NewVertex>
 void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
                                      NewVertex&& new_vertex) const {
@@ -272,17 +287,7 @@ void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
   };
   const std::size_t vertices = numbered.first.size();
   for (std::size_t j = 0; j < vertices; ++j) {
-    // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
-    if (prefetch_operands && j + prefetch_far < vertices) {
-      const VertexPair ahead = pair_of(j + prefetch_far);
-      prefetch_structs(a_.vertex(VertexId(ahead.a)));
-      prefetch_structs(b_.vertex(VertexId(ahead.b)));
-    }
-    if (prefetch_operands && j + prefetch_near < vertices) {
-      const VertexPair ahead = pair_of(j + prefetch_near);
-      prefetch_limbs(a_.vertex(VertexId(ahead.a)));
-      prefetch_limbs(b_.vertex(VertexId(ahead.b)));
-    }
+    if (prefetch_operands) prefetch_operand_vertices(j, vertices, pair_of);
     new_vertex(pair_of(j));
   }
   for (std::size_t i = 0; i < corners; ++i) soup.face_indices[i] = numbered.index[i];
@@ -317,15 +322,7 @@ void SumFacetBuilder::write_vertex(const VertexPair& p, const VertexOutput& out,
 void SumFacetBuilder::write_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
                                      const VertexOutput& out, Vec3& scratch) const {
   for (std::size_t j = begin; j < end; ++j) {
-    // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
-    if (j + prefetch_far < end) {
-      prefetch_structs(a_.vertex(VertexId(pairs[j + prefetch_far].a)));
-      prefetch_structs(b_.vertex(VertexId(pairs[j + prefetch_far].b)));
-    }
-    if (j + prefetch_near < end) {
-      prefetch_limbs(a_.vertex(VertexId(pairs[j + prefetch_near].a)));
-      prefetch_limbs(b_.vertex(VertexId(pairs[j + prefetch_near].b)));
-    }
+    prefetch_operand_vertices(j, end, [&](std::size_t k) { return pairs[k]; });
     write_vertex(pairs[j], out, j, scratch);
   }
 }

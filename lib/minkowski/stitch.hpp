@@ -95,6 +95,11 @@ class SumFacetBuilder {
   // numbers into soup.face_indices. With prefetch_operands, the operands'
   // vertices of the next pairs are fetched ahead (for a new_vertex that
   // reads them).
+  // Before pair j of those visited in order, up to `end`, is read: fetches
+  // ahead the operands' vertices of the pairs a few places on (pair_at(k)
+  // gives pair k).
+  template <typename PairAt>
+  void prefetch_operand_vertices(std::size_t j, std::size_t end, PairAt&& pair_at) const;
   template <typename NewVertex>
   void number_corners(PolygonSoup& soup, bool prefetch_operands, NewVertex&& new_vertex) const;
   // Where output vertex j goes: points[j], and approx[j] and the numerators'
