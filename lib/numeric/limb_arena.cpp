@@ -133,6 +133,12 @@ mp_limb_t* LimbArena::allocate(std::size_t limbs) {
   return result;
 }
 
+const mp_limb_t* LimbArena::copy_limbs(const mp_limb_t* source, std::size_t n) {
+  mp_limb_t* copy = allocate(n);
+  std::copy_n(source, n, copy);
+  return copy;
+}
+
 void LimbArena::store(Rational& out, const Rational& value) {
   store(out, mpq_numref(value.get_mpq_t()), mpq_denref(value.get_mpq_t()));
 }

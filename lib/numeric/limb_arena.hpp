@@ -145,6 +145,10 @@ class LimbArena {
   /// nothing is stored; a value that owns its limbs is negated in place.
   void negate_stored(Rational& out) const;
 
+  /// A copy of the n limbs at source, kept here (for packed values that
+  /// hold the address of their limbs, dyadic_points.hpp).
+  [[nodiscard]] const mp_limb_t* copy_limbs(const mp_limb_t* source, std::size_t n);
+
   /// Takes over other's blocks (their addresses do not change), so that the
   /// values stored in either stay valid as long as this arena lives.
   void absorb(LimbArena&& other);
