@@ -103,7 +103,9 @@ class ConvexPolyhedron {
   [[nodiscard]] std::uint32_t num_facets() const noexcept { return mesh_.num_faces(); }
 
   /// The exact position of v.
-  [[nodiscard]] const Vec3& vertex(VertexId v) const noexcept { return mesh_.position(v); }
+  /// \throw std::bad_alloc only if the polyhedron is a sum's output whose
+  ///   vertices are first asked for now (Mesh::position) and memory runs out.
+  [[nodiscard]] const Vec3& vertex(VertexId v) const { return mesh_.position(v); }
 
   /// Exact outward normal of facet f: a primitive integer vector. A
   /// polyhedron made from a mesh or soup finds its planes when one is first

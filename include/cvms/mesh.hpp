@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "cvms/polygon_soup.hpp"
@@ -19,6 +20,8 @@ namespace cvms {
 
 namespace detail {
 struct DistinctPoints;  // lib/mesh/polyhedron_builder.hpp: defined only inside the library
+class LazyPositions;   // lib/mesh/lazy_positions.hpp: likewise
+class DyadicPoints;    // lib/numeric/dyadic_points.hpp: likewise
 }  // namespace detail
 
 /// A typed 32-bit index, invalid by default.
@@ -179,7 +182,7 @@ class Mesh {
 
   /// Number of vertices.
   [[nodiscard]] std::uint32_t num_vertices() const noexcept {
-    return static_cast<std::uint32_t>(positions_.size());
+    return static_cast<std::uint32_t>(vertex_he_.size());
   }
   /// Number of halfedges (twice the number of edges).
   [[nodiscard]] std::uint32_t num_halfedges() const noexcept {
@@ -233,10 +236,15 @@ class Mesh {
   /// The number of vertices (and halfedges) of face f. O(degree).
   [[nodiscard]] std::uint32_t degree(FaceId f) const noexcept;
 
-  /// The exact position of v.
-  [[nodiscard]] const Vec3& position(VertexId v) const noexcept { return positions_[v.index()]; }
-  /// All positions, indexed by vertex.
-  [[nodiscard]] const std::vector<Vec3>& positions() const noexcept { return positions_; }
+  /// The exact position of v. A mesh the library built from packed exact
+  /// values (a sum's output) makes its Vec3s on the first call of this or
+  /// positions(), once (safe from concurrent readers).
+  /// \throw std::bad_alloc only then, if memory runs out.
+  [[nodiscard]] const Vec3& position(VertexId v) const { return positions()[v.index()]; }
+  /// All positions, indexed by vertex (made on first use, as for position()).
+  [[nodiscard]] const std::vector<Vec3>& positions() const {
+    return lazy_positions_ == nullptr ? positions_ : made_positions();
+  }
 
   /// Checks every stored reference (ranges, twin/next/prev/face/vertex
   /// consistency, face cycles, vertex fans) and closedness.
@@ -263,14 +271,23 @@ class Mesh {
   // from this mesh's soup with every face cycle rotated to start there.
   [[nodiscard]] Mesh with_faces_from_smallest_vertex(std::vector<Vec3> positions,
                                                      const detail::DistinctPoints& promise) const;
+  // from_soup(faces, promise) for a soup without points whose points are
+  // `positions`, kept packed until a caller asks for Vec3s.
+  static Mesh from_soup(PolygonSoup faces, std::shared_ptr<const detail::LazyPositions> positions,
+                        const detail::DistinctPoints& promise);
+  // The exact positions as packed dyadics if the mesh keeps them so, else
+  // null: what the library's own readers take instead of making Vec3s.
+  [[nodiscard]] const detail::DyadicPoints* packed_positions() const noexcept;
   /// \endcond
 
  private:
-  static Mesh build(PolygonSoup soup, bool check_points);
+  static Mesh build(PolygonSoup soup, bool check_points, std::size_t num_points);
+  [[nodiscard]] const std::vector<Vec3>& made_positions() const;
   // This connectivity with the given positions; no checks.
   [[nodiscard]] Mesh same_connectivity(std::vector<Vec3> positions) const;
 
-  std::vector<Vec3> positions_;
+  std::vector<Vec3> positions_;  // empty when lazy_positions_ holds them
+  std::shared_ptr<const detail::LazyPositions> lazy_positions_;
   std::vector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
   std::vector<VertexId> he_to_;
   std::vector<HalfedgeId> he_next_;

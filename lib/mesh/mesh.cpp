@@ -14,6 +14,7 @@
 #include "element_names.hpp"
 #include "face_lists.hpp"
 #include "huge_page_blocks.hpp"
+#include "lazy_positions.hpp"
 #include "no_index.hpp"
 #include "representation_order.hpp"
 
@@ -28,7 +29,7 @@ using detail::str;
 
 // The soup's index structure: offsets well formed, something to build, and
 // counts that fit the 32-bit handles.
-void check_soup_shape(const PolygonSoup& soup) {
+void check_soup_shape(const PolygonSoup& soup, std::size_t num_points) {
   const auto& offsets = soup.face_offsets;
   const auto& indices = soup.face_indices;
   if (offsets.empty() || offsets.front() != 0 || offsets.back() != indices.size())
@@ -39,22 +40,21 @@ void check_soup_shape(const PolygonSoup& soup) {
     if (offsets[f + 1] < offsets[f])
       throw Error(ErrorCategory::invalid_argument,
                   "malformed polygon soup: face_offsets decrease at face " + std::to_string(f));
-  if (soup.points.empty() || num_faces == 0)
-    fail("empty mesh: " + std::to_string(soup.points.size()) + " points and " + std::to_string(num_faces) +
+  if (num_points == 0 || num_faces == 0)
+    fail("empty mesh: " + std::to_string(num_points) + " points and " + std::to_string(num_faces) +
          " faces");
   // Halfedge ids go up to the number of corners; keep every id below the
   // invalid marker, and edge ids (h >> 1) well defined.
-  if (soup.points.size() >= no_index || indices.size() >= (std::size_t{1} << 31) || num_faces >= no_index)
+  if (num_points >= no_index || indices.size() >= (std::size_t{1} << 31) || num_faces >= no_index)
     throw Error(ErrorCategory::limit,
-                "mesh too large for 32-bit handles: " + std::to_string(soup.points.size()) + " points, " +
+                "mesh too large for 32-bit handles: " + std::to_string(num_points) + " points, " +
                     std::to_string(indices.size()) + " face corners");
 }
 
 // Faces: size, range, repeated vertices. stamp[v] is the last face using v.
-void check_faces(const PolygonSoup& soup) {
+void check_faces(const PolygonSoup& soup, std::uint32_t n) {
   const auto& offsets = soup.face_offsets;
   const auto& indices = soup.face_indices;
-  const auto n = static_cast<std::uint32_t>(soup.points.size());
   const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
   std::vector<std::uint32_t> stamp(n, no_index);
   for (std::uint32_t f = 0; f < num_faces; ++f) {
@@ -264,10 +264,10 @@ struct Connectivity {
 
 // Edge e's corners are keyed[2e] and keyed[2e + 1]; halfedge 2e runs from the
 // smaller to the larger vertex.
-Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, std::uint32_t num_edges) {
+Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, std::uint32_t num_edges,
+                            std::uint32_t n) {
   const auto& indices = soup.face_indices;
   const auto& offsets = soup.face_offsets;
-  const auto n = static_cast<std::uint32_t>(soup.points.size());
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
   const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
   std::vector<HalfedgeId> corner_he(num_corners);
@@ -332,21 +332,42 @@ std::uint32_t Mesh::degree(FaceId f) const noexcept {
   return n;
 }
 
-Mesh Mesh::from_soup(PolygonSoup soup) { return build(std::move(soup), true); }
+Mesh Mesh::from_soup(PolygonSoup soup) {
+  const std::size_t n = soup.points.size();
+  return build(std::move(soup), true, n);
+}
 
-Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) { return build(std::move(soup), false); }
+Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) {
+  const std::size_t n = soup.points.size();
+  return build(std::move(soup), false, n);
+}
 
-Mesh Mesh::build(PolygonSoup soup, bool check_points) {
-  check_soup_shape(soup);
-  check_faces(soup);
+Mesh Mesh::from_soup(PolygonSoup faces, std::shared_ptr<const detail::LazyPositions> positions,
+                     const detail::DistinctPoints&) {
+  if (!faces.points.empty())
+    throw Error(ErrorCategory::invalid_argument, "from_soup: packed positions come with a soup without points");
+  Mesh m = build(std::move(faces), false, positions->packed().size());
+  m.lazy_positions_ = std::move(positions);
+  return m;
+}
+
+const detail::DyadicPoints* Mesh::packed_positions() const noexcept {
+  return lazy_positions_ == nullptr ? nullptr : &lazy_positions_->packed();
+}
+
+const std::vector<Vec3>& Mesh::made_positions() const { return lazy_positions_->vectors(); }
+
+Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points) {
+  check_soup_shape(soup, num_points);
+  const auto n = static_cast<std::uint32_t>(num_points);
+  check_faces(soup, n);
   if (check_points) {
     canonicalize_points(soup.points);
     check_distinct_points(soup.points);
   }
-  const auto n = static_cast<std::uint32_t>(soup.points.size());
   const KeyedCorners keyed = corners_by_edge(soup.face_indices, soup.face_offsets, n);
   const std::uint32_t num_edges = check_edge_groups(keyed, soup.face_indices, soup.face_offsets);
-  Connectivity c = link_halfedges(soup, keyed, num_edges);
+  Connectivity c = link_halfedges(soup, keyed, num_edges, n);
 
   Mesh m;
   m.positions_ = std::move(soup.points);
@@ -451,8 +472,10 @@ void Mesh::validate() const {
   const std::size_t nh = he_to_.size();
   if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
     fail("validate: halfedge arrays have inconsistent sizes");
-  if (vertex_he_.size() != positions_.size()) fail("validate: vertex arrays have inconsistent sizes");
-  if (nh >= no_index || positions_.size() >= no_index || face_he_.size() >= no_index)
+  const std::size_t num_points =
+      lazy_positions_ == nullptr ? positions_.size() : lazy_positions_->packed().size();
+  if (vertex_he_.size() != num_points) fail("validate: vertex arrays have inconsistent sizes");
+  if (nh >= no_index || num_points >= no_index || face_he_.size() >= no_index)
     fail("validate: element counts exceed 32-bit handles");
   if (num_vertices() == 0 || num_faces() == 0) fail("validate: empty mesh");
   check_halfedge_links(*this);
@@ -464,7 +487,7 @@ void Mesh::validate() const {
 PolygonSoup Mesh::to_soup() const {
   detail::FaceLists faces = detail::face_lists(*this);
   PolygonSoup soup;
-  soup.points = positions_;
+  soup.points = positions();
   soup.face_offsets = std::move(faces.offsets);
   soup.face_indices = std::move(faces.indices);
   return soup;
@@ -488,9 +511,9 @@ Mesh Mesh::with_faces_from_smallest_vertex(std::vector<Vec3> positions, const de
 }
 
 Mesh Mesh::with_positions(std::vector<Vec3> positions) const {
-  if (positions.size() != positions_.size())
+  if (positions.size() != vertex_he_.size())
     throw Error(ErrorCategory::invalid_argument, "with_positions: got " + std::to_string(positions.size()) +
-                                                     " positions for " + std::to_string(positions_.size()) +
+                                                     " positions for " + std::to_string(vertex_he_.size()) +
                                                      " vertices");
   return same_connectivity(std::move(positions));
 }

@@ -17,11 +17,13 @@
 // without defining them, so no user can build an unchecked instance.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "approx.hpp"
 #include "facet_planes.hpp"
+#include "lazy_positions.hpp"
 #include "limb_arena.hpp"
 #include "cvms/convex_polyhedron.hpp"
 
@@ -57,6 +59,9 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
 /// The half-edge mesh of an output soup, topology checked as in
 /// Mesh::from_soup. \pre the points are canonical and pairwise distinct.
 Mesh output_mesh(PolygonSoup soup);
+/// The same for a soup without points whose points are packed (made into
+/// Vec3s only if a caller asks). \pre as above.
+Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const LazyPositions> positions);
 
 /// The polyhedron from its mesh, the approximations of its vertices and the
 /// planes of its faces (index by index; without offsets, the polyhedron
@@ -71,7 +76,7 @@ inline const ApproxVec3& vertex_approx(const ConvexPolyhedron& p, VertexId v) no
   return p.approximations().vertices[v.index()];
 }
 /// vertex(v) with its approximation, for the filtered predicates.
-inline Vec3Ref vertex_ref(const ConvexPolyhedron& p, VertexId v) noexcept { return {p.vertex(v), vertex_approx(p, v)}; }
+inline Vec3Ref vertex_ref(const ConvexPolyhedron& p, VertexId v) { return {p.vertex(v), vertex_approx(p, v)}; }
 /// The approximation of normal(f); makes the planes if they were not yet.
 inline const ApproxVec3& normal_approx(const ConvexPolyhedron& p, FaceId f) {
   return p.planes().normal_approx[f.index()];

@@ -142,7 +142,9 @@ class EdgeDirections {
 // points away from zero, and the next double toward zero otherwise. The
 // error bound is Approx::of's, so the cached value is the same either way
 // (error_bounds.hpp says why this sum is not bounded as CHMS's sums are).
-Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) noexcept {
+// exact_sum() gives the exact sum, asked for only when x or y is not exact.
+template <typename ExactSum>
+Approx approx_sum(const Approx& x, const Approx& y, ExactSum&& exact_sum) {
   if (x.error == 0.0 && y.error == 0.0) {
     const double s = x.value + y.value;
     if (std::isfinite(s)) {
@@ -153,8 +155,11 @@ Approx approx_sum(const Approx& x, const Approx& y, const Rational& exact_sum) n
       return {truncated, filtered::truncation_error(truncated)};
     }
   }
-  return Approx::of(exact_sum);
+  return Approx::of(exact_sum());
 }
+
+Approx& axis_of(ApproxVec3& v, int axis) noexcept { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+const Approx& axis_of(const ApproxVec3& v, int axis) noexcept { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
 
 // A dense pair -> output-index table is used when it is not much larger than
 // the output itself; otherwise the pairs are numbered by sorting.
@@ -314,8 +319,8 @@ void SumFacetBuilder::write_vertex(const VertexPair& p, const VertexOutput& out,
   }
   if (out.approx != nullptr) {
     const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
-    out.approx[j] = {approx_sum(xa.x, xb.x, point.x), approx_sum(xa.y, xb.y, point.y),
-                     approx_sum(xa.z, xb.z, point.z)};
+    for (int i = 0; i < 3; ++i)
+      axis_of(out.approx[j], i) = approx_sum(axis_of(xa, i), axis_of(xb, i), [&]() -> const Rational& { return point[i]; });
   }
 }
 
@@ -325,6 +330,54 @@ void SumFacetBuilder::write_vertices(std::span<const VertexPair> pairs, std::siz
     prefetch_operand_vertices(j, end, [&](std::size_t k) { return pairs[k]; });
     write_vertex(pairs[j], out, j, scratch);
   }
+}
+
+bool SumFacetBuilder::write_packed_vertex(const VertexPair& p, const PackedOutput& out, std::size_t j,
+                                          Vec3& scratch) const {
+  const VertexId va(p.a), vb(p.b);
+  const Vec3 &pa = a_.vertex(va), &pb = b_.vertex(vb);
+  const ApproxVec3 &xa = detail::vertex_approx(a_, va), &xb = detail::vertex_approx(b_, vb);
+  for (int i = 0; i < 3; ++i) {
+    PackedDyadic& coordinate = out.points->coordinate(j, i);
+    if (const std::optional<FixedDyadic<2>> sum = fixed_sum(pa[i], pb[i])) {
+      pack_dyadic(*sum, *out.limbs, coordinate);
+    } else {
+      add_into(scratch[i], pa[i], pb[i]);
+      if (!pack_dyadic(scratch[i], *out.limbs, coordinate)) return false;
+    }
+    axis_of(out.approx[j], i) = approx_sum(axis_of(xa, i), axis_of(xb, i), [&]() -> const Rational& {
+      unpack_dyadic(coordinate, scratch[i]);
+      return scratch[i];
+    });
+  }
+  return true;
+}
+
+bool SumFacetBuilder::write_packed_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
+                                            const PackedOutput& out, Vec3& scratch) const {
+  for (std::size_t j = begin; j < end; ++j) {
+    prefetch_operand_vertices(j, end, [&](std::size_t k) { return pairs[k]; });
+    if (!write_packed_vertex(pairs[j], out, j, scratch)) return false;
+  }
+  return true;
+}
+
+std::optional<Mesh> SumFacetBuilder::packed_mesh(std::vector<ApproxVec3>& approx) const {
+  PolygonSoup faces = faces_without_points();
+  const std::size_t bound = faces.face_indices.size() / 3 + 1;  // each vertex is in at least three facets
+  DyadicPoints points;
+  points.reserve(bound);
+  approx.reserve(bound);
+  Vec3 scratch;  // for the sums that do not fit machine words
+  bool dyadic = true;
+  number_corners(faces, true, [&](const VertexPair& p) {
+    const std::size_t j = points.append();
+    approx.emplace_back();
+    if (dyadic) dyadic = write_packed_vertex(p, {&points, approx.data(), &points.limbs()}, j, scratch);
+    return static_cast<std::uint32_t>(j);
+  });
+  if (!dyadic) return std::nullopt;
+  return output_mesh(std::move(faces), std::make_shared<const LazyPositions>(std::move(points)));
 }
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
@@ -400,14 +453,19 @@ void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScr
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   if (threads > 1) return build_on_two_threads();
-  // The numerators keep their limbs in one arena, which the result keeps.
+  // The vertices are packed (the mesh keeps them); the normals' numerators
+  // keep their limbs in one arena, which the result keeps.
   LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
-  Mesh mesh = output_mesh(soup(&vertex_approx, &limbs));
+  std::optional<Mesh> mesh = packed_mesh(vertex_approx);
+  if (!mesh) {  // inputs with other rationals than dyadic ones: Vec3s
+    vertex_approx.clear();
+    mesh = output_mesh(soup(&vertex_approx, &limbs));
+  }
   FacetPlanes planes = sized_planes(num_facets(), false);
   NormalScratch scratch(*this, limbs);
   write_normals(planes, 0, num_facets(), scratch);
-  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
+  return assemble(std::move(*mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
 }
 
 namespace {
@@ -460,11 +518,12 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   // Three parts: the numbering of the vertices with the mesh's topology
   // (this thread; it reads no coordinate), the facet normals (a worker
   // starts on them at once, into planes it sizes), and the vertices'
-  // coordinates, written into the mesh's points once the mesh stands. Both
+  // coordinates, packed into the mesh's points once the mesh stands. Both
   // threads take normals, then vertices, in chunks. Each thread keeps the
-  // numerators it computes in an arena of its own; the result keeps both.
+  // normals' numerators in an arena of its own, which the result keeps, and
+  // the vertices' long numerators in another, which the points keep.
   const std::size_t facets = num_facets();
-  LimbArena limbs, worker_limbs;
+  LimbArena limbs, worker_limbs, vertex_limbs, worker_vertex_limbs;
   FacetPlanes planes;
   ChunkCounter normals(256), vertices(512);
   normals.set_size(facets);
@@ -473,17 +532,22 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   // disjoint chunks, and nothing is resized.
   ScratchVector<VertexPair> pairs;  // by output vertex
   std::vector<ApproxVec3> vertex_approx;
-  VertexOutput points{};
+  std::shared_ptr<LazyPositions> positions;
+  std::atomic<bool> not_dyadic{false};
   std::latch sized(1), meshed(1);
   auto take_normals = [&](LimbArena& arena) {
     NormalScratch scratch(*this, arena);
     normals.take([&](std::size_t begin, std::size_t end) { write_normals(planes, begin, end, scratch); });
   };
   auto take_vertices = [&](LimbArena& arena) {
-    Vec3 scratch;  // reused by store_sum's general path
-    const VertexOutput out{points.points, points.approx, &arena};
-    vertices.take(
-        [&](std::size_t begin, std::size_t end) { write_vertices(pairs, begin, end, out, scratch); });
+    Vec3 scratch;  // for the sums that do not fit machine words
+    const PackedOutput out{&positions->packed_for_writing(), vertex_approx.data(), &arena};
+    vertices.take([&](std::size_t begin, std::size_t end) {
+      if (!write_packed_vertices(pairs, begin, end, out, scratch)) {
+        not_dyadic = true;
+        vertices.give_up();
+      }
+    });
   };
   Mesh mesh;
   {
@@ -495,7 +559,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
         sized_done();
         take_normals(worker_limbs);
         meshed.wait();
-        take_vertices(worker_limbs);
+        take_vertices(worker_vertex_limbs);
       } catch (...) {
         normals.give_up();
         vertices.give_up();
@@ -505,25 +569,23 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     CountDownOnce meshed_done(meshed);
     try {
       PolygonSoup soup = faces_without_points();
-      // Reserved for soup()'s bound, as on one thread: reserving the exact
-      // count (known below) measured no faster.
-      soup.points.reserve(soup.face_indices.size() / 3 + 1);
+      // Reserved for soup()'s bound, as on one thread.
+      pairs.reserve(soup.face_indices.size() / 3 + 1);
       number_corners(soup, false, [&](const VertexPair& p) {
         pairs.push_back(p);
         return static_cast<std::uint32_t>(pairs.size() - 1);
       });
-      soup.points.resize(pairs.size());
       vertex_approx.resize(pairs.size());
-      mesh = output_mesh(std::move(soup));
-      // The topology reads only the number of points: both threads write
-      // their values into the mesh's own positions now. (The mesh is this
-      // function's until it returns; its positions are not const objects.)
-      points = {const_cast<Vec3*>(mesh.positions().data()), vertex_approx.data(), nullptr};
+      // The topology reads only the number of points: both threads pack
+      // their values into the mesh's points once it stands. (The mesh is
+      // this function's until it returns: nothing reads them before.)
+      positions = std::make_shared<LazyPositions>(DyadicPoints(pairs.size()));
+      mesh = output_mesh(std::move(soup), positions);
       vertices.set_size(pairs.size());
       meshed_done();
       sized.wait();
       take_normals(limbs);
-      take_vertices(limbs);
+      take_vertices(vertex_limbs);
     } catch (...) {
       normals.give_up();
       vertices.give_up();
@@ -532,6 +594,15 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     worker.join();  // rethrows the worker's exception
   }
   limbs.absorb(std::move(worker_limbs));
+  if (not_dyadic) {  // inputs with other rationals than dyadic ones: Vec3s
+    std::vector<Vec3> points(pairs.size());
+    Vec3 scratch;
+    write_vertices(pairs, 0, pairs.size(), {points.data(), vertex_approx.data(), &limbs}, scratch);
+    mesh = mesh.with_positions(std::move(points));
+  } else {
+    positions->packed_for_writing().keep_limbs(std::move(vertex_limbs));
+    positions->packed_for_writing().keep_limbs(std::move(worker_vertex_limbs));
+  }
   return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
 }
 

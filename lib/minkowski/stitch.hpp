@@ -12,10 +12,12 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "dyadic_points.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
 #include "realloc_vector.hpp"
@@ -111,6 +113,22 @@ class SumFacetBuilder {
   };
   // Output vertex j, the sum of the vertices of pair p, into out.
   void write_vertex(const VertexPair& p, const VertexOutput& out, std::size_t j, Vec3& scratch) const;
+  // Where output vertex j goes when packed: points->coordinate(j, axis) and
+  // approx[j], long numerators' limbs in limbs.
+  struct PackedOutput {
+    DyadicPoints* points;
+    ApproxVec3* approx;
+    LimbArena* limbs;
+  };
+  // write_vertex, packed; false (vertex j unspecified) when a coordinate is
+  // not dyadic, which only inputs with other rationals make.
+  bool write_packed_vertex(const VertexPair& p, const PackedOutput& out, std::size_t j, Vec3& scratch) const;
+  // write_packed_vertex for the vertices [begin, end) of pairs; false as soon as one fails.
+  bool write_packed_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
+                             const PackedOutput& out, Vec3& scratch) const;
+  // The output's mesh with its points packed, and their approximations; or
+  // nullopt when a vertex is not dyadic.
+  [[nodiscard]] std::optional<Mesh> packed_mesh(std::vector<ApproxVec3>& approx) const;
   // write_vertex for the vertices [begin, end) of pairs. Threads may write
   // disjoint ranges.
   void write_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,

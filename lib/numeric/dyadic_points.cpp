@@ -40,7 +40,7 @@ bool pack_dyadic(const Rational& value, LimbArena& arena, PackedDyadic& out) {
 }
 
 void pack_dyadic(FixedDyadic<2> value, LimbArena& arena, PackedDyadic& out) {
-  std::uint64_t* magnitude = value.numerator.magnitude;
+  std::uint64_t* magnitude = value.numerator.magnitude.data();
   const mp_bitcnt_t exponent = reduce_dyadic(std::span<std::uint64_t>(magnitude, 2), value.exponent);
   static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t));
   pack_limbs(reinterpret_cast<const mp_limb_t*>(magnitude), 2, value.numerator.negative,

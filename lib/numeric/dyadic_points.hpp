@@ -70,6 +70,13 @@ class DyadicPoints {
   explicit DyadicPoints(std::size_t count) : coordinates_(3 * count) {}
 
   [[nodiscard]] std::size_t size() const noexcept { return coordinates_.size() / 3; }
+  /// Room for count points without reallocating.
+  void reserve(std::size_t count) { coordinates_.reserve(3 * count); }
+  /// A new point at the origin after the others; its index.
+  std::size_t append() {
+    coordinates_.resize(coordinates_.size() + 3);
+    return size() - 1;
+  }
   /// Coordinate `axis` (0, 1, 2 for x, y, z) of point j.
   [[nodiscard]] const PackedDyadic& coordinate(std::size_t j, int axis) const noexcept {
     return coordinates_[3 * j + static_cast<std::size_t>(axis)];
