@@ -62,8 +62,9 @@ class ConvexPolyhedron {
   /// The empty polyhedron (no vertices; not a valid operand).
   ConvexPolyhedron();
   ~ConvexPolyhedron();
-  /// Copies share the (immutable) internal approximations; their exact
-  /// values are their own.
+  /// Copies share the (immutable) internal approximations and a sum's
+  /// packed vertices (see Mesh::position); their other exact values are
+  /// their own.
   ConvexPolyhedron(const ConvexPolyhedron&);
   /// Moves leave `other` empty.
   ConvexPolyhedron(ConvexPolyhedron&& other) noexcept;

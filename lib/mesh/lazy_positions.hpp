@@ -31,14 +31,20 @@ class LazyPositions {
   [[nodiscard]] DyadicPoints& packed_for_writing() noexcept { return packed_; }
   /// The positions as Vec3s, made on the first call.
   /// \throw std::bad_alloc then, if memory runs out (a later call tries again).
+  /// Their numerators are views of limbs these positions keep, as an
+  /// arena-built polyhedron's values are (limb_arena.hpp).
   [[nodiscard]] const std::vector<Vec3>& vectors() const {
-    std::call_once(made_, [this] { vectors_ = packed_.to_vectors(); });
+    std::call_once(made_, [this] { make_vectors(); });
     return vectors_;
   }
 
  private:
+  void make_vectors() const;
+
   DyadicPoints packed_;
   mutable std::once_flag made_;
+  // Declared before the values so that it outlives them.
+  mutable LimbArena made_limbs_;
   mutable std::vector<Vec3> vectors_;
 };
 
