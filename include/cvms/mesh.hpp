@@ -20,7 +20,7 @@ namespace cvms {
 
 namespace detail {
 struct DistinctPoints;  // lib/mesh/polyhedron_builder.hpp: defined only inside the library
-class LazyPositions;   // lib/mesh/lazy_positions.hpp: likewise
+class PackedVectors;   // lib/mesh/packed_vectors.hpp: likewise
 class DyadicPoints;    // lib/numeric/dyadic_points.hpp: likewise
 }  // namespace detail
 
@@ -243,7 +243,7 @@ class Mesh {
   [[nodiscard]] const Vec3& position(VertexId v) const { return positions()[v.index()]; }
   /// All positions, indexed by vertex (made on first use, as for position()).
   [[nodiscard]] const std::vector<Vec3>& positions() const {
-    return lazy_positions_ == nullptr ? positions_ : made_positions();
+    return packed_positions_ == nullptr ? positions_ : made_positions();
   }
 
   /// Checks every stored reference (ranges, twin/next/prev/face/vertex
@@ -273,7 +273,7 @@ class Mesh {
                                                      const detail::DistinctPoints& promise) const;
   // from_soup(faces, promise) for a soup without points whose points are
   // `positions`, kept packed until a caller asks for Vec3s.
-  static Mesh from_soup(PolygonSoup faces, std::shared_ptr<const detail::LazyPositions> positions,
+  static Mesh from_soup(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
                         const detail::DistinctPoints& promise);
   // The exact positions as packed dyadics if the mesh keeps them so, else
   // null: what the library's own readers take instead of making Vec3s.
@@ -286,8 +286,8 @@ class Mesh {
   // This connectivity with the given positions; no checks.
   [[nodiscard]] Mesh same_connectivity(std::vector<Vec3> positions) const;
 
-  std::vector<Vec3> positions_;  // empty when lazy_positions_ holds them
-  std::shared_ptr<const detail::LazyPositions> lazy_positions_;
+  std::vector<Vec3> positions_;  // empty when packed_positions_ holds them
+  std::shared_ptr<const detail::PackedVectors> packed_positions_;
   std::vector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
   std::vector<VertexId> he_to_;
   std::vector<HalfedgeId> he_next_;

@@ -914,7 +914,7 @@ const detail::FacetPlanes& ConvexPolyhedron::make_planes() const {
   return made;
 }
 
-const Vec3& ConvexPolyhedron::normal(FaceId f) const { return planes().normals[f.index()]; }
+const Vec3& ConvexPolyhedron::normal(FaceId f) const { return planes().exact_normals()[f.index()]; }
 const Rational& ConvexPolyhedron::plane_offset(FaceId f) const {
   if (const Rational* made = made_offsets()) return made[f.index()];
   (void)planes();  // published, so that a copy takes them rather than making its own
@@ -939,7 +939,7 @@ bool ConvexPolyhedron::is_convex() const {
   if (euler_characteristic() != 2) return false;
   if (!approx_ || !planes_ || approx_->vertices.size() != m.num_vertices()) return false;
   const detail::FacetPlanes& made = planes();
-  const auto& normals = made.normals;
+  const std::span<const Vec3> normals = made.exact_normals();
   const auto& offsets = planes_->offsets(m, approx_->vertices);
   if (normals.size() != m.num_faces() || made.normal_approx.size() != m.num_faces() ||
       offsets.size() != m.num_faces())
@@ -1022,13 +1022,13 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
   p.vertex_approx.reserve(num_vertices());
   for (VertexId v : p.mesh.vertices()) p.vertex_approx.push_back(ApproxVec3::of(p.mesh.position(v)));
   const detail::FacetPlanes& old = planes();
-  detail::FacetPlanes moved{old.normals, old.normal_approx, {}};
+  detail::FacetPlanes moved{old.normals, old.packed_normals, old.normal_approx, {}};
   // Offsets not made here are not made for the image either: it makes its
   // own when asked, equal to these shifted.
   if (const Rational* offsets = made_offsets()) {
     moved.offsets.reserve(num_facets());
     for (FaceId f : mesh_.faces()) {
-      moved.offsets.push_back(offsets[f.index()] + dot(old.normals[f.index()], offset));
+      moved.offsets.push_back(offsets[f.index()] + dot(old.exact_normals()[f.index()], offset));
       moved.offsets.back().canonicalize();
     }
   }

@@ -34,13 +34,17 @@ void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, LimbArena& arena, Vec3& g
   approx = ApproxVec3::of(out);
 }
 
-FacetPlanes sized_planes(std::size_t facets, bool give_back_denominators) {
+namespace {
+
+// Planes for `facets` facets without offsets, every value 0 and ready to be
+// stored into by a LimbArena. Rationals are constructed in place, never
+// moved there (moving one re-initialises its source, which allocates), and
+// each denominator's limb is freed as soon as it is made
+// (LimbArena::give_back_denominator), so that sizing reuses one heap block
+// instead of keeping three per facet.
+FacetPlanes sized_planes(std::size_t facets) {
   FacetPlanes planes;
   planes.normal_approx.resize(facets);
-  if (!give_back_denominators) {
-    planes.normals.resize(facets);
-    return planes;
-  }
   planes.normals.reserve(facets);
   for (std::size_t i = 0; i < facets; ++i) {
     Vec3& normal = planes.normals.emplace_back();
@@ -49,11 +53,20 @@ FacetPlanes sized_planes(std::size_t facets, bool give_back_denominators) {
   return planes;
 }
 
+}  // namespace
+
+std::shared_ptr<PackedVectors> size_packed_planes(FacetPlanes& planes, std::size_t facets) {
+  planes.normal_approx.resize(facets);
+  auto normals = std::make_shared<PackedVectors>(DyadicPoints(facets));
+  planes.packed_normals = normals;
+  return normals;
+}
+
 FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
                                       LimbArena& arena) {
   // Made once per polyhedron, so its denominators need no heap blocks of
   // their own (unlike a sum's on the calling thread: limb_arena.hpp).
-  FacetPlanes out = sized_planes(mesh.num_faces(), true);
+  FacetPlanes out = sized_planes(mesh.num_faces());
   const auto ref = [&](VertexId v) { return Vec3Ref{mesh.position(v), vertex_approx[v.index()]}; };
   Vec3 general;  // keeps its limbs from facet to facet
   for (FaceId f : mesh.faces()) {
@@ -64,7 +77,7 @@ FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<Approx
   return out;
 }
 
-KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, const KeptVector<Vec3>& normals,
+KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, std::span<const Vec3> normals,
                                                 LimbArena& arena) {
   const std::uint32_t faces = mesh.num_faces();
   KeptVector<Rational> out;
@@ -87,7 +100,7 @@ KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, const KeptVect
 
 PlaneStore::PlaneStore(FacetPlanes planes, std::shared_ptr<const LimbArena> limbs)
     : given_limbs_(std::move(limbs)), given_(true), planes_(std::move(planes)) {
-  if (planes_.offsets.size() == planes_.normals.size())
+  if (planes_.offsets.size() == planes_.size())
     offsets_ready_.store(&planes_.offsets, std::memory_order_release);
 }
 
@@ -105,7 +118,7 @@ const KeptVector<Rational>& PlaneStore::offsets(const Mesh& mesh,
   if (const KeptVector<Rational>* made = offsets_if_made()) return *made;
   const FacetPlanes& planes = get(mesh, vertex_approx);
   std::call_once(offsets_made_, [&] {
-    made_offsets_ = offsets_from_first_corners(mesh, planes.normals, offset_limbs_);
+    made_offsets_ = offsets_from_first_corners(mesh, planes.exact_normals(), offset_limbs_);
     offsets_ready_.store(&made_offsets_, std::memory_order_release);
   });
   return made_offsets_;

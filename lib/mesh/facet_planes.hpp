@@ -24,12 +24,14 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <vector>
 
 #include "approx.hpp"
 #include "cvms/mesh.hpp"
 #include "huge_page_blocks.hpp"
 #include "limb_arena.hpp"
+#include "packed_vectors.hpp"
 
 namespace cvms::detail {
 
@@ -37,20 +39,28 @@ namespace cvms::detail {
 struct FacetPlanes {
   // On huge pages when large (huge_page_blocks.hpp): a sum's output makes
   // them anew in every call.
-  KeptVector<Vec3> normals;              ///< outward primitive integer normals
-  KeptVector<ApproxVec3> normal_approx;  ///< their approximations
+  /// Outward primitive integer normals; empty when packed_normals holds them.
+  KeptVector<Vec3> normals;
+  /// The normals kept packed (a sum's output), or null.
+  std::shared_ptr<const PackedVectors> packed_normals;
+  KeptVector<ApproxVec3> normal_approx;  ///< the normals' approximations
   /// dot(normal, x) for x on the facet; or empty, to be made on first use
   /// (PlaneStore::offsets).
   KeptVector<Rational> offsets;
+
+  [[nodiscard]] std::size_t size() const noexcept { return normal_approx.size(); }
+  /// The normals as Vec3s, made from the packed ones on the first call.
+  /// \throw std::bad_alloc only then.
+  [[nodiscard]] std::span<const Vec3> exact_normals() const {
+    if (packed_normals == nullptr) return normals;
+    return packed_normals->vectors();
+  }
 };
 
-/// Planes for `facets` facets without offsets, every value 0 and ready to
-/// be stored into by a LimbArena. Rationals are constructed in place, never
-/// moved there (moving one re-initialises its source, which allocates).
-/// With give_back_denominators each denominator's limb is freed as soon as
-/// it is made (LimbArena::give_back_denominator), so that sizing reuses one
-/// heap block instead of keeping three per facet.
-[[nodiscard]] FacetPlanes sized_planes(std::size_t facets, bool give_back_denominators);
+/// Sizes planes for `facets` facets without offsets, their normals packed
+/// (all 0, approximations too): the returned points, which planes shares,
+/// are for the builder to write before anyone reads them.
+[[nodiscard]] std::shared_ptr<PackedVectors> size_packed_planes(FacetPlanes& planes, std::size_t facets);
 
 /// The plane triple of face f: its first three corners, in order (not
 /// collinear and turning like the face when the face is strictly convex).
@@ -77,7 +87,7 @@ FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<Approx
 
 /// The offset dot(normals[f], x) of every face f of mesh, x its first
 /// corner, the limbs kept in arena. \pre normals[f] is normal to face f.
-KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, const KeptVector<Vec3>& normals,
+KeptVector<Rational> offsets_from_first_corners(const Mesh& mesh, std::span<const Vec3> normals,
                                                 LimbArena& arena);
 
 /// A ConvexPolyhedron's planes (a move takes them along; a copy copies those

@@ -14,7 +14,7 @@
 #include "element_names.hpp"
 #include "face_lists.hpp"
 #include "huge_page_blocks.hpp"
-#include "lazy_positions.hpp"
+#include "packed_vectors.hpp"
 #include "no_index.hpp"
 #include "representation_order.hpp"
 
@@ -342,20 +342,20 @@ Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) {
   return build(std::move(soup), false, n);
 }
 
-Mesh Mesh::from_soup(PolygonSoup faces, std::shared_ptr<const detail::LazyPositions> positions,
+Mesh Mesh::from_soup(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
                      const detail::DistinctPoints&) {
   if (!faces.points.empty())
     throw Error(ErrorCategory::invalid_argument, "from_soup: packed positions come with a soup without points");
   Mesh m = build(std::move(faces), false, positions->packed().size());
-  m.lazy_positions_ = std::move(positions);
+  m.packed_positions_ = std::move(positions);
   return m;
 }
 
 const detail::DyadicPoints* Mesh::packed_positions() const noexcept {
-  return lazy_positions_ == nullptr ? nullptr : &lazy_positions_->packed();
+  return packed_positions_ == nullptr ? nullptr : &packed_positions_->packed();
 }
 
-const std::vector<Vec3>& Mesh::made_positions() const { return lazy_positions_->vectors(); }
+const std::vector<Vec3>& Mesh::made_positions() const { return packed_positions_->vectors(); }
 
 Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points) {
   check_soup_shape(soup, num_points);
@@ -473,7 +473,7 @@ void Mesh::validate() const {
   if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
     fail("validate: halfedge arrays have inconsistent sizes");
   const std::size_t num_points =
-      lazy_positions_ == nullptr ? positions_.size() : lazy_positions_->packed().size();
+      packed_positions_ == nullptr ? positions_.size() : packed_positions_->packed().size();
   if (vertex_he_.size() != num_points) fail("validate: vertex arrays have inconsistent sizes");
   if (nh >= no_index || num_points >= no_index || face_he_.size() >= no_index)
     fail("validate: element counts exceed 32-bit handles");

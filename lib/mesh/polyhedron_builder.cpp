@@ -34,12 +34,12 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup) {
 
 Mesh output_mesh(PolygonSoup soup) { return Mesh::from_soup(std::move(soup), DistinctPoints{}); }
 
-Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const LazyPositions> positions) {
+Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions) {
   return Mesh::from_soup(std::move(faces), std::move(positions), DistinctPoints{});
 }
 
 ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes, LimbArena limbs) {
-  const std::size_t faces = planes.normals.size();
+  const std::size_t faces = planes.size();
   if (planes.normal_approx.size() != faces || (!planes.offsets.empty() && planes.offsets.size() != faces) ||
       faces != mesh.num_faces() || vertex_approx.size() != mesh.num_vertices())
     throw Error(ErrorCategory::invalid_argument,

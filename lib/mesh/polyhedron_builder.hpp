@@ -23,7 +23,7 @@
 
 #include "approx.hpp"
 #include "facet_planes.hpp"
-#include "lazy_positions.hpp"
+#include "packed_vectors.hpp"
 #include "limb_arena.hpp"
 #include "cvms/convex_polyhedron.hpp"
 
@@ -61,7 +61,7 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
 Mesh output_mesh(PolygonSoup soup);
 /// The same for a soup without points whose points are packed (made into
 /// Vec3s only if a caller asks). \pre as above.
-Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const LazyPositions> positions);
+Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions);
 
 /// The polyhedron from its mesh, the approximations of its vertices and the
 /// planes of its faces (index by index; without offsets, the polyhedron
@@ -84,7 +84,7 @@ inline const ApproxVec3& normal_approx(const ConvexPolyhedron& p, FaceId f) {
 /// normal(f) with its approximation, for the filtered predicates.
 inline Vec3Ref normal_ref(const ConvexPolyhedron& p, FaceId f) {
   const FacetPlanes& planes = p.planes();
-  return {planes.normals[f.index()], planes.normal_approx[f.index()]};
+  return {planes.exact_normals()[f.index()], planes.normal_approx[f.index()]};
 }
 
 }  // namespace cvms::detail

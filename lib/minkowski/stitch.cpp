@@ -12,6 +12,7 @@
 #include <span>
 #include <utility>
 
+#include "cvms/error.hpp"
 #include "cvms/planar_sum.hpp"
 #include "dyadic.hpp"
 #include "error_bounds.hpp"
@@ -377,7 +378,7 @@ std::optional<Mesh> SumFacetBuilder::packed_mesh(std::vector<ApproxVec3>& approx
     return static_cast<std::uint32_t>(j);
   });
   if (!dyadic) return std::nullopt;
-  return output_mesh(std::move(faces), std::make_shared<const LazyPositions>(std::move(points)));
+  return output_mesh(std::move(faces), std::make_shared<const PackedVectors>(std::move(points)));
 }
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
@@ -399,12 +400,18 @@ PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* li
 // What one thread needs to write normals: its own lazy caches of edge
 // directions, and reused scratch.
 struct SumFacetBuilder::NormalScratch {
-  NormalScratch(const SumFacetBuilder& builder, LimbArena& arena)
-      : directions_a(builder.a_), directions_b(builder.b_), limbs(arena) {}
+  NormalScratch(const SumFacetBuilder& builder, DyadicPoints& packed, LimbArena& arena)
+      : directions_a(builder.a_), directions_b(builder.b_), normals(packed), limbs(arena) {}
   EdgeDirections directions_a;
   EdgeDirections directions_b;
   Vec3 normal;
-  LimbArena& limbs;  // where this thread's normals keep their numerators (and long denominators)
+  DyadicPoints& normals;  // where the normals go, packed
+  LimbArena& limbs;       // where this thread's long numerators go
+  // Packs normal i (an integer vector, which always packs).
+  void pack(std::size_t i, const Vec3& exact) {
+    if (!normals.pack(i, exact, limbs))
+      throw Error(ErrorCategory::limit, "a facet normal of the sum does not fit 2^31 limbs");
+  }
 };
 
 void SumFacetBuilder::write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end,
@@ -422,7 +429,7 @@ void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScr
       const ConvexPolyhedron& p = source.kind == NormalKind::facet_a ? a_ : b_;
       const Vec3Ref operand_normal = detail::normal_ref(p, FaceId(source.index));
       planes.normal_approx[i] = operand_normal.approx;
-      scratch.limbs.store(planes.normals[i], operand_normal.exact);
+      scratch.pack(i, operand_normal.exact);
       return;
     }
     case NormalKind::edges_positive:
@@ -434,11 +441,11 @@ void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScr
       const bool flip =
           (source.kind == NormalKind::edges_negative) != ((ha.index() & 1u) != (hb.index() & 1u));
       if (da != nullptr && db != nullptr) {
-        // Straight from 128-bit integers into the arena: no GMP value to copy.
+        // Straight from 128-bit integers: no GMP value to copy.
         SmallNormal small = primitive_cross(*da, *db);
         if (flip) small.negate();
         planes.normal_approx[i] = small.approx();
-        small.store(scratch.limbs, planes.normals[i]);
+        small.pack(scratch.limbs, scratch.normals, i);
         return;
       }
       primitive_cross(scratch.directions_a.general(ha), scratch.directions_b.general(hb), scratch.normal);
@@ -448,13 +455,14 @@ void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScr
     }
   }
   planes.normal_approx[i] = ApproxVec3::of(scratch.normal);
-  scratch.limbs.store(planes.normals[i], scratch.normal);
+  scratch.pack(i, scratch.normal);
 }
 
 ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   if (threads > 1) return build_on_two_threads();
-  // The vertices are packed (the mesh keeps them); the normals' numerators
-  // keep their limbs in one arena, which the result keeps.
+  // The vertices and normals are packed, each keeping its long numerators'
+  // limbs; only Vec3 vertices (the fallback) keep theirs in an arena the
+  // result keeps.
   LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
   std::optional<Mesh> mesh = packed_mesh(vertex_approx);
@@ -462,8 +470,9 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
     vertex_approx.clear();
     mesh = output_mesh(soup(&vertex_approx, &limbs));
   }
-  FacetPlanes planes = sized_planes(num_facets(), false);
-  NormalScratch scratch(*this, limbs);
+  FacetPlanes planes;
+  DyadicPoints& normals = size_packed_planes(planes, num_facets())->packed_for_writing();
+  NormalScratch scratch(*this, normals, normals.limbs());
   write_normals(planes, 0, num_facets(), scratch);
   return assemble(std::move(*mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
 }
@@ -519,12 +528,13 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   // (this thread; it reads no coordinate), the facet normals (a worker
   // starts on them at once, into planes it sizes), and the vertices'
   // coordinates, packed into the mesh's points once the mesh stands. Both
-  // threads take normals, then vertices, in chunks. Each thread keeps the
-  // normals' numerators in an arena of its own, which the result keeps, and
-  // the vertices' long numerators in another, which the points keep.
+  // threads take normals, then vertices, in chunks. Both are packed; each
+  // thread keeps the long numerators it makes in arenas of its own, which
+  // the packed normals and points then keep.
   const std::size_t facets = num_facets();
   LimbArena limbs, worker_limbs, vertex_limbs, worker_vertex_limbs;
   FacetPlanes planes;
+  std::shared_ptr<PackedVectors> packed_normals;
   ChunkCounter normals(256), vertices(512);
   normals.set_size(facets);
   // Sized (and `points` set) by this thread before `meshed` is counted
@@ -532,11 +542,11 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   // disjoint chunks, and nothing is resized.
   ScratchVector<VertexPair> pairs;  // by output vertex
   std::vector<ApproxVec3> vertex_approx;
-  std::shared_ptr<LazyPositions> positions;
+  std::shared_ptr<PackedVectors> positions;
   std::atomic<bool> not_dyadic{false};
   std::latch sized(1), meshed(1);
   auto take_normals = [&](LimbArena& arena) {
-    NormalScratch scratch(*this, arena);
+    NormalScratch scratch(*this, packed_normals->packed_for_writing(), arena);
     normals.take([&](std::size_t begin, std::size_t end) { write_normals(planes, begin, end, scratch); });
   };
   auto take_vertices = [&](LimbArena& arena) {
@@ -555,7 +565,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     worker.start([&] {
       CountDownOnce sized_done(sized);
       try {
-        planes = sized_planes(facets, true);
+        packed_normals = size_packed_planes(planes, facets);
         sized_done();
         take_normals(worker_limbs);
         meshed.wait();
@@ -579,7 +589,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
       // The topology reads only the number of points: both threads pack
       // their values into the mesh's points once it stands. (The mesh is
       // this function's until it returns: nothing reads them before.)
-      positions = std::make_shared<LazyPositions>(DyadicPoints(pairs.size()));
+      positions = std::make_shared<PackedVectors>(DyadicPoints(pairs.size()));
       mesh = output_mesh(std::move(soup), positions);
       vertices.set_size(pairs.size());
       meshed_done();
@@ -593,17 +603,19 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     }
     worker.join();  // rethrows the worker's exception
   }
-  limbs.absorb(std::move(worker_limbs));
+  packed_normals->packed_for_writing().keep_limbs(std::move(limbs));
+  packed_normals->packed_for_writing().keep_limbs(std::move(worker_limbs));
+  LimbArena point_limbs;
   if (not_dyadic) {  // inputs with other rationals than dyadic ones: Vec3s
     std::vector<Vec3> points(pairs.size());
     Vec3 scratch;
-    write_vertices(pairs, 0, pairs.size(), {points.data(), vertex_approx.data(), &limbs}, scratch);
+    write_vertices(pairs, 0, pairs.size(), {points.data(), vertex_approx.data(), &point_limbs}, scratch);
     mesh = mesh.with_positions(std::move(points));
   } else {
     positions->packed_for_writing().keep_limbs(std::move(vertex_limbs));
     positions->packed_for_writing().keep_limbs(std::move(worker_vertex_limbs));
   }
-  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
+  return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(point_limbs));
 }
 
 }  // namespace cvms::detail

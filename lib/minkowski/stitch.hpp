@@ -78,8 +78,8 @@ class SumFacetBuilder {
   [[nodiscard]] PolygonSoup soup() const;
 
  private:
-  // The normals of the facets, once sized_planes (facet_planes.hpp) has
-  // allocated them all: write_normals fills facets [begin, end). Threads may
+  // The normals of the facets, once size_packed_planes (facet_planes.hpp)
+  // has sized them all: write_normals fills facets [begin, end). Threads may
   // write disjoint ranges. (The offsets are made on first use.)
   struct NormalScratch;
   void write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end, NormalScratch& scratch) const;

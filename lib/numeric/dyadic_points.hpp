@@ -84,6 +84,12 @@ class DyadicPoints {
   [[nodiscard]] PackedDyadic& coordinate(std::size_t j, int axis) noexcept {
     return coordinates_[3 * j + static_cast<std::size_t>(axis)];
   }
+  /// Packs v as point j, long numerators' limbs in arena; false (point j
+  /// unspecified) when a coordinate does not pack (pack_dyadic).
+  [[nodiscard]] bool pack(std::size_t j, const Vec3& v, LimbArena& arena) {
+    return pack_dyadic(v.x, arena, coordinate(j, 0)) && pack_dyadic(v.y, arena, coordinate(j, 1)) &&
+           pack_dyadic(v.z, arena, coordinate(j, 2));
+  }
   /// Point j as exact rationals (each owning its limbs).
   [[nodiscard]] Vec3 point(std::size_t j) const;
   /// Every point as exact rationals, in order.

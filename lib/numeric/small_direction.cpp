@@ -253,6 +253,16 @@ void SmallNormal::assign_to(Vec3& out) const {
   for (std::size_t i = 0; i < 3; ++i) set_integer(out[static_cast<int>(i)], c[i]);
 }
 
+void SmallNormal::pack(LimbArena& arena, DyadicPoints& out, std::size_t j) const {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Uint128 m = magnitude(c[i]);
+    FixedDyadic<2> value;
+    value.numerator.magnitude = {static_cast<std::uint64_t>(m), static_cast<std::uint64_t>(m >> 64)};
+    value.numerator.negative = c[i] < 0;
+    pack_dyadic(value, arena, out.coordinate(j, static_cast<int>(i)));
+  }
+}
+
 void SmallNormal::store(LimbArena& arena, Vec3& out) const {
   for (std::size_t i = 0; i < 3; ++i) {
     const Uint128 m = magnitude(c[i]);

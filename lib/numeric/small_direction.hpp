@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "approx.hpp"
+#include "dyadic_points.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms::detail {
@@ -56,6 +57,8 @@ struct SmallNormal {
   void assign_to(Vec3& out) const;
   /// out = this vector, numerators kept in arena (LimbArena::store_integer).
   void store(LimbArena& arena, Vec3& out) const;
+  /// Packs this vector as point j of out (long numerators' limbs in arena).
+  void pack(LimbArena& arena, DyadicPoints& out, std::size_t j) const;
 };
 
 /// primitive_direction(cross(u, v)) in 128-bit integers.
