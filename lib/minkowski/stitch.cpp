@@ -162,6 +162,16 @@ Approx approx_sum(const Approx& x, const Approx& y, ExactSum&& exact_sum) {
 Approx& axis_of(ApproxVec3& v, int axis) noexcept { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
 const Approx& axis_of(const ApproxVec3& v, int axis) noexcept { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
 
+// How many vertices a sum with these facets has: a convex polyhedron is a
+// sphere, so V = E - F + 2 by Euler's formula, and every edge has two
+// corners. Exact for a correct sum; only a reservation (never a bound that
+// is relied on) should a caller break the precondition.
+std::size_t euler_vertex_count(const PolygonSoup& faces) noexcept {
+  const std::size_t edges = faces.face_indices.size() / 2;
+  const std::size_t facets = faces.face_offsets.size() - 1;
+  return edges + 2 > facets ? edges + 2 - facets : 0;
+}
+
 // A dense pair -> output-index table is used when it is not much larger than
 // the output itself; otherwise the pairs are numbered by sorting.
 constexpr std::uint64_t dense_table_limit = 1u << 16;
@@ -365,10 +375,10 @@ bool SumFacetBuilder::write_packed_vertices(std::span<const VertexPair> pairs, s
 
 std::optional<Mesh> SumFacetBuilder::packed_mesh(std::vector<ApproxVec3>& approx) const {
   PolygonSoup faces = faces_without_points();
-  const std::size_t bound = faces.face_indices.size() / 3 + 1;  // each vertex is in at least three facets
+  const std::size_t count = euler_vertex_count(faces);
   DyadicPoints points;
-  points.reserve(bound);
-  approx.reserve(bound);
+  points.reserve(count);
+  approx.reserve(count);
   Vec3 scratch;  // for the sums that do not fit machine words
   bool dyadic = true;
   number_corners(faces, true, [&](const VertexPair& p) {
@@ -579,8 +589,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     CountDownOnce meshed_done(meshed);
     try {
       PolygonSoup soup = faces_without_points();
-      // Reserved for soup()'s bound, as on one thread.
-      pairs.reserve(soup.face_indices.size() / 3 + 1);
+      pairs.reserve(euler_vertex_count(soup));
       number_corners(soup, false, [&](const VertexPair& p) {
         pairs.push_back(p);
         return static_cast<std::uint32_t>(pairs.size() - 1);
