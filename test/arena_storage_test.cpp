@@ -16,9 +16,12 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "facet_planes.hpp"
 #include "limb_arena.hpp"
 #include "research_options.hpp"
 #include "support/hand_solids.hpp"
+#include "support/minkowski_check.hpp"
+#include "support/oracle.hpp"
 
 namespace cvms {
 namespace {
@@ -346,6 +349,52 @@ TEST(ArenaStorage, LoadedPlanesAreMadeOnceForConcurrentReaders) {
 // out here in rationals; a copy taken before makes its own equal set, one
 // taken after copies it (and owns its limbs). Under TSan this is the test of
 // the once-only construction of the offsets.
+// A sum on `threads` threads read at once by several threads: each reader
+// gets the one set of vertices and normals made (the same addresses), which
+// a copy shares when packed; the values are the hull of the pairwise sums'.
+void expect_made_once_for_concurrent_readers(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                                             unsigned threads, bool dyadic, const test::Shape& expected) {
+  constexpr int num_readers = 4;
+  Options options;
+  options.threads = threads;
+  detail::ResearchOptions research;
+  research.worker_minimums = {0, 0, true};
+  const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
+  EXPECT_EQ(p.mesh().packed_positions() != nullptr, dyadic);
+  EXPECT_NE(p.planes().packed_normals, nullptr);
+  const ConvexPolyhedron copy = p;
+  const auto seen = addresses_read_at_once(p, num_readers, [](const ConvexPolyhedron& q, FaceId f) {
+    (void)q.vertex(q.mesh().from(q.mesh().halfedge(f)));
+    return static_cast<const void*>(&q.normal(f));
+  });
+  for (int t = 1; t < num_readers; ++t)
+    ASSERT_EQ(seen[0], seen[static_cast<std::size_t>(t)]) << "reader " << t << " read another set of normals";
+  if (dyadic) {
+    for (VertexId v : p.mesh().vertices()) ASSERT_EQ(&copy.vertex(v), &p.vertex(v)) << "vertex " << v.index();
+  }
+  for (FaceId f : p.mesh().faces()) ASSERT_EQ(&copy.normal(f), &p.normal(f)) << "facet " << f.index();
+  const test::Shape actual = test::describe(p);
+  EXPECT_TRUE(actual == expected) << test::difference(expected, actual);
+  EXPECT_EQ(test::check_invariants(p), "");
+}
+
+// A sum keeps its vertices and normals packed and makes their Vec3s when one
+// is first asked for (lib/mesh/packed_vectors.hpp); with a vertex that is
+// not dyadic (an operand shifted by 1/3) its vertices are Vec3s from the
+// start. Under TSan this is the check that making them once is race-free.
+TEST(ArenaStorage, SumVerticesAndNormalsAreMadeOnceForConcurrentReaders) {
+  const ConvexPolyhedron a = shapes::geodesic_sphere(2);
+  for (const bool dyadic : {true, false}) {
+    const ConvexPolyhedron b =
+        shapes::rotated_geodesic_sphere(2).translated(Vec3{dyadic ? Rational(1, 8) : Rational(1, 3), 0, 0});
+    const test::Shape expected = test::chms_shape(a, b);
+    for (const unsigned threads : {1u, 2u}) {
+      SCOPED_TRACE(std::to_string(threads) + (dyadic ? " threads, dyadic" : " threads, not dyadic"));
+      expect_made_once_for_concurrent_readers(a, b, threads, dyadic, expected);
+    }
+  }
+}
+
 TEST(ArenaStorage, SumOffsetsAreMadeOnceForConcurrentReaders) {
   const ConvexPolyhedron a = shapes::geodesic_sphere(3);
   const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(3).translated(Vec3{Rational(1, 3), 0, 5});

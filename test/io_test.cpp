@@ -623,3 +623,44 @@ TEST(Io, MsvcInfinitiesAreRefusedInEveryReader) {
 
 }  // namespace
 }  // namespace cvms
+
+namespace cvms {
+namespace {
+
+// What writing p gives in `format` and `mode`.
+std::string written(const ConvexPolyhedron& p, FileFormat format, Coordinates mode) {
+  std::ostringstream out;
+  write(out, p, format, mode);
+  return out.str();
+}
+
+// A sum keeps its vertices packed and is written straight from them
+// (lib/io/soup_view.hpp), without a Rational per coordinate: the text must be
+// what writing its soup gives (Vec3s, the Rational printer), in every format
+// and mode, also for coordinates whose numerators take several limbs and
+// whose denominators are past 2^64 (the packing's long path).
+TEST(Write, ASumIsWrittenAsItsSoupIs) {
+  const ConvexPolyhedron a = shapes::geodesic_sphere(2);
+  const Rational tiny(mpq_class(1, 1) / mpq_class(mpz_class(1) << 100));
+  const Rational huge(mpz_class(1) << 90);
+  for (const Vec3& shift : {Vec3{0, 0, 0}, Vec3{tiny, -tiny, 3 * tiny}, Vec3{huge, tiny, -huge}}) {
+    const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(2).translated(shift);
+    for (const unsigned threads : {1u, 2u}) {
+      Options options;
+      options.threads = threads;
+      const ConvexPolyhedron sum = minkowski_sum(a, b, options).polyhedron;
+      for (const FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::stl}) {
+        for (const Coordinates mode : {Coordinates::exact, Coordinates::double_}) {
+          if (format == FileFormat::stl && mode == Coordinates::exact) continue;  // STL is float32 only
+          const std::string direct = written(sum, format, mode);
+          EXPECT_EQ(direct, written(sum.to_soup(), format, mode))
+              << "shift " << shift.x << ", " << shift.y << ", " << shift.z << "; " << threads << " threads; format "
+              << static_cast<int>(format) << ", mode " << static_cast<int>(mode);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cvms

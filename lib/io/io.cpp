@@ -115,16 +115,19 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
 }
 
 // The polyhedron's own points with its faces' index lists (made into
-// `faces`, which the view reads): no copy of an exact coordinate.
-io_detail::SoupView polyhedron_view(const ConvexPolyhedron& p, detail::FaceLists& faces) {
+// `faces`, which the view reads): no copy of an exact coordinate, and for
+// the text formats no Rational of a packed one (a sum's output).
+io_detail::SoupView polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces) {
   faces = detail::face_lists(p.mesh());
+  if (const detail::DyadicPoints* packed = p.mesh().packed_positions(); packed != nullptr && format != FileFormat::stl)
+    return {{}, faces.offsets, faces.indices, packed};
   return {p.mesh().positions(), faces.offsets, faces.indices};
 }
 
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                               Coordinates coordinates) {
   detail::FaceLists faces;
-  write_view_to_file(path, polyhedron_view(p, faces), format, coordinates);
+  write_view_to_file(path, polyhedron_view(p, format, faces), format, coordinates);
 }
 
 }  // namespace
@@ -135,7 +138,7 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
 
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
   detail::FaceLists faces;
-  write_view(out, polyhedron_view(p, faces), format, coordinates);
+  write_view(out, polyhedron_view(p, format, faces), format, coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,

@@ -162,10 +162,7 @@ void write_obj(std::ostream& out, const PolygonSoup& soup, Coordinates coordinat
 void io_detail::write_obj_view(std::ostream& out, const SoupView& soup, Coordinates coordinates) {
   io_detail::check_soup_for_writing(soup, 3);
   io_detail::TextWriter w(out);
-  for (const Vec3& p : soup.points) {
-    w.text("v ").coordinate(p.x, coordinates).byte(' ').coordinate(p.y, coordinates).byte(' ');
-    w.coordinate(p.z, coordinates).byte('\n');
-  }
+  for (std::size_t j = 0; j < soup.num_points(); ++j) w.text("v ").point(soup, j, coordinates).byte('\n');
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     w.byte('f');
     for (std::uint32_t i : soup.face(f)) w.byte(' ').integer(std::uint64_t{i} + 1);

@@ -224,11 +224,8 @@ void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinat
 void io_detail::write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates) {
   io_detail::check_soup_for_writing(soup, 3);
   io_detail::TextWriter w(out);
-  w.text("OFF\n").integer(soup.points.size()).byte(' ').integer(soup.num_faces()).text(" 0\n");
-  for (const Vec3& p : soup.points) {
-    w.coordinate(p.x, coordinates).byte(' ').coordinate(p.y, coordinates).byte(' ');
-    w.coordinate(p.z, coordinates).byte('\n');
-  }
+  w.text("OFF\n").integer(soup.num_points()).byte(' ').integer(soup.num_faces()).text(" 0\n");
+  for (std::size_t j = 0; j < soup.num_points(); ++j) w.point(soup, j, coordinates).byte('\n');
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     auto face = soup.face(f);
     w.integer(face.size());

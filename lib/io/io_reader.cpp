@@ -500,10 +500,10 @@ void check_soup_for_writing(const SoupView& soup, std::size_t min_size) {
       throw Error(ErrorCategory::invalid_argument,
                   "face " + std::to_string(f) + " has " + std::to_string(face.size()) + " vertices");
     for (std::uint32_t i : face)
-      if (i >= soup.points.size())
+      if (i >= soup.num_points())
         throw Error(ErrorCategory::invalid_argument, "face " + std::to_string(f) + " has index " +
                                                          std::to_string(i) + " but there are " +
-                                                         std::to_string(soup.points.size()) + " vertices");
+                                                         std::to_string(soup.num_points()) + " vertices");
   }
 }
 

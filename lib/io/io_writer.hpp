@@ -15,7 +15,9 @@
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
 #include "cvms/rational.hpp"
+#include "dyadic_points.hpp"
 #include "rational_text.hpp"
+#include "soup_view.hpp"
 
 namespace cvms::io_detail {
 
@@ -62,6 +64,27 @@ class TextWriter {
     auto result = std::to_chars(digits, digits + sizeof digits, d);
     return text(std::string_view(digits, static_cast<std::size_t>(result.ptr - digits)));
   }
+  /// coordinate() of a packed value, without making a Rational of it
+  /// unless it is to be rounded.
+  TextWriter& coordinate(const detail::PackedDyadic& value, Coordinates mode) {
+    if (mode != Coordinates::exact) {
+      detail::unpack_dyadic(value, scratch_);
+      return coordinate(scratch_, mode);
+    }
+    mpz_t view;
+    detail::append_exact_text(buffer_, value.numerator(view), value.exponent);
+    if (buffer_.size() >= flush_at) flush();
+    return *this;
+  }
+  /// Point j of soup, its coordinates separated by spaces.
+  TextWriter& point(const SoupView& soup, std::size_t j, Coordinates mode) {
+    if (soup.packed != nullptr) {
+      coordinate(soup.packed->coordinate(j, 0), mode).byte(' ').coordinate(soup.packed->coordinate(j, 1), mode);
+      return byte(' ').coordinate(soup.packed->coordinate(j, 2), mode);
+    }
+    const Vec3& p = soup.points[j];
+    return coordinate(p.x, mode).byte(' ').coordinate(p.y, mode).byte(' ').coordinate(p.z, mode);
+  }
   /// Flushes what is buffered and checks the stream. \throw Error(io) on failure.
   void finish() {
     flush();
@@ -75,6 +98,7 @@ class TextWriter {
 
  private:
   static constexpr std::size_t flush_at = std::size_t{1} << 16;
+  Rational scratch_;  // a packed value to be rounded
   static std::string abbreviated(const Rational& value) {
     std::string s = value.get_str();
     return s.size() > 40 ? s.substr(0, 40) + "..." : s;

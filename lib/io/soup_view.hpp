@@ -12,13 +12,20 @@
 
 #include "cvms/io.hpp"
 #include "cvms/polygon_soup.hpp"
+#include "dyadic_points.hpp"
 
 namespace cvms::io_detail {
 
 struct SoupView {
-  std::span<const Vec3> points;
+  std::span<const Vec3> points;                 ///< unless packed
   std::span<const std::uint32_t> face_offsets;  ///< as PolygonSoup's: faces + 1 entries from 0
   std::span<const std::uint32_t> face_indices;
+  /// The points when they are packed (a sum's output, written without
+  /// making a Rational of them), else null. The text writers read these;
+  /// the STL writer takes points only.
+  const detail::DyadicPoints* packed = nullptr;
+
+  [[nodiscard]] std::size_t num_points() const noexcept { return packed != nullptr ? packed->size() : points.size(); }
 
   static SoupView of(const PolygonSoup& soup) noexcept {
     return {soup.points, soup.face_offsets, soup.face_indices};

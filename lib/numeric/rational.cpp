@@ -415,19 +415,15 @@ std::optional<unsigned> fives_of(mpz_srcptr den, std::uint64_t twos) {
   return std::nullopt;
 }
 
-bool append_exact_text_fast(std::string& out, const Rational& value) {
-  mpz_srcptr num = value.get_num_mpz_t();
-  mpz_srcptr den = value.get_den_mpz_t();
+// num / (2^twos 5^fives) printed as above; false when it does not fit the stack.
+bool append_decimal_fast(std::string& out, mpz_srcptr num, std::uint64_t twos, std::uint64_t fives) {
   if (mpz_sgn(num) == 0) {
     out += '0';
     return true;
   }
-  const std::uint64_t twos = mpz_scan1(den, 0);
-  const std::optional<unsigned> fives = fives_of(den, twos);
-  if (!fives) return false;
-  const std::uint64_t places = std::max<std::uint64_t>(twos, *fives);
+  const std::uint64_t places = std::max(twos, fives);
   const std::uint64_t extra_twos = places - twos;
-  const std::uint64_t extra_fives = places - *fives;
+  const std::uint64_t extra_fives = places - fives;
   // Bits of |p| 2^extra_twos 5^extra_fives, from above (log2(5) < 2.33).
   const std::uint64_t bits = mpz_sizeinbase(num, 2) + extra_twos + extra_fives * 233 / 100 + 1;
   if (bits > (print_limbs - 1) * 64 || places >= print_limbs * 20) return false;
@@ -450,6 +446,18 @@ bool append_exact_text_fast(std::string& out, const Rational& value) {
   if (mpz_sgn(num) < 0) out += '-';
   append_digits(out, limbs, size, places);
   return true;
+}
+
+bool append_exact_text_fast(std::string& out, const Rational& value) {
+  mpz_srcptr num = value.get_num_mpz_t();
+  mpz_srcptr den = value.get_den_mpz_t();
+  if (mpz_sgn(num) == 0) {
+    out += '0';
+    return true;
+  }
+  const std::uint64_t twos = mpz_scan1(den, 0);
+  const std::optional<unsigned> fives = fives_of(den, twos);
+  return fives && append_decimal_fast(out, num, twos, *fives);
 }
 
 }  // namespace
@@ -477,6 +485,14 @@ std::string exact_text_general(const Rational& value) {
 
 void append_exact_text(std::string& out, const Rational& value) {
   if (!append_exact_text_fast(out, value)) out += exact_text_general(value);
+}
+
+void append_exact_text(std::string& out, mpz_srcptr numerator, mp_bitcnt_t exponent) {
+  if (append_decimal_fast(out, numerator, exponent, 0)) return;
+  Rational value;
+  mpz_set(value.get_num_mpz_t(), numerator);
+  mpz_mul_2exp(value.get_den_mpz_t(), value.get_den_mpz_t(), exponent);
+  out += exact_text_general(value);
 }
 
 NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimits& requested,

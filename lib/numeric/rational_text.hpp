@@ -66,6 +66,10 @@ NumberTextResult parse_rational_into(std::string_view text, const NumberTextLimi
 /// to about 770 digits straight from machine words, others through
 /// exact_text_general.
 void append_exact_text(std::string& out, const Rational& value);
+/// The same for the dyadic value numerator / 2^exponent, without a
+/// Rational (a packed coordinate, dyadic_points.hpp).
+/// \pre in lowest terms: the numerator is odd or the exponent 0.
+void append_exact_text(std::string& out, mpz_srcptr numerator, mp_bitcnt_t exponent);
 
 /// to_string's text by the general route (strip 2s and 5s from the
 /// denominator, scale by a power of ten, print): the reference the fast
