@@ -66,6 +66,9 @@ class SumFacetBuilder {
   /// normal of the facet of A or B it is parallel to, or, for e_A + e_B, the
   /// primitive direction of +-cross(d_A, d_B).
   /// The planes' offsets are made on first use (ConvexPolyhedron::plane_offset).
+  /// The vertices and normals are packed (dyadic_points.hpp), made into
+  /// Vec3s only if a caller asks; vertices that are not dyadic (operands
+  /// with other rationals) are Vec3s from the start.
   /// threads > 1 computes the facet normals on a second thread while this
   /// one numbers the vertices and builds the mesh's topology; then both
   /// share what is left of the normals and the vertices' coordinates (same

@@ -34,25 +34,21 @@
 // A builder may instead give a fresh rational's denominator limb back at once
 // (give_back_denominator): the denominator becomes a view of a constant table
 // of 2^0 ... 2^63 and stays one as long as only powers of two below 2^64 are
-// stored into it, so that constructing a whole array reuses one heap block. The
-// two-thread output build does this for the planes its worker sizes: there
-// the 256,000 denominators of Sphere6 + rotated Sphere6 (four per facet when
-// this was measured; three since the offsets are made on first use) would each be a new
-// block in the worker's own malloc arena, faulted in afresh by every sum
-// (sizing took the worker 11.5-19 ms against 4.4-15 ms on the calling
-// thread), and the sum on two threads took 38.1 ms against 32.6 ms with them
-// given back (minimum of 6 alternating rounds). The calling thread keeps its
-// limbs: given back there too, the heap's top was trimmed after each sum and
-// the next one faulted its vertex array in again (57,700 against 80,300 page
-// faults over a benchmark run; one thread 56-62 against 61-66 ms; measured
-// again in stop 38: Sphere_5 + rot. Sphere_5 10.8 against 13.1 ms). The
-// planes a polyhedron makes from its own corners (a loaded, transformed or
-// hulled one: planes_from_first_corners) give theirs back on whichever
-// thread makes them: they are made once per polyhedron rather than once per
-// sum, and a loaded Sphere6's planes took 8.7 against 9.5 ms (its 82,000
+// stored into it, so that constructing a whole array reuses one heap block.
+// The planes a polyhedron makes from its own corners (a loaded, transformed
+// or hulled one: planes_from_first_corners) do this on whichever thread
+// makes them: they are made once per polyhedron rather than once per sum,
+// and a loaded Sphere6's planes took 8.7 against 9.5 ms (its 82,000
 // denominators no longer allocated, nor freed with the polyhedron; the
 // quickhull's convex_hull of 100,000 points, whose output's planes are made
-// the same way, was unchanged).
+// the same way, was unchanged); so do a sum's packed vertices and normals
+// when a caller first asks for them as Vec3s (packed_vectors.hpp). Until
+// stop 41 a sum's own output was built here too, its worker's planes with
+// their denominators given back (two threads: 38.1 against 32.6 ms) and its
+// calling thread's not (given back there, glibc trimmed the heap's top after
+// each sum and the next one faulted its arrays in again: one thread 56-62
+// against 61-66 ms); since then a sum packs its vertices and normals
+// (dyadic_points.hpp) and makes no rational at all.
 //
 // Older GMPs free unconditionally, so there store() copies into the value's
 // own heap limbs instead (same values, no saving).
