@@ -342,13 +342,6 @@ TEST(ArenaStorage, LoadedPlanesAreMadeOnceForConcurrentReaders) {
   }
 }
 
-// A sum's output has its normals from its builder and makes its offsets when
-// one is first asked for (lib/mesh/facet_planes.hpp). Readers on several
-// threads that ask at once all read the one set made (the same addresses),
-// and every offset is dot(normal, x) for every vertex x of its facet, worked
-// out here in rationals; a copy taken before makes its own equal set, one
-// taken after copies it (and owns its limbs). Under TSan this is the test of
-// the once-only construction of the offsets.
 // A sum on `threads` threads read at once by several threads: each reader
 // gets the one set of vertices and normals made (the same addresses), which
 // a copy shares when packed; the values are the hull of the pairwise sums'.
@@ -395,6 +388,13 @@ TEST(ArenaStorage, SumVerticesAndNormalsAreMadeOnceForConcurrentReaders) {
   }
 }
 
+// A sum's output has its normals from its builder and makes its offsets when
+// one is first asked for (lib/mesh/facet_planes.hpp). Readers on several
+// threads that ask at once all read the one set made (the same addresses),
+// and every offset is dot(normal, x) for every vertex x of its facet, worked
+// out here in rationals; a copy taken before makes its own equal set, one
+// taken after copies it (and owns its limbs). Under TSan this is the test of
+// the once-only construction of the offsets.
 TEST(ArenaStorage, SumOffsetsAreMadeOnceForConcurrentReaders) {
   const ConvexPolyhedron a = shapes::geodesic_sphere(3);
   const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(3).translated(Vec3{Rational(1, 3), 0, 5});

@@ -63,8 +63,8 @@ class ConvexPolyhedron {
   ConvexPolyhedron();
   ~ConvexPolyhedron();
   /// Copies share the (immutable) internal approximations and a sum's
-  /// packed vertices (see Mesh::position); their other exact values are
-  /// their own.
+  /// packed vertices and normals (see Mesh::position); their other exact
+  /// values are their own.
   ConvexPolyhedron(const ConvexPolyhedron&);
   /// Moves leave `other` empty.
   ConvexPolyhedron(ConvexPolyhedron&& other) noexcept;
@@ -111,7 +111,8 @@ class ConvexPolyhedron {
   /// Exact outward normal of facet f: a primitive integer vector. A
   /// polyhedron made from a mesh or soup finds its planes when one is first
   /// asked for (once, for all facets; safe from concurrent readers), so
-  /// that loading and checking alone never pay for them.
+  /// that loading and checking alone never pay for them; a sum's output
+  /// keeps its normals packed and makes them into Vec3s on the first call.
   /// \throw std::bad_alloc only then, if memory runs out.
   [[nodiscard]] const Vec3& normal(FaceId f) const;
   /// dot(normal(f), x) == plane_offset(f) for every point x of facet f.

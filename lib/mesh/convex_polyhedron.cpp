@@ -857,10 +857,11 @@ ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
 
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
-// A copy's exact values own their limbs (copying a rational allocates them),
+// A copy's Vec3 values own their limbs (copying a rational allocates them),
 // so it does not keep the original's arena alive: planes and offsets made
 // already are copied, those not yet made are made by the copy when it needs
-// them (into an arena of its own).
+// them (into an arena of its own). A sum's packed vertices and normals
+// (packed_vectors.hpp) are immutable and shared, with the limbs they keep.
 ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other) : mesh_(other.mesh_), approx_(other.approx_) {
   if (!other.planes_) return;
   const detail::FacetPlanes* made = other.planes_made_.load(std::memory_order_acquire);

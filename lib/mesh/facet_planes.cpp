@@ -65,7 +65,7 @@ std::shared_ptr<PackedVectors> size_packed_planes(FacetPlanes& planes, std::size
 FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
                                       LimbArena& arena) {
   // Made once per polyhedron, so its denominators need no heap blocks of
-  // their own (unlike a sum's on the calling thread: limb_arena.hpp).
+  // their own (limb_arena.hpp).
   FacetPlanes out = sized_planes(mesh.num_faces());
   const auto ref = [&](VertexId v) { return Vec3Ref{mesh.position(v), vertex_approx[v.index()]}; };
   Vec3 general;  // keeps its limbs from facet to facet

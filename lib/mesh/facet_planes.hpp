@@ -37,8 +37,8 @@ namespace cvms::detail {
 
 /// The planes of the output facets, index by index.
 struct FacetPlanes {
-  // On huge pages when large (huge_page_blocks.hpp): a sum's output makes
-  // them anew in every call.
+  // On huge pages when large (huge_page_blocks.hpp): the algorithms'
+  // outputs (their approximations) and transforms make them anew each call.
   /// Outward primitive integer normals; empty when packed_normals holds them.
   KeptVector<Vec3> normals;
   /// The normals kept packed (a sum's output), or null.

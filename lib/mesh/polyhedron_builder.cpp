@@ -40,7 +40,9 @@ Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positio
 
 ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes, LimbArena limbs) {
   const std::size_t faces = planes.size();
-  if (planes.normal_approx.size() != faces || (!planes.offsets.empty() && planes.offsets.size() != faces) ||
+  const std::size_t normals =
+      planes.packed_normals != nullptr ? planes.packed_normals->packed().size() : planes.normals.size();
+  if (normals != faces || (!planes.offsets.empty() && planes.offsets.size() != faces) ||
       faces != mesh.num_faces() || vertex_approx.size() != mesh.num_vertices())
     throw Error(ErrorCategory::invalid_argument,
                 "assemble: " + std::to_string(faces) + " planes and " + std::to_string(vertex_approx.size()) +

@@ -143,7 +143,8 @@ class EdgeDirections {
 // points away from zero, and the next double toward zero otherwise. The
 // error bound is Approx::of's, so the cached value is the same either way
 // (error_bounds.hpp says why this sum is not bounded as CHMS's sums are).
-// exact_sum() gives the exact sum, asked for only when x or y is not exact.
+// exact_sum() gives the exact sum, asked for only when x or y is not exact
+// or their double sum overflows.
 template <typename ExactSum>
 Approx approx_sum(const Approx& x, const Approx& y, ExactSum&& exact_sum) {
   if (x.error == 0.0 && y.error == 0.0) {
@@ -547,19 +548,24 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   std::shared_ptr<PackedVectors> packed_normals;
   ChunkCounter normals(256), vertices(512);
   normals.set_size(facets);
-  // Sized (and `points` set) by this thread before `meshed` is counted
+  // Sized (and `positions` made) by this thread before `meshed` is counted
   // down; after that the arrays' elements are written by both threads, in
-  // disjoint chunks, and nothing is resized.
+  // disjoint chunks, and nothing is resized. `packed_normals` is made by the
+  // worker before `sized` is counted down. Either may still be null after
+  // its latch if the thread that makes it failed: the counters are given up
+  // then, and nothing is taken.
   ScratchVector<VertexPair> pairs;  // by output vertex
   std::vector<ApproxVec3> vertex_approx;
   std::shared_ptr<PackedVectors> positions;
   std::atomic<bool> not_dyadic{false};
   std::latch sized(1), meshed(1);
   auto take_normals = [&](LimbArena& arena) {
+    if (packed_normals == nullptr) return;  // the worker failed to size them
     NormalScratch scratch(*this, packed_normals->packed_for_writing(), arena);
     normals.take([&](std::size_t begin, std::size_t end) { write_normals(planes, begin, end, scratch); });
   };
   auto take_vertices = [&](LimbArena& arena) {
+    if (positions == nullptr) return;  // the calling thread failed before sizing them
     Vec3 scratch;  // for the sums that do not fit machine words
     const PackedOutput out{&positions->packed_for_writing(), vertex_approx.data(), &arena};
     vertices.take([&](std::size_t begin, std::size_t end) {

@@ -15,13 +15,15 @@ constexpr std::uint64_t max_exponent = std::numeric_limits<std::uint32_t>::max()
 void pack_limbs(const mp_limb_t* magnitude, std::size_t size, bool negative, std::uint32_t exponent,
                 LimbArena& arena, PackedDyadic& out) {
   while (size > 0 && magnitude[size - 1] == 0) --size;
-  out.exponent = size == 0 ? 0 : exponent;
-  out.size = static_cast<std::int32_t>(negative ? -static_cast<std::int64_t>(size) : static_cast<std::int64_t>(size));
+  // The word first: copying the limbs may throw, and then out is unchanged.
   if (size <= 1) {
     out.word = size == 0 ? 0 : magnitude[0];
   } else {
     out.word = reinterpret_cast<std::uintptr_t>(arena.copy_limbs(magnitude, size));
   }
+  out.exponent = size == 0 ? 0 : exponent;
+  out.size = static_cast<std::int32_t>(negative ? -static_cast<std::int64_t>(size)
+                                                : static_cast<std::int64_t>(size));
 }
 
 }  // namespace
@@ -42,9 +44,7 @@ bool pack_dyadic(const Rational& value, LimbArena& arena, PackedDyadic& out) {
 void pack_dyadic(FixedDyadic<2> value, LimbArena& arena, PackedDyadic& out) {
   std::uint64_t* magnitude = value.numerator.magnitude.data();
   const mp_bitcnt_t exponent = reduce_dyadic(std::span<std::uint64_t>(magnitude, 2), value.exponent);
-  static_assert(sizeof(mp_limb_t) == sizeof(std::uint64_t));
-  pack_limbs(reinterpret_cast<const mp_limb_t*>(magnitude), 2, value.numerator.negative,
-             static_cast<std::uint32_t>(exponent), arena, out);
+  pack_limbs(magnitude, 2, value.numerator.negative, static_cast<std::uint32_t>(exponent), arena, out);
 }
 
 void unpack_dyadic(const PackedDyadic& value, Rational& out) {

@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "cvms/rational.hpp"
@@ -31,6 +32,10 @@
 #include "limb_arena.hpp"
 
 namespace cvms::detail {
+
+// A packed numerator is read as GMP limbs (mpz_roinit_n) and written from
+// 64-bit words (FixedDyadic): both must be the same type.
+static_assert(std::is_same_v<mp_limb_t, std::uint64_t>, "GMP limbs must be 64-bit unsigned longs");
 
 /// One exact dyadic number: (size < 0 ? -1 : 1) * |numerator| / 2^exponent.
 struct PackedDyadic {
@@ -42,7 +47,7 @@ struct PackedDyadic {
 
   /// The numerator's limbs (at least one readable limb, also for zero).
   [[nodiscard]] const mp_limb_t* limbs() const noexcept {
-    return size >= -1 && size <= 1 ? reinterpret_cast<const mp_limb_t*>(&word) : reinterpret_cast<const mp_limb_t*>(word);
+    return size >= -1 && size <= 1 ? &word : reinterpret_cast<const mp_limb_t*>(word);
   }
   /// A read-only GMP view of the numerator, valid while this value and the
   /// arena of its limbs live. \pre `view` is not cleared or written by GMP.

@@ -31,7 +31,8 @@ namespace cvms::detail {
 // joined to v by an edge. A polyhedron's graph is its mesh's edge graph.
 struct PolyhedronGraph {
   const ConvexPolyhedron& p;
-  [[nodiscard]] Vec3Ref ref(VertexId v) const noexcept { return vertex_ref(p, v); }
+  // Not noexcept: a sum's vertices are made into Vec3s on first use (may throw bad_alloc).
+  [[nodiscard]] Vec3Ref ref(VertexId v) const { return vertex_ref(p, v); }
   template <class F>
   void for_each_neighbour(VertexId v, F&& f) const {
     const Mesh& m = p.mesh();
