@@ -4,14 +4,20 @@
 #include "stitch.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <fstream>
 #include <set>
+#include <system_error>
+#include <thread>
 
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
-#include "support/oracle.hpp"
 #include "polyhedron_builder.hpp"
 #include "research_options.hpp"
+#include "support/oracle.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -114,6 +120,79 @@ TEST(Stitch, ThreadsBuildTheSamePolyhedron) {
       {shapes::cube(), shapes::geodesic_sphere(3)},
       {shapes::truncated_cube(), shapes::tetrahedron()}};
   for (const auto& [a, b] : cases) expect_threads_build_the_same(a, b);
+}
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define CVMS_TEST_UNDER_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+#define CVMS_TEST_UNDER_SANITIZER 1
+#endif
+#endif
+
+// Caps this process's address space a little above what it maps now: too
+// little for a thread's stack (8 MiB by default), enough for a small sum.
+void cap_address_space_below_a_thread_stack() {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0;
+  statm >> pages;
+  const auto cap =
+      static_cast<rlim_t>(pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE)) + (std::size_t{7} << 20));
+  const rlimit limit{cap, cap};
+  if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(3);
+}
+
+// Whether the system now refuses to start a thread.
+bool threads_are_refused() {
+  try {
+    std::thread([] {}).join();
+    return false;
+  } catch (const std::system_error&) {
+    return true;
+  }
+}
+
+// When the system refuses a thread, a sum asked for two threads (its edge
+// trace and its output build each start a worker) is found and built on
+// one: the same polyhedron, not a std::system_error. A child process caps
+// its address space so that no thread stack fits, checks that a thread is
+// indeed refused, sums, and compares with the one-thread sum made before.
+TEST(Stitch, RefusedThreadsBuildOnOneThread) {
+#ifdef CVMS_TEST_UNDER_SANITIZER
+  GTEST_SKIP() << "the sanitizers reserve address space of their own";
+#else
+  const ConvexPolyhedron a = shapes::geodesic_sphere(3);
+  const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(3);
+  const PolygonSoup expected = minkowski_sum(a, b).polyhedron.to_soup();
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    cap_address_space_below_a_thread_stack();
+    if (!threads_are_refused()) _exit(3);
+    try {
+      Options options;
+      options.threads = 2;
+      detail::ResearchOptions research;
+      research.worker_minimums = {0, 0, true};  // workers however small the sum
+      const PolygonSoup got = detail::minkowski_sum(a, b, options, research).polyhedron.to_soup();
+      const bool same = got.points == expected.points && got.face_offsets == expected.face_offsets &&
+                        got.face_indices == expected.face_indices;
+      _exit(same ? 0 : 1);
+    } catch (const std::system_error&) {
+      _exit(2);
+    } catch (...) {
+      _exit(4);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child did not exit (signal " << WTERMSIG(status) << ")";
+  if (WEXITSTATUS(status) == 3) GTEST_SKIP() << "could not make the system refuse a thread";
+  EXPECT_NE(WEXITSTATUS(status), 1) << "a different polyhedron on one thread";
+  EXPECT_NE(WEXITSTATUS(status), 2) << "std::system_error escaped";
+  EXPECT_NE(WEXITSTATUS(status), 4) << "another exception escaped (the cap too low for the sum?)";
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+#endif
 }
 
 // Sphere4 + rotated Sphere4 has 642^2 vertex pairs, past the dense table's

@@ -31,6 +31,7 @@
 #include <atomic>
 #include <span>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -429,9 +430,18 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
       SumFacetBuilder tracer_out(a, b);
       Stats tracer_stats;
       Worker tracer;  // after what it writes: destroyed (joined) first
-      tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
+      bool refused = false;
+      try {
+        tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
+      } catch (const std::system_error&) {
+        refused = true;  // no thread to be had now: this one traces after step 2, the same facets
+      }
       corner_facets();
-      tracer.join();  // its predicates count as this thread's
+      if (refused) {
+        edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats);
+      } else {
+        tracer.join();  // its predicates count as this thread's
+      }
       out.append(tracer_out, 0, tracer_out.num_facets());
       stats.edge_candidates += tracer_stats.edge_candidates;
       stats.edge_facets += tracer_stats.edge_facets;

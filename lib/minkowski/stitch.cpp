@@ -10,6 +10,7 @@
 #include <latch>
 #include <limits>
 #include <span>
+#include <system_error>
 #include <utility>
 
 #include "cvms/error.hpp"
@@ -578,20 +579,24 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   Mesh mesh;
   {
     Worker worker;
-    worker.start([&] {
-      CountDownOnce sized_done(sized);
-      try {
-        packed_normals = size_packed_planes(planes, facets);
-        sized_done();
-        take_normals(worker_limbs);
-        meshed.wait();
-        take_vertices(worker_vertex_limbs);
-      } catch (...) {
-        normals.give_up();
-        vertices.give_up();
-        throw;
-      }
-    });
+    try {
+      worker.start([&] {
+        CountDownOnce sized_done(sized);
+        try {
+          packed_normals = size_packed_planes(planes, facets);
+          sized_done();
+          take_normals(worker_limbs);
+          meshed.wait();
+          take_vertices(worker_vertex_limbs);
+        } catch (...) {
+          normals.give_up();
+          vertices.give_up();
+          throw;
+        }
+      });
+    } catch (const std::system_error&) {
+      return build(1);  // no thread to be had now: one thread builds the same polyhedron
+    }
     CountDownOnce meshed_done(meshed);
     try {
       PolygonSoup soup = faces_without_points();
