@@ -130,6 +130,7 @@ TEST(Stitch, ThreadsBuildTheSamePolyhedron) {
 #endif
 #endif
 
+#ifndef CVMS_TEST_UNDER_SANITIZER
 // Caps this process's address space a little above what it maps now: too
 // little for a thread's stack (8 MiB by default), enough for a small sum.
 void cap_address_space_below_a_thread_stack() {
@@ -151,6 +152,7 @@ bool threads_are_refused() {
     return true;
   }
 }
+#endif
 
 // When the system refuses a thread, a sum asked for two threads (its edge
 // trace and its output build each start a worker) is found and built on
