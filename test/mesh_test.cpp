@@ -113,6 +113,42 @@ TEST(Mesh, EveryHalfedgeAppearsOnceInFacesAndFans) {
   EXPECT_EQ(static_cast<int>(m.num_vertices()) - static_cast<int>(m.num_edges()) + static_cast<int>(m.num_faces()), 2);
 }
 
+// A circulator may start at any halfedge of its cycle: it visits the whole
+// cycle once, in the order of the one from the stored halfedge, rotated.
+TEST(Mesh, CirculatorsStartAnywhereInTheirCycle) {
+  Mesh m = Mesh::from_soup(test::subdivided(test::prism(), 1));
+  using Kind = HalfedgeCirculator::Kind;
+  const auto expect_rotation = [](const std::vector<HalfedgeId>& from_stored, const std::vector<HalfedgeId>& got,
+                                  std::size_t offset) {
+    ASSERT_EQ(got.size(), from_stored.size());
+    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], from_stored[(offset + i) % got.size()]);
+  };
+  for (VertexId v : m.vertices()) {
+    std::vector<HalfedgeId> stored;
+    for (HalfedgeId h : m.outgoing_halfedges(v)) stored.push_back(h);
+    for (std::size_t k = 0; k < stored.size(); ++k) {
+      std::vector<HalfedgeId> got;
+      for (HalfedgeId h : HalfedgeCirculator(&m, stored[k], Kind::vertex)) {
+        got.push_back(h);
+        ASSERT_LE(got.size(), stored.size()) << "vertex " << v.index() << " from its halfedge " << k;
+      }
+      expect_rotation(stored, got, k);
+    }
+  }
+  for (FaceId f : m.faces()) {
+    std::vector<HalfedgeId> stored;
+    for (HalfedgeId h : m.face_halfedges(f)) stored.push_back(h);
+    for (std::size_t k = 0; k < stored.size(); ++k) {
+      std::vector<HalfedgeId> got;
+      for (HalfedgeId h : HalfedgeCirculator(&m, stored[k], Kind::face)) {
+        got.push_back(h);
+        ASSERT_LE(got.size(), stored.size()) << "face " << f.index() << " from its halfedge " << k;
+      }
+      expect_rotation(stored, got, k);
+    }
+  }
+}
+
 TEST(Mesh, SoupRoundTrip) {
   PolygonSoup soup = test::subdivided(test::cube_quads(), 1);
   Mesh m = Mesh::from_soup(soup);

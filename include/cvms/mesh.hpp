@@ -112,9 +112,10 @@ class HalfedgeCirculator {
     using value_type = HalfedgeId;           ///< the handle type
     using difference_type = std::ptrdiff_t;  ///< for the iterator concepts
     iterator() = default;
-    /// At halfedge h of the cycle of `kind`; at_end marks the past-the-end position.
-    iterator(const Mesh* mesh, HalfedgeId h, Kind kind, bool at_end)
-        : mesh_(mesh), h_(h), kind_(kind), at_end_(at_end) {}
+    /// At halfedge h of the cycle of `kind` that starts (and ends) at
+    /// `start`; at_end marks the past-the-end position.
+    iterator(const Mesh* mesh, HalfedgeId h, HalfedgeId start, Kind kind, bool at_end)
+        : mesh_(mesh), h_(h), start_(start), kind_(kind), at_end_(at_end) {}
     /// The current halfedge.
     HalfedgeId operator*() const { return h_; }
     /// The next halfedge of the cycle.
@@ -133,17 +134,21 @@ class HalfedgeCirculator {
    private:
     const Mesh* mesh_ = nullptr;
     HalfedgeId h_;
+    // Kept rather than looked up again at every step: that was two
+    // dependent loads per step on the searches' hottest loops.
+    HalfedgeId start_;
     Kind kind_ = Kind::face;
     bool at_end_ = true;
   };
-  /// The cycle of `kind` through `start`, which must be the face's or the
-  /// vertex's stored halfedge (Mesh::halfedge(f) / Mesh::halfedge(v)).
+  /// The cycle of `kind` through `start`, from `start` around to just
+  /// before it (Mesh::face_halfedges and Mesh::outgoing_halfedges start at
+  /// the face's or the vertex's stored halfedge).
   HalfedgeCirculator(const Mesh* mesh, HalfedgeId start, Kind kind)
       : mesh_(mesh), start_(start), kind_(kind) {}
   /// At the start halfedge (empty range if start is invalid).
-  [[nodiscard]] iterator begin() const { return {mesh_, start_, kind_, !start_.is_valid()}; }
+  [[nodiscard]] iterator begin() const { return {mesh_, start_, start_, kind_, !start_.is_valid()}; }
   /// Past the end.
-  [[nodiscard]] iterator end() const { return {mesh_, start_, kind_, true}; }
+  [[nodiscard]] iterator end() const { return {mesh_, start_, start_, kind_, true}; }
 
  private:
   const Mesh* mesh_;
@@ -297,10 +302,8 @@ class Mesh {
 };
 
 inline HalfedgeCirculator::iterator& HalfedgeCirculator::iterator::operator++() {
-  HalfedgeId start =
-      (kind_ == Kind::face) ? mesh_->halfedge(mesh_->face(h_)) : mesh_->halfedge(mesh_->from(h_));
   h_ = (kind_ == Kind::face) ? mesh_->next(h_) : Mesh::twin(mesh_->prev(h_));
-  if (h_ == start) at_end_ = true;
+  if (h_ == start_) at_end_ = true;
   return *this;
 }
 
