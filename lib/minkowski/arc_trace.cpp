@@ -55,6 +55,7 @@
 
 #include "contributing_vertices.hpp"
 #include "cvms/error.hpp"
+#include "dot_order_filter.hpp"
 #include "dyadic.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
@@ -72,10 +73,13 @@ HalfedgeId halfedge_between(const Mesh& m, FaceId f, VertexId u, VertexId w) {
 }
 
 // Where the walk is: at the maximiser u, or at the facet point event when
-// that is valid.
+// that is valid. entered, when valid, is the outgoing halfedge of u through
+// whose edge the walk came into u's cone: its facet is visible (-) and the
+// facet on its other side invisible (+).
 struct WalkPosition {
   VertexId u;
   FaceId event;
+  HalfedgeId entered;
 };
 
 // Start (see the file comment): the maximiser at n1, given by c1.
@@ -145,6 +149,40 @@ FacetMaximisers maximisers_along_tangent(const ConvexPolyhedron& b, FaceId f, co
   return m;
 }
 
+// The side of each facet F of b from d_A, s(F) = sign <n_F, d_A>: from the
+// semi-static filter over b's normals (dot_order_filter.hpp: three products
+// and a comparison) when it proves the sign, else from sign_dot. Both count
+// as this thread's predicates, as the climbs' do.
+class FacetSides {
+ public:
+  FacetSides(const ConvexPolyhedron& b, const PlaneFilterExtent& normals_extent, Vec3Ref da)
+      : b_(b), da_(da), filter_(da.approx, normals_extent), counters_(predicate_counters()) {}
+
+  Sign operator()(FaceId f) const {
+    if (const std::optional<Sign> proved = filter_.sign(filter_.value(detail::normal_approx(b_, f)))) {
+      ++counters_.filtered;
+      return *proved;
+    }
+    return sign_dot(detail::normal_ref(b_, f), da_);
+  }
+
+ private:
+  const ConvexPolyhedron& b_;
+  Vec3Ref da_;
+  DotOrderFilter filter_;
+  PredicateCounters& counters_;
+};
+
+// The extent of b's normals' approximations, gathered once per scratch.
+const PlaneFilterExtent& normals_extent(const ConvexPolyhedron& b, ArcTraceScratch& scratch) {
+  if (scratch.normals_of != &b) {
+    scratch.normals_extent = {};
+    for (const ApproxVec3& n : b.planes().normal_approx) scratch.normals_extent.add(n);
+    scratch.normals_of = &b;
+  }
+  return scratch.normals_extent;
+}
+
 // The way out of u's normal cone forwards (see the file comment): an
 // outgoing halfedge h with s(face(twin(h))) = - and s(face(h)) = + (a
 // crossing) or 0 (a facet point event); h is invalid if there is none.
@@ -153,15 +191,29 @@ struct ConeExit {
   bool crossing = false;
 };
 
-ConeExit leave_normal_cone(const ConvexPolyhedron& b, VertexId u, Vec3Ref da) {
+//
+// Each facet's side is worked out once: around u (h, then twin(prev(h))) the
+// facet left of one halfedge is the facet right of the next. Where the walk
+// came in through an edge, the sides of that edge's two facets are known and
+// the search starts just after it, where the exit cannot be.
+ConeExit leave_normal_cone(const ConvexPolyhedron& b, const WalkPosition& at, const FacetSides& side) {
   const Mesh& mb = b.mesh();
-  auto side = [&](FaceId f) { return sign_dot(detail::normal_ref(b, f), da); };
-  for (HalfedgeId h : mb.outgoing_halfedges(u)) {
-    if (side(mb.face(Mesh::twin(h))) != Sign::negative) continue;
-    const Sign left = side(mb.face(h));
-    if (left == Sign::positive) return {h, true};
-    if (left == Sign::zero) return {h, false};
+  HalfedgeId start;
+  Sign right;
+  if (at.entered.is_valid()) {
+    start = Mesh::twin(mb.prev(at.entered));
+    right = Sign::negative;  // the entered edge's own facet
+  } else {
+    start = mb.halfedge(at.u);
+    right = side(mb.face(Mesh::twin(start)));
   }
+  HalfedgeId h = start;
+  do {
+    const Sign left = side(mb.face(h));
+    if (right == Sign::negative && left != Sign::negative) return {h, left == Sign::positive};
+    right = left;
+    h = Mesh::twin(mb.prev(h));
+  } while (h != start);
   return {};
 }
 
@@ -175,6 +227,7 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
   for (int i = 0; i < 3; ++i) subtract_into(da[i], a.vertex(ma.to(ha))[i], a.vertex(ma.from(ha))[i]);
   const ApproxVec3 da_approx = ApproxVec3::of(da);
   const Vec3Ref da_ref{da, da_approx};
+  const FacetSides side(b, normals_extent(b, scratch), da_ref);
   auto in_c2 = [&](VertexId v) { return std::binary_search(c2.begin(), c2.end(), v); };
 
   // The walk ends: it only moves forward along G (each exit is unique, see
@@ -193,7 +246,7 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
     if (at.event.is_valid()) {
       const FacetMaximisers m = maximisers_along_tangent(b, at.event, da);
       if (!m.tie.is_valid()) {
-        at = {m.best, FaceId()};
+        at = {m.best, FaceId(), HalfedgeId()};
       } else {
         // An edge of F parallel to d_A: G runs along its arc to the facet
         // point of the facet on its other side. (A linear function on the
@@ -208,12 +261,12 @@ void trace_edge_facets(const ConvexPolyhedron& a, HalfedgeId ha, const ConvexPol
     if (in_c2(at.u)) return;
     // G passes through the interior of u's normal cone here, so the exit
     // exists (file comment).
-    const ConeExit exit = leave_normal_cone(b, at.u, da_ref);
+    const ConeExit exit = leave_normal_cone(b, at, side);
     if (exit.crossing) {
       scratch.crossed.push_back(Mesh::twin(exit.h));
-      at.u = mb.to(exit.h);
+      at = {mb.to(exit.h), FaceId(), Mesh::twin(exit.h)};
     } else {
-      at.event = mb.face(exit.h);
+      at = {at.u, mb.face(exit.h), HalfedgeId()};
     }
   }
 }

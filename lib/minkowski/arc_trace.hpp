@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "plane_filter.hpp"
 #include "polyhedron_builder.hpp"
 
 namespace cvms::detail {
@@ -20,6 +21,10 @@ namespace cvms::detail {
 struct ArcTraceScratch {
   std::vector<HalfedgeId> crossed;  ///< the output, see trace_edge_facets
   Vec3 edge_direction;              ///< d_A of the latest edge traced
+  /// The extent of the normals' approximations of normals_of, gathered for
+  /// the first edge traced against it (the sides' semi-static filter).
+  PlaneFilterExtent normals_extent;
+  const ConvexPolyhedron* normals_of = nullptr;
 };
 
 /// For the edge of halfedge ha of a, whose two facets have the disjoint

@@ -14,6 +14,9 @@
 // P . N (error_bounds.hpp, "The dot-product scan"; contraction into FMA only
 // removes roundings), and b >= 2^-1000. For two points, fl(v - w) > fl(3 b)
 // proves P . N > W . N (error_bounds.hpp, "Comparing two filtered values").
+// For one point, v > b proves P . N >= v - b > 0 (and v < -b, P . N < 0):
+// the arc trace's sides of facets (the points are then the facets' normals
+// and the direction an edge's).
 // Out of the bound's range (huge coordinates, non-finite approximations) b
 // is infinite and nothing is proved (NaN compares false too).
 #pragma once
@@ -32,12 +35,19 @@ class DotOrderFilter {
   /// For direction n over a set of the given extent.
   DotOrderFilter(const ApproxVec3& n, const PlaneFilterExtent& extent) noexcept
       : n_{n.x.value, n.y.value, n.z.value},
-        margin_(filtered::difference_margin *
-                filtered::dot_filter_bound(n, extent.max_abs, extent.max_error)) {}
+        bound_(filtered::dot_filter_bound(n, extent.max_abs, extent.max_error)),
+        margin_(filtered::difference_margin * bound_) {}
 
   /// fl(p . n), in the order the bound assumes.
   [[nodiscard]] double value(const ApproxVec3& p) const noexcept {
     return p.x.value * n_[0] + p.y.value * n_[1] + p.z.value * n_[2];
+  }
+
+  /// The sign of P . N when v = value(p) proves it.
+  [[nodiscard]] std::optional<Sign> sign(double v) const noexcept {
+    if (v > bound_) return Sign::positive;
+    if (v < -bound_) return Sign::negative;
+    return std::nullopt;
   }
 
   /// The sign of P . N - W . N when the values v = value(p), w = value(q)
@@ -51,6 +61,7 @@ class DotOrderFilter {
 
  private:
   Coords n_;
+  double bound_;
   double margin_;
 };
 
