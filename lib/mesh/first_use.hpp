@@ -41,13 +41,13 @@ struct FirstUse {
 /// FirstUse from leader[i], the position of the first key equal to keys[i].
 inline FirstUse number_by_first_use(const ScratchVector<std::size_t>& leader) {
   FirstUse out;
-  out.index.resize(leader.size());
+  out.index.reserve(leader.size());  // not resized: no pass to zero what is written next
   for (std::size_t i = 0; i < leader.size(); ++i) {
     if (leader[i] == i) {
-      out.index[i] = static_cast<std::uint32_t>(out.first.size());
+      out.index.push_back(static_cast<std::uint32_t>(out.first.size()));
       out.first.push_back(i);
     } else {
-      out.index[i] = out.index[leader[i]];  // leader[i] < i: numbered already
+      out.index.push_back(out.index[leader[i]]);  // leader[i] < i: numbered already
     }
   }
   return out;

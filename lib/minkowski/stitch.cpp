@@ -169,7 +169,7 @@ const Approx& axis_of(const ApproxVec3& v, int axis) noexcept { return axis == 0
 // corners. Exact for a correct sum; only a reservation (never a bound that
 // is relied on) should a caller break the precondition.
 std::size_t euler_vertex_count(const PolygonSoup& faces) noexcept {
-  const std::size_t edges = faces.face_indices.size() / 2;
+  const std::size_t edges = faces.face_offsets.back() / 2;
   const std::size_t facets = faces.face_offsets.size() - 1;
   return edges + 2 > facets ? edges + 2 - facets : 0;
 }
@@ -280,15 +280,15 @@ void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
                                      NewVertex&& new_vertex) const {
   const std::uint64_t nb = b_.num_vertices();
   const std::uint64_t table_size = std::uint64_t{a_.num_vertices()} * nb;
-  const std::size_t corners = soup.face_indices.size();
+  const std::size_t corners = soup.face_offsets.back();
   if (table_size <= dense_table_limit || table_size <= 8 * std::uint64_t{corners}) {
     constexpr std::uint32_t unset = ~std::uint32_t{0};
     std::vector<std::uint32_t> index(table_size, unset);
-    std::size_t i = 0;
+    soup.face_indices.reserve(corners);
     for_each_corner([&](const VertexPair& p) {
       std::uint32_t& slot = index[p.a * nb + p.b];
       if (slot == unset) slot = new_vertex(p);
-      soup.face_indices[i++] = slot;
+      soup.face_indices.push_back(slot);
     });
     return;
   }
@@ -298,7 +298,7 @@ void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
   std::vector<std::uint64_t> keys;
   keys.reserve(corners);
   for_each_corner([&](const VertexPair& p) { keys.push_back(p.a * nb + p.b); });
-  const detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
+  detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
   const auto pair_of = [&](std::size_t j) -> VertexPair {
     const std::uint64_t key = keys[numbered.first[j]];
     return {static_cast<std::uint32_t>(key / nb), static_cast<std::uint32_t>(key % nb)};
@@ -308,13 +308,12 @@ void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
     if (prefetch_operands) prefetch_operand_vertices(j, vertices, pair_of);
     new_vertex(pair_of(j));
   }
-  for (std::size_t i = 0; i < corners; ++i) soup.face_indices[i] = numbered.index[i];
+  soup.face_indices = std::move(numbered.index);  // one number per corner, in corner order
 }
 
 PolygonSoup SumFacetBuilder::faces_without_points() const {
   PolygonSoup soup;
-  soup.face_offsets = corner_offsets();
-  soup.face_indices.resize(soup.face_offsets.back());
+  soup.face_offsets = corner_offsets();  // number_corners fills face_indices
   return soup;
 }
 
@@ -395,7 +394,7 @@ std::optional<Mesh> SumFacetBuilder::packed_mesh(std::vector<ApproxVec3>& approx
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
   PolygonSoup soup = faces_without_points();
-  soup.points.reserve(soup.face_indices.size() / 3 + 1);  // each vertex is in at least three facets
+  soup.points.reserve(soup.face_offsets.back() / 3 + 1);  // each vertex is in at least three facets
   if (approx != nullptr) approx->reserve(soup.points.capacity());
   Vec3 scratch;  // reused by store_sum's general path
   number_corners(soup, true, [&](const VertexPair& p) {

@@ -92,8 +92,8 @@ class SumFacetBuilder {
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.
   [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const;
-  // A soup with the facets' corner lists sized (offsets set, indices not
-  // yet) and no points.
+  // A soup with the facets' corner offsets set, no indices (number_corners
+  // writes them) and no points.
   [[nodiscard]] PolygonSoup faces_without_points() const;
   // Numbers the distinct vertex pairs by first use in facet order, calling
   // new_vertex(pair) -> its number for each in that order, and writes the
