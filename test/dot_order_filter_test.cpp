@@ -33,10 +33,26 @@ PlaneFilterExtent extent_of(const std::vector<ApproxVec3>& approx) {
   return extent;
 }
 
+// Every sign the filter claims for one point against the exact sign_dot.
+void check_sign_claims(const std::vector<Vec3>& exact, const std::vector<ApproxVec3>& approx, const Vec3& n,
+                       const ApproxVec3& n_approx, Tally& tally, std::uint64_t seed) {
+  const DotOrderFilter filter(n_approx, extent_of(approx));
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    const std::optional<Sign> claim = filter.sign(filter.value(approx[i]));
+    ++tally.total;
+    if (!claim) continue;
+    ++tally.decided;
+    ASSERT_EQ(*claim, sign_dot(exact[i], n)) << "point " << i << " (seed " << seed << ")";
+  }
+}
+
 // Every pair's claim against the exact compare_dot of the exact points,
-// with the given approximations of them.
+// with the given approximations of them, and every point's sign claim.
 void check_claims(const std::vector<Vec3>& exact, const std::vector<ApproxVec3>& approx, const Vec3& n,
                   const ApproxVec3& n_approx, Tally& tally, std::uint64_t seed) {
+  Tally signs;
+  check_sign_claims(exact, approx, n, n_approx, signs, seed);
+  if (::testing::Test::HasFatalFailure()) return;
   const DotOrderFilter filter(n_approx, extent_of(approx));
   for (std::size_t i = 0; i < exact.size(); ++i)
     for (std::size_t j = 0; j < exact.size(); ++j) {
@@ -57,17 +73,18 @@ void check_claims(const std::vector<Vec3>& exact, const Vec3& n, const ApproxVec
   check_claims(exact, approx, n, n_approx, tally, seed);
 }
 
-// Points of doubles on one plane dot(n, x) = c (rounded, so within a few
-// ulps of it) nudged by 0..3 ulps per coordinate, with some off the plane:
-// near ties are the hardest decisions for a filter.
-std::vector<Vec3> near_ties(std::mt19937_64& rng, const Vec3& n, double scale, int count) {
+// Points of doubles on one plane dot(n, x) = c, c = offset * scale * n_z
+// (rounded, so within a few ulps of it) nudged by 0..3 ulps per coordinate,
+// with some off the plane: near ties are the hardest decisions for a filter
+// (offset 0: near-zero values, the hardest signs).
+std::vector<Vec3> near_ties(std::mt19937_64& rng, const Vec3& n, double scale, int count, double offset = 1.0) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const double nx = to_double_nearest(n.x), ny = to_double_nearest(n.y), nz = to_double_nearest(n.z);
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i) {
     double x = scale * u(rng), y = scale * u(rng);
-    // On the plane dot(n, p) = scale * nz (n.z is never 0 below).
-    double z = (scale * nz - nx * x - ny * y) / nz;
+    // On the plane dot(n, p) = offset * scale * nz (n.z is never 0 below).
+    double z = (offset * scale * nz - nx * x - ny * y) / nz;
     if (i % 5 == 0) z = scale * u(rng);
     for (double* c : {&x, &y, &z})
       for (int nudge = static_cast<int>(rng() % 4); nudge > 0; --nudge)
@@ -189,6 +206,44 @@ TEST(DotOrderFilter, ClaimsAreExactWithACoarseDirection) {
   EXPECT_GT(tally.decided, tally.total / 10) << tally.decided << " of " << tally.total;
 }
 
+TEST(DotOrderFilter, SignClaimsAreExactNearThePlaneThroughTheOrigin) {
+  // Points within a few ulps of dot(n, x) = 0, exact zeros among them
+  // (multiples of a vector orthogonal to n), at every scale, with exact
+  // and with coarse approximations (multiples of 2^-12, error 2^-13, under
+  // which exact zeros have nonzero values).
+  const double scales[] = {1.0, 1e-5, 1e5, 0x1p290, 1e-150, 0x1p-1060};
+  for (double scale : scales) {
+    std::ostringstream trace;
+    trace << "scale " << std::hexfloat << scale;
+    SCOPED_TRACE(trace.str());
+    Tally tally;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      std::mt19937_64 rng(seed);
+      const Vec3 n{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
+                   static_cast<long>(rng() % 1000) + 1};
+      std::vector<Vec3> exact = near_ties(rng, n, scale, 20, 0.0);
+      const Vec3 along = cross(n, Vec3{1, 2, 3});
+      for (int i = 0; i < 5; ++i)
+        exact.push_back((Rational(scale) * Rational(static_cast<long>(rng() % 33) - 16, 16)) * along);
+      std::vector<ApproxVec3> approx;
+      for (const Vec3& p : exact) approx.push_back(ApproxVec3::of(p));
+      check_sign_claims(exact, approx, n, ApproxVec3::of(n), tally, seed);
+      if (HasFatalFailure()) return;
+      if (scale != 1.0) continue;
+      for (ApproxVec3& a : approx) {
+        Approx* c[3] = {&a.x, &a.y, &a.z};
+        for (Approx* k : c) *k = {std::round(k->value * 4096.0) / 4096.0, 1.0 / 8192 + 1e-12};
+      }
+      check_sign_claims(exact, approx, n, ApproxVec3::of(n), tally, seed);
+      if (HasFatalFailure()) return;
+    }
+    // Below 2^-1000 the bound's underflow term leaves every sign to the exact predicate.
+    if (scale > 0x1p-900) {
+      EXPECT_GT(tally.decided, 0) << "of " << tally.total;
+    }
+  }
+}
+
 TEST(DotOrderFilter, BeyondItsRangeItClaimsNothing) {
   std::mt19937_64 rng(3);
   const Vec3 n{1, 2, 3};
@@ -204,6 +259,8 @@ TEST(DotOrderFilter, BeyondItsRangeItClaimsNothing) {
   nan_extent.add_value(std::nan(""));
   const DotOrderFilter blind(ApproxVec3::of(n), nan_extent);
   EXPECT_FALSE(blind.compare(1.0, -1.0).has_value());
+  EXPECT_FALSE(blind.sign(1.0).has_value());
+  for (const ApproxVec3& a : approx) EXPECT_FALSE(filter.sign(filter.value(a)).has_value());
   // Nor does a direction whose approximation is not finite, or beyond the
   // bound's range.
   PlaneFilterExtent unit;
@@ -215,6 +272,7 @@ TEST(DotOrderFilter, BeyondItsRangeItClaimsNothing) {
     const DotOrderFilter filter(direction, unit);
     EXPECT_FALSE(filter.compare(1.0, -1.0).has_value());
     EXPECT_FALSE(filter.compare(-1e300, 1e300).has_value());
+    EXPECT_FALSE(filter.sign(1e300).has_value());
   }
 }
 

@@ -117,35 +117,29 @@ TEST(Mesh, EveryHalfedgeAppearsOnceInFacesAndFans) {
 // cycle once, in the order of the one from the stored halfedge, rotated.
 TEST(Mesh, CirculatorsStartAnywhereInTheirCycle) {
   Mesh m = Mesh::from_soup(test::subdivided(test::prism(), 1));
-  using Kind = HalfedgeCirculator::Kind;
-  const auto expect_rotation = [](const std::vector<HalfedgeId>& from_stored, const std::vector<HalfedgeId>& got,
-                                  std::size_t offset) {
-    ASSERT_EQ(got.size(), from_stored.size());
-    for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], from_stored[(offset + i) % got.size()]);
+  // Each rotation of `stored`, the cycle from its stored halfedge, from a
+  // circulator started at its k-th halfedge.
+  const auto expect_rotations = [&](const std::vector<HalfedgeId>& stored, HalfedgeCirculator::Kind kind,
+                                    const std::string& cycle) {
+    for (std::size_t k = 0; k < stored.size(); ++k) {
+      std::vector<HalfedgeId> got;
+      for (HalfedgeId h : HalfedgeCirculator(&m, stored[k], kind)) {
+        got.push_back(h);
+        ASSERT_LE(got.size(), stored.size()) << cycle << " from its halfedge " << k;
+      }
+      ASSERT_EQ(got.size(), stored.size()) << cycle << " from its halfedge " << k;
+      for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], stored[(k + i) % got.size()]) << cycle;
+    }
   };
   for (VertexId v : m.vertices()) {
     std::vector<HalfedgeId> stored;
     for (HalfedgeId h : m.outgoing_halfedges(v)) stored.push_back(h);
-    for (std::size_t k = 0; k < stored.size(); ++k) {
-      std::vector<HalfedgeId> got;
-      for (HalfedgeId h : HalfedgeCirculator(&m, stored[k], Kind::vertex)) {
-        got.push_back(h);
-        ASSERT_LE(got.size(), stored.size()) << "vertex " << v.index() << " from its halfedge " << k;
-      }
-      expect_rotation(stored, got, k);
-    }
+    expect_rotations(stored, HalfedgeCirculator::Kind::vertex, "vertex " + std::to_string(v.index()));
   }
   for (FaceId f : m.faces()) {
     std::vector<HalfedgeId> stored;
     for (HalfedgeId h : m.face_halfedges(f)) stored.push_back(h);
-    for (std::size_t k = 0; k < stored.size(); ++k) {
-      std::vector<HalfedgeId> got;
-      for (HalfedgeId h : HalfedgeCirculator(&m, stored[k], Kind::face)) {
-        got.push_back(h);
-        ASSERT_LE(got.size(), stored.size()) << "face " << f.index() << " from its halfedge " << k;
-      }
-      expect_rotation(stored, got, k);
-    }
+    expect_rotations(stored, HalfedgeCirculator::Kind::face, "face " + std::to_string(f.index()));
   }
 }
 
