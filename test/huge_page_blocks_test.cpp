@@ -27,7 +27,7 @@ namespace cvms::detail {
 namespace {
 
 constexpr std::size_t MiB = std::size_t{1} << 20;
-constexpr BlockLife lives[] = {BlockLife::scratch, BlockLife::kept};
+constexpr BlockLife lives[] = {BlockLife::scratch, BlockLife::kept, BlockLife::slab};
 
 unsigned char pattern(std::size_t i, std::size_t seed) { return static_cast<unsigned char>(i * 7 + seed); }
 
@@ -52,10 +52,13 @@ bool page_mapped(const unsigned char* address) {
   return mincore(reinterpret_cast<void*>(page), 1, &residency) == 0 || errno != ENOMEM;
 }
 
-// The length a mapped block takes (huge_page_blocks.hpp).
+// The length a mapped block takes (huge_page_blocks.hpp): whole huge pages
+// for scratch, and for a slab when they add at most a quarter.
 std::size_t mapped_length(std::size_t bytes, BlockLife life) {
-  const std::size_t unit = life == BlockLife::scratch ? 2 * (std::size_t{1} << 20) : page_bytes();
-  return (bytes + unit - 1) / unit * unit;
+  const std::size_t huge = 2 * MiB, whole_huge_pages = (bytes + huge - 1) / huge * huge;
+  if (life == BlockLife::scratch || (life == BlockLife::slab && 4 * (whole_huge_pages - bytes) <= bytes))
+    return whole_huge_pages;
+  return (bytes + page_bytes() - 1) / page_bytes() * page_bytes();
 }
 #endif
 
@@ -77,6 +80,9 @@ TEST(HugePageBlocks, EveryByteOfEverySizeIsUsableWhileOthersComeAndGo) {
       auto* block = static_cast<unsigned char*>(allocate_block(sizes[k], life));
       ASSERT_NE(block, nullptr);
       EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % alignof(std::max_align_t), 0u);
+      if (life == BlockLife::slab) {
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % slab_block_alignment, 0u);
+      }
       if (on_huge_pages(sizes[k], life)) {
         EXPECT_EQ(reinterpret_cast<std::uintptr_t>(block) % (2 * MiB), 0u);
       }
@@ -101,8 +107,8 @@ TEST(HugePageBlocks, EveryByteOfEverySizeIsUsableWhileOthersComeAndGo) {
 TEST(HugePageBlocks, AMappedBlockHasItsLengthAndIsWhollyUnmappedWhenFreed) {
 #if defined(__linux__)
   for (const BlockLife life : lives) {
-    for (const std::size_t bytes :
-         {scratch_threshold, scratch_threshold + 5000, kept_threshold, kept_threshold + 5000, 5 * MiB + 3}) {
+    for (const std::size_t bytes : {scratch_threshold, scratch_threshold + 5000, kept_threshold,
+                                    kept_threshold + 5000, 5 * MiB + 3, 7 * MiB}) {
       if (!on_huge_pages(bytes, life)) continue;
       SCOPED_TRACE(bytes);
       auto* block = static_cast<unsigned char*>(allocate_block(bytes, life));
@@ -130,6 +136,8 @@ TEST(HugePageBlocks, LinuxBuildsWithoutSanitizersMapLargeBlocks) {
 #endif
   EXPECT_EQ(on_huge_pages(scratch_threshold, BlockLife::scratch), huge_page_blocks_enabled());
   EXPECT_EQ(on_huge_pages(kept_threshold, BlockLife::kept), huge_page_blocks_enabled());
+  EXPECT_EQ(on_huge_pages(kept_threshold, BlockLife::slab), huge_page_blocks_enabled());
+  EXPECT_FALSE(on_huge_pages(kept_threshold - 1, BlockLife::slab));
   EXPECT_FALSE(on_huge_pages(scratch_threshold - 1, BlockLife::scratch));
   EXPECT_FALSE(on_huge_pages(kept_threshold - 1, BlockLife::kept));
 }

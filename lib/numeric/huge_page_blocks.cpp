@@ -26,9 +26,11 @@ namespace {
 // The mapping's length for `bytes` (see the file comment).
 // \pre bytes <= max_mapped_bytes.
 std::size_t mapped_length(std::size_t bytes, BlockLife life) noexcept {
-  const std::size_t unit =
-      life == BlockLife::scratch ? huge_page_bytes : static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-  return (bytes + unit - 1) & ~(unit - 1);
+  const auto rounded = [bytes](std::size_t unit) { return (bytes + unit - 1) & ~(unit - 1); };
+  const std::size_t whole_huge_pages = rounded(huge_page_bytes);
+  if (life == BlockLife::scratch || (life == BlockLife::slab && whole_huge_pages - bytes <= bytes / 4))
+    return whole_huge_pages;
+  return rounded(static_cast<std::size_t>(sysconf(_SC_PAGESIZE)));
 }
 
 // Beyond this, the rounding and the alignment slack would overflow, or the
@@ -79,6 +81,7 @@ void* allocate_block(std::size_t bytes, [[maybe_unused]] BlockLife life) {
     return block;
   }
 #endif
+  if (life == BlockLife::slab) return ::operator new (bytes, std::align_val_t{slab_block_alignment});
   return ::operator new(bytes);
 }
 
@@ -91,6 +94,10 @@ void free_block(void* block, [[maybe_unused]] std::size_t bytes, [[maybe_unused]
     return;
   }
 #endif
+  if (life == BlockLife::slab) {
+    ::operator delete (block, std::align_val_t{slab_block_alignment});
+    return;
+  }
   ::operator delete(block);  // unsized: clang offers the sized form only with -fsized-deallocation
 }
 

@@ -22,7 +22,11 @@
 //    a few faults.
 //  - Kept, part of a result that may live long: from 2 MiB on, rounded up
 //    to the page size only, so that every whole 2 MiB of it is a huge page
-//    and the tail takes what it touches, as from malloc. The limb arena's
+//    and the tail takes what it touches, as from malloc.
+//  - Slab, one block for all of a result's arrays (result_slab.hpp): kept,
+//    and rounded up to whole 2 MiB pages when that adds at most a quarter,
+//    so that its tail is one more fault rather than hundreds. Aligned to 64
+//    bytes also when it comes from operator new. The limb arena's
 //    blocks past 1 MiB are 2 MiB, wholly resident once first written: a
 //    result may hold up to one partly used 2 MiB block per arena more than
 //    before (a sum on two threads keeps two arenas).
@@ -45,6 +49,8 @@
 #include <utility>
 #include <vector>
 
+#include "cvms/kept_allocator.hpp"
+
 // Sanitizers that check memory see only blocks from their own allocator;
 // mapping needs Linux's MADV_HUGEPAGE. Where this is defined, every block
 // comes from operator new.
@@ -66,14 +72,16 @@ extern "C" void cvms_huge_pages_mapped(std::ptrdiff_t bytes) noexcept;
 namespace cvms::detail {
 
 /// How long a block lives (see the file comment).
-enum class BlockLife { scratch, kept };
+enum class BlockLife { scratch, kept, slab };
 
 /// The size of a huge page (x86-64 and 4 KiB-page arm64 Linux).
 inline constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
 /// Scratch blocks of at least this many bytes go on huge pages.
 inline constexpr std::size_t scratch_threshold = std::size_t{1} << 18;
-/// Kept blocks of at least this many bytes (one huge page) do.
+/// Kept and slab blocks of at least this many bytes (one huge page) do.
 inline constexpr std::size_t kept_threshold = huge_page_bytes;
+/// The alignment of slab blocks.
+inline constexpr std::size_t slab_block_alignment = 64;
 
 /// Whether this build maps large blocks itself at all.
 bool huge_page_blocks_enabled() noexcept;
@@ -121,9 +129,10 @@ struct HugePageAllocator {
 template <class T>
 using ScratchVector = std::vector<T, HugePageAllocator<T, BlockLife::scratch>>;
 
-/// A vector that a result keeps.
+/// A vector that a result keeps: a kept block of its own, or carved from a
+/// result's slab when made with its allocator (result_slab.hpp).
 template <class T>
-using KeptVector = std::vector<T, HugePageAllocator<T, BlockLife::kept>>;
+using KeptVector = std::vector<T, KeptAllocator<T>>;
 
 /// An array of n uninitialised T (trivial types only) from allocate_block:
 /// nothing is written, so that no page is touched before its first use.
