@@ -19,6 +19,7 @@
 #include "facet_planes.hpp"
 #include "limb_arena.hpp"
 #include "research_options.hpp"
+#include "result_slab.hpp"
 #include "support/hand_solids.hpp"
 #include "support/minkowski_check.hpp"
 #include "support/oracle.hpp"
@@ -385,6 +386,42 @@ TEST(ArenaStorage, SumVerticesAndNormalsAreMadeOnceForConcurrentReaders) {
       SCOPED_TRACE(std::to_string(threads) + (dyadic ? " threads, dyadic" : " threads, not dyadic"));
       expect_made_once_for_concurrent_readers(a, b, threads, dyadic, expected);
     }
+  }
+}
+
+// A sum's packed vertices and its mesh's connectivity are carved from one
+// slab, its packed normals and their approximations from another
+// (result_slab.hpp: two blocks on huge pages instead of a dozen that fault
+// in 4 KiB at a time), each sized exactly by its plan: every byte planned is
+// carved, nothing falls back. The mesh's arrays are not visible here; had
+// the mesh not carved its part, its slab would not be full, and had it
+// carved more, a refusal would say so.
+TEST(ArenaStorage, ASumsArraysAreCarvedFromTwoSlabsSizedExactly) {
+  const ConvexPolyhedron a = shapes::geodesic_sphere(3);
+  const ConvexPolyhedron b = shapes::rotated_geodesic_sphere(3).translated(Vec3{Rational(1, 8), 0, 5});
+  for (const unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    Options options;
+    options.threads = threads;
+    detail::ResearchOptions research;
+    research.worker_minimums = {0, 0, true};
+    const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
+    ASSERT_NE(p.mesh().packed_positions(), nullptr);
+    ASSERT_NE(p.planes().packed_normals, nullptr);
+    const detail::ResultSlab* slab = p.mesh().packed_positions()->slab();
+    ASSERT_NE(slab, nullptr);
+    const detail::ResultSlab* planes_slab = p.planes().packed_normals->packed().slab();
+    ASSERT_NE(planes_slab, nullptr);
+    EXPECT_NE(planes_slab, slab);
+    EXPECT_TRUE(slab->holds(&p.mesh().packed_positions()->coordinate(0, 0)));
+    EXPECT_TRUE(planes_slab->holds(&p.planes().packed_normals->packed().coordinate(0, 0)));
+    EXPECT_TRUE(planes_slab->holds(&p.planes().normal_approx[0]));
+    for (const detail::ResultSlab* s : {slab, planes_slab}) {
+      EXPECT_FALSE(s->refused()) << "an array did not fit: the plan fell short";
+      EXPECT_EQ(s->carved(), s->size()) << "the plan and what was carved differ";
+    }
+    const ConvexPolyhedron copy = p;  // shares the packed values, and the slab with them
+    EXPECT_EQ(copy.mesh().packed_positions()->slab(), slab);
   }
 }
 

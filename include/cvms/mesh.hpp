@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "cvms/kept_allocator.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/vec.hpp"
 
@@ -277,28 +278,36 @@ class Mesh {
   [[nodiscard]] Mesh with_faces_from_smallest_vertex(std::vector<Vec3> positions,
                                                      const detail::DistinctPoints& promise) const;
   // from_soup(faces, promise) for a soup without points whose points are
-  // `positions`, kept packed until a caller asks for Vec3s.
+  // `positions`, kept packed until a caller asks for Vec3s; the connectivity
+  // carved from `slab` when it has room (kept_allocator.hpp).
   static Mesh from_soup(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
-                        const detail::DistinctPoints& promise);
+                        const detail::DistinctPoints& promise,
+                        const std::shared_ptr<detail::ResultSlab>& slab);
   // The exact positions as packed dyadics if the mesh keeps them so, else
   // null: what the library's own readers take instead of making Vec3s.
   [[nodiscard]] const detail::DyadicPoints* packed_positions() const noexcept;
   /// \endcond
 
  private:
-  static Mesh build(PolygonSoup soup, bool check_points, std::size_t num_points);
+  // The connectivity's arrays: on their own, or carved from one slab with
+  // the rest of a result (kept_allocator.hpp).
+  template <class T>
+  using Array = std::vector<T, detail::KeptAllocator<T>>;
+
+  static Mesh build(PolygonSoup soup, bool check_points, std::size_t num_points,
+                    const std::shared_ptr<detail::ResultSlab>& slab);
   [[nodiscard]] const std::vector<Vec3>& made_positions() const;
   // This connectivity with the given positions; no checks.
   [[nodiscard]] Mesh same_connectivity(std::vector<Vec3> positions) const;
 
   std::vector<Vec3> positions_;  // empty when packed_positions_ holds them
   std::shared_ptr<const detail::PackedVectors> packed_positions_;
-  std::vector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
-  std::vector<VertexId> he_to_;
-  std::vector<HalfedgeId> he_next_;
-  std::vector<HalfedgeId> he_prev_;
-  std::vector<FaceId> he_face_;
-  std::vector<HalfedgeId> face_he_;
+  Array<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
+  Array<VertexId> he_to_;
+  Array<HalfedgeId> he_next_;
+  Array<HalfedgeId> he_prev_;
+  Array<FaceId> he_face_;
+  Array<HalfedgeId> face_he_;
 };
 
 inline HalfedgeCirculator::iterator& HalfedgeCirculator::iterator::operator++() {

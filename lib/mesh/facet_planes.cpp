@@ -56,8 +56,15 @@ FacetPlanes sized_planes(std::size_t facets) {
 }  // namespace
 
 std::shared_ptr<PackedVectors> size_packed_planes(FacetPlanes& planes, std::size_t facets) {
-  planes.normal_approx.resize(facets);
-  auto normals = std::make_shared<PackedVectors>(DyadicPoints(facets));
+  // A slab of their own rather than a part of the vertices' and the mesh's:
+  // on one thread they are made after the mesh's scratch is gone, which
+  // keeps the peak where it was.
+  SlabPlan plan;
+  plan.add<ApproxVec3>(facets);
+  DyadicPoints::plan(plan, facets);
+  const std::shared_ptr<ResultSlab> slab = ResultSlab::make(plan);
+  planes.normal_approx = KeptVector<ApproxVec3>(facets, carving_from<ApproxVec3>(slab));
+  auto normals = std::make_shared<PackedVectors>(DyadicPoints(facets, carving_from<PackedDyadic>(slab)));
   planes.packed_normals = normals;
   return normals;
 }

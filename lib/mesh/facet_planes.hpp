@@ -32,6 +32,7 @@
 #include "huge_page_blocks.hpp"
 #include "limb_arena.hpp"
 #include "packed_vectors.hpp"
+#include "result_slab.hpp"
 
 namespace cvms::detail {
 
@@ -58,8 +59,9 @@ struct FacetPlanes {
 };
 
 /// Sizes planes for `facets` facets without offsets, their normals packed
-/// (all 0, approximations too): the returned points, which planes shares,
-/// are for the builder to write before anyone reads them.
+/// (all 0, approximations too), both arrays carved from one slab of their
+/// own (result_slab.hpp): the returned points, which planes shares, are for
+/// the builder to write before anyone reads them.
 [[nodiscard]] std::shared_ptr<PackedVectors> size_packed_planes(FacetPlanes& planes, std::size_t facets);
 
 /// The plane triple of face f: its first three corners, in order (not

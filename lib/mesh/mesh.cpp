@@ -253,19 +253,30 @@ std::uint32_t check_edge_groups(const KeyedCorners& keyed, const std::vector<std
 // The connectivity arrays of the mesh (see Mesh's members), and the number of
 // halfedges leaving each vertex.
 struct Connectivity {
-  std::vector<HalfedgeId> vertex_he;
-  std::vector<VertexId> he_to;
-  std::vector<HalfedgeId> he_next;
-  std::vector<HalfedgeId> he_prev;
-  std::vector<FaceId> he_face;
-  std::vector<HalfedgeId> face_he;
+  template <class T>
+  using Array = std::vector<T, detail::KeptAllocator<T>>;
+
+  explicit Connectivity(const std::shared_ptr<detail::ResultSlab>& slab)
+      : vertex_he(Array<HalfedgeId>::allocator_type(slab)),
+        he_to(Array<VertexId>::allocator_type(slab)),
+        he_next(Array<HalfedgeId>::allocator_type(slab)),
+        he_prev(Array<HalfedgeId>::allocator_type(slab)),
+        he_face(Array<FaceId>::allocator_type(slab)),
+        face_he(Array<HalfedgeId>::allocator_type(slab)) {}
+
+  Array<HalfedgeId> vertex_he;
+  Array<VertexId> he_to;
+  Array<HalfedgeId> he_next;
+  Array<HalfedgeId> he_prev;
+  Array<FaceId> he_face;
+  Array<HalfedgeId> face_he;
   std::vector<std::uint32_t> out_degree;
 };
 
 // Edge e's corners are keyed[2e] and keyed[2e + 1]; halfedge 2e runs from the
 // smaller to the larger vertex.
 Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, std::uint32_t num_edges,
-                            std::uint32_t n) {
+                            std::uint32_t n, const std::shared_ptr<detail::ResultSlab>& slab) {
   const auto& indices = soup.face_indices;
   const auto& offsets = soup.face_offsets;
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
@@ -278,7 +289,7 @@ Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, 
       corner_he[c] = HalfedgeId(2 * e + (ascending ? 0u : 1u));
     }
   }
-  Connectivity m;
+  Connectivity m(slab);
   m.he_to.resize(num_corners);
   m.he_next.resize(num_corners);
   m.he_prev.resize(num_corners);
@@ -334,19 +345,19 @@ std::uint32_t Mesh::degree(FaceId f) const noexcept {
 
 Mesh Mesh::from_soup(PolygonSoup soup) {
   const std::size_t n = soup.points.size();
-  return build(std::move(soup), true, n);
+  return build(std::move(soup), true, n, nullptr);
 }
 
 Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) {
   const std::size_t n = soup.points.size();
-  return build(std::move(soup), false, n);
+  return build(std::move(soup), false, n, nullptr);
 }
 
 Mesh Mesh::from_soup(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
-                     const detail::DistinctPoints&) {
+                     const detail::DistinctPoints&, const std::shared_ptr<detail::ResultSlab>& slab) {
   if (!faces.points.empty())
     throw Error(ErrorCategory::invalid_argument, "from_soup: packed positions come with a soup without points");
-  Mesh m = build(std::move(faces), false, positions->packed().size());
+  Mesh m = build(std::move(faces), false, positions->packed().size(), slab);
   m.packed_positions_ = std::move(positions);
   return m;
 }
@@ -357,7 +368,8 @@ const detail::DyadicPoints* Mesh::packed_positions() const noexcept {
 
 const std::vector<Vec3>& Mesh::made_positions() const { return packed_positions_->vectors(); }
 
-Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points) {
+Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points,
+                 const std::shared_ptr<detail::ResultSlab>& slab) {
   check_soup_shape(soup, num_points);
   const auto n = static_cast<std::uint32_t>(num_points);
   check_faces(soup, n);
@@ -367,7 +379,7 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points) {
   }
   const KeyedCorners keyed = corners_by_edge(soup.face_indices, soup.face_offsets, n);
   const std::uint32_t num_edges = check_edge_groups(keyed, soup.face_indices, soup.face_offsets);
-  Connectivity c = link_halfedges(soup, keyed, num_edges, n);
+  Connectivity c = link_halfedges(soup, keyed, num_edges, n, slab);
 
   Mesh m;
   m.positions_ = std::move(soup.points);

@@ -34,8 +34,17 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup) {
 
 Mesh output_mesh(PolygonSoup soup) { return Mesh::from_soup(std::move(soup), DistinctPoints{}); }
 
-Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions) {
-  return Mesh::from_soup(std::move(faces), std::move(positions), DistinctPoints{});
+Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions,
+                 const std::shared_ptr<ResultSlab>& slab) {
+  return Mesh::from_soup(std::move(faces), std::move(positions), DistinctPoints{}, slab);
+}
+
+void plan_output_mesh(SlabPlan& plan, std::size_t vertices, std::size_t corners, std::size_t faces) {
+  // Mesh::build's arrays: an outgoing halfedge per vertex, four per halfedge
+  // (to, next, prev, face) and one per face.
+  plan.add<HalfedgeId>(vertices);
+  plan.add<VertexId>(corners).add<HalfedgeId>(corners).add<HalfedgeId>(corners).add<FaceId>(corners);
+  plan.add<HalfedgeId>(faces);
 }
 
 ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes, LimbArena limbs) {

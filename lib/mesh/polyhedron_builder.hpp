@@ -60,8 +60,13 @@ ConvexPolyhedron trusted_polyhedron(PolygonSoup soup);
 /// Mesh::from_soup. \pre the points are canonical and pairwise distinct.
 Mesh output_mesh(PolygonSoup soup);
 /// The same for a soup without points whose points are packed (made into
-/// Vec3s only if a caller asks). \pre as above.
-Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions);
+/// Vec3s only if a caller asks), the connectivity carved from slab when it
+/// is not null and has room. \pre as above.
+Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions,
+                 const std::shared_ptr<ResultSlab>& slab);
+/// Adds to plan the room output_mesh carves for a mesh of `vertices`
+/// vertices, `corners` face corners (halfedges) and `faces` faces.
+void plan_output_mesh(SlabPlan& plan, std::size_t vertices, std::size_t corners, std::size_t faces);
 
 /// The polyhedron from its mesh, the approximations of its vertices and the
 /// planes of its faces (index by index; without offsets, the polyhedron

@@ -295,7 +295,7 @@ void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
   // Sparse: numbered by sorting, not hashing (std::hash of an integer is
   // the identity, so keys j * nb + v that an input lines up modulo the
   // bucket count would make a hash map quadratic; issue 18, item 1).
-  std::vector<std::uint64_t> keys;
+  ScratchVector<std::uint64_t> keys;  // on huge pages: fresh memory at every sum (huge_page_blocks.hpp)
   keys.reserve(corners);
   for_each_corner([&](const VertexPair& p) { keys.push_back(p.a * nb + p.b); });
   detail::FirstUse numbered = detail::first_use(keys, std::less<>{});
@@ -374,10 +374,18 @@ bool SumFacetBuilder::write_packed_vertices(std::span<const VertexPair> pairs, s
   return true;
 }
 
-std::optional<Mesh> SumFacetBuilder::packed_mesh(std::vector<ApproxVec3>& approx) const {
-  PolygonSoup faces = faces_without_points();
+std::shared_ptr<ResultSlab> SumFacetBuilder::output_slab(const PolygonSoup& faces) const {
+  const std::size_t vertices = euler_vertex_count(faces);
+  SlabPlan plan;
+  DyadicPoints::plan(plan, vertices);
+  plan_output_mesh(plan, vertices, faces.face_offsets.back(), num_facets());
+  return ResultSlab::make(plan);
+}
+
+std::optional<Mesh> SumFacetBuilder::packed_mesh(PolygonSoup faces, std::vector<ApproxVec3>& approx,
+                                                 const std::shared_ptr<ResultSlab>& slab) const {
   const std::size_t count = euler_vertex_count(faces);
-  DyadicPoints points;
+  DyadicPoints points(carving_from<PackedDyadic>(slab));
   points.reserve(count);
   approx.reserve(count);
   Vec3 scratch;  // for the sums that do not fit machine words
@@ -389,7 +397,7 @@ std::optional<Mesh> SumFacetBuilder::packed_mesh(std::vector<ApproxVec3>& approx
     return static_cast<std::uint32_t>(j);
   });
   if (!dyadic) return std::nullopt;
-  return output_mesh(std::move(faces), std::make_shared<const PackedVectors>(std::move(points)));
+  return output_mesh(std::move(faces), std::make_shared<const PackedVectors>(std::move(points)), slab);
 }
 
 PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
@@ -476,7 +484,9 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   // result keeps.
   LimbArena limbs;
   std::vector<ApproxVec3> vertex_approx;
-  std::optional<Mesh> mesh = packed_mesh(vertex_approx);
+  PolygonSoup faces = faces_without_points();
+  const std::shared_ptr<ResultSlab> slab = output_slab(faces);
+  std::optional<Mesh> mesh = packed_mesh(std::move(faces), vertex_approx, slab);
   if (!mesh) {  // inputs with other rationals than dyadic ones: Vec3s
     vertex_approx.clear();
     mesh = output_mesh(soup(&vertex_approx, &limbs));
@@ -575,6 +585,8 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
       }
     });
   };
+  PolygonSoup soup = faces_without_points();
+  const std::shared_ptr<ResultSlab> slab = output_slab(soup);
   Mesh mesh;
   {
     Worker worker;
@@ -598,7 +610,6 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
     }
     CountDownOnce meshed_done(meshed);
     try {
-      PolygonSoup soup = faces_without_points();
       pairs.reserve(euler_vertex_count(soup));
       number_corners(soup, false, [&](const VertexPair& p) {
         pairs.push_back(p);
@@ -608,8 +619,9 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
       // The topology reads only the number of points: both threads pack
       // their values into the mesh's points once it stands. (The mesh is
       // this function's until it returns: nothing reads them before.)
-      positions = std::make_shared<PackedVectors>(DyadicPoints(pairs.size()));
-      mesh = output_mesh(std::move(soup), positions);
+      positions =
+          std::make_shared<PackedVectors>(DyadicPoints(pairs.size(), carving_from<PackedDyadic>(slab)));
+      mesh = output_mesh(std::move(soup), positions, slab);
       vertices.set_size(pairs.size());
       meshed_done();
       sized.wait();

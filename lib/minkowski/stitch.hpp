@@ -129,9 +129,15 @@ class SumFacetBuilder {
   // write_packed_vertex for the vertices [begin, end) of pairs; false as soon as one fails.
   bool write_packed_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
                              const PackedOutput& out, Vec3& scratch) const;
-  // The output's mesh with its points packed, and their approximations; or
-  // nullopt when a vertex is not dyadic.
-  [[nodiscard]] std::optional<Mesh> packed_mesh(std::vector<ApproxVec3>& approx) const;
+  // The output's mesh of faces (faces_without_points()) with its points
+  // packed, and their approximations; or nullopt when a vertex is not dyadic.
+  // Points and connectivity are carved from slab.
+  [[nodiscard]] std::optional<Mesh> packed_mesh(PolygonSoup faces, std::vector<ApproxVec3>& approx,
+                                                const std::shared_ptr<ResultSlab>& slab) const;
+  // One slab for the output's packed points and its mesh's connectivity
+  // (result_slab.hpp; the planes take one of their own: size_packed_planes),
+  // sized from the counts the search fixed: faces are faces_without_points().
+  [[nodiscard]] std::shared_ptr<ResultSlab> output_slab(const PolygonSoup& faces) const;
   // write_vertex for the vertices [begin, end) of pairs. Threads may write
   // disjoint ranges.
   void write_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,

@@ -30,6 +30,7 @@
 #include "dyadic.hpp"
 #include "huge_page_blocks.hpp"
 #include "limb_arena.hpp"
+#include "result_slab.hpp"
 
 namespace cvms::detail {
 
@@ -71,8 +72,13 @@ void unpack_dyadic(const PackedDyadic& value, Rational& out);
 class DyadicPoints {
  public:
   DyadicPoints() = default;
-  /// count points at the origin.
-  explicit DyadicPoints(std::size_t count) : coordinates_(3 * count) {}
+  /// No points yet, their coordinates to be carved from allocator's slab.
+  explicit DyadicPoints(const KeptAllocator<PackedDyadic>& allocator) : coordinates_(allocator) {}
+  /// count points at the origin (coordinates carved from allocator's slab, if any).
+  explicit DyadicPoints(std::size_t count, const KeptAllocator<PackedDyadic>& allocator = {})
+      : coordinates_(3 * count, allocator) {}
+  /// Adds to plan the room for count points (result_slab.hpp).
+  static void plan(SlabPlan& plan, std::size_t count) { plan.add<PackedDyadic>(3 * count); }
 
   [[nodiscard]] std::size_t size() const noexcept { return coordinates_.size() / 3; }
   /// Room for count points without reallocating.
@@ -103,6 +109,8 @@ class DyadicPoints {
   /// Keeps arena's blocks: the limbs of long numerators packed through it
   /// stay valid as long as these points live.
   void keep_limbs(LimbArena&& arena) { limbs_.absorb(std::move(arena)); }
+  /// The slab the coordinates were carved from, or null (result_slab.hpp).
+  [[nodiscard]] const ResultSlab* slab() const noexcept { return coordinates_.get_allocator().slab().get(); }
   /// The arena the points keep, for a single writer.
   [[nodiscard]] LimbArena& limbs() noexcept { return limbs_; }
 
