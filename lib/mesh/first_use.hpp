@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <numeric>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -35,7 +36,7 @@ namespace cvms::detail {
 /// first use of key number k.
 struct FirstUse {
   std::vector<std::uint32_t> index;
-  std::vector<std::size_t> first;
+  ScratchVector<std::size_t> first;
 };
 
 /// FirstUse from leader[i], the position of the first key equal to keys[i].
@@ -56,8 +57,8 @@ inline FirstUse number_by_first_use(const ScratchVector<std::size_t>& leader) {
 /// FirstUse of `keys` under the strict weak order `less` (its equivalence
 /// is the keys' equality), by a stable comparison sort: O(n log n)
 /// comparisons.
-template <class Key, class Less>
-FirstUse first_use_by_comparison(const std::vector<Key>& keys, Less less) {
+template <class Keys, class Less>
+FirstUse first_use_by_comparison(const Keys& keys, Less less) {
   ScratchVector<std::size_t> order(keys.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   // Stable: within a run of equal keys the first use comes first.
@@ -72,7 +73,7 @@ FirstUse first_use_by_comparison(const std::vector<Key>& keys, Less less) {
 /// FirstUse of integer keys under <, by the radix sort of the file comment
 /// when each key and position fit one word together (else by comparison).
 /// O(n) per 11 bits of the largest key.
-inline FirstUse first_use_of_integers(const std::vector<std::uint64_t>& keys) {
+inline FirstUse first_use_of_integers(std::span<const std::uint64_t> keys) {
   const std::size_t n = keys.size();
   const int position_bits = std::bit_width(n);
   const int key_bits = n == 0 ? 0 : std::bit_width(*std::max_element(keys.begin(), keys.end()));
@@ -102,9 +103,10 @@ inline FirstUse first_use_of_integers(const std::vector<std::uint64_t>& keys) {
 /// FirstUse of `keys` under the strict weak order `less` (its equivalence
 /// is the keys' equality): first_use_of_integers for 64-bit keys under <,
 /// else first_use_by_comparison.
-template <class Key, class Less>
-FirstUse first_use(const std::vector<Key>& keys, Less less) {
-  if constexpr (std::is_same_v<Key, std::uint64_t> && std::is_same_v<Less, std::less<>>) {
+template <class Keys, class Less>
+FirstUse first_use(const Keys& keys, Less less) {
+  if constexpr (std::is_same_v<typename Keys::value_type, std::uint64_t> &&
+                std::is_same_v<Less, std::less<>>) {
     return first_use_of_integers(keys);
   } else {
     return first_use_by_comparison(keys, less);
