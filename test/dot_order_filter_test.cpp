@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -94,13 +95,22 @@ std::vector<Vec3> near_ties(std::mt19937_64& rng, const Vec3& n, double scale, i
   return points;
 }
 
-TEST(DotOrderFilter, ClaimsAreExactOnDoubles) {
-  // Scales from subnormal products to the filter's limit of 2^300.
-  const double scales[] = {1.0, 1e-5, 1e5, 0x1p290, 1e-150, 1e-300, 0x1p-1060};
-  for (double scale : scales) {
+// Runs check(scale) for each scale under a trace that names it, until one
+// fails fatally.
+template <class Check>
+void at_each_scale(std::initializer_list<double> scales, Check&& check) {
+  for (const double scale : scales) {
     std::ostringstream trace;
     trace << "scale " << std::hexfloat << scale;
     SCOPED_TRACE(trace.str());
+    check(scale);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+}
+
+TEST(DotOrderFilter, ClaimsAreExactOnDoubles) {
+  // Scales from subnormal products to the filter's limit of 2^300.
+  at_each_scale({1.0, 1e-5, 1e5, 0x1p290, 1e-150, 1e-300, 0x1p-1060}, [](double scale) {
     Tally tally;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
       std::mt19937_64 rng(seed);
@@ -115,7 +125,7 @@ TEST(DotOrderFilter, ClaimsAreExactOnDoubles) {
     if (scale >= 1e-5 && scale <= 1e5) {
       EXPECT_GT(tally.decided, tally.total / 5) << tally.decided << " of " << tally.total;
     }
-  }
+  });
 }
 
 TEST(DotOrderFilter, ClaimsAreExactWithInexactPointsAndDirection) {
@@ -211,11 +221,7 @@ TEST(DotOrderFilter, SignClaimsAreExactNearThePlaneThroughTheOrigin) {
   // (multiples of a vector orthogonal to n), at every scale, with exact
   // and with coarse approximations (multiples of 2^-12, error 2^-13, under
   // which exact zeros have nonzero values).
-  const double scales[] = {1.0, 1e-5, 1e5, 0x1p290, 1e-150, 0x1p-1060};
-  for (double scale : scales) {
-    std::ostringstream trace;
-    trace << "scale " << std::hexfloat << scale;
-    SCOPED_TRACE(trace.str());
+  at_each_scale({1.0, 1e-5, 1e5, 0x1p290, 1e-150, 0x1p-1060}, [](double scale) {
     Tally tally;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
       std::mt19937_64 rng(seed);
@@ -241,7 +247,7 @@ TEST(DotOrderFilter, SignClaimsAreExactNearThePlaneThroughTheOrigin) {
     if (scale > 0x1p-900) {
       EXPECT_GT(tally.decided, 0) << "of " << tally.total;
     }
-  }
+  });
 }
 
 TEST(DotOrderFilter, BeyondItsRangeItClaimsNothing) {
