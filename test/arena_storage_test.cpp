@@ -18,6 +18,7 @@
 #include "cvms/shapes.hpp"
 #include "facet_planes.hpp"
 #include "limb_arena.hpp"
+#include "polyhedron_builder.hpp"
 #include "research_options.hpp"
 #include "result_slab.hpp"
 #include "support/hand_solids.hpp"
@@ -389,8 +390,8 @@ TEST(ArenaStorage, SumVerticesAndNormalsAreMadeOnceForConcurrentReaders) {
   }
 }
 
-// A sum's packed vertices and its mesh's connectivity are carved from one
-// slab, its packed normals and their approximations from another
+// A sum's packed vertices, their approximations and its mesh's connectivity
+// are carved from one slab, its packed normals and their approximations from another
 // (result_slab.hpp: two blocks on huge pages instead of a dozen that fault
 // in 4 KiB at a time), each sized exactly by its plan: every byte planned is
 // carved, nothing falls back. The mesh's arrays are not visible here; had
@@ -414,6 +415,7 @@ TEST(ArenaStorage, ASumsArraysAreCarvedFromTwoSlabsSizedExactly) {
     ASSERT_NE(planes_slab, nullptr);
     EXPECT_NE(planes_slab, slab);
     EXPECT_TRUE(slab->holds(&p.mesh().packed_positions()->coordinate(0, 0)));
+    EXPECT_TRUE(slab->holds(p.approximations().vertices.data()));
     EXPECT_TRUE(planes_slab->holds(&p.planes().packed_normals->packed().coordinate(0, 0)));
     EXPECT_TRUE(planes_slab->holds(&p.planes().normal_approx[0]));
     for (const detail::ResultSlab* s : {slab, planes_slab}) {

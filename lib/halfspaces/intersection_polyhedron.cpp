@@ -160,7 +160,7 @@ ConvexPolyhedron intersection_polyhedron(DualVertices v) {
                 "intersection_polyhedron: a vertex on no facet");  // unreachable
   gather(v.vertices, order);
   soup.points = std::move(v.vertices);
-  std::vector<ApproxVec3> approx;
+  VertexApproximations approx;
   approx.reserve(soup.points.size());
   for (const Vec3& p : soup.points) approx.push_back(ApproxVec3::of(p));
   return assemble(output_mesh(std::move(soup)), std::move(approx), std::move(planes), std::move(v.limbs));

@@ -69,7 +69,7 @@ std::shared_ptr<PackedVectors> size_packed_planes(FacetPlanes& planes, std::size
   return normals;
 }
 
-FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
+FacetPlanes planes_from_first_corners(const Mesh& mesh, std::span<const ApproxVec3> vertex_approx,
                                       LimbArena& arena) {
   // Made once per polyhedron, so its denominators need no heap blocks of
   // their own (limb_arena.hpp).
@@ -113,14 +113,13 @@ PlaneStore::PlaneStore(FacetPlanes planes, std::shared_ptr<const LimbArena> limb
 
 PlaneStore::PlaneStore() : given_(false) {}
 
-const FacetPlanes& PlaneStore::get(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx) {
+const FacetPlanes& PlaneStore::get(const Mesh& mesh, std::span<const ApproxVec3> vertex_approx) {
   if (!given_)
     std::call_once(made_, [&] { planes_ = planes_from_first_corners(mesh, vertex_approx, made_limbs_); });
   return planes_;
 }
 
-const KeptVector<Rational>& PlaneStore::offsets(const Mesh& mesh,
-                                                const std::vector<ApproxVec3>& vertex_approx) {
+const KeptVector<Rational>& PlaneStore::offsets(const Mesh& mesh, std::span<const ApproxVec3> vertex_approx) {
   // Given with the planes, or made before (both published: the constructor, the once-call).
   if (const KeptVector<Rational>* made = offsets_if_made()) return *made;
   const FacetPlanes& planes = get(mesh, vertex_approx);

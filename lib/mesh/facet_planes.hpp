@@ -84,7 +84,7 @@ void primitive_normal(Vec3Ref a, Vec3Ref b, Vec3Ref c, LimbArena& arena, Vec3& g
 /// file comment), their values' limbs kept in arena; without offsets.
 /// \pre every face is a strictly convex polygon, counterclockwise seen from
 ///   outside, and vertex_approx[v] approximates vertex v.
-FacetPlanes planes_from_first_corners(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx,
+FacetPlanes planes_from_first_corners(const Mesh& mesh, std::span<const ApproxVec3> vertex_approx,
                                       LimbArena& arena);
 
 /// The offset dot(normals[f], x) of every face f of mesh, x its first
@@ -109,11 +109,11 @@ class PlaneStore {
   /// The planes of mesh, made now if they were not given or made before;
   /// their offsets may be empty (see offsets()).
   /// \pre mesh and vertex_approx are those of the polyhedron (or of a copy).
-  const FacetPlanes& get(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx);
+  const FacetPlanes& get(const Mesh& mesh, std::span<const ApproxVec3> vertex_approx);
   /// The planes' offsets: given with them, or made now from the normals and
   /// each facet's first corner if they were not made before (once, as the
   /// planes are). \pre as for get().
-  const KeptVector<Rational>& offsets(const Mesh& mesh, const std::vector<ApproxVec3>& vertex_approx);
+  const KeptVector<Rational>& offsets(const Mesh& mesh, std::span<const ApproxVec3> vertex_approx);
   /// The offsets if they are made or were given, else null (for a copy:
   /// it takes what is made, and makes the rest itself when asked).
   [[nodiscard]] const KeptVector<Rational>* offsets_if_made() const noexcept {

@@ -281,7 +281,7 @@ Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, 
   const auto& offsets = soup.face_offsets;
   const auto num_corners = static_cast<std::uint32_t>(indices.size());
   const auto num_faces = static_cast<std::uint32_t>(offsets.size() - 1);
-  std::vector<HalfedgeId> corner_he(num_corners);
+  detail::ScratchVector<HalfedgeId> corner_he(num_corners);  // huge pages: fresh memory at every build
   for (std::uint32_t e = 0; e < num_edges; ++e) {
     for (std::uint32_t k = 0; k < 2; ++k) {
       const auto [key, c] = keyed[2 * e + k];

@@ -47,7 +47,8 @@ void plan_output_mesh(SlabPlan& plan, std::size_t vertices, std::size_t corners,
   plan.add<HalfedgeId>(faces);
 }
 
-ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes, LimbArena limbs) {
+ConvexPolyhedron assemble(Mesh mesh, VertexApproximations vertex_approx, FacetPlanes planes,
+                          LimbArena limbs) {
   const std::size_t faces = planes.size();
   const std::size_t normals =
       planes.packed_normals != nullptr ? planes.packed_normals->packed().size() : planes.normals.size();

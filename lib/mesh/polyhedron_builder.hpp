@@ -32,14 +32,18 @@ namespace cvms::detail {
 /// The promise of Mesh::from_soup's unchecked-points overload.
 struct DistinctPoints {};
 
+/// The approximations of a polyhedron's vertices, one per vertex: kept with
+/// the polyhedron, carved from a result's slab where it has one.
+using VertexApproximations = KeptVector<ApproxVec3>;
+
 struct PolyhedronApproximations {
-  std::vector<ApproxVec3> vertices;  ///< one per vertex
+  VertexApproximations vertices;  ///< one per vertex
 };
 
 /// What ConvexPolyhedron's library constructor takes, index by index.
 struct PolyhedronParts {
   Mesh mesh;
-  std::vector<ApproxVec3> vertex_approx;  ///< one per vertex
+  VertexApproximations vertex_approx;  ///< one per vertex
   /// The facets' planes when the builder knows them; nullopt: made from the
   /// facets' first corners when first needed (facet_planes.hpp).
   std::optional<FacetPlanes> planes;
@@ -74,7 +78,7 @@ void plan_output_mesh(SlabPlan& plan, std::size_t vertices, std::size_t corners,
 /// (the polyhedron keeps it). Geometry is not checked.
 /// \pre the guarantee holds and the planes are exact.
 /// \throw Error(invalid_argument) if the counts do not match.
-ConvexPolyhedron assemble(Mesh mesh, std::vector<ApproxVec3> vertex_approx, FacetPlanes planes,
+ConvexPolyhedron assemble(Mesh mesh, VertexApproximations vertex_approx, FacetPlanes planes,
                           LimbArena limbs = {});
 
 inline const ApproxVec3& vertex_approx(const ConvexPolyhedron& p, VertexId v) noexcept {

@@ -105,15 +105,15 @@ class EdgeDirections {
   const SmallDirection* small(HalfedgeId h) {
     const std::uint32_t e = Mesh::edge(h).index();
     if (state_[e] == State::unknown) {
-      if (small_.empty()) small_.resize(state_.size());
+      if (!small_) small_.emplace(state_.size());  // written before read: no pass zeroes it
       const Mesh& m = p_.mesh();
       const HalfedgeId even = Mesh::halfedge(Mesh::edge(h));
       const auto d = small_integer_direction(detail::vertex_approx(p_, m.from(even)),
                                              detail::vertex_approx(p_, m.to(even)));
       state_[e] = d ? State::small : State::general;
-      if (d) small_[e] = *d;
+      if (d) (*small_)[e] = *d;
     }
-    return state_[e] == State::small ? &small_[e] : nullptr;
+    return state_[e] == State::small ? &(*small_)[e] : nullptr;
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
@@ -133,7 +133,8 @@ class EdgeDirections {
   enum class State : std::uint8_t { unknown, small, general };
   const ConvexPolyhedron& p_;
   std::vector<State> state_;
-  std::vector<SmallDirection> small_;
+  // On huge pages when large: fresh memory at every sum (huge_page_blocks.hpp).
+  std::optional<HugePageArray<SmallDirection, BlockLife::scratch>> small_;
   std::unordered_map<std::uint32_t, Vec3> general_;
 };
 
@@ -378,11 +379,12 @@ std::shared_ptr<ResultSlab> SumFacetBuilder::output_slab(const PolygonSoup& face
   const std::size_t vertices = euler_vertex_count(faces);
   SlabPlan plan;
   DyadicPoints::plan(plan, vertices);
+  plan.add<ApproxVec3>(vertices);
   plan_output_mesh(plan, vertices, faces.face_offsets.back(), num_facets());
   return ResultSlab::make(plan);
 }
 
-std::optional<Mesh> SumFacetBuilder::packed_mesh(PolygonSoup faces, std::vector<ApproxVec3>& approx,
+std::optional<Mesh> SumFacetBuilder::packed_mesh(PolygonSoup faces, VertexApproximations& approx,
                                                  const std::shared_ptr<ResultSlab>& slab) const {
   const std::size_t count = euler_vertex_count(faces);
   DyadicPoints points(carving_from<PackedDyadic>(slab));
@@ -400,7 +402,7 @@ std::optional<Mesh> SumFacetBuilder::packed_mesh(PolygonSoup faces, std::vector<
   return output_mesh(std::move(faces), std::make_shared<const PackedVectors>(std::move(points)), slab);
 }
 
-PolygonSoup SumFacetBuilder::soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const {
+PolygonSoup SumFacetBuilder::soup(VertexApproximations* approx, LimbArena* limbs) const {
   PolygonSoup soup = faces_without_points();
   soup.points.reserve(soup.face_offsets.back() / 3 + 1);  // each vertex is in at least three facets
   if (approx != nullptr) approx->reserve(soup.points.capacity());
@@ -483,9 +485,9 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   // limbs; only Vec3 vertices (the fallback) keep theirs in an arena the
   // result keeps.
   LimbArena limbs;
-  std::vector<ApproxVec3> vertex_approx;
   PolygonSoup faces = faces_without_points();
   const std::shared_ptr<ResultSlab> slab = output_slab(faces);
+  VertexApproximations vertex_approx(carving_from<ApproxVec3>(slab));
   std::optional<Mesh> mesh = packed_mesh(std::move(faces), vertex_approx, slab);
   if (!mesh) {  // inputs with other rationals than dyadic ones: Vec3s
     vertex_approx.clear();
@@ -553,6 +555,8 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   // thread keeps the long numerators it makes in arenas of its own, which
   // the packed normals and points then keep.
   const std::size_t facets = num_facets();
+  PolygonSoup soup = faces_without_points();
+  const std::shared_ptr<ResultSlab> slab = output_slab(soup);
   LimbArena limbs, worker_limbs, vertex_limbs, worker_vertex_limbs;
   FacetPlanes planes;
   std::shared_ptr<PackedVectors> packed_normals;
@@ -565,7 +569,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   // its latch if the thread that makes it failed: the counters are given up
   // then, and nothing is taken.
   ScratchVector<VertexPair> pairs;  // by output vertex
-  std::vector<ApproxVec3> vertex_approx;
+  VertexApproximations vertex_approx(carving_from<ApproxVec3>(slab));
   std::shared_ptr<PackedVectors> positions;
   std::atomic<bool> not_dyadic{false};
   std::latch sized(1), meshed(1);
@@ -585,8 +589,6 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
       }
     });
   };
-  PolygonSoup soup = faces_without_points();
-  const std::shared_ptr<ResultSlab> slab = output_slab(soup);
   Mesh mesh;
   {
     Worker worker;

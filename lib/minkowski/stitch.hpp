@@ -91,7 +91,7 @@ class SumFacetBuilder {
   [[nodiscard]] ConvexPolyhedron build_on_two_threads() const;
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.
-  [[nodiscard]] PolygonSoup soup(std::vector<ApproxVec3>* approx, LimbArena* limbs) const;
+  [[nodiscard]] PolygonSoup soup(VertexApproximations* approx, LimbArena* limbs) const;
   // A soup with the facets' corner offsets set, no indices (number_corners
   // writes them) and no points.
   [[nodiscard]] PolygonSoup faces_without_points() const;
@@ -132,10 +132,11 @@ class SumFacetBuilder {
   // The output's mesh of faces (faces_without_points()) with its points
   // packed, and their approximations; or nullopt when a vertex is not dyadic.
   // Points and connectivity are carved from slab.
-  [[nodiscard]] std::optional<Mesh> packed_mesh(PolygonSoup faces, std::vector<ApproxVec3>& approx,
+  [[nodiscard]] std::optional<Mesh> packed_mesh(PolygonSoup faces, VertexApproximations& approx,
                                                 const std::shared_ptr<ResultSlab>& slab) const;
-  // One slab for the output's packed points and its mesh's connectivity
-  // (result_slab.hpp; the planes take one of their own: size_packed_planes),
+  // One slab for the output's packed points, their approximations and its
+  // mesh's connectivity (result_slab.hpp; the planes take one of their own:
+  // size_packed_planes),
   // sized from the counts the search fixed: faces are faces_without_points().
   [[nodiscard]] std::shared_ptr<ResultSlab> output_slab(const PolygonSoup& faces) const;
   // write_vertex for the vertices [begin, end) of pairs. Threads may write

@@ -23,7 +23,7 @@ ConvexPolyhedron reflection(const ConvexPolyhedron& p) {
   for (Vec3& x : soup.points) x = -x;
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     std::reverse(soup.face_indices.begin() + soup.face_offsets[f], soup.face_indices.begin() + soup.face_offsets[f + 1]);
-  std::vector<ApproxVec3> vertices;
+  VertexApproximations vertices;
   vertices.reserve(p.num_vertices());
   for (VertexId v : p.mesh().vertices()) vertices.push_back(negated(vertex_approx(p, v)));
   FacetPlanes planes;
