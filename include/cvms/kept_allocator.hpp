@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// \file
-/// \cond INTERNAL
-/// Not an API: the allocator of the arrays a result keeps (Mesh's
+/// Internal to cvms, not an API: the allocator of the arrays a result keeps (Mesh's
 /// connectivity among them), public only because Mesh's members name it.
 ///
 /// Why it has state: a sum's output is a dozen arrays of 0.2-3 MB, and each
@@ -23,6 +22,7 @@
 #include <type_traits>
 #include <utility>
 
+/// \cond INTERNAL
 namespace cvms::detail {
 
 class ResultSlab;  // lib/numeric/result_slab.hpp
