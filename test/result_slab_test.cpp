@@ -22,9 +22,6 @@
 namespace cvms::detail {
 namespace {
 
-template <class T>
-using SlabVector = std::vector<T, KeptAllocator<T>>;
-
 TEST(SlabPlan, RoundsEachArrayToACacheLine) {
   SlabPlan plan;
   plan.add<std::uint32_t>(3).add<char>(65).add<std::uint64_t>(8).add<double>(0);
@@ -113,8 +110,8 @@ TEST(KeptAllocator, PlannedVectorsAreCarvedAndGrowOutOfTheSlabIntact) {
   SlabPlan plan;
   plan.add<std::uint32_t>(1000).add<double>(3000);
   auto slab = ResultSlab::make(plan);
-  SlabVector<std::uint32_t> small{KeptAllocator<std::uint32_t>(slab)};
-  SlabVector<double> large{KeptAllocator<double>(slab)};
+  KeptVector<std::uint32_t> small{KeptAllocator<std::uint32_t>(slab)};
+  KeptVector<double> large{KeptAllocator<double>(slab)};
   small.reserve(1000);
   large.resize(3000, 0.5);
   EXPECT_TRUE(slab->holds(small.data()));
@@ -133,23 +130,23 @@ TEST(KeptAllocator, CopiesOwnTheirStorageAndTheSlabGoesWithItsLastArray) {
   plan.add<int>(100).add<int>(100);
   auto slab = ResultSlab::make(plan);
   const std::weak_ptr<ResultSlab> watch = slab;
-  SlabVector<int> first(100, 1, KeptAllocator<int>(slab));
-  SlabVector<int> second(100, 2, KeptAllocator<int>(slab));
+  KeptVector<int> first(100, 1, KeptAllocator<int>(slab));
+  KeptVector<int> second(100, 2, KeptAllocator<int>(slab));
   slab.reset();  // the arrays keep it
   ASSERT_FALSE(watch.expired());
-  const SlabVector<int> copy = first;
+  const KeptVector<int> copy = first;
   EXPECT_EQ(copy.get_allocator().slab(), nullptr);
   EXPECT_FALSE(watch.lock()->holds(copy.data()));
-  SlabVector<int> moved = std::move(first);
+  KeptVector<int> moved = std::move(first);
   EXPECT_TRUE(watch.lock()->holds(moved.data()));
-  first = SlabVector<int>();
-  moved = SlabVector<int>();  // move-assigned: the allocator (and the slab) goes too
+  first = KeptVector<int>();
+  moved = KeptVector<int>();  // move-assigned: the allocator (and the slab) goes too
   EXPECT_FALSE(watch.expired()) << "second still holds it";
-  const SlabVector<int> longer(300, 3);
+  const KeptVector<int> longer(300, 3);
   second = longer;  // copy-assigned: second keeps its allocator, which has no room left
   EXPECT_FALSE(watch.lock()->holds(second.data()));
   EXPECT_EQ(second[299], 3);
-  second = SlabVector<int>();
+  second = KeptVector<int>();
   EXPECT_TRUE(watch.expired());
   EXPECT_EQ(copy[99], 1);
 }

@@ -21,6 +21,7 @@
 #include <new>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 /// \cond INTERNAL
 namespace cvms::detail {
@@ -71,6 +72,11 @@ class KeptAllocator {
  private:
   std::shared_ptr<ResultSlab> slab_;
 };
+
+/// A vector that a result keeps: a kept block of its own, or carved from a
+/// result's slab when made with its allocator (lib/numeric/result_slab.hpp).
+template <class T>
+using KeptVector = std::vector<T, KeptAllocator<T>>;
 
 }  // namespace cvms::detail
 /// \endcond

@@ -289,11 +289,6 @@ class Mesh {
   /// \endcond
 
  private:
-  // The connectivity's arrays: on their own, or carved from one slab with
-  // the rest of a result (kept_allocator.hpp).
-  template <class T>
-  using Array = std::vector<T, detail::KeptAllocator<T>>;
-
   static Mesh build(PolygonSoup soup, bool check_points, std::size_t num_points,
                     const std::shared_ptr<detail::ResultSlab>& slab);
   [[nodiscard]] const std::vector<Vec3>& made_positions() const;
@@ -302,12 +297,14 @@ class Mesh {
 
   std::vector<Vec3> positions_;  // empty when packed_positions_ holds them
   std::shared_ptr<const detail::PackedVectors> packed_positions_;
-  Array<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
-  Array<VertexId> he_to_;
-  Array<HalfedgeId> he_next_;
-  Array<HalfedgeId> he_prev_;
-  Array<FaceId> he_face_;
-  Array<HalfedgeId> face_he_;
+  // The connectivity's arrays: on their own, or carved from one slab with
+  // the rest of a result (kept_allocator.hpp).
+  detail::KeptVector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
+  detail::KeptVector<VertexId> he_to_;
+  detail::KeptVector<HalfedgeId> he_next_;
+  detail::KeptVector<HalfedgeId> he_prev_;
+  detail::KeptVector<FaceId> he_face_;
+  detail::KeptVector<HalfedgeId> face_he_;
 };
 
 inline HalfedgeCirculator::iterator& HalfedgeCirculator::iterator::operator++() {

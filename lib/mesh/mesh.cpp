@@ -254,7 +254,7 @@ std::uint32_t check_edge_groups(const KeyedCorners& keyed, const std::vector<std
 // halfedges leaving each vertex.
 struct Connectivity {
   template <class T>
-  using Array = std::vector<T, detail::KeptAllocator<T>>;
+  using Array = detail::KeptVector<T>;
 
   explicit Connectivity(const std::shared_ptr<detail::ResultSlab>& slab)
       : vertex_he(Array<HalfedgeId>::allocator_type(slab)),

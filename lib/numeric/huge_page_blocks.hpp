@@ -129,11 +129,6 @@ struct HugePageAllocator {
 template <class T>
 using ScratchVector = std::vector<T, HugePageAllocator<T, BlockLife::scratch>>;
 
-/// A vector that a result keeps: a kept block of its own, or carved from a
-/// result's slab when made with its allocator (result_slab.hpp).
-template <class T>
-using KeptVector = std::vector<T, KeptAllocator<T>>;
-
 /// An array of n uninitialised T (trivial types only) from allocate_block:
 /// nothing is written, so that no page is touched before its first use.
 template <class T, BlockLife Life>
