@@ -286,6 +286,8 @@ class Mesh {
   // The exact positions as packed dyadics if the mesh keeps them so, else
   // null: what the library's own readers take instead of making Vec3s.
   [[nodiscard]] const detail::DyadicPoints* packed_positions() const noexcept;
+  // to(h) is halfedge_targets()[h]: for loops that fetch it ahead.
+  [[nodiscard]] const VertexId* halfedge_targets() const noexcept { return he_to_.data(); }
   /// \endcond
 
  private:

@@ -153,6 +153,7 @@ class HugePageArray {
 
   [[nodiscard]] T* data() noexcept { return data_; }
   T& operator[](std::size_t i) noexcept { return data_[i]; }
+  const T& operator[](std::size_t i) const noexcept { return data_[i]; }
 
  private:
   using Allocator = HugePageAllocator<T, Life>;
