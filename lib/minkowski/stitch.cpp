@@ -120,19 +120,26 @@ class EdgeDirections {
   // edge's ends through the mesh and then their approximations, two
   // dependent misses in the order the search met the edges (a tenth of
   // Sphere6 + rot. Sphere6 before); a known one is read from its cache.
-  // fetch_ends `far` facets ahead, fetch_approximations `near` ones ahead,
-  // once the ends have arrived.
+  // fetch_ends `far` facets ahead; `near` ones ahead, once the ends have
+  // arrived, the loop fetches what small(h) will read, at most an
+  // ApproxVec3 from each address (a null one is nothing). The loop does
+  // the fetching itself: GCC dropped a void helper's prefetches.
   void fetch_ends(HalfedgeId h) const noexcept {
     __builtin_prefetch(&state_[Mesh::edge(h).index()]);
     __builtin_prefetch(p_.mesh().halfedge_targets() + Mesh::halfedge(Mesh::edge(h)).index());
   }
-  void fetch_approximations(HalfedgeId h) const noexcept {
+  [[nodiscard]] std::array<const void*, 2> read_by_small(HalfedgeId h) const noexcept {
     const EdgeId e = Mesh::edge(h);
-    if (state_[e.index()] == State::small) __builtin_prefetch(&(*small_)[e.index()]);
-    if (state_[e.index()] != State::unknown) return;
+    switch (state_[e.index()]) {
+      case State::small:
+        return {&(*small_)[e.index()], nullptr};
+      case State::general:
+        return {nullptr, nullptr};
+      case State::unknown:
+        break;
+    }
     const Mesh& m = p_.mesh();
-    prefetch_bytes(&detail::vertex_approx(p_, m.from(Mesh::halfedge(e))), sizeof(ApproxVec3));
-    prefetch_bytes(&detail::vertex_approx(p_, m.to(Mesh::halfedge(e))), sizeof(ApproxVec3));
+    return {&detail::vertex_approx(p_, m.from(Mesh::halfedge(e))), &detail::vertex_approx(p_, m.to(Mesh::halfedge(e)))};
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
@@ -465,8 +472,10 @@ void SumFacetBuilder::write_normals(FacetPlanes& planes, std::size_t begin, std:
     }
     if (i + prefetch_near < end && is_edge_facet(normals_[i + prefetch_near])) {
       const NormalSource& ahead = normals_[i + prefetch_near];
-      scratch.directions_a.fetch_approximations(HalfedgeId(ahead.index));
-      scratch.directions_b.fetch_approximations(HalfedgeId(ahead.other));
+      for (const auto& read : {scratch.directions_a.read_by_small(HalfedgeId(ahead.index)),
+                               scratch.directions_b.read_by_small(HalfedgeId(ahead.other))})
+        for (const void* at : read)
+          if (at != nullptr) prefetch_bytes(at, sizeof(ApproxVec3));
     }
     write_normal(planes, i, scratch);
   }
