@@ -289,11 +289,15 @@ PolygonSoup SumFacetBuilder::soup() const { return soup(nullptr, nullptr); }
 
 template <typename PairAt>
 void SumFacetBuilder::prefetch_operand_vertices(std::size_t j, std::size_t end, PairAt&& pair_at) const {
-  // The operands' exact coordinates, visited out of order: fetched ahead (prefetch_exact.hpp).
+  // The operands' exact coordinates and their approximations, visited out
+  // of order: fetched ahead (prefetch_exact.hpp). The approximations' misses
+  // were two fifths of write_packed_vertex.
   if (j + prefetch_far < end) {
     const VertexPair ahead = pair_at(j + prefetch_far);
     prefetch_structs(a_.vertex(VertexId(ahead.a)));
     prefetch_structs(b_.vertex(VertexId(ahead.b)));
+    prefetch_bytes(&detail::vertex_approx(a_, VertexId(ahead.a)), sizeof(ApproxVec3));
+    prefetch_bytes(&detail::vertex_approx(b_, VertexId(ahead.b)), sizeof(ApproxVec3));
   }
   if (j + prefetch_near < end) {
     const VertexPair ahead = pair_at(j + prefetch_near);
