@@ -181,50 +181,29 @@ std::uint32_t face_of_corner(const std::vector<std::uint32_t>& offsets, std::uin
                                     1);
 }
 
-// The directed edges grouped by their undirected vertex pair, in order of
-// (smaller vertex, larger vertex, corner): bucket v, entries[start[v] ..
-// start[v + 1]), holds the corners whose smaller vertex is v, each as
-// (larger << 32 | corner). One 64-bit key, the smaller vertex implied by the
-// bucket, sorts a bucket with plain integer compares: std::sort on
-// (pair key, corner) pairs was a fifth of building a sum's output mesh.
-struct KeyedCorners {
-  std::vector<std::uint32_t> start;              // n + 1 bucket bounds
-  detail::ScratchVector<std::uint64_t> entries;  // one per corner
+// Each corner keyed by the undirected vertex pair (smaller << 32 | larger)
+// of its directed edge.
+using KeyedCorners = detail::ScratchVector<std::pair<std::uint64_t, std::uint32_t>>;
 
-  static std::uint32_t larger(std::uint64_t entry) noexcept { return static_cast<std::uint32_t>(entry >> 32); }
-  static std::uint32_t corner(std::uint64_t entry) noexcept { return static_cast<std::uint32_t>(entry); }
-};
-
-// Sorts a bucket, about a vertex degree long: insertion sort, which
-// std::sort would also end in for so few, without its calls.
-void sort_bucket(std::uint64_t* first, std::uint64_t* last) {
-  if (last - first > 32) {
-    std::sort(first, last);
-    return;
-  }
-  for (std::uint64_t* i = first + 1; i < last; ++i) {
-    const std::uint64_t x = *i;
-    std::uint64_t* j = i;
-    for (; j > first && *(j - 1) > x; --j) *j = *(j - 1);
-    *j = x;
-  }
-}
-
-// A counting sort by the smaller vertex (stable, so corners stay in order
-// within a bucket), then each bucket sorted.
+// Group the directed edges by their undirected vertex pair, sorted by
+// (smaller, larger) vertex and then by corner: a counting sort by the
+// smaller vertex (stable, so corners stay in order), then each bucket,
+// about a vertex degree long, sorted by the larger vertex.
 KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const std::vector<std::uint32_t>& offsets,
                              std::uint32_t n) {
-  KeyedCorners keyed{std::vector<std::uint32_t>(std::size_t{n} + 1, 0),
-                     detail::ScratchVector<std::uint64_t>(indices.size())};
-  auto& start = keyed.start;
-  for_each_corner(offsets, [&](const Corner& c) { ++start[std::min(indices[c.at], indices[c.next]) + 1]; });
-  for (std::uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  const auto num_corners = static_cast<std::uint32_t>(indices.size());
+  KeyedCorners keyed(num_corners);
+  std::vector<std::uint32_t> bucket_start(std::size_t{n} + 1, 0);
+  for_each_corner(offsets,
+                  [&](const Corner& c) { ++bucket_start[std::min(indices[c.at], indices[c.next]) + 1]; });
+  for (std::uint32_t v = 0; v < n; ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<std::uint32_t> fill(bucket_start.begin(), bucket_start.end() - 1);
   for_each_corner(offsets, [&](const Corner& c) {
-    const std::uint32_t a = indices[c.at], b = indices[c.next];
-    keyed.entries[fill[std::min(a, b)]++] = (std::uint64_t{std::max(a, b)} << 32) | c.at;
+    const std::uint64_t a = indices[c.at], b = indices[c.next];
+    keyed[fill[std::min(a, b)]++] = {(std::min(a, b) << 32) | std::max(a, b), c.at};
   });
-  for (std::uint32_t v = 0; v < n; ++v) sort_bucket(&keyed.entries[start[v]], &keyed.entries[start[v + 1]]);
+  for (std::uint32_t v = 0; v < n; ++v)
+    std::sort(keyed.begin() + bucket_start[v], keyed.begin() + bucket_start[v + 1]);
   return keyed;
 }
 
@@ -234,39 +213,36 @@ KeyedCorners corners_by_edge(const std::vector<std::uint32_t>& indices, const st
 std::uint32_t check_edge_groups(const KeyedCorners& keyed, const std::vector<std::uint32_t>& indices,
                                 const std::vector<std::uint32_t>& offsets) {
   const auto face_of = [&](std::uint32_t c) { return face_of_corner(offsets, c); };
-  const auto& entries = keyed.entries;
   std::string non_manifold, inconsistent, boundary;
   std::uint32_t num_edges = 0;
-  for (std::uint32_t smaller = 0; smaller + 1 < keyed.start.size(); ++smaller) {
-    const std::uint32_t bucket_end = keyed.start[smaller + 1];
-    for (std::uint32_t i = keyed.start[smaller]; i < bucket_end;) {
-      const std::uint32_t larger = KeyedCorners::larger(entries[i]);
-      std::uint32_t j = i;
-      while (j < bucket_end && KeyedCorners::larger(entries[j]) == larger) ++j;
-      const std::uint32_t c0 = KeyedCorners::corner(entries[i]);
-      // c0 runs from a to b, the other vertex of the pair.
-      const std::uint32_t a = indices[c0], b = a == smaller ? larger : smaller;
-      if (j - i > 2) {
-        if (non_manifold.empty()) {
-          non_manifold = edge_name(a, b) + " is shared by " + std::to_string(j - i) + " faces (";
-          for (std::uint32_t k = i; k < j && k < i + 6; ++k)
-            non_manifold += (k == i ? "" : ", ") + str(face_of(KeyedCorners::corner(entries[k])));
-          non_manifold += (j - i > 6 ? ", ...)" : ")");
-          non_manifold += ": non-manifold edge";
-        }
-      } else if (j - i == 2) {
-        const std::uint32_t c1 = KeyedCorners::corner(entries[i + 1]);
-        if (indices[c1] == a && inconsistent.empty())
-          inconsistent = edge_name(a, b) + " is used in the same direction " + str(a) + " -> " + str(b) +
-                         " by faces " + str(face_of(c0)) + " and " + str(face_of(c1)) +
-                         ": inconsistent orientation (flipped face?)";
-      } else if (boundary.empty()) {
-        boundary = edge_name(a, b) + " of face " + str(face_of(c0)) +
-                   " has no opposite face: the surface is open (boundary edge)";
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    const std::uint32_t c0 = keyed[i].second;
+    // c0 runs from a to b, the other vertex of the pair.
+    const auto smaller = static_cast<std::uint32_t>(keyed[i].first >> 32);
+    const auto larger = static_cast<std::uint32_t>(keyed[i].first);
+    const std::uint32_t a = indices[c0], b = a == smaller ? larger : smaller;
+    if (j - i > 2) {
+      if (non_manifold.empty()) {
+        non_manifold = edge_name(a, b) + " is shared by " + std::to_string(j - i) + " faces (";
+        for (std::size_t k = i; k < j && k < i + 6; ++k)
+          non_manifold += (k == i ? "" : ", ") + str(face_of(keyed[k].second));
+        non_manifold += (j - i > 6 ? ", ...)" : ")");
+        non_manifold += ": non-manifold edge";
       }
-      ++num_edges;
-      i = j;
+    } else if (j - i == 2) {
+      const std::uint32_t c1 = keyed[i + 1].second;
+      if (indices[c1] == a && inconsistent.empty())
+        inconsistent = edge_name(a, b) + " is used in the same direction " + str(a) + " -> " + str(b) +
+                       " by faces " + str(face_of(c0)) + " and " + str(face_of(c1)) +
+                       ": inconsistent orientation (flipped face?)";
+    } else if (boundary.empty()) {
+      boundary = edge_name(a, b) + " of face " + str(face_of(c0)) +
+                 " has no opposite face: the surface is open (boundary edge)";
     }
+    ++num_edges;
+    i = j;
   }
   if (!non_manifold.empty()) fail(non_manifold);
   if (!inconsistent.empty()) fail(inconsistent);
@@ -297,8 +273,8 @@ struct Connectivity {
   std::vector<std::uint32_t> out_degree;
 };
 
-// Edge e's corners are entries 2e and 2e + 1 (every edge has two, checked);
-// halfedge 2e runs from the smaller to the larger vertex.
+// Edge e's corners are keyed[2e] and keyed[2e + 1]; halfedge 2e runs from the
+// smaller to the larger vertex.
 Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, std::uint32_t num_edges,
                             std::uint32_t n, const std::shared_ptr<detail::ResultSlab>& slab) {
   const auto& indices = soup.face_indices;
@@ -308,9 +284,8 @@ Connectivity link_halfedges(const PolygonSoup& soup, const KeyedCorners& keyed, 
   detail::ScratchVector<HalfedgeId> corner_he(num_corners);  // huge pages: fresh memory at every build
   for (std::uint32_t e = 0; e < num_edges; ++e) {
     for (std::uint32_t k = 0; k < 2; ++k) {
-      const std::uint64_t entry = keyed.entries[2 * e + k];
-      const std::uint32_t c = KeyedCorners::corner(entry);
-      const bool ascending = indices[c] != KeyedCorners::larger(entry);  // from the smaller vertex
+      const auto [key, c] = keyed[2 * e + k];
+      const bool ascending = indices[c] == static_cast<std::uint32_t>(key >> 32);  // from the smaller vertex
       corner_he[c] = HalfedgeId(2 * e + (ascending ? 0u : 1u));
     }
   }
