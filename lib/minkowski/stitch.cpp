@@ -139,7 +139,8 @@ class EdgeDirections {
         break;
     }
     const Mesh& m = p_.mesh();
-    return {&detail::vertex_approx(p_, m.from(Mesh::halfedge(e))), &detail::vertex_approx(p_, m.to(Mesh::halfedge(e)))};
+    return {&detail::vertex_approx(p_, m.from(Mesh::halfedge(e))),
+            &detail::vertex_approx(p_, m.to(Mesh::halfedge(e)))};
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
