@@ -106,10 +106,8 @@ class EdgeDirections {
     const std::uint32_t e = Mesh::edge(h).index();
     if (state_[e] == State::unknown) {
       if (!small_) small_.emplace(state_.size());  // written before read: no pass zeroes it
-      const Mesh& m = p_.mesh();
-      const HalfedgeId even = Mesh::halfedge(Mesh::edge(h));
-      const auto d = small_integer_direction(detail::vertex_approx(p_, m.from(even)),
-                                             detail::vertex_approx(p_, m.to(even)));
+      const auto [from, to] = end_approximations(Mesh::edge(h));
+      const auto d = small_integer_direction(*from, *to);
       state_[e] = d ? State::small : State::general;
       if (d) (*small_)[e] = *d;
     }
@@ -138,9 +136,16 @@ class EdgeDirections {
       case State::unknown:
         break;
     }
+    const auto [from, to] = end_approximations(e);
+    return {from, to};
+  }
+
+  // The approximations of the ends of e's even halfedge, from and to: what
+  // an unknown direction is made of.
+  [[nodiscard]] std::array<const ApproxVec3*, 2> end_approximations(EdgeId e) const noexcept {
     const Mesh& m = p_.mesh();
-    return {&detail::vertex_approx(p_, m.from(Mesh::halfedge(e))),
-            &detail::vertex_approx(p_, m.to(Mesh::halfedge(e)))};
+    const HalfedgeId even = Mesh::halfedge(e);
+    return {&detail::vertex_approx(p_, m.from(even)), &detail::vertex_approx(p_, m.to(even))};
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
@@ -469,7 +474,7 @@ struct SumFacetBuilder::NormalScratch {
 void SumFacetBuilder::write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end,
                                     NormalScratch& scratch) const {
   for (std::size_t i = begin; i < end; ++i) {
-    // Inline, not in a helper taking a lambda: prefetch_exact.hpp says why.
+    // Issued here, not in a void helper: prefetch_exact.hpp says why.
     if (i + prefetch_far < end && is_edge_facet(normals_[i + prefetch_far])) {
       const NormalSource& ahead = normals_[i + prefetch_far];
       scratch.directions_a.fetch_ends(HalfedgeId(ahead.index));

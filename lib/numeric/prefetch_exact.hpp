@@ -11,7 +11,9 @@
 // a lambda was tried: GCC 12 judged the helper free of side effects (a
 // prefetch has none it counts), dropped the call before inlining it, and
 // every prefetch was gone (fixed_integer_dot, the plane offsets, went from
-// 4.5 to 23 % of Sphere6 + rot. Sphere6).
+// 4.5 to 23 % of Sphere6 + rot. Sphere6). A void member function that only
+// prefetched went the same way (the sum's normals, issue 14, stop 44):
+// helpers may compute addresses; the loop issues the prefetches.
 #pragma once
 
 #include <cstddef>
