@@ -119,28 +119,38 @@ void climb(const ConvexPolyhedron& q, const PlaneFilterExtent& extent, Vec3Ref n
 }
 
 // The facets of p in breadth-first order from facet 0 over their adjacency
-// (the queue is the order itself), and each facet's position in it.
+// (the queue is the order itself) and, for the facet at each position i, the
+// latest position before i of a neighbour of it. Every facet but the first
+// has one (the facet that queued it). The walk needs only these positions;
+// finding them here, where the neighbours' positions are already loaded,
+// spares it a second pass over every facet's neighbours (a third of the
+// walk's samples on Cube + Sphere6, waiting on the random loads).
 struct FacetOrder {
+  static constexpr std::uint32_t none = UINT32_MAX;
   std::vector<FaceId> facets;
-  std::vector<std::uint32_t> position;
+  std::vector<std::uint32_t> latest_neighbour;
 };
 
 FacetOrder breadth_first_facets(const Mesh& mp, std::uint32_t num_facets) {
   FacetOrder order;
   order.facets.reserve(num_facets);
-  order.position.assign(num_facets, 0);
-  std::vector<bool> queued(num_facets, false);
+  order.latest_neighbour.reserve(num_facets);
+  std::vector<std::uint32_t> position(num_facets, FacetOrder::none);  // none: not queued yet
   order.facets.push_back(FaceId(0));
-  queued[0] = true;
-  for (std::size_t head = 0; head < order.facets.size(); ++head) {
-    const FaceId f = order.facets[head];
-    order.position[f.index()] = static_cast<std::uint32_t>(head);
-    for (HalfedgeId h : mp.face_halfedges(f)) {
+  position[0] = 0;
+  for (std::uint32_t head = 0; head < order.facets.size(); ++head) {
+    std::uint32_t latest = FacetOrder::none;
+    for (HalfedgeId h : mp.face_halfedges(order.facets[head])) {
       const FaceId next = mp.face(Mesh::twin(h));
-      if (queued[next.index()]) continue;
-      queued[next.index()] = true;
-      order.facets.push_back(next);
+      const std::uint32_t at = position[next.index()];
+      if (at == FacetOrder::none) {
+        position[next.index()] = static_cast<std::uint32_t>(order.facets.size());
+        order.facets.push_back(next);
+      } else if (at < head && (latest == FacetOrder::none || at > latest)) {
+        latest = at;
+      }
     }
+    order.latest_neighbour.push_back(latest);
   }
   // The queue reaches every facet: a ConvexPolyhedron's surface is connected.
   return order;
@@ -155,13 +165,13 @@ FacetOrder breadth_first_facets(const Mesh& mp, std::uint32_t num_facets) {
 // cap, climbed n/4 vertices of B each, O(n^2)). The neighbour done last is
 // usually the previous facet around that cap. A facet with no such neighbour
 // (all its neighbours done are in earlier pieces) climbs from the previous
-// facet's answer; the piece's first facet from vertex 0. answer[f] is
-// written for the piece's facets only, so pieces may run at once.
+// facet's answer; the piece's first facet from vertex 0. answer[i], the
+// first vertex of the list of the facet at position i, is written for the
+// piece's positions only, so pieces may run at once.
 template <class Record>
 void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, const PlaneFilterExtent& q_extent,
                 std::span<const FaceId> partner, const FacetOrder& order, std::size_t begin, std::size_t end,
                 std::span<VertexId> answer, Record&& record) {
-  const Mesh& mp = p.mesh();
   PredicateCounters& counters = predicate_counters();  // of the thread that walks the piece
   std::vector<VertexId> list;
   for (std::size_t i = begin; i < end; ++i) {
@@ -178,20 +188,14 @@ void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, const Plan
     if (g.is_valid()) {
       sorted_facet_vertices(q, g, list);
     } else {
-      VertexId seed = i > begin ? answer[order.facets[i - 1].index()] : VertexId(0);
-      std::size_t latest = begin;  // positions in [begin, i) are done in this piece
-      for (HalfedgeId h : mp.face_halfedges(f)) {
-        const std::uint32_t k = mp.face(Mesh::twin(h)).index();
-        const std::size_t at = order.position[k];
-        if (at >= latest && at < i) {
-          latest = at + 1;
-          seed = answer[k];
-        }
-      }
+      const std::uint32_t latest = order.latest_neighbour[i];  // positions [begin, i) are this piece's
+      const VertexId seed = latest != FacetOrder::none && latest >= begin ? answer[latest]
+                            : i > begin                                  ? answer[i - 1]
+                                                                         : VertexId(0);
       climb(q, q_extent, detail::normal_ref(p, f), seed, list, counters);
     }
     record(f, std::span<const VertexId>(list));
-    answer[f.index()] = list.front();
+    answer[i] = list.front();
   }
 }
 
@@ -209,7 +213,7 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
   const FacetOrder order = breadth_first_facets(p.mesh(), nf);
   PlaneFilterExtent q_extent;
   for (const ApproxVec3& a : q.approximations().vertices) q_extent.add(a);
-  std::vector<VertexId> answer(nf);  // each facet's first contributing vertex, once done
+  std::vector<VertexId> answer(nf);  // by position in the order: the first contributing vertex, once done
   const unsigned pieces = std::clamp(split.pieces, 1u, nf);
   if (pieces == 1) {
     walk_piece(p, q, q_extent, partner, order, 0, nf, answer,
