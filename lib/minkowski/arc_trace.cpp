@@ -59,7 +59,6 @@
 #include "dyadic.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
-#include "prefetch_exact.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -199,12 +198,6 @@ struct ConeExit {
 // the search starts just after it, where the exit cannot be.
 ConeExit leave_normal_cone(const ConvexPolyhedron& b, const WalkPosition& at, const FacetSides& side) {
   const Mesh& mb = b.mesh();
-  // The facets around u are met in vertex order, not memory order: ask for
-  // all their normals' approximations before waiting on the first (the
-  // trace waited on each in turn, a third of its samples on Sphere6 + rot.
-  // Sphere6).
-  for (HalfedgeId h : mb.outgoing_halfedges(at.u))
-    prefetch_bytes(&detail::normal_approx(b, mb.face(h)), sizeof(ApproxVec3));
   HalfedgeId start;
   Sign right;
   if (at.entered.is_valid()) {

@@ -89,12 +89,6 @@ void climb(const ConvexPolyhedron& q, const PlaneFilterExtent& extent, Vec3Ref n
   for (bool improved = true; improved;) {
     improved = false;
     num_tied = 0;
-    // The neighbours' approximations are read in vertex order, not memory
-    // order: ask for all of them before waiting on the first (the climbs
-    // waited on each in turn, a quarter of their samples on Sphere6 + rot.
-    // Sphere6).
-    for (HalfedgeId h : m.outgoing_halfedges(v))
-      prefetch_bytes(&detail::vertex_approx(q, m.to(h)), sizeof(ApproxVec3));
     for (HalfedgeId h : m.outgoing_halfedges(v)) {
       const VertexId w = m.to(h);
       const double w_value = by_dot.value(detail::vertex_approx(q, w));
