@@ -189,9 +189,12 @@ void walk_piece(const ConvexPolyhedron& p, const ConvexPolyhedron& q, const Plan
       sorted_facet_vertices(q, g, list);
     } else {
       const std::uint32_t latest = order.latest_neighbour[i];  // positions [begin, i) are this piece's
-      const VertexId seed = latest != FacetOrder::none && latest >= begin ? answer[latest]
-                            : i > begin                                  ? answer[i - 1]
-                                                                         : VertexId(0);
+      VertexId seed(0);
+      if (latest != FacetOrder::none && latest >= begin) {
+        seed = answer[latest];
+      } else if (i > begin) {
+        seed = answer[i - 1];
+      }
       climb(q, q_extent, detail::normal_ref(p, f), seed, list, counters);
     }
     record(f, std::span<const VertexId>(list));
