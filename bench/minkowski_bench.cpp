@@ -129,10 +129,10 @@ void run_family(benchmark::State& state, Family family, const cvms::Options& opt
 }
 
 // The limit: only the output construction, from the final facet vertex-pair
-// lists that CVMS computed once before timing. `full` also builds the
-// ConvexPolyhedron caches (normals known, offsets, approximations), i.e. all
-// of what CVMS does after finding the facets; otherwise only the exact vertex
-// coordinates (one per vertex pair) and the half-edge mesh.
+// lists that CVMS computed once before timing. `full` is all of what CVMS
+// does after finding the facets (SumFacetBuilder::build: the mesh, its packed
+// exact points and their approximations, the facet normals); otherwise only
+// the mesh and its exact points, made the same way (build_mesh).
 void run_output_only(benchmark::State& state, Family family, bool full) {
   const int k = static_cast<int>(state.range(0));
   const Pair& p = family_pair(family, k);
@@ -144,7 +144,7 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
       ConvexPolyhedron s = facets.build();
       benchmark::DoNotOptimize(s);
     } else {
-      cvms::Mesh m = cvms::Mesh::from_soup(facets.soup());
+      cvms::Mesh m = facets.build_mesh();
       benchmark::DoNotOptimize(m);
     }
   }

@@ -15,6 +15,7 @@
 
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
+#include "cvms_algorithm.hpp"
 #include "polyhedron_builder.hpp"
 #include "research_options.hpp"
 #include "support/oracle.hpp"
@@ -300,6 +301,34 @@ TEST(Stitch, EdgeFacetsKeepTheirCornersThroughAppendAndSoup) {
       // The soup's point is the exact sum of the pair's vertices.
       EXPECT_EQ(soup.points[soup.face_indices[soup.face_offsets[i] + k]], point(c, t, expected[k]))
           << "facet " << i << " corner " << k;
+    }
+  }
+}
+
+// build_mesh is the mesh build() makes, without planes: every facet's
+// corners, up to where the cycle starts, must be the exact sums of its
+// pairs' vertices (checked with plain rationals), on dyadic sums (packed
+// points) and non-dyadic ones (the Vec3 fallback).
+TEST(Stitch, BuildMeshHasTheFacetsCornersAsExactSums) {
+  const ConvexPolyhedron third = shapes::cube().transformed(scaling(Rational(1, 3)), Vec3{0, 0, 0});
+  const std::pair<ConvexPolyhedron, ConvexPolyhedron> cases[] = {
+      {shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3)}, {shapes::geodesic_sphere(2), third}};
+  for (const auto& [a, b] : cases) {
+    Stats stats;
+    const SumFacetBuilder facets = cvms_facets(a, b, Options{}, {}, stats);
+    const PolygonSoup mesh = facets.build_mesh().to_soup();
+    ASSERT_EQ(mesh.num_faces(), facets.num_facets());
+    for (std::size_t i = 0; i < facets.num_facets(); ++i) {
+      const std::vector<VertexPair> pairs = facets.facet(i);
+      const std::uint32_t first = mesh.face_offsets[i];
+      const std::size_t degree = mesh.face_offsets[i + 1] - first;
+      ASSERT_EQ(degree, pairs.size()) << "facet " << i;
+      std::size_t shift = 0;
+      while (shift < degree && mesh.points[mesh.face_indices[first + shift]] != point(a, b, pairs[0])) ++shift;
+      ASSERT_LT(shift, degree) << "facet " << i << " lacks its first corner";
+      for (std::size_t k = 0; k < degree; ++k)
+        EXPECT_EQ(mesh.points[mesh.face_indices[first + (shift + k) % degree]], point(a, b, pairs[k]))
+            << "facet " << i << " corner " << k;
     }
   }
 }

@@ -536,19 +536,26 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   // limbs; only Vec3 vertices (the fallback) keep theirs in an arena the
   // result keeps.
   LimbArena limbs;
+  MeshWithApprox output = mesh_with_points(&limbs);
+  FacetPlanes planes;
+  DyadicPoints& normals = size_packed_planes(planes, num_facets())->packed_for_writing();
+  NormalScratch scratch(*this, normals, normals.limbs());
+  write_normals(planes, 0, num_facets(), scratch);
+  return assemble(std::move(output.mesh), std::move(output.approx), std::move(planes), std::move(limbs));
+}
+
+Mesh SumFacetBuilder::build_mesh() const { return mesh_with_points(nullptr).mesh; }
+
+SumFacetBuilder::MeshWithApprox SumFacetBuilder::mesh_with_points(LimbArena* limbs) const {
   PolygonSoup faces = faces_without_points();
   const std::shared_ptr<ResultSlab> slab = output_slab(faces);
   VertexApproximations vertex_approx(carving_from<ApproxVec3>(slab));
   std::optional<Mesh> mesh = packed_mesh(std::move(faces), vertex_approx, slab);
   if (!mesh) {  // inputs with other rationals than dyadic ones: Vec3s
     vertex_approx.clear();
-    mesh = output_mesh(soup(&vertex_approx, &limbs));
+    mesh = output_mesh(soup(&vertex_approx, limbs));
   }
-  FacetPlanes planes;
-  DyadicPoints& normals = size_packed_planes(planes, num_facets())->packed_for_writing();
-  NormalScratch scratch(*this, normals, normals.limbs());
-  write_normals(planes, 0, num_facets(), scratch);
-  return assemble(std::move(*mesh), std::move(vertex_approx), std::move(planes), std::move(limbs));
+  return {std::move(*mesh), std::move(vertex_approx)};
 }
 
 namespace {

@@ -74,6 +74,9 @@ class SumFacetBuilder {
   /// share what is left of the normals and the vertices' coordinates (same
   /// result).
   [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
+  /// The mesh build() makes, with its points, but no facet planes: what
+  /// every representation of the output needs (the benchmarks' `limit mesh`).
+  [[nodiscard]] Mesh build_mesh() const;
 
   /// The glued facets as a soup: one point per distinct vertex pair (its
   /// exact coordinates computed once), facets in the order added. build()
@@ -89,6 +92,13 @@ class SumFacetBuilder {
   // Facet i's normal and its approximation into planes.
   void write_normal(FacetPlanes& planes, std::size_t i, NormalScratch& scratch) const;
   [[nodiscard]] ConvexPolyhedron build_on_two_threads() const;
+  // build()'s mesh with its points, and the points' approximations. Points
+  // that are not dyadic keep their limbs in *limbs, or their own if null.
+  struct MeshWithApprox {
+    Mesh mesh;
+    VertexApproximations approx;
+  };
+  [[nodiscard]] MeshWithApprox mesh_with_points(LimbArena* limbs) const;
   // soup(), and if approx is not null the approximations of its points; if
   // limbs is not null, the points keep their limbs there.
   [[nodiscard]] PolygonSoup soup(VertexApproximations* approx, LimbArena* limbs) const;
