@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "bench_operands.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -53,6 +54,10 @@ const Pair& family_pair(Family family, int k) {
 std::string family_label(Family family, int k) {
   return (family == Family::sphere_rotated ? "Sphere" + std::to_string(k) + "+rotSphere" : "Cube+Sphere") +
          std::to_string(k);
+}
+
+void report_minimum(benchmark::internal::Benchmark* b) {
+  b->ComputeStatistics("min", +[](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
 }
 
 int largest_family_k() {

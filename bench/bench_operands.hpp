@@ -5,6 +5,8 @@
 /// both measure the identical inputs under the identical row numbers.
 #pragma once
 
+#include <benchmark/benchmark.h>
+
 #include <array>
 #include <span>
 #include <string>
@@ -37,6 +39,13 @@ struct Pair {
 const Pair& family_pair(Family family, int k);
 /// "Sphere5+rotSphere5" or "Cube+Sphere5".
 std::string family_label(Family family, int k);
+
+/// Adds the minimum over the repetitions to b's statistics ("min" in the
+/// JSON, read by the scripts' --min). This host's speed moves in spells of
+/// seconds to minutes: run with --benchmark_enable_random_interleaving, the
+/// repetitions of every row spread over the whole run, and each row's
+/// minimum is its time in the run's fastest spell, so rows compare fairly.
+void report_minimum(benchmark::internal::Benchmark* b);
 
 /// The largest k of the scaling families in this run: 7, or 8 when the
 /// environment variable CVMS_BENCH_LARGE is 1 (Sphere8 + rotated Sphere8:

@@ -82,6 +82,7 @@ void run_sum(benchmark::State& state, const cvms::Options& options, const cvms::
 void table_args(benchmark::internal::Benchmark* b) {
   for (int row = 0; row < static_cast<int>(kRows.size()); ++row) b->Arg(row);
   b->Unit(benchmark::kMillisecond);
+  cvms_bench::report_minimum(b);
 }
 
 void BM_CHMS(benchmark::State& state) { run_sum(state, with_algorithm(Algorithm::chms)); }
@@ -159,10 +160,12 @@ void run_output_only(benchmark::State& state, Family family, bool full) {
 void family_args(benchmark::internal::Benchmark* b) {
   for (int k = 3; k <= cvms_bench::largest_family_k(); ++k) b->Arg(k);
   b->Unit(benchmark::kMillisecond);
+  cvms_bench::report_minimum(b);
 }
 void small_family_args(benchmark::internal::Benchmark* b) {
   for (int k = 3; k <= 5; ++k) b->Arg(k);
   b->Unit(benchmark::kMillisecond);
+  cvms_bench::report_minimum(b);
 }
 
 void BM_CVMS_SphereRot(benchmark::State& state) { run_family(state, Family::sphere_rotated, {}); }

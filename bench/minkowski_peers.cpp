@@ -30,12 +30,14 @@ using cvms_bench::Family;
 void table_args(benchmark::internal::Benchmark* b) {
   for (int row = 0; row < static_cast<int>(cvms_bench::kTableRows.size()); ++row) b->Arg(row);
   b->Unit(benchmark::kMillisecond);
+  cvms_bench::report_minimum(b);
 }
 
 // k from 3 to `largest` (capped at the families' largest k of this run).
 void family_ks(benchmark::internal::Benchmark* b, int largest) {
   for (int k = 3; k <= std::min(largest, cvms_bench::largest_family_k()); ++k) b->Arg(k);
   b->Unit(benchmark::kMillisecond);
+  cvms_bench::report_minimum(b);
 }
 
 // Sphere_k + rotated Sphere_k has (10 * 4^(k-1) + 2)^2 sums: 6.6 M at k = 5

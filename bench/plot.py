@@ -8,7 +8,7 @@ JSON output, after the paper's Fig. 12:
   right: Sphere_k + rotated Sphere_k, k = 3..: runtime against the number of
          OUTPUT facets, with the output-mesh limits and the peers.
 
-Both axes logarithmic. usage: bench/plot.py [--cpu] results.json [-o docs/fig12.svg]
+Both axes logarithmic. usage: bench/plot.py [--cpu] [--min] results.json [-o docs/fig12.svg]
 """
 import bench_json
 import math
@@ -18,6 +18,8 @@ import sys
 # --cpu selects the CPU time, steadier when other jobs share the machine
 # (every benchmark here is single-threaded).
 TIME_FIELD = "real_time"
+# Which statistic of the repetitions: the median, or with --min the minimum.
+STATISTIC = "median"
 
 # (benchmark name prefix, legend, colour, dash): one style per algorithm, same in both panels.
 STYLES = {
@@ -41,7 +43,7 @@ SCALING = {"BM_CVMS_SphereRot": "CVMS", "BM_CVMS_2threads_SphereRot": "CVMS_2thr
 def load(path):
     table, scaling = {}, {}  # algorithm -> {arg: ms}
     table_x, scaling_x = {}, {}  # arg -> x value
-    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD):
+    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD, STATISTIC):
         if prefix in TABLE:
             table.setdefault(TABLE[prefix], {})[arg] = ms
             if "input_facets" in b:
@@ -134,10 +136,8 @@ def panel(series, xs, title, xlabel, ox, oy, w, h):
 
 
 def main(args):
-    global TIME_FIELD
-    if "--cpu" in args:
-        TIME_FIELD = "cpu_time"
-        args = [a for a in args if a != "--cpu"]
+    global TIME_FIELD, STATISTIC
+    TIME_FIELD, STATISTIC, args = bench_json.options(args)
     output = "docs/fig12.svg"
     if "-o" in args:
         i = args.index("-o")
@@ -156,7 +156,8 @@ def main(args):
            f'<rect width="{width}" height="{height}" fill="white"/>']
     svg += body
     svg.append(f'<text x="{width / 2}" y="{height - 12}" text-anchor="middle" fill="#555">'
-               f'Google Benchmark {"CPU" if TIME_FIELD == "cpu_time" else "real"} time, release build, '
+               f'Google Benchmark {"CPU" if TIME_FIELD == "cpu_time" else "real"} time '
+               f'({"minimum" if STATISTIC == "min" else "median"} of the repetitions), release build, '
                'all algorithms side by side in one run; '
                'peers hull the pairwise vertex sums (hull time only).</text>')
     svg.append("</svg>")

@@ -10,7 +10,7 @@ slope, the issue's measure) and the least-squares slope over all k.
 Output facets are those of the exact sum (from our rows); the peers' rows
 are matched to them by family and k.
 
-usage: bench/scaling.py [--cpu] results.json > scaling.md
+usage: bench/scaling.py [--cpu] [--min] results.json > scaling.md
 """
 import bench_json
 import math
@@ -20,6 +20,8 @@ import sys
 # --cpu selects the CPU time, steadier when other jobs share the machine
 # (every benchmark here is single-threaded).
 TIME_FIELD = "real_time"
+# Which statistic of the repetitions: the median, or with --min the minimum.
+STATISTIC = "median"
 
 FAMILIES = {"SphereRot": "Sphere_k + rotated Sphere_k", "CubeSphere": "Cube + Sphere_k"}
 # Benchmark name prefix (before "_<family>/k") -> column.
@@ -37,7 +39,7 @@ def load(path):
     times = {f: {} for f in FAMILIES}
     peaks = {f: {} for f in FAMILIES}
     facets = {f: {} for f in FAMILIES}
-    for prefix, k, ms, b in bench_json.runs(path, TIME_FIELD):
+    for prefix, k, ms, b in bench_json.runs(path, TIME_FIELD, STATISTIC):
         if prefix not in names:
             continue
         family, column = names[prefix]
@@ -103,10 +105,8 @@ def print_family(family, times, peaks, facets):
 
 
 def main(args):
-    global TIME_FIELD
-    if "--cpu" in args:
-        TIME_FIELD = "cpu_time"
-        args = [a for a in args if a != "--cpu"]
+    global TIME_FIELD, STATISTIC
+    TIME_FIELD, STATISTIC, args = bench_json.options(args)
     if len(args) != 1:
         sys.exit(__doc__)
     times, peaks, facets = load(args[0])

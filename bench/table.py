@@ -6,7 +6,7 @@ the peers (qhull, CGAL: hull of the pairwise vertex sums, built with
 -DCVMS_BENCH_PEERS=ON) with peer/CVMS ratios, and CVMS's peak heap.
 With --memory, a second table gives every algorithm's peak heap.
 
-usage: bench/table.py [--memory] [--cpu] results.json > table.md
+usage: bench/table.py [--memory] [--cpu] [--min] results.json > table.md
 """
 import bench_json
 import sys
@@ -15,6 +15,8 @@ import sys
 # --cpu selects the CPU time, steadier when other jobs share the machine
 # (every benchmark here is single-threaded).
 TIME_FIELD = "real_time"
+# Which statistic of the repetitions: the median, or with --min the minimum.
+STATISTIC = "median"
 
 ROWS = ["Tetra", "Hedra", "TruncatedCube", "Sphere1", "Sphere2", "Sphere3", "Sphere4", "Sphere5", "Sphere6"]
 # Paper's Table 1: (CHMS, ESSDMS, CVMS) seconds.
@@ -40,7 +42,7 @@ def load(path):
     facets[row] = (input, output) from our rows (the peers do not report the
     output facet count: qhull merges in floating point, CGAL triangulates)."""
     times, peaks, facets = {}, {}, {}
-    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD):
+    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD, STATISTIC):
         if prefix not in BENCHMARKS:
             continue
         algorithm = BENCHMARKS[prefix]
@@ -105,10 +107,8 @@ def memory_table(times, peaks):
 
 
 def main(args):
-    global TIME_FIELD
-    if "--cpu" in args:
-        TIME_FIELD = "cpu_time"
-        args = [a for a in args if a != "--cpu"]
+    global TIME_FIELD, STATISTIC
+    TIME_FIELD, STATISTIC, args = bench_json.options(args)
     memory = "--memory" in args
     paths = [a for a in args if a != "--memory"]
     if len(paths) != 1:
