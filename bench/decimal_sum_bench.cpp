@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Sums of hulls of decimal point clouds (issue 14): the coordinates of
+// Sums of hulls of decimal point clouds: the coordinates of
 // scanned meshes are short decimals, none of them a double, so every exact
 // value has a denominator 10^6 and nothing is dyadic. Two rows of the same
 // size:
