@@ -14,8 +14,8 @@
 //
 // The clouds: n points spread in a thin shell (radius 0.994..1) of the unit
 // ball, coordinates rounded to 6 decimals, so that about a quarter of them
-// are hull vertices (n = 20,000 gives a hull of about 4,500 vertices, the
-// size of a typical scanned part). Built once, outside the timing; counters give the
+// are hull vertices (n = 20,000 gives a hull of about 4,500 vertices).
+// Built once, outside the timing; counters give the
 // output facets and the time per output facet.
 #include <benchmark/benchmark.h>
 
