@@ -41,8 +41,8 @@ const Pair& family_pair(Family family, int k);
 std::string family_label(Family family, int k);
 
 /// Adds the minimum over the repetitions to b's statistics ("min" in the
-/// JSON, read by the scripts' --min). This host's speed moves in spells of
-/// seconds to minutes: run with --benchmark_enable_random_interleaving, the
+/// JSON, read by the scripts' --min). A shared host's speed moves in spells
+/// of seconds to minutes: run with --benchmark_enable_random_interleaving, the
 /// repetitions of every row spread over the whole run, and each row's
 /// minimum is its time in the run's fastest spell, so rows compare fairly.
 void report_minimum(benchmark::internal::Benchmark* b);

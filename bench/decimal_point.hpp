@@ -2,7 +2,7 @@
 // A point as a text exporter writes it (Meshlab and most CAD tools: 6
 // decimals, "%.6f") and as cvms then reads it: exact decimals, not dyadic,
 // so the benchmark rows on decimal input see the denominators 10^6 that real
-// files carry (issue 14's decimal rows).
+// files carry.
 #pragma once
 
 #include <cstdio>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Sums of hulls of decimal point clouds (issue 14): the coordinates of
-// scanned meshes are short decimals, none of them a double, so every exact
+// Sums of hulls of decimal point clouds: the coordinates of scanned meshes
+// are short decimals, none of them a double, so every exact
 // value has a denominator 10^6 and nothing is dyadic. Two rows of the same
 // size:
 //
@@ -10,12 +10,12 @@
 //  - self/<n>: A + A. Every facet of A has a parallel twin in the other
 //    operand and every contributing-vertex decision is an exact tie, which no
 //    floating-point filter can prove: the worst case for the filters. The
-//    issue's target is at most 2x the general row's time per output facet.
+//    target is at most 2x the general row's time per output facet.
 //
 // The clouds: n points spread in a thin shell (radius 0.994..1) of the unit
 // ball, coordinates rounded to 6 decimals, so that about a quarter of them
-// are hull vertices (n = 20,000 gives a hull of about 4,500 vertices, the
-// size the issue names). Built once, outside the timing; counters give the
+// are hull vertices (n = 20,000 gives a hull of about 4,500 vertices).
+// Built once, outside the timing; counters give the
 // output facets and the time per output facet.
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Half-spaces (issue 16): exact from_halfspaces on the facet planes of
+// Half-spaces: exact from_halfspaces on the facet planes of
 // Sphere4..Sphere6 (1,280 .. 20,480 rows, none redundant) and on random
 // redundant systems (halfspace_operands.hpp), the Pontryagin difference of
 // Sphere_k and a small cube and of two random hulls of realistic size.

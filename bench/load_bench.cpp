@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// What a user waits for before any sum (issue 14): loading a polyhedron,
+// What a user waits for before any sum: loading a polyhedron,
 // i.e. parsing its exact OFF text and validating it (ConvexPolyhedron::
 // from_soup: convexity, merging, planes). Two inputs: Sphere6 (20,480
 // triangles, double coordinates written as their exact decimal expansions)
@@ -18,7 +18,7 @@
 // And what a user waits for after a sum: write/<input> writes the exact OFF
 // of Sphere6 and of Sphere6 + rotated Sphere6 (a 60,000-facet result) to
 // memory, next to sum/Sphere6+rotated_Sphere6, the in-process sum it is
-// the output of (issue 14: writing costs a small fraction of computing).
+// the output of (writing should cost a small fraction of computing).
 #include <benchmark/benchmark.h>
 
 #include <cstdint>

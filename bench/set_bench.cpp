@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Sums of convex sets of every dimension (issue 15): a 1,000-gon and a
+// Sums of convex sets of every dimension: a 1,000-gon and a
 // segment plus Sphere6 (tilted, so that no facet is parallel), zonotopes of
 // n = 10 .. 200 seeded generators (output size n^2 - n + 2 vertices: time
 // against output size gives the log-log slope), and the n-ary sum of 10

@@ -2,9 +2,10 @@
 # Runs doxygen over the public headers (Doxyfile: include/cvms) and reports
 # every undocumented public declaration or documentation error.
 #
-# First, without doxygen, it checks that the umbrella header cvms/cvms.hpp
+# First, without doxygen, it runs scripts/check-words.sh (no process words in
+# the tracked files) and checks that the umbrella header cvms/cvms.hpp
 # includes exactly the headers directly in include/cvms/ (not those of its
-# subfolders); a mismatch always fails.
+# subfolders); a hit or a mismatch always fails.
 #
 # Installs doxygen with apt-get when it is missing and we are root; otherwise
 # skips with a note. Reports but does not fail, unless CVMS_DOCS_STRICT=1
@@ -12,6 +13,8 @@
 # check. HTML goes to build/docs/html.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+scripts/check-words.sh
 
 expected=$(cd include/cvms && ls -- *.hpp | grep -vx 'cvms.hpp' | sed 's|^|cvms/|' | sort)
 included=$(sed -n 's|^#include "\(cvms/[^"]*\.hpp\)"$|\1|p' include/cvms/cvms.hpp | sort)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Sums keep their exact values in arenas (lib/numeric/limb_arena.hpp, issue
-// 14): the result, a copy, a move and a copy that outlives its original read
+// Sums keep their exact values in arenas (lib/numeric/limb_arena.hpp): the
+// result, a copy, a move and a copy that outlives its original read
 // back the same exact values, on one thread and on several, and operations
 // on such a result make values of their own. The expected values are heap
 // copies made before anything is moved; that they are the right sums is what

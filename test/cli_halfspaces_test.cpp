@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `cvms diff`, `cvms halfspaces` and `cvms hull --from-halfspaces` (issue 16)
+// `cvms diff`, `cvms halfspaces` and `cvms hull --from-halfspaces`
 // run as a program on real files: hand-checked results (the cube [0,2]^3
 // minus the unit cube is the unit cube at the origin; a cube minus itself is
 // {0}), the cdd file round trip and the exit codes of bad input and usage

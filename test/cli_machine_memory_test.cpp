@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The tool's machine-fitted sum limits (tools/cvms/machine_memory.hpp, issue
-// 18 item 5), on hand-picked memory sizes.
+// The tool's machine-fitted sum limits (tools/cvms/machine_memory.hpp: a
+// sum's output can be quadratic in its input), on hand-picked memory sizes.
 #include <gtest/gtest.h>
 
 #include <cstdint>

@@ -336,7 +336,7 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
   expect_bad_input("check dent.off", "dent.off");
   Outcome dent = run("check dent.off");
   EXPECT_NE(dent.err.find("not_convex"), std::string::npos) << dent.err;
-  // A non-convex flat face (issue 15: flat input is a set, but a reflex one is not).
+  // A non-convex flat face (flat input is a set, but a reflex one is not).
   write_text("bent.off", "OFF\n4 1 0\n0 0 0\n4 0 0\n1 1 0\n0 4 0\n4 0 1 2 3\n");
   expect_bad_input("check bent.off", "bent.off: face 0: polygon: vertex 2 is a reflex corner");
   // Bad input on stdin is named as such.
@@ -363,7 +363,7 @@ std::string expected_default_max_memory() {
   return mib % 1024 == 0 ? std::to_string(mib / 1024) + "G" : std::to_string(mib) + "M";
 }
 
-// Issue 18, item 5: output quadratic in the input. Two n-gon prisms with
+// Output quadratic in the input. Two n-gon prisms with
 // perpendicular axes have about n^2 / 2 output facets; sum refuses them
 // with one line naming the limit and the option that raises it, writes
 // nothing, and the options take sizes with suffixes.
@@ -410,8 +410,8 @@ TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
     expect_usage(std::string("sum a.off a.off -o t.off --max-facets ") + bad);
 
   // The help shows the defaults: the library's facet limit, and its memory
-  // limit lowered to half of a small machine's memory (issue 18: a sum the
-  // machine cannot hold is refused before the OOM killer ends it).
+  // limit lowered to half of a small machine's memory (a sum the machine
+  // cannot hold is refused before the OOM killer ends it).
   o = run("sum --help");
   EXPECT_NE(o.out.find("--max-facets"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find(std::to_string(SumLimits{}.max_output_facets)), std::string::npos) << o.out;
@@ -421,7 +421,7 @@ TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
       << o.out;
 }
 
-// ---- convex sets of every dimension (issue 15) --------------------------------
+// ---- convex sets of every dimension ------------------------------------------
 
 TEST_F(Cli, FlatInputsAndSumsOfMany) {
   // hull of coplanar points writes the polygon; check reports the dimension.
@@ -472,7 +472,7 @@ TEST_F(Cli, GenZonotope) {
   expect_usage("gen zonotope --generators 0");
 }
 
-// Issue 18, item 5, for the sums of sets: a polygon plus a polyhedron (and
+// Output quadratic in the input, for the sums of sets: a polygon plus a polyhedron (and
 // sums of many) are counted before they are built and refused with the
 // same limit error and hint as two polyhedra; a huge zonotope is refused
 // at once.
@@ -509,10 +509,10 @@ TEST_F(Cli, SetSumLimitsRefuseBigSums) {
   EXPECT_FALSE(fs::exists(file("z.off")));
 }
 
-// ---- issue 18: atomic output, readers' limits, messages ------------------------
+// ---- atomic output, readers' limits, messages ---------------------------------
 
-// Item 6: `cvms sum x.stl x.stl -o x.stl` failed (beyond float) and left
-// x.stl at 0 bytes; `--float` beyond double emptied the output likewise.
+// `cvms sum x.stl x.stl -o x.stl` fails (beyond float), and `--float` beyond
+// double fails too: neither may leave the output file at 0 bytes.
 TEST_F(Cli, FailedWriteLeavesTheOldFileByteIdentical) {
   // A box whose corner is at 2^127 * 1.5: in float range, its double is not.
   write_text("x.off", "OFF\n4 4 0\n0 0 0\n" + std::string("255211775190703847597530955573826158592") +
@@ -534,7 +534,7 @@ TEST_F(Cli, FailedWriteLeavesTheOldFileByteIdentical) {
     EXPECT_EQ(entry.path().filename().string().find(".cvms-"), std::string::npos) << entry.path();
 }
 
-// Item 9: -o /dev/null was refused for want of an extension; --format.
+// -o /dev/null needs no extension; --format names the format.
 TEST_F(Cli, OutputFormatFromFormatOptionOrDevice) {
   EXPECT_EQ(run("gen cube -o /dev/null").code, 0);
   Outcome to_stdout = run("gen cube -o /dev/stdout");
@@ -548,7 +548,7 @@ TEST_F(Cli, OutputFormatFromFormatOptionOrDevice) {
   expect_usage("gen cube -o x.off --format ply");
 }
 
-// Item 9: a failed write to stdout or /dev/full named no file or reason.
+// A failed write to stdout or /dev/full names the file and the reason.
 TEST_F(Cli, FailedWritesNameTheFileAndTheReason) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
   expect_bad_input("gen cube -o /dev/full", "cannot write '/dev/full': No space left on device");
@@ -564,8 +564,8 @@ TEST_F(Cli, FailedWritesNameTheFileAndTheReason) {
   expect_bad_input("gen cube -o d.off", "cannot write 'd.off': it is a directory");
 }
 
-// Item 9: `hull DIR` said "read error after 0 bytes"; an unreadable stdin
-// was "empty input".
+// `hull DIR` names the directory, not "read error after 0 bytes"; an
+// unreadable stdin is named as such, not "empty input".
 TEST_F(Cli, DirectoriesAndUnreadableStdinAreNamed) {
   fs::create_directory(file("d.xyz"));
   expect_bad_input("hull d.xyz", "cannot read 'd.xyz': it is a directory");
@@ -575,7 +575,7 @@ TEST_F(Cli, DirectoriesAndUnreadableStdinAreNamed) {
   expect_bad_input("hull - 0>/dev/null", "cannot read standard input: it is open for writing only");
 }
 
-// Item 8: /dev/zero as input ends at once; --max-bytes and --max-line-bytes
+// /dev/zero as input ends at once; --max-bytes and --max-line-bytes
 // lower the readers' limits (before or after the command name).
 TEST_F(Cli, DevZeroAndTheReadLimitOptions) {
   expect_bad_input("hull /dev/zero", "/dev/zero:1: a NUL byte at byte 0");
@@ -588,8 +588,8 @@ TEST_F(Cli, DevZeroAndTheReadLimitOptions) {
   expect_usage("check s.off --max-bytes 1e6");
 }
 
-// Item 9: gen prism --points 1000001 passed the CLI range and then exited 1;
-// --seed beyond 2^64-1 or negative was accepted silently.
+// gen prism --points 1000001 is a usage error (caught in the CLI's range,
+// not later as exit 1); --seed beyond 2^64-1 or negative is refused.
 TEST_F(Cli, GenCountsAndSeedsOutOfRangeAreUsageErrors) {
   expect_usage("gen prism --points 1000001");
   expect_usage("gen random --points 10000001");
@@ -602,7 +602,7 @@ TEST_F(Cli, GenCountsAndSeedsOutOfRangeAreUsageErrors) {
             test::describe(shapes::random_hull(std::numeric_limits<std::uint64_t>::max(), 5)));
 }
 
-// Item 9: file names with terminal escape codes were printed raw.
+// File names with terminal escape codes are escaped, never printed raw.
 TEST_F(Cli, ControlCharactersInFileNamesAreEscaped) {
   Outcome o = run("check \"$(printf 'evil\\033[2J.off')\"");
   EXPECT_EQ(o.code, 1) << o.err;

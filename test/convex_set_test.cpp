@@ -109,17 +109,17 @@ TEST(ConvexSet, PolygonErrors) {
                                                    v3(-6, -8, 0)});
       },
       ErrorCategory::not_convex, "winds around 2 times");
-  // Review finding: a bow tie (zero signed area, not collinear) is not
+  // A bow tie (zero signed area, not collinear) is not
   // convex, as from_mesh says, not degenerate.
   expect_error(
       [] { (void)ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(1, 1, 0), v3(1, 0, 0), v3(0, 1, 0)}); },
       ErrorCategory::not_convex, "zero signed area");
 }
 
-// Review finding (issue 18 item 4, flat path): the area of a polygon whose
-// vertices have different denominators was summed in one running rational,
-// quadratic in the degree (40,000 vertices took 6.8 s). A 20,000-gon on a
-// parabola with a denominator per vertex now takes well under a second.
+// The area of a polygon whose vertices have different denominators, summed in
+// one running rational, would be quadratic in the degree (seconds for
+// 40,000 vertices). A 20,000-gon on a parabola with a denominator per vertex
+// must take well under a second.
 TEST(ConvexSet, BigPolygonWithManyDenominatorsIsNotQuadratic) {
   std::vector<Vec3> cycle;
   const int n = 20000;

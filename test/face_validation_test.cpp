@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The filtered input path of ConvexPolyhedron::from_mesh (issue 14) and its
-// linear cost in the face degree (issue 18, item 4): the predicates on
+// The filtered input path of ConvexPolyhedron::from_mesh and its linear cost
+// in the face degree: the predicates on
 // differences of points against an exact reference written out here, and
 // polygon faces (random, collinear runs, nearly coplanar, reflex, wound
 // twice, tiny and 1e9-scale, rationals of different denominators) judged by
@@ -347,9 +347,9 @@ std::vector<Vec2> rational_circle(int n) {
   return points;
 }
 
-// Issue 18, item 4: a face of degree d whose vertices have different
-// denominators cost O(d^2) (the exact area vector grew with the face and was
-// re-approximated per vertex): `cvms check` of a 40,000-gon prism took 10 s.
+// A face of degree d whose vertices have different denominators must cost
+// O(d) to check, not O(d^2) (an exact area vector that grows with the face
+// and is re-approximated per vertex would take seconds on a 40,000-gon prism).
 // CPU seconds of ConvexPolyhedron::from_soup on the prism over the n-gon
 // of rational_circle(n); its counts checked.
 double seconds_to_validate_prism(int n) {
@@ -366,9 +366,9 @@ double seconds_to_validate_prism(int n) {
 
 TEST(FaceValidation, BigPrismWithDifferentDenominatorsIsLinear) {
   // Four times the corners take about four times as long where quadratic
-  // took sixteen: a ratio of two runs, so that the machine's speed and a
-  // sanitizer's slowdown cancel (an absolute 5 s limit failed under ASan on
-  // a slow host), with a little slack for the small run's noise.
+  // would take sixteen: a ratio of two runs, so that the machine's speed and
+  // a sanitizer's slowdown cancel (an absolute limit would fail under ASan
+  // on a slow host), with a little slack for the small run's noise.
   const double small = seconds_to_validate_prism(10000);
   const double big = seconds_to_validate_prism(40000);
   EXPECT_LT(big, 8.0 * small + 0.05) << "10,000-gon " << small << " s, 40,000-gon " << big << " s";

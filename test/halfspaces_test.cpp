@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Half-spaces in and out and the Pontryagin difference (issue 16), against
+// Half-spaces in and out and the Pontryagin difference, against
 // independent oracles: the brute-force vertex enumeration over all triples
 // of rows (support/halfspace_oracle.hpp), the brute-force hull of
 // support/set_oracle.hpp, and hand-checked sets. Seeded random cases print

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Issue 18 item 1, hash flooding: hash_value(Vec3) is made of invertible
-// splitmix steps, so anyone can make points that all share one 64-bit hash.
-// The duplicate-point check of Mesh::from_soup and the STL vertex merges
-// went quadratic on them (a 3.8 MB OFF took 13 s, a valid 100,000-vertex
-// paraboloid 51 s). The attack points are made here, at test time, by
+// Hash flooding: hash_value(Vec3) is made of invertible splitmix steps, so
+// anyone can make points that all share one 64-bit hash. A duplicate-point
+// check or an STL vertex merge by hashing goes quadratic on them (tens of
+// seconds for a few MB of OFF or a valid 100,000-vertex paraboloid). The
+// attack points are made here, at test time, by
 // inverting the hash; each test first proves that they really collide, then
-// that the work they cause is bounded (O(n log n): the merges no longer hash).
+// that the work they cause is bounded (O(n log n): the merges do not hash).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -248,8 +248,8 @@ TEST(HashFlooding, BinaryStlMergeIsSortedAndKeepsFirstOccurrenceOrder) {
 // A valid convex polyhedron can collide too: integer (x, y) on a grid and
 // z = x^2 + y^2 + d / 2^128 with a tiny d chosen for the collision (every
 // point stays a vertex: the tangent plane at a grid point clears the others
-// by at least 1). The issue measured 51 s to check 100,000 such vertices;
-// here 5,041, checked against the known counts.
+// by at least 1). Checked by hashing, 100,000 such vertices take close to a
+// minute; here 5,041, checked against the known counts.
 TEST(HashFlooding, ValidParaboloidWithOneHashIsCheckedFast) {
   const std::uint64_t den_hash = hash_limbs({0, 0, 1});
   const Rational den = from_limbs({0, 0, 1});

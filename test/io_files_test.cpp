@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// write_file on real files (issue 18 item 6: a failed write truncated the
-// existing file): atomic replacement, the mode of the new file, targets that
-// are not regular files (/dev/null, /dev/full, a directory, a symlink), and
-// the reader messages of item 9 that concern line ends and the OFF header.
+// write_file on real files (a failed write must never truncate the existing
+// file): atomic replacement, the mode of the new file, targets that are not
+// regular files (/dev/null, /dev/full, a directory, a symlink), and the
+// reader messages that concern line ends and the OFF header.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -66,8 +66,8 @@ PolygonSoup tetrahedron_at(const Rational& scale) {
   return soup;
 }
 
-// Issue 18 item 6: `cvms sum x.stl x.stl -o x.stl` failed (beyond float) and
-// left x.stl at 0 bytes.
+// `cvms sum x.stl x.stl -o x.stl` fails (beyond float); x.stl must keep its
+// bytes, not be left at 0 bytes by an early truncation.
 TEST_F(WriteFile, FailedStlWriteLeavesTheOldFileByteIdentical) {
   const fs::path path = file("x.stl");
   write_file(path, tetrahedron_at(Rational(1)));
@@ -178,7 +178,7 @@ TEST_F(WriteFile, AnExplicitFormatNeedsNoExtension) {
                            {"extension"}));
 }
 
-// ---- reader messages (issue 18 item 9) ---------------------------------------
+// ---- reader messages ---------------------------------------------------------
 
 // Line ends of '\r' alone make the file one line: the error says so.
 TEST(ReaderMessages, CarriageReturnOnlyLineEndsAreNamed) {

@@ -350,10 +350,10 @@ TEST(Hostile, MegabytesOfBinaryJunkInEveryReader) {
   }
 }
 
-// ---- /dev/zero and endless lines (issue 18 item 8) ---------------------------
+// ---- /dev/zero and endless lines ---------------------------------------------
 
-// /dev/zero peaked at 8.4 GB before the 4 GiB max_bytes error: the line
-// buffer doubled past the limit. A NUL byte now ends a text reader at its
+// A line buffer that doubles as it reads /dev/zero would take GBs of memory
+// before the 4 GiB max_bytes error. A NUL byte ends a text reader at its
 // first chunk, and the STL reader (which reads whole) reads no more than a
 // binary STL's declared size plus a megabyte.
 TEST(Hostile, DevZeroIsRefusedAtOnceByEveryReader) {
@@ -420,7 +420,7 @@ TEST(Hostile, EndlessLineStopsAtMaxLineBytes) {
 // A box given as 12,288 coplanar triangles (sheared, so that the normals are
 // large integers) merges into 6 facets; the result keeps no more memory
 // than the same box given as 6 quads: none of the exact normals of the
-// faces merged away (issue 14's arena keeps only the facets').
+// faces merged away (the arena keeps only the facets').
 TEST(Hostile, AFinelyTriangulatedBoxKeepsOnlyItsFacets) {
   auto sheared = [](PolygonSoup soup) {
     for (Vec3& q : soup.points)
@@ -448,10 +448,10 @@ TEST(Hostile, AFinelyTriangulatedBoxKeepsOnlyItsFacets) {
   EXPECT_LE(fine_bytes, coarse_bytes + 1024);
 }
 
-// ---- exact numbers that are much bigger than their text (issue 18) ----------
+// ---- exact numbers that are much bigger than their text ----------------------
 
-// Issue 18 item 2: a 687 KB OFF of "1e99999" tokens peaked at 4.0 GB (each
-// a 332,000-bit integer); it now stops at its first token.
+// A 687 KB OFF of "1e99999" tokens, each a 332,000-bit integer if built,
+// would take GBs of memory; the reader stops at its first token.
 TEST(Hostile, ExponentTokensOf1e99999AreRefusedAtTheFirstOne) {
   std::string text = "OFF\n28625 0 0\n";
   for (int i = 0; i < 28625; ++i) text += "1e99999 1e99999 1e99999\n";
@@ -490,8 +490,8 @@ std::string paraboloid_off(const std::string& suffix) {
   return text;
 }
 
-// Issue 18 item 2: the 84-vertex polyhedron written "k e-99999" (3.7 KB)
-// took 16 s to check, 1,056 vertices 252 s. Refused at its first coordinate;
+// An 84-vertex polyhedron written "k e-99999" (3.7 KB) would take seconds to
+// check, 1,056 vertices minutes. Refused at its first coordinate;
 // at the cap (k e-1233, 4096-bit denominators) it reads and checks quickly.
 TEST(Hostile, PolyhedronWithCoordinatesWrittenKeMinus99999IsRefusedAtOnce) {
   ASSERT_EQ(ConvexPolyhedron::from_soup([] {
@@ -525,8 +525,8 @@ TEST(Hostile, PolyhedronWithCoordinatesWrittenKeMinus99999IsRefusedAtOnce) {
       ErrorCategory::limit, {"over.off:3:", "needs a denominator of at least 8189 bits", "limit of 4096"}));
 }
 
-// Issue 18 item 3: a tetrahedron of p/q with 500,000-digit p and q (each
-// token just under max_number_chars, 12 MB) took 128 s to check.
+// A tetrahedron of p/q with 500,000-digit p and q (each token just under
+// max_number_chars, 12 MB) would take minutes to check.
 TEST(Hostile, HalfMillionDigitFractionsAreRefusedFromTheirDigitCount) {
   const std::string big = std::string(500000, '9') + "/" + std::string(499999, '7') + "1";
   ASSERT_LT(big.size(), ReadLimits{}.max_number_chars);

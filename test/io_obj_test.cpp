@@ -69,7 +69,7 @@ TEST(ReadObj, FaceTokenSyntax) {
         << token;
 }
 
-// Issue 18 item 9: saturated indices were shown as +-9223372036854775807.
+// Huge indices are shown as typed, not saturated to +-9223372036854775807.
 TEST(ReadObj, HugeIndicesAreShownAsTyped) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_TRUE(
@@ -79,8 +79,8 @@ TEST(ReadObj, HugeIndicesAreShownAsTyped) {
                            {"face 1 has relative index -99999999999999999999999 but only 3"}));
 }
 
-// Issue 18 item 7: "v -1.#IND 0 1.#QNAN" was "missing y coordinate" ('#'
-// started a comment inside the token).
+// "v -1.#IND 0 1.#QNAN" is named as not finite, not "missing y coordinate"
+// (a '#' inside a token does not start a comment).
 TEST(ReadObj, MsvcNonFiniteSpellingsAreNamed) {
   EXPECT_TRUE(throws_error([] { obj_from("v -1.#IND 0 1.#QNAN\n"); }, ErrorCategory::parse,
                            {"text.obj:1:", "x coordinate of vertex 1 is not finite: '-1.#IND'"}));

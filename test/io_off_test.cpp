@@ -144,9 +144,8 @@ TEST(ReadOff, ExponentAtTheCapIsExactBeyondIsALimit) {
                            {"text.off:3:", "y coordinate of vertex 0", "exponent"}));
 }
 
-// Issue 18 item 9: colors were checked with a private exponent cap of 10
-// ("1e11" was "not a number") and without max_number_chars; COFF/NOFF
-// vertex values were not checked at all. All follow the number rules now.
+// Colors and COFF/NOFF vertex values follow the number rules (ReadLimits,
+// max_number_chars), with no private exponent cap ("1e11" is a number).
 TEST(ReadOff, ColorsAndNormalsFollowTheNumberRules) {
   const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
@@ -175,7 +174,7 @@ TEST(ReadOff, ColorsAndNormalsFollowTheNumberRules) {
                    ErrorCategory::limit, {"text.off:3:", "of vertex 0 '1e-99999'", "denominator"}));
 }
 
-// Issue 18 item 9: saturated indices were shown as 18446744073709551615.
+// Huge indices are shown as typed, not saturated to 18446744073709551615.
 TEST(ReadOff, HugeIndicesAreShownAsTyped) {
   const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
   EXPECT_TRUE(throws_error([&] { off_from(head + "3 0 1 123456789012345678901234567890\n"); },

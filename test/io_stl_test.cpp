@@ -122,8 +122,8 @@ std::string ascii_facet(const std::string& normal, const std::string& vertex) {
          "\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
 }
 
-// Issue 18 item 9: "1e500" as a normal was "not a number" (a private
-// exponent cap of 400). Normals follow the number rules now, NaN allowed.
+// Normals follow the number rules (no private exponent cap: "1e500" is a
+// number), NaN allowed.
 TEST(ReadStl, NormalsFollowTheNumberRules) {
   EXPECT_EQ(stl_from(ascii_facet("1e500 0 -1e-500", "0 0 0")).num_faces(), 1u);
   EXPECT_EQ(stl_from(ascii_facet("nan -1.#IND 1.#QNAN", "0 0 0")).num_faces(), 1u);
@@ -134,7 +134,7 @@ TEST(ReadStl, NormalsFollowTheNumberRules) {
                            {"mem.stl:2:", "normal component of facet 0 is not a number: 'up'"}));
 }
 
-// Issue 18 item 7: every MSVC spelling is refused as a coordinate.
+// Every MSVC spelling of a non-finite value is refused as a coordinate.
 TEST(ReadStl, MsvcNonFiniteCoordinatesAreRefused) {
   for (const char* token : {"1.#INF", "-1.#INF", "1.#IND", "-1.#IND00", "1.#QNAN", "1.#qnan0", "+1.#Inf"})
     EXPECT_TRUE(throws_error([&] { stl_from(ascii_facet("0 0 1", std::string("0 0 ") + token)); },

@@ -596,8 +596,8 @@ TEST(ReadPoints, BadLines) {
                            {"pts:3:", "2 vertices but only 1"}));
 }
 
-// Issue 18 item 7: '#' started a comment inside "1.#INF", so an OFF with
-// z = 1.#INF passed as a tetrahedron with z = 1 and `cvms hull` took it.
+// A '#' inside "1.#INF" must not start a comment: an OFF with z = 1.#INF
+// would pass as a tetrahedron with z = 1.
 TEST(Io, MsvcInfinitiesAreRefusedInEveryReader) {
   const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
   for (std::string token : {"1.#INF", "-1.#INF", "1.#IND", "-1.#IND", "1.#QNAN", "1.#SNAN", "1.#inf",

@@ -127,8 +127,8 @@ TEST(ProximitySupport, BadArguments) {
   Placement nan;
   nan.translation[1] = std::nan("");
   EXPECT_THROW(PlacedPolyhedron(c, nan), Error);
-  // Review finding: a singular placement that maps u to zero made every
-  // vertex tie and reported a facet that does not exist.
+  // A singular placement that maps u to zero would make every vertex tie and
+  // report a facet that does not exist: refused.
   Placement flat;
   flat.rotation = {{{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 0.0}}};
   EXPECT_THROW((void)support(PlacedPolyhedron(c, flat), v3(0, 0, 1), VertexId(0), true), Error);
@@ -326,8 +326,8 @@ TEST(ProximityNearestDoubleSqrt, CorrectlyRounded) {
   EXPECT_EQ(nearest_double_sqrt(parse_rational("1e-18")), 1e-9);
   EXPECT_EQ(nearest_double_sqrt(parse_rational("1e600")), 1e300);  // beyond the double range squared
   EXPECT_EQ(nearest_double_sqrt(parse_rational("1e-600")), 1e-300);
-  // Review finding: subnormal roots were rounded twice (at 53 bits, then by
-  // the scaling back). u is the smallest subnormal; tiny nudges decide.
+  // Subnormal roots must be rounded once, not twice (at 53 bits, then by the
+  // scaling back). u is the smallest subnormal; tiny nudges decide.
   const Rational u = Rational(std::ldexp(1.0, -1074));
   const Rational nudge(mpz_class(1), mpz_class(1) << 1200);  // 2^-1200: no double
   const auto square = [](const Rational& x) { return x * x; };

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The quickhull's output, down to the numbering of the points and the order
 // of the faces, is fixed by its exact decisions alone: faster filters must
-// not change it. The digests below were computed with the quickhull as it
-// was before the double filters (commit 787142b), so a filter that answers
+// not change it. The digests below were computed with an exact-only
+// quickhull (no double filters), so a filter that answers
 // a sign differently from the exact predicate, or a changed tie-break in the
 // initial simplex, shows up here even where the hull stays correct.
 #include <gtest/gtest.h>

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-// SumLimits for the sums of convex sets (issue 18, item 5, "output size is
-// quadratic in the input, with no guard", for the constructions of
-// lib/sets/): a 100,000-gon plus a 10,000-gon prism (about 5 x 10^8
+// SumLimits for the sums of convex sets (output size quadratic in the input,
+// for the constructions of lib/sets/): a 100,000-gon plus a 10,000-gon prism (about 5 x 10^8
 // facets) or a zonotope of 100,000 generators (about 10^10) must be refused
 // with Error(limit) from counts made before the output is built, quickly;
 // a sum within the limits is unaffected. The counts are exact where the

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Soak (label "soak"): SumLimits at their defaults on the full-size inputs of
-// issue 18, item 5. Two 10,000-gon prisms with non-parallel axes (3 MB as
-// OFF, 5 x 10^7 output facets, 24 GB before the kernel killed the sum) must
+// Soak (label "soak"): SumLimits at their defaults on full-size inputs whose
+// output is quadratic in the input. Two 10,000-gon prisms with non-parallel
+// axes (3 MB as OFF, 5 x 10^7 output facets, tens of GB unguarded) must
 // be refused by the default limits within seconds; Sphere7 + rotated
 // Sphere7, an honest large sum, must pass them.
 #include <gtest/gtest.h>

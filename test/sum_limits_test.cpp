@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// SumLimits (issue 18, item 5): "output size is quadratic in the input, with
-// no guard". Two n-gon prisms with non-parallel axes have about n^2 / 2
-// output facets (n = 10,000: 3 MB of input, 5 x 10^7 facets, and the sum
-// grew to 24 GB before the kernel killed it). Every algorithm must refuse
+// SumLimits: a sum's output size can be quadratic in its input. Two n-gon
+// prisms with non-parallel axes have about n^2 / 2 output facets
+// (n = 10,000: 3 MB of input, 5 x 10^7 facets, and unguarded the sum grows
+// to tens of GB until the kernel kills it). Every algorithm must refuse
 // such a sum with Error(limit) from counts it knows before it builds the
 // output, and stop its search once the count passes the limit; a sum within
 // the limits must be unaffected. The attack inputs are generated here.

@@ -80,28 +80,21 @@ class CofactorCache {
   // 8 with the least recently used entry replaced. The triangles of one
   // plane share an entry (quickhull.cpp), so fewer planes than points are
   // alive at a time: Sphere5's dual (5,120 points) asks about 2,925 planes,
-  // each computed once with an unbounded cache. A direct-mapped cache of
-  // 2^12 entries computed 4,667 sets (conflicts evicted planes in use); 8
-  // ways compute fewer (Sphere5's rows 157.9 → 148.6 M instructions,
-  // Sphere4's 40.1 → 37.5 M; 16 ways gained 0.4 % more, 2 ways half as
-  // much). Every entry is 340 bytes (E = 3) of memory first touched in the
-  // call, and on this machine a page fault costs about 13 µs: with 2^11
-  // entries instead of 2^10, Sphere4's dual (1,280 points) took 20 % longer
-  // (on 4 KiB pages, before the entries went on huge pages, below). The cap
-  // was 2^12 while the entries faulted in 4 KiB at a time: on Sphere6's dual
-  // (20,480 points) 2^14 entries took 3,900 → 5,100 page faults a call and
-  // longer under glibc's default policy. On huge pages the faults a call are
-  // the same at 2^12 and 2^14 (about 2,140 for the whole from_halfspaces),
-  // and 2^14 entries recompute far fewer evicted planes: from_halfspaces on
-  // Sphere6's facet planes 695 → 580 M instructions a call (callgrind; the
-  // cofactors alone 197 → 84 M), 0.90× the time in alternating runs. Only
-  // the keys are cleared; the cofactors are written when first
-  // used (zeroing them was a tenth of Sphere4's intersection, mostly page
-  // faults). From 256 KiB on (E = 3: 2^10 entries) the entries are one
-  // scratch block on huge pages (huge_page_blocks.hpp), which the kernel
-  // zeroes 2 MiB at a time on first use, one fault each. (Keys from calloc,
-  // left to the kernel to zero, took Sphere6 in a benchmark loop from about
-  // 37,000 to 52,000 page faults, and longer.) The recency clock may wrap
+  // each computed once with an unbounded cache. A direct-mapped cache
+  // recomputes many of them (conflicts evict planes in use); 8 ways compute
+  // fewer (16 ways gain little more, 2 ways about half as much). Every
+  // entry is 340 bytes (E = 3) of memory first touched in the call, so the
+  // entries are one scratch block on huge pages (huge_page_blocks.hpp) from
+  // 256 KiB on (E = 3: 2^10 entries), which the kernel zeroes 2 MiB at a
+  // time on first use, one fault each: on 4 KiB pages a larger cache costs
+  // more in page faults than it saves in cofactors. On huge pages the faults
+  // a call are the same for 2^12 and 2^14 entries, and 2^14 recompute far
+  // fewer evicted planes (on Sphere6's facet planes, about a sixth fewer
+  // instructions for the whole from_halfspaces). Only the keys are cleared;
+  // the cofactors are written when first used (zeroing them all would be a
+  // large share of a small intersection, mostly page faults), and the keys
+  // are not taken from calloc, whose memory the kernel zeroes page by page.
+  // The recency clock may wrap
   // after 2^32 questions: that only makes a worse choice of entry to
   // replace. A returned reference is valid until the next call (which may
   // replace its entry); every caller uses it within one expression.

@@ -599,11 +599,10 @@ class Quickhull {
   // stay below the huge-page threshold, the arrays take room for all of the
   // 2n − 4 of a hull of all n points (plus a cone) at once, up to what one
   // huge page holds (huge_page_blocks.hpp), then the rest of it; past that
-  // they grow as vectors do. Growing through every size made Sphere5's rows
-  // 21.5 against 17.9 ms; reserving for all n up front zeroed huge pages
-  // that the small hulls of redundant rows never used (10,000 and 100,000
-  // random rows 1.14 and 1.24 times slower), as it did for point clouds
-  // (10,000 random points in a cube 1.36 times slower).
+  // they grow as vectors do. Growing through every size costs Sphere5's rows
+  // about a fifth of their time; reserving for all n up front would zero
+  // huge pages that the small hulls of redundant rows (or of random point
+  // clouds) never use, and make those a quarter or more slower.
   void reserve_dual_triangles(std::size_t used) {
     constexpr std::size_t below_threshold = 4096;
     constexpr std::size_t one_huge_page =

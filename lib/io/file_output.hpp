@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Atomic file output for write_file (issue 18 item 6): a failed write used to
-// leave the target truncated, because the file was opened with truncation
-// before the writer had checked or rounded anything. Now a regular file (or
-// a new path) is written to a fresh temporary file in the target's
-// directory, renamed over the target only once everything is written and
+// Atomic file output for write_file: a failed write never destroys the
+// user's file. Opening the target with truncation would lose it before the
+// writer has checked or rounded anything (a sum written over one of its own
+// inputs, then refused). So a regular file (or a new path) is written to a
+// fresh temporary file in the target's directory, renamed over the target only once everything is written and
 // closed; on any failure the temporary is removed and the target is
 // untouched. A target that is not a regular file (/dev/null, a FIFO, a
 // terminal) is written directly: it cannot be replaced, and there is nothing

@@ -103,7 +103,8 @@ BinaryCorners load_corners(const std::string& data, std::uint32_t count) {
 
 // For each corner, the first corner (in file order) at the same position:
 // corners sorted by (bits, index), so O(n log n) whatever the values (an
-// unordered_map went quadratic on keys colliding in its buckets, issue 18).
+// unordered_map goes quadratic on keys that an input makes collide in its
+// buckets).
 std::vector<std::uint32_t> first_corner_at_same_position(std::vector<Corner> corners) {
   std::sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
     return a.bits != b.bits ? a.bits < b.bits : a.index < b.index;
@@ -193,7 +194,7 @@ PolygonSoup parse_ascii(LineReader& reader) {
   PolygonSoup soup;
   // A balanced tree of the distinct points (which never move in the
   // PointBuffer) in an exact order: O(log n) per vertex whatever the values,
-  // where a hash map went quadratic on points sharing one hash (issue 18).
+  // where a hash map goes quadratic on points that share one hash.
   std::map<const Vec3*, std::uint32_t, detail::RepresentationLess> index_of;
   PointBuffer points;
   Vec3 p;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the writers read: a polygon soup's points and faces, not owned, so that
 // a polyhedron is written straight from its own mesh. Copying its exact
-// coordinates into a PolygonSoup first, and destroying the copy, was a third
-// of writing Sphere6 + rotated Sphere6 (issue 14).
+// coordinates into a PolygonSoup first, and destroying the copy, would cost
+// a large share of writing a sum (a third for Sphere6 + rotated Sphere6).
 #pragma once
 
 #include <cstddef>

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The exact planes of a polyhedron's facets, and where a ConvexPolyhedron
 // keeps them: made once, when first asked for, unless its builder knew them
-// already (issue 14).
+// already.
 //
 // Why lazily: validating a mesh (ConvexPolyhedron::from_mesh) decides the
 // signs of a triangulated surface in general position with filtered
 // orientations of its vertices, so a program that loads and checks such a
 // polyhedron, or only reads its vertices, never pays for the primitive
-// normals' gcds and the offsets' products, which were half of loading a
+// normals' gcds and the offsets' products, about half of loading a
 // triangulated sphere. The offsets are made later still, when one is first
 // asked for (ConvexPolyhedron::plane_offset), also for a sum's output, whose
 // builder knows the normals: the sums and the validation never read them

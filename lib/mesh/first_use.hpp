@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Deduplication without hashing (issue 18, item 1): a hash container keyed
+// Deduplication without hashing: a hash container keyed
 // by input-derived values goes quadratic when an input makes the keys
 // collide (hash_value(Vec3) is invertible; std::hash of an integer is the
 // identity, so index keys j * n + v collide modulo a bucket count that n
 // hits). Sorting costs O(n log n) comparisons whatever the keys. The
-// numbering is by first use, as an insert-if-new map would give, so the
-// results are those of the hash maps this replaced.
+// numbering is by first use, as an insert-if-new map would give it, so the
+// results do not depend on how the duplicates were found.
 //
 // Integer keys under std::less (the sums' vertex keys a * n_B + b) take a
 // radix sort instead of the comparison sort: key and position packed into

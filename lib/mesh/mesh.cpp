@@ -117,8 +117,8 @@ KeyedPoint keyed_point(const Vec3& p, std::uint32_t index) noexcept {
 // exact order only splits points with equal doubles. The tuple order is a
 // strict weak order whose first two parts are equal exactly for equal
 // points, so equal points form one run, in index order, and the cost is
-// O(n log n) whatever the values (a hash set went quadratic on points that
-// share one hash, issue 18). Reports the same pair a scan in index order
+// O(n log n) whatever the values (a hash set goes quadratic on points that
+// share one hash, which an input can choose). Reports the same pair a scan in index order
 // would find first: the earliest second occurrence of any position, with the
 // first occurrence of that position.
 // \pre the coordinates are canonical.
@@ -156,7 +156,7 @@ void check_distinct_points(const std::vector<Vec3>& pts) {
 // Corners: corner c of face f (offsets[f] <= c < offsets[f + 1]) is the
 // directed edge from indices[c] to indices of the next corner of f. Read off
 // the offsets face by face rather than stored: three arrays of a corner each
-// were a fifth of building a sum's output mesh (issue 14).
+// would be a large share (about a fifth) of building a sum's output mesh.
 struct Corner {
   std::uint32_t at;        ///< c
   std::uint32_t next;      ///< the corner after c in its face

@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Exact vectors kept packed (dyadic_points.hpp) and made into Vec3s only when
-// a caller first asks for them (issue 14: "mpq_class made only when a caller
-// asks for one"): a sum's vertex positions (Mesh) and facet normals
+// a caller first asks for them: a sum's vertex positions (Mesh) and facet normals
 // (FacetPlanes).
 //
 // Why: a sum's output has hundreds of thousands of exact coordinates; as
-// Vec3s they were most of its heap and of the time to build and destroy it,
+// Vec3s they would be most of its heap and of the time to build and destroy it,
 // yet a program that sums and writes the result needs no mpq_class of them.
 // The Vec3s are made on the first call of vectors(), once, by whichever
 // thread asks first (std::call_once); the packed values stay, so later calls

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The bound on a Minkowski sum's output decided before the memory is spent
-// (issue 18, item 5). CVMS and ESSDMS know the number of translated and
+// (the output can be quadratic in the input). CVMS and ESSDMS know the number of translated and
 // corner facets exactly after their contributing-vertex searches, before
 // anything of the exact output exists, and count the edge facets as they
 // find them; each count is checked here against SumLimits, so that a sum

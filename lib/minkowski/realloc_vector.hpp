@@ -6,7 +6,7 @@
 // and, for large arrays, pages in fresh memory for all of it. The facet lists
 // of a sum grow to hundreds of megabytes before the output budget can refuse
 // a hostile pair (docs/errors.md, the perpendicular prisms): there, the copies
-// and their page faults were 40 % of the time. realloc of a block that was
+// and their page faults would be 40 % of the time. realloc of a block that was
 // mapped on its own (every large block on glibc) moves its pages with mremap,
 // without copying or touching them; elsewhere it is no worse than a vector.
 // Only the operations the facet builder needs.

@@ -116,12 +116,12 @@ class EdgeDirections {
 
   // Fetching ahead (prefetch_exact.hpp): a direction not yet known reads its
   // edge's ends through the mesh and then their approximations, two
-  // dependent misses in the order the search met the edges (a tenth of
-  // Sphere6 + rot. Sphere6 before); a known one is read from its cache.
+  // dependent misses in the order the search met the edges (unfetched, about
+  // a tenth of Sphere6 + rot. Sphere6); a known one is read from its cache.
   // fetch_ends `far` facets ahead; `near` ones ahead, once the ends have
   // arrived, the loop fetches what small(h) will read, at most an
   // ApproxVec3 from each address (a null one is nothing). The loop does
-  // the fetching itself: GCC dropped a void helper's prefetches.
+  // the fetching itself: GCC drops a void helper's prefetches.
   void fetch_ends(HalfedgeId h) const noexcept {
     __builtin_prefetch(&state_[Mesh::edge(h).index()]);
     __builtin_prefetch(p_.mesh().halfedge_targets() + Mesh::halfedge(Mesh::edge(h)).index());
@@ -331,7 +331,7 @@ void SumFacetBuilder::number_corners(PolygonSoup& soup, bool prefetch_operands,
   }
   // Sparse: numbered by sorting, not hashing (std::hash of an integer is
   // the identity, so keys j * nb + v that an input lines up modulo the
-  // bucket count would make a hash map quadratic; issue 18, item 1).
+  // bucket count would make a hash map quadratic).
   ScratchVector<std::uint64_t> keys;  // on huge pages: fresh memory at every sum (huge_page_blocks.hpp)
   keys.reserve(corners);
   for_each_corner([&](const VertexPair& p) { keys.push_back(p.a * nb + p.b); });

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Exact dyadic points without a GMP object per coordinate (issue 14: "exact
-// numbers without one heap allocation each").
+// Exact dyadic points without a GMP object per coordinate, so without one
+// heap allocation per exact number.
 //
 // Every coordinate of a Minkowski sum of inputs read from doubles is dyadic
 // (a double, or a sum of doubles: m / 2^e). Kept as mpq_class, each such
-// coordinate was a 32-byte mpq_t, a heap block for its denominator and its
+// coordinate would be a 32-byte mpq_t, a heap block for its denominator and its
 // numerator's limbs in an arena (limb_arena.hpp): about 220 bytes and three
 // pointer chases per point, made by GMP calls and freed one block at a
 // time. Here a coordinate is 16 bytes, PackedDyadic: its numerator inline

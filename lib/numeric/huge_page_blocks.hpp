@@ -6,12 +6,12 @@
 // memory in every call. glibc maps a block of 128 KiB or more on its own, or
 // gives the top of its heap back to the kernel when such a block is freed,
 // so the next call faults every page in again, one 4 KiB page at a time. On
-// the virtual machines this project is measured on a page fault costs
-// 8-13 us: from_halfspaces on Sphere5's 5,120 facet planes took 665 page
-// faults a call, a third of its time, where qhull's qhalf on the same rows
-// took none. One 2 MiB huge page is one fault that costs about what zeroing
-// it costs (touching 4 MiB of a plain mapping took 9.9 ms there, of one
-// advised for huge pages 0.28 ms).
+// a virtual machine a page fault can cost several microseconds, enough to
+// be a large share of a call on a few thousand rows (from_halfspaces on
+// Sphere5's 5,120 facet planes faults hundreds of pages a call, where
+// qhull's qhalf on the same rows faults none). One 2 MiB huge page is one
+// fault that costs about what zeroing it costs, far less than its 512 small
+// pages' faults.
 //
 // So a large block is its own mapping, starting at a 2 MiB boundary and
 // advised MADV_HUGEPAGE (Linux), of one of two kinds:

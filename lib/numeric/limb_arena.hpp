@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Compact exact storage (issue 14): the limbs of many exact numbers in a few
+// Compact exact storage: the limbs of many exact numbers in a few
 // large blocks (the numerators of rationals, their denominators longer than
 // one limb, and integers), so that an output polyhedron's hundreds of
 // thousands of exact numbers cost one heap block each instead of two or more,
@@ -24,12 +24,11 @@
 // A one-limb denominator stays in the limb mpq_init gave it (enough for 1
 // and for every power of two below 2^64, i.e. almost all of them; a longer
 // one, which would reallocate that limb, comes here too): freeing that limb
-// to move the denominator here as well was measured slower on the 2-core
-// machine (Sphere6 + rotated Sphere6: about 200 ms against 130 ms before and
-// 107-124 ms with this split, minimum of 5, glibc's default malloc policy).
-// The result then consisted of a few large blocks only, which glibc gives
-// back to the kernel when the result is destroyed (heap trimming), and the
-// next sum faulted them in again at about 13 us a page on that machine.
+// to move the denominator here as well is slower (by about half on
+// Sphere6 + rotated Sphere6 with glibc's default malloc policy): the result
+// then consists of a few large blocks only, which glibc gives back to the
+// kernel when the result is destroyed (heap trimming), and the next sum
+// faults them in again, page by page.
 //
 // A builder may instead give a fresh rational's denominator limb back at once
 // (give_back_denominator): the denominator becomes a view of a constant table
@@ -38,17 +37,11 @@
 // The planes a polyhedron makes from its own corners (a loaded, transformed
 // or hulled one: planes_from_first_corners) do this on whichever thread
 // makes them: they are made once per polyhedron rather than once per sum,
-// and a loaded Sphere6's planes took 8.7 against 9.5 ms (its 82,000
-// denominators no longer allocated, nor freed with the polyhedron; the
-// quickhull's convex_hull of 100,000 points, whose output's planes are made
-// the same way, was unchanged); so do a sum's packed vertices and normals
-// when a caller first asks for them as Vec3s (packed_vectors.hpp). Until
-// stop 41 a sum's own output was built here too, its worker's planes with
-// their denominators given back (two threads: 38.1 against 32.6 ms) and its
-// calling thread's not (given back there, glibc trimmed the heap's top after
-// each sum and the next one faulted its arrays in again: one thread 56-62
-// against 61-66 ms); since then a sum packs its vertices and normals
-// (dyadic_points.hpp) and makes no rational at all.
+// and a loaded Sphere6's 82,000 denominators are then neither allocated nor
+// freed with it; so do a sum's packed vertices and normals when a caller
+// first asks for them as Vec3s (packed_vectors.hpp). A sum's own output
+// makes no rational at all: it packs its vertices and normals
+// (dyadic_points.hpp).
 //
 // Older GMPs free unconditionally, so there store() copies into the value's
 // own heap limbs instead (same values, no saving).

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Power-of-two tests on GMP integers without a library call. Every dyadic
 // fast path asks this of each denominator it touches, and mpz_popcount (an
-// out-of-line loop over the limbs) measured 7-9 % of a whole Minkowski sum;
-// the denominators asked about are almost always a single limb.
+// out-of-line loop over the limbs) costs several percent of a whole
+// Minkowski sum; the denominators asked about are almost always a single
+// limb.
 #pragma once
 
 #include <gmp.h>

@@ -1,19 +1,18 @@
 // SPDX-License-Identifier: MIT
-// Fetching exact points ahead of the loops that read them (issue 14). A
+// Fetching exact points ahead of the loops that read them. A
 // point's exact coordinates sit behind two dependent loads, its mpq_structs
 // and then their limbs, and loops that visit vertices in facet order find
-// neither in cache: perf put 72 % of the sum's plane offsets (Sphere6 + rot.
-// Sphere6) and most of a loaded Sphere6's own planes on those two misses.
+// neither in cache: perf puts most of the time of a sum's plane offsets and
+// of a loaded polyhedron's own planes on those two misses.
 // Fetching the structs `far` iterations ahead and the limbs `near` ones
 // ahead (by then their structs have arrived) lets the misses overlap.
 //
-// Call these from the loop itself. A helper that took the loop's index and
-// a lambda was tried: GCC 12 judged the helper free of side effects (a
-// prefetch has none it counts), dropped the call before inlining it, and
-// every prefetch was gone (fixed_integer_dot, the plane offsets, went from
-// 4.5 to 23 % of Sphere6 + rot. Sphere6). A void member function that only
-// prefetched went the same way (the sum's normals, issue 14, stop 44):
-// helpers may compute addresses; the loop issues the prefetches.
+// Call these from the loop itself, never from a helper that only prefetches:
+// GCC (12) judges such a helper, a void function taking the loop's index and
+// a lambda or a void member function alike, free of side effects (a
+// prefetch has none it counts), drops the call before inlining it, and every
+// prefetch is gone, with the misses back in full. Helpers may compute
+// addresses; the loop issues the prefetches.
 #pragma once
 
 #include <cstddef>

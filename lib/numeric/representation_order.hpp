@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A total order on exact points for deduplication (issue 18 item 1). Hash
+// A total order on exact points for deduplication. Hash
 // containers keyed by hash_value go quadratic on inputs whose points share
 // one hash, and hash_value is made of invertible steps, so an input can
 // choose that; sorting (or a balanced tree) by an exact order costs

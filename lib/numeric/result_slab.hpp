@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// One block for the arrays of one result (issue 14: page faults per call).
+// One block for the arrays of one result, so that it faults in few pages.
 //
 // Why: see cvms/kept_allocator.hpp. A sum's output arrays, each its own
 // block, are fresh memory at every call and fault in 4 KiB at a time; carved

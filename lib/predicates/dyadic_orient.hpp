@@ -3,9 +3,9 @@
 // double, and sums of doubles such as CHMS's pairwise vertex sums): scaled to
 // a common power-of-two denominator they are integers, and the determinant
 // is evaluated in integers, with no gcd and, once the per-thread scratch has
-// grown, no allocation: 0.4-0.55 us against 2.9-3.3 us for the rational
-// evaluation on sums of doubles in [-1, 1] and +-1 (the CHMS inputs of Cube +
-// Sphere_k), as measured for the quickhull's exact fallbacks. Private to the
+// grown, no allocation: several times faster than the rational evaluation on
+// sums of doubles in [-1, 1] and +-1 (the CHMS inputs of Cube + Sphere_k,
+// the quickhull's exact fallbacks). Private to the
 // library.
 #pragma once
 

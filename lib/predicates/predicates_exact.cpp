@@ -13,7 +13,7 @@ Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) { return exact::sign_
 
 // cmp(u.x v.y, u.y v.x) with both sides over the positive denominator
 // den(u.x) den(u.y) den(v.x) den(v.y): four integer products a side and no
-// canonical rational (the ties of parallel facets' planar sums, issue 14).
+// canonical rational (the ties of parallel facets' planar sums).
 Sign sign_cross2(const Vec2& u, const Vec2& v) {
   struct Scratch {
     mpz_class left, right;
@@ -94,7 +94,7 @@ void positive_integer_multiple(const Vec3& n, mpz_class scratch[3], const mpz_cl
 // L / den(w_i)), one integer sum. The rational form canonicalises nine
 // intermediates, and their gcds were most of the exact cost: when the
 // coordinates are not dyadic (decimal input, where A + A makes every
-// contributing-vertex choice an exact tie: issue 14), and in the exact GJK,
+// contributing-vertex choice an exact tie), and in the exact GJK,
 // whose optimality test <w, v> >= <v, v> is an exact tie whenever the double
 // GJK's guess is right (v there is a rational point, not a normal).
 Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) {

@@ -3,7 +3,7 @@
 // (gjk.cpp); if they do, its final simplex starts the exact EPA (epa.cpp),
 // which finds the facet of M = A + (-B) nearest to the origin, and every
 // facet tied with it, from support points of M only: M is never built. The
-// answers are those of the whole-sum scan it replaced (penetration_by_sum.cpp,
+// answers are those of the whole-sum scan (penetration_by_sum.cpp,
 // the tests' reference), tie rule included: the smallest primitive normal
 // among the tied facets, so the answer does not depend on how either method
 // numbers facets. The witnesses come from the EPA's polytope too (epa.cpp),

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // penetration_by_sum(): the exact minimum translation distance on the whole
-// sum M = A + (-B) (CVMS), then a scan of its facets: the first version of
-// penetration(), now the reference of the EPA (epa.cpp), which uses the
+// sum M = A + (-B) (CVMS), then a scan of its facets: the reference of the
+// EPA that penetration() runs (epa.cpp), which uses the
 // claim below for M and for its inner polytopes.
 //
 // Claim: for a convex polytope M = {x : <n_f, x> <= c_f for all facets f}

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The first penetration(): the whole sum M = A + (-B) and a scan of its
-// facets. No longer the library's path (penetration.cpp runs the exact EPA
-// of epa.cpp); kept as the EPA's reference in the tests and the benchmark,
+// Penetration by the whole sum M = A + (-B) and a scan of its facets. Not
+// the library's path (penetration.cpp runs the exact EPA of epa.cpp, which
+// never builds M); kept as the EPA's reference in the tests and the benchmark,
 // and for convex sets whose M is flat, where there is no facet to find.
 #pragma once
 

@@ -227,7 +227,7 @@ void add_edge_facets(SumSoup& soup, const Meridians& q, const ConvexPolyhedron& 
 }
 
 // How many parallelograms add_edge_facets makes for e, without making them
-// (issue 18, item 5: the output is counted before it is built): the
+// (the output is counted before it is built, SumLimits): the
 // meridians strictly inside the arc's longitude interval (a, b) are the
 // cyclic run from the first after a to the last at or before b, less the
 // last if it is at b. Two binary searches.

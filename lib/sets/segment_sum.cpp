@@ -37,8 +37,8 @@ namespace cvms::detail {
 namespace {
 
 // The soup of S + P under construction: vertex (v, endpoint) is point
-// index_of[2 v + endpoint], made on first use (an array, not a hash map:
-// issue 18, item 1).
+// index_of[2 v + endpoint], made on first use (an array, not a hash map,
+// which an input could make quadratic).
 class SweptSoup {
  public:
   SweptSoup(const ConvexPolyhedron& p, const Vec3& start, const Vec3& direction)
@@ -80,7 +80,7 @@ ConvexSet segment_polyhedron_sum(const Vec3& start, const Vec3& direction, const
   const auto on_silhouette = [&](HalfedgeId h) {
     return side[m.face(h).index()] == Sign::negative && side[m.face(Mesh::twin(h)).index()] == Sign::positive;
   };
-  // Counted before the output is made (issue 18, item 5): one facet per
+  // Counted before the output is made (SumLimits): one facet per
   // facet of P and per silhouette edge, fewer once coplanar ones merge.
   std::uint64_t facets = m.num_faces();
   for (HalfedgeId h : m.halfedges()) facets += on_silhouette(h) ? 1 : 0;

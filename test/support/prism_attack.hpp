@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The input of issue 18, item 5 ("output size is quadratic in the input"),
-// made at test time: two n-gon prisms with perpendicular axes, whose sum has
+// An input whose sum's output size is quadratic in the input, made at test
+// time: two n-gon prisms with perpendicular axes, whose sum has
 // about n^2 / 2 facets (n = 10,000: 3 MB as OFF, 5 x 10^7 output facets).
 #pragma once
 
