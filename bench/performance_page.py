@@ -178,7 +178,7 @@ def minkowski_sections(page, path):
                   "between the end points and by least squares.")
         page.block(scaling.slope_table(stimes[family], sfacets[family]))
     page.para("![Runtime against facet count for every algorithm, after the paper's Fig. 12](fig12.svg)")
-    return times, stimes, sfacets
+    return stimes, speaks, sfacets
 
 
 def quickhull_section(page, default_path, kept_path):
@@ -353,7 +353,7 @@ def end_to_end_section(page, path):
     page.block(lines)
 
 
-def explanations(page, times, stimes, sfacets):
+def explanations(page, stimes, speaks, sfacets):
     """What the numbers mean: lasting explanations, with their figures taken from the JSON."""
     page.add("## What the numbers mean", "")
 
@@ -376,8 +376,8 @@ def explanations(page, times, stimes, sfacets):
     c6 = [at(cube, n, 6) for n in ("CVMS", "limit build", "limit mesh")]
     if all(c6):
         text += (f" On Cube + Sphere6 the build is {100 * c6[1] / c6[0]:.0f} % of the sum and the normals "
-                 f"{100 * (1 - c6[2] / c6[1]):.0f} % of the build: its facets are the sphere's, translated, "
-                 "and their exact planes (primitive normals of about 100 bits) cost more than the mesh.")
+                 f"{100 * (1 - c6[2] / c6[1]):.0f} % of the build: nearly every facet there is a facet of the "
+                 "sphere, translated, whose normal (primitive, of about 100 bits) the build copies.")
     page.para(text)
     page.para("Every output coordinate of a sum of operands read from doubles is dyadic, and the build "
               "writes it as a 16-byte packed value straight from machine words, with no GMP call and no heap "
@@ -388,7 +388,7 @@ def explanations(page, times, stimes, sfacets):
 
     page.add("### Why a sum's facet normals are built with it", "")
     text = ("A sum's plane offsets are made on first use, but its facet normals are made by the build. "
-            "The commonest next step after a sum reads every normal: a configuration-space obstacle "
+            "The step that most often follows a sum reads every normal: a configuration-space obstacle "
             "A ⊕ (−B) is summed to be queried (containment, distance, penetration) or summed again, and "
             "the next sum's search reads both operands' normals. The build copies most normals from the "
             "operand facet they are parallel to (only the edge facets take a cross product and a gcd); "
@@ -434,12 +434,17 @@ def explanations(page, times, stimes, sfacets):
               "as the product of the operands' vertex counts.")
 
     page.add("### Memory: bytes per output facet", "")
+    measured = ""
+    peak6 = speaks.get("SphereRot", {}).get("CVMS", {}).get(6)
+    if peak6 and 6 in sfacets.get("SphereRot", {}):
+        measured = (f" In this run the peak heap of Sphere6 + rotated Sphere6 is {peak6 / 2**20:.1f} MiB, "
+                    f"{peak6 / sfacets['SphereRot'][6][1]:.0f} bytes per output facet.")
     page.para("A sum's result keeps, per output facet, its share of the half-edge mesh (four 4-byte arrays "
               "per halfedge, one per vertex and face), the double approximations of vertices and normals "
               "with their error bounds (the filters read them), and the packed exact values (16 bytes a "
               "coordinate, plus the limbs of normal coordinates longer than 64 bits): about 240 bytes per "
               "facet on Sphere6 + rotated Sphere6. The peak heap adds the search's and the builder's arrays "
-              "while the result is built.")
+              "while the result is built." + measured)
 
     page.add("### Page faults and glibc's malloc policy", "")
     page.para("On this virtual machine a page fault costs about 13 µs. Under glibc's default policy, memory "
@@ -488,14 +493,14 @@ def build(bench_dir):
     page.block([REPRODUCE])
     page.para(NOISY_MACHINE)
 
-    times, stimes, sfacets = minkowski_sections(page, path_in(bench_dir, "minkowski.json"))
+    stimes, speaks, sfacets = minkowski_sections(page, path_in(bench_dir, "minkowski.json"))
     quickhull_section(page, path_in(bench_dir, "quickhull.json"), path_in(bench_dir, "quickhull_memory_kept.json"))
     sets_section(page, path_in(bench_dir, "sets.json"))
     halfspace_section(page, path_in(bench_dir, "halfspace.json"), path_in(bench_dir, "halfspace_cgal.json"))
     decimal_section(page, path_in(bench_dir, "decimal_sum.json"))
     load_section(page, path_in(bench_dir, "load.json"), path_in(bench_dir, "load_before_after.json"))
     end_to_end_section(page, path_in(bench_dir, "end_to_end.json"))
-    explanations(page, times, stimes, sfacets)
+    explanations(page, stimes, speaks, sfacets)
     return page.text()
 
 
