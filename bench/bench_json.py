@@ -1,64 +1,74 @@
-"""Reading Google Benchmark JSON from the cvms benchmarks, shared by
-table.py, scaling.py and plot.py: one place decides which entries count and
-which time is read."""
+"""Reading Google Benchmark JSON from the cvms benchmarks, shared by every
+script in bench/: one place decides which entries count and which time is
+read."""
 import json
-import sys
 
 _UNIT_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 
 
-def options(args):
-    """(time_field, statistic, other args) from a script's arguments: --cpu
-    reads CPU time instead of real (wall) time, steadier when other jobs
-    share the machine; --min reads each row's minimum over its repetitions
-    instead of the median (the benchmarks report it; with random
-    interleaving it is each row's time in the run's fastest spell)."""
-    time_field = "cpu_time" if "--cpu" in args else "real_time"
-    statistic = "min" if "--min" in args else "median"
-    return time_field, statistic, [a for a in args if a not in ("--cpu", "--min")]
+def add_time_options(parser):
+    """Adds --cpu and --min to an argparse parser."""
+    parser.add_argument("--cpu", action="store_true",
+                        help="read CPU time instead of real (wall) time: steadier when other jobs share the "
+                             "machine (multithreaded rows are read in real time either way)")
+    parser.add_argument("--min", action="store_true",
+                        help="read each row's minimum over its repetitions instead of the median (with random "
+                             "interleaving, each row's time in the run's fastest spell)")
 
 
-def runs(path, time_field, statistic="median"):
-    """Yields (prefix, arg, ms, entry) for every successful "<prefix>/<arg>"
-    run (the given statistic only, when repetitions were aggregated).
-    time_field is "real_time" or "cpu_time". Multithreaded rows
-    (UseRealTime, names ending in "/real_time") are read in real time only:
-    their CPU time would be the calling thread's alone, so with "cpu_time"
+def time_options(args):
+    """(time_field, statistic) from arguments parsed with add_time_options."""
+    return ("cpu_time" if args.cpu else "real_time"), ("min" if args.min else "median")
+
+
+def context(path):
+    """The run's context block (machine, load average, library versions)."""
+    with open(path) as f:
+        return json.load(f).get("context", {})
+
+
+def rows(path, time_field="real_time", statistic="median"):
+    """{name: (ms, entry)}: one row per benchmark run name. A file with
+    aggregated repetitions gives the named aggregate; when that aggregate is
+    absent but the single repetitions are in the file, "min" and "median"
+    are taken from them; a file without repetitions gives each run as it is.
+
+    time_field is "real_time" or "cpu_time". Multithreaded rows (UseRealTime,
+    names ending in "/real_time", which the key drops) are read in real time
+    only: their CPU time is the calling thread's alone, so with "cpu_time"
     they are left out."""
-    entries = json.load(open(path))["benchmarks"]
-    aggregates = {b.get("aggregate_name") for b in entries if b.get("run_type") == "aggregate"}
-    if aggregates and statistic not in aggregates:
-        sys.exit(f"{path}: no '{statistic}' of the repetitions (it has {', '.join(sorted(aggregates))}); "
-                 "the minimum needs a benchmark build that reports it")
+    with open(path) as f:
+        entries = [b for b in json.load(f)["benchmarks"] if not b.get("error_occurred")]
+    aggregates, singles = {}, {}
     for b in entries:
-        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != statistic:
-            continue
-        # An aggregate's name has its statistic appended ("..._median");
-        # run_name is the repetitions' own.
         name = b.get("run_name", b["name"])
+        if b.get("run_type") == "aggregate":
+            if b.get("aggregate_name") == statistic:
+                aggregates[name] = b
+        else:
+            singles.setdefault(name, []).append(b)
+    out = {}
+    for name in list(dict.fromkeys(list(aggregates) + list(singles))):
         wall = name.endswith("/real_time")
-        if wall:
-            if time_field == "cpu_time":
-                continue
-            name = name[: -len("/real_time")]
-        parts = name.split("/")
-        if b.get("error_occurred") or len(parts) != 2:
+        if wall and time_field == "cpu_time":
             continue
         field = "real_time" if wall else time_field
-        yield parts[0], int(parts[1]), b[field] * _UNIT_MS[b["time_unit"]], b
+        if name in aggregates:
+            b = aggregates[name]
+        else:
+            runs = sorted(singles[name], key=lambda e: e[field] * _UNIT_MS[e["time_unit"]])
+            if len(runs) > 1 and statistic not in ("min", "median"):
+                raise SystemExit(f"{path}: no '{statistic}' of the repetitions of {name}")
+            b = runs[0] if statistic == "min" else runs[(len(runs) - 1) // 2]
+        key = name[: -len("/real_time")] if wall else name
+        out[key] = (b[field] * _UNIT_MS[b["time_unit"]], b)
+    return out
 
 
-def load(path):
-    """Every successful entry of the file (medians only, when repetitions
-    were aggregated), whatever its name's shape."""
-    return [
-        b
-        for b in json.load(open(path))["benchmarks"]
-        if not b.get("error_occurred")
-        and (b.get("run_type") != "aggregate" or b.get("aggregate_name") == "median")
-    ]
-
-
-def milliseconds(entry, time_field):
-    """The entry's time_field ("real_time" or "cpu_time") in milliseconds."""
-    return entry[time_field] * _UNIT_MS[entry["time_unit"]]
+def runs(path, time_field="real_time", statistic="median"):
+    """Yields (prefix, arg, ms, entry) for every row named "<prefix>/<arg>"
+    with an integer arg (see rows)."""
+    for name, (ms, b) in rows(path, time_field, statistic).items():
+        parts = name.split("/")
+        if len(parts) == 2 and parts[1].isdigit():
+            yield parts[0], int(parts[1]), ms, b

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What a user of the command-line tool waits for (issue 14): wall time and
+"""What a user of the command-line tool waits for: wall time and
 peak memory of whole `cvms` runs, from file to file, next to the time of the
 sum alone inside the same run (`cvms sum --stats` prints it), so that the
 ratio end-to-end / in-process comes from one process and one machine state.

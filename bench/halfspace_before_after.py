@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """from_halfspaces, pontryagin_difference and qhull's qhalf before and after a
-change (issue 16), from two release build trees with the peers on, run
+change, from two release build trees with the peers on, run
 alternately on the same machine state, under glibc's default malloc policy and
 with freed memory kept (MALLOC_TRIM_THRESHOLD_, MALLOC_MMAP_THRESHOLD_ and
 MALLOC_TOP_PAD_ set high): on this virtual machine a page fault costs about
@@ -35,7 +35,7 @@ def run(build, kept):
 
 
 def main():
-    parser = argparse.ArgumentParser()
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--before", required=True)
     parser.add_argument("--after", required=True)
     parser.add_argument("--rounds", type=int, default=3)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Loading before and after a change (issue 14), from two release build trees
-run alternately on the same machine state: the in-process rows of
+"""Loading in two release build trees (e.g. before and after a change), run
+alternately on the same machine state: the in-process rows of
 cvms_load_bench (load, parse and validate of Sphere6 and of the 35,000-point
 decimal hull; minimum CPU time over all repetitions of all rounds) and whole
 `cvms check sphere6.off` runs under `perf stat -e page-faults,task-clock`
@@ -42,7 +42,7 @@ def check_run(build, shape):
 
 
 def main():
-    parser = argparse.ArgumentParser()
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--before", required=True)
     parser.add_argument("--after", required=True)
     parser.add_argument("--rounds", type=int, default=4)

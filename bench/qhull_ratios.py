@@ -3,53 +3,46 @@
 cvms_quickhull_bench JSON (built with -DCVMS_BENCH_PEERS=ON): per cloud and
 size, hull_soup/<cloud>/<n> (exact input) and from_doubles/<cloud>/<n>
 (double input, as qhull's) against qhull/<cloud>/<n>, and the pairwise sums of
-Cube + Sphere6 (hull_soup_peer/... against qhull/...). With
---benchmark_repetitions, the medians are read.
-
-usage: bench/qhull_ratios.py [--cpu] quickhull.json > ratios.md
+Cube + Sphere6 (hull_soup_peer/... against qhull/...).
 """
-import json
-import sys
+import argparse
+
+import bench_json
 
 
-def times(path, field):
-    runs = json.load(open(path))["benchmarks"]
-    medians = any(b.get("aggregate_name") == "median" for b in runs)
-    ms = {}
-    for b in runs:
-        if b.get("error_occurred"):
-            continue
-        if medians != (b.get("aggregate_name") == "median"):
-            continue
-        name = b.get("run_name", b["name"]) if medians else b["name"]
-        ms[name] = b[field] * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
-    return ms
-
-
-def main(args):
-    field = "real_time"
-    if "--cpu" in args:
-        field = "cpu_time"
-        args = [a for a in args if a != "--cpu"]
-    if len(args) != 1:
-        sys.exit(__doc__)
-    ms = times(args[0], field)
-    print("| points | quickhull, exact input (ms) | quickhull, double input (ms) | qhull, double (ms) "
-          "| exact/qhull | double/qhull |")
-    print("|---|---:|---:|---:|---:|---:|")
-    for name in ms:
+def ratio_rows(rows):
+    """[(case, exact ms, double ms or None, qhull ms)] for every qhull row with an exact counterpart."""
+    out = []
+    for name, (theirs, _) in rows.items():
         if not name.startswith("qhull/"):
             continue
         case = name[len("qhull/"):]
-        ours = ms.get("hull_soup/" + case, ms.get("hull_soup_peer/" + case))
-        doubles = ms.get("from_doubles/" + case)
+        ours = rows.get("hull_soup/" + case, rows.get("hull_soup_peer/" + case))
         if ours is None:
             continue
-        theirs = ms[name]
+        doubles = rows.get("from_doubles/" + case)
+        out.append((case, ours[0], doubles[0] if doubles else None, theirs))
+    return out
+
+
+def table(rows):
+    """The ratios as markdown lines."""
+    lines = ["| points | quickhull, exact input (ms) | quickhull, double input (ms) | qhull, double (ms) "
+             "| exact/qhull | double/qhull |", "|---|---:|---:|---:|---:|---:|"]
+    for case, ours, doubles, theirs in ratio_rows(rows):
         d = "—" if doubles is None else "%.3f" % doubles
         dr = "—" if doubles is None else "%.2f" % (doubles / theirs)
-        print("| %s | %.3f | %s | %.3f | %.2f | %s |" % (case, ours, d, theirs, ours / theirs, dr))
+        lines.append("| %s | %.3f | %s | %.3f | %.2f | %s |" % (case, ours, d, theirs, ours / theirs, dr))
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results", help="cvms_quickhull_bench JSON output")
+    bench_json.add_time_options(parser)
+    args = parser.parse_args()
+    print("\n".join(table(bench_json.rows(args.results, *bench_json.time_options(args)))))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    main()

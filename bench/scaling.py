@@ -5,23 +5,15 @@ families Sphere_k + rotated Sphere_k (SphereRot) and Cube + Sphere_k
 per output facet, the ratios CVMS / limit (the output-mesh build alone) and
 peer / CVMS, and per algorithm the log-log slope of time against output
 facets, from k = 3 to the largest k present for that algorithm (endpoint
-slope, the issue's measure) and the least-squares slope over all k.
+slope) and the least-squares slope over all k.
 
 Output facets are those of the exact sum (from our rows); the peers' rows
 are matched to them by family and k.
-
-usage: bench/scaling.py [--cpu] [--min] results.json > scaling.md
 """
-import bench_json
+import argparse
 import math
-import sys
 
-# Which Google Benchmark time the tables use: real (wall) time by default;
-# --cpu selects the CPU time, steadier when other jobs share the machine
-# (every benchmark here is single-threaded).
-TIME_FIELD = "real_time"
-# Which statistic of the repetitions: the median, or with --min the minimum.
-STATISTIC = "median"
+import bench_json
 
 FAMILIES = {"SphereRot": "Sphere_k + rotated Sphere_k", "CubeSphere": "Cube + Sphere_k"}
 # Benchmark name prefix (before "_<family>/k") -> column.
@@ -33,13 +25,13 @@ LIMITS = ["limit mesh", "limit build"]
 PEERS = ["qhull", "CGAL"]
 
 
-def load(path):
+def load(path, time_field="real_time", statistic="median"):
     """times[family][algorithm][k] = ms; out[family][k] = (input, output facets); peaks likewise."""
     names = {f"{prefix}_{family}": (family, column) for family in FAMILIES for prefix, column in ALGORITHMS}
     times = {f: {} for f in FAMILIES}
     peaks = {f: {} for f in FAMILIES}
     facets = {f: {} for f in FAMILIES}
-    for prefix, k, ms, b in bench_json.runs(path, TIME_FIELD, STATISTIC):
+    for prefix, k, ms, b in bench_json.runs(path, time_field, statistic):
         if prefix not in names:
             continue
         family, column = names[prefix]
@@ -64,20 +56,21 @@ def slopes(series, facets):
     return endpoint, fit, ks[-1]
 
 
-def print_family(family, times, peaks, facets):
+def family_table(times, peaks, facets):
+    """One family's times, times per output facet and ratios as markdown lines."""
+    lines = []
     columns = [c for _, c in ALGORITHMS if c in times]
     if not columns:
-        return
+        return lines
     ks = sorted(set(k for c in columns for k in times[c]))
-    print(f"### {FAMILIES[family]} ({family})\n")
     header = ["k", "facets in", "facets out"]
     header += [f"{c} (ms)" for c in columns] + [f"{c} (us/out facet)" for c in columns]
     header += [f"CVMS/{c}" for c in LIMITS if c in columns and "CVMS" in columns]
     header += [f"{c}/CVMS" for c in PEERS if c in columns and "CVMS" in columns]
     if "CVMS" in peaks:
         header += ["CVMS peak heap (MiB)"]
-    print("| " + " | ".join(header) + " |")
-    print("|" + "---|" * len(header))
+    lines.append("| " + " | ".join(header) + " |")
+    lines.append("|" + "---|" * len(header))
     for k in ks:
         fin, fout = facets.get(k, (0, 0))
         cells = [str(k), str(fin), str(fout)]
@@ -93,26 +86,35 @@ def print_family(family, times, peaks, facets):
                 cells.append("%.1f" % (times[c][k] / times["CVMS"][k]) if ok else "-")
         if "CVMS" in peaks:
             cells.append("%.1f" % (peaks["CVMS"][k] / 2**20) if k in peaks["CVMS"] else "-")
-        print("| " + " | ".join(cells) + " |")
-    print()
-    print("| algorithm | log-log slope k=3..K (endpoints) | least-squares slope | K |")
-    print("|---|---|---|---|")
-    for c in columns:
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def slope_table(times, facets):
+    """Per algorithm, the log-log slopes of time against output facets, as markdown lines."""
+    lines = ["| algorithm | log-log slope k=3..K (endpoints) | least-squares slope | K |", "|---|---|---|---|"]
+    for c in [c for _, c in ALGORITHMS if c in times]:
         s = slopes(times[c], facets)
         if s:
-            print("| %s | %.3f | %.3f | %d |" % (c, s[0], s[1], s[2]))
-    print()
+            lines.append("| %s | %.3f | %.3f | %d |" % (c, s[0], s[1], s[2]))
+    return lines
 
 
-def main(args):
-    global TIME_FIELD, STATISTIC
-    TIME_FIELD, STATISTIC, args = bench_json.options(args)
-    if len(args) != 1:
-        sys.exit(__doc__)
-    times, peaks, facets = load(args[0])
-    for family in FAMILIES:
-        print_family(family, times[family], peaks[family], facets[family])
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results", help="cvms_minkowski_bench JSON output")
+    bench_json.add_time_options(parser)
+    args = parser.parse_args()
+    times, peaks, facets = load(args.results, *bench_json.time_options(args))
+    for family, title in FAMILIES.items():
+        if not times[family]:
+            continue
+        print(f"### {title} ({family})\n")
+        print("\n".join(family_table(times[family], peaks[family], facets[family])))
+        print()
+        print("\n".join(slope_table(times[family], facets[family])))
+        print()
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    main()

@@ -6,17 +6,12 @@ the peers (qhull, CGAL: hull of the pairwise vertex sums, built with
 -DCVMS_BENCH_PEERS=ON) with peer/CVMS ratios, and CVMS's peak heap.
 With --memory, a second table gives every algorithm's peak heap.
 
-usage: bench/table.py [--memory] [--cpu] [--min] results.json > table.md
+The column "exact fallback" is the share of CVMS's predicates that the
+floating-point filters could not decide and the exact arithmetic did.
 """
-import bench_json
-import sys
+import argparse
 
-# Which Google Benchmark time the tables use: real (wall) time by default;
-# --cpu selects the CPU time, steadier when other jobs share the machine
-# (every benchmark here is single-threaded).
-TIME_FIELD = "real_time"
-# Which statistic of the repetitions: the median, or with --min the minimum.
-STATISTIC = "median"
+import bench_json
 
 ROWS = ["Tetra", "Hedra", "TruncatedCube", "Sphere1", "Sphere2", "Sphere3", "Sphere4", "Sphere5", "Sphere6"]
 # Paper's Table 1: (CHMS, ESSDMS, CVMS) seconds.
@@ -33,16 +28,18 @@ BENCHMARKS = {
 }
 OURS = ["CHMS", "ESSDMS", "CVMS_paper", "CVMS", "CVMS_2threads"]
 PEERS = ["qhull", "CGAL"]
-# Which paper column each of ours compares with.
-PAPER_COLUMN = {"CHMS": 0, "ESSDMS": 1, "CVMS_paper": 2, "CVMS": 2, "CVMS_2threads": 2}
+# The paper's ratios shown: CHMS over its ESSDMS and over its CVMS (column
+# indices into PAPER); every CVMS mode of ours compares with the latter.
+PAPER_RATIOS = {"ESSDMS": 1, "CVMS": 2}
 
 
-def load(path):
-    """(times, peaks, facets): times[(algorithm, row)] in ms, peaks in bytes,
+def load(path, time_field="real_time", statistic="median"):
+    """(times, peaks, facets, fallback): times[(algorithm, row)] in ms, peaks in bytes,
     facets[row] = (input, output) from our rows (the peers do not report the
-    output facet count: qhull merges in floating point, CGAL triangulates)."""
-    times, peaks, facets = {}, {}, {}
-    for prefix, arg, ms, b in bench_json.runs(path, TIME_FIELD, STATISTIC):
+    output facet count: qhull merges in floating point, CGAL triangulates);
+    fallback[row] = CVMS's exact-fallback rate."""
+    times, peaks, facets, fallback = {}, {}, {}, {}
+    for prefix, arg, ms, b in bench_json.runs(path, time_field, statistic):
         if prefix not in BENCHMARKS:
             continue
         algorithm = BENCHMARKS[prefix]
@@ -52,7 +49,9 @@ def load(path):
             peaks[(algorithm, row)] = b["peak_heap_bytes"]
         if "output_facets" in b:
             facets[row] = (int(b.get("input_facets", 0)), int(b["output_facets"]))
-    return times, peaks, facets
+        if algorithm == "CVMS" and "exact_fallback_rate" in b:
+            fallback[row] = b["exact_fallback_rate"]
+    return times, peaks, facets, fallback
 
 
 def kib(n):
@@ -65,18 +64,22 @@ def ratio(times, num, den, row):
     return "-"
 
 
-def table1(times, peaks, facets):
+def table1(times, peaks, facets, fallback):
+    """Table 1 as markdown lines."""
+    lines = []
     ours = [a for a in OURS if any((a, r) in times for r in ROWS)]
     peers = [a for a in PEERS if any((a, r) in times for r in ROWS)]
     present = ours + peers
     header = ["Cube +", "facets in/out"] + [f"{a} (ms)" for a in present]
     header += [f"CHMS/{a}" for a in ours if a != "CHMS"]
     header += [f"{p}/CVMS" for p in peers if "CVMS" in ours]
-    header += [f"paper CHMS/{a}" for a in ours if a != "CHMS"]
+    header += [f"paper CHMS/{a}" for a in PAPER_RATIOS]
     if "CVMS" in ours:
         header += ["CVMS peak heap (KiB)"]
-    print("| " + " | ".join(header) + " |")
-    print("|" + "---|" * len(header))
+    if fallback:
+        header += ["CVMS exact fallback"]
+    lines.append("| " + " | ".join(header) + " |")
+    lines.append("|" + "---|" * len(header))
     for row in ROWS:
         if not any((a, row) in times for a in present):
             continue
@@ -85,40 +88,42 @@ def table1(times, peaks, facets):
         cells += [ratio(times, "CHMS", a, row) for a in ours if a != "CHMS"]
         if "CVMS" in ours:
             cells += [ratio(times, p, "CVMS", row) for p in peers]
-        for a in ours:
-            if a != "CHMS":
-                p = PAPER[row]
-                cells.append("%.1f" % (p[0] / p[PAPER_COLUMN[a]]))
+        cells += ["%.1f" % (PAPER[row][0] / PAPER[row][c]) for c in PAPER_RATIOS.values()]
         if "CVMS" in ours:
             cells.append(kib(peaks[("CVMS", row)]) if ("CVMS", row) in peaks else "-")
-        print("| " + " | ".join(cells) + " |")
+        if fallback:
+            cells.append("%.1f %%" % (100 * fallback[row]) if row in fallback else "-")
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
 
 
-def memory_table(times, peaks):
+def memory_table(peaks):
+    """Every algorithm's peak heap as markdown lines."""
+    lines = []
     present = [a for a in OURS + PEERS if any((a, r) in peaks for r in ROWS)]
     header = ["Cube +"] + [f"{a} peak heap (KiB)" for a in present]
-    print("| " + " | ".join(header) + " |")
-    print("|" + "---|" * len(header))
+    lines.append("| " + " | ".join(header) + " |")
+    lines.append("|" + "---|" * len(header))
     for row in ROWS:
         if not any((a, row) in peaks for a in present):
             continue
         cells = [row] + [kib(peaks[(a, row)]) if (a, row) in peaks else "-" for a in present]
-        print("| " + " | ".join(cells) + " |")
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
 
 
-def main(args):
-    global TIME_FIELD, STATISTIC
-    TIME_FIELD, STATISTIC, args = bench_json.options(args)
-    memory = "--memory" in args
-    paths = [a for a in args if a != "--memory"]
-    if len(paths) != 1:
-        sys.exit(__doc__)
-    times, peaks, facets = load(paths[0])
-    table1(times, peaks, facets)
-    if memory:
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results", help="cvms_minkowski_bench JSON output")
+    parser.add_argument("--memory", action="store_true", help="also print every algorithm's peak heap")
+    bench_json.add_time_options(parser)
+    args = parser.parse_args()
+    times, peaks, facets, fallback = load(args.results, *bench_json.time_options(args))
+    print("\n".join(table1(times, peaks, facets, fallback)))
+    if args.memory:
         print()
-        memory_table(times, peaks)
+        print("\n".join(memory_table(peaks)))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    main()
