@@ -141,8 +141,9 @@ def run_block(steps, cvms, root, path):
                 output = done.stdout.decode("utf-8", "replace")
             except subprocess.TimeoutExpired:
                 output = "<timed out after 300 s>\n"
+            # Trailing blank lines are invisible in a document: ignored on both sides.
             actual = output.split("\n")
-            if actual and actual[-1] == "":
+            while actual and not actual[-1].strip():
                 actual.pop()
             while expected and not expected[-1].strip():
                 expected = expected[:-1]
