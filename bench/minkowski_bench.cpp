@@ -5,7 +5,7 @@
 // families Sphere_k + rotated Sphere_k and Cube + Sphere_k with the time per
 // output facet; and the limit: building the output alone from the final
 // facet vertex-pair lists. bench/table.py turns the JSON output into the
-// README table. Every row reports peak_heap_bytes: the peak of live heap
+// table of docs/performance.md. Every row reports peak_heap_bytes: the peak of live heap
 // bytes (C++ and GMP) during the timed loop above what existed before it
 // (inputs excluded), see heap_counter.hpp.
 #include <benchmark/benchmark.h>

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Turns Google Benchmark JSON from cvms_minkowski_bench into the README's
-Table 1 reproduction: per row, our times per algorithm, our CHMS/x ratios
+"""Turns Google Benchmark JSON from cvms_minkowski_bench into the
+Table 1 reproduction of docs/performance.md: per row, our times per algorithm, our CHMS/x ratios
 next to the paper's (Barki et al., Table 1, seconds on a 2.2 GHz Core 2 Duo),
 the peers (qhull, CGAL: hull of the pairwise vertex sums, built with
 -DCVMS_BENCH_PEERS=ON) with peer/CVMS ratios, and CVMS's peak heap.

@@ -6,11 +6,14 @@
 #   - fully static executables (-static), by pkg-config and by CMake;
 #   - package metadata: version check, soname, relocatable cvms.pc.
 #
-# Usage: scripts/check-consumers.sh [STATIC_BUILD_DIR]
+# Usage: scripts/check-consumers.sh [STATIC_BUILD_DIR [SHARED_BUILD_DIR]]
 #   STATIC_BUILD_DIR: an already built static cvms build tree to install and
 #   to use as the build-tree package (CI passes build/dev). Without it, a
-#   library-only static build is made in build/pkg-static. The shared library
-#   is always a library-only build in build/pkg-shared.
+#   library-only static build is made in build/pkg-static.
+#   SHARED_BUILD_DIR: an already configured shared-library build tree
+#   (BUILD_SHARED_LIBS=ON) to install (CI passes its packager build, so the
+#   library is not compiled twice). Without it, a library-only shared build
+#   is made in build/pkg-shared.
 # Prints "consumers: N passed, M failed" and exits non-zero if any failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -84,12 +87,22 @@ if [[ -z "$static_build" ]]; then
 else
   cmake --build "$static_build" --target cvms -j2 >/dev/null
 fi
-build_lib build/pkg-shared -DBUILD_SHARED_LIBS=ON
+shared_build=${2:-}
+if [[ -z "$shared_build" ]]; then
+  shared_build=build/pkg-shared
+  build_lib "$shared_build" -DBUILD_SHARED_LIBS=ON
+else
+  if ! grep -q '^BUILD_SHARED_LIBS:BOOL=ON$' "$shared_build/CMakeCache.txt"; then
+    echo "consumers: $shared_build is not a shared-library build (BUILD_SHARED_LIBS=ON)" >&2
+    exit 1
+  fi
+  cmake --build "$shared_build" --target cvms -j2 >/dev/null
+fi
 static_prefix="$work/static"
 shared_prefix="$work/shared"
 cmake --install "$static_build" --prefix "$static_prefix" >/dev/null
-cmake --install build/pkg-shared --prefix "$shared_prefix" >/dev/null
-echo "   static: $static_build -> fresh prefix; shared: build/pkg-shared -> fresh prefix"
+cmake --install "$shared_build" --prefix "$shared_prefix" >/dev/null
+echo "   static: $static_build -> fresh prefix; shared: $shared_build -> fresh prefix"
 
 # Each check is one function; it chains its commands with && because errexit
 # is off inside a function called from an if (check's).

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Long runs of the shape generators: the paper's Sphere5 and Sphere6 (and
-// their rotated twins) through the exact hull. Prints their V/E/F, which the
-// README reports.
+// their rotated twins) through the exact hull. Prints their V/E/F, which
+// docs/testing.md lists.
 #include <gtest/gtest.h>
 
 #include <iostream>

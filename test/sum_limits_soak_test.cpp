@@ -47,7 +47,7 @@ TEST(SumLimitsSoak, Sphere7PairPassesTheDefaults) {
   const ConvexPolyhedron s7 = shapes::geodesic_sphere(7);
   const ConvexPolyhedron r7 = shapes::rotated_geodesic_sphere(7);
   const MinkowskiResult sum = minkowski_sum(s7, r7);
-  // README, Sphere_k + rotated Sphere_k, k = 7 (also computed by the
+  // docs/performance.md, Sphere_k + rotated Sphere_k, k = 7 (also computed by the
   // paper-faithful search and by two threads there).
   EXPECT_EQ(sum.polyhedron.num_facets(), 255898u);
   EXPECT_EQ(sum.stats.translated_facets + sum.stats.corner_facets + sum.stats.edge_facets, 255898u);

@@ -536,7 +536,7 @@ class Quickhull {
   // outgrow the pool's capacity, the pool is compacted instead. A regrown
   // pool is copied into fresh memory, which glibc's default policy maps anew
   // at every call: half the page faults of an exact hull of 10^4 points in a
-  // ball (the README's quickhull table). It never regrows here: the live
+  // ball (docs/performance.md's quickhull table). It never regrows here: the live
   // entries only decrease after the first distribution (each step drops its
   // eye), the capacity holds that distribution's n - 4 initial entries and
   // its lists, and after compaction the pool holds the live entries L and

@@ -424,7 +424,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   // gives. Two threads: one worker traces every edge into a builder of its
   // own. More: all trace chunks of edges after step 2 (ThreadedTrace), which
   // on two cores is no faster, and in some runs slower (its workers'
-  // malloc arenas: README, Performance), hence only with more cores.
+  // malloc arenas: docs/performance.md), hence only with more cores.
   if (threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk && large) {
     if (threads == 2) {
       SumFacetBuilder tracer_out(a, b);

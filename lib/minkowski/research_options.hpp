@@ -51,7 +51,7 @@ struct WorkerMinimums {
   /// Options::threads beyond std::thread::hardware_concurrency() only on
   /// request: the tests run 4 and 8 threads on two cores to shuffle the
   /// interleavings. A sum does not: nothing runs sooner, and every extra
-  /// worker brings a malloc arena of its own (README, Performance).
+  /// worker brings a malloc arena of its own (docs/performance.md).
   bool oversubscribe = false;
 };
 
