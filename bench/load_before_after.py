@@ -66,7 +66,8 @@ def main():
                             "page_faults_median": statistics.median(c[2] for c in v)} for k, v in checks.items()}}
     for name in sorted(result["load_ms_cpu_min"]["before"]):
         before, after = result["load_ms_cpu_min"]["before"][name], result["load_ms_cpu_min"]["after"][name]
-        print(f"{name:24s} before {before:8.2f} ms  after {after:8.2f} ms  {before / after :5.2f}x")
+        ratio = before / after
+        print(f"{name:24s} before {before:8.2f} ms  after {after:8.2f} ms  {ratio:5.2f}x")
     for key in builds:
         c = result["check"][key]
         print(f"cvms check sphere6.off {key:6s} wall {c['wall_ms_min']:7.1f} ms  task-clock "
