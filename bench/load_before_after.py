@@ -65,9 +65,9 @@ def main():
               "check": {k: {"wall_ms_min": min(c[0] for c in v), "task_clock_ms_min": min(c[1] for c in v),
                             "page_faults_median": statistics.median(c[2] for c in v)} for k, v in checks.items()}}
     for name in sorted(result["load_ms_cpu_min"]["before"]):
-        before, after = result["load_ms_cpu_min"]["before"][name], result["load_ms_cpu_min"]["after"][name]
-        ratio = before / after
-        print(f"{name:24s} before {before:8.2f} ms  after {after:8.2f} ms  {ratio:5.2f}x")
+        base_ms, new_ms = result["load_ms_cpu_min"]["before"][name], result["load_ms_cpu_min"]["after"][name]
+        ratio = base_ms / new_ms
+        print(f"{name:24s} before {base_ms:8.2f} ms  after {new_ms:8.2f} ms  {ratio:5.2f}x")
     for key in builds:
         c = result["check"][key]
         print(f"cvms check sphere6.off {key:6s} wall {c['wall_ms_min']:7.1f} ms  task-clock "
