@@ -13,12 +13,11 @@
 #include <fstream>
 #include <iostream>
 
-#include "commands.hpp"
 #include "cvms/error.hpp"
+#include "usage_error.hpp"
 
 namespace cvms::cli {
 namespace {
-
 
 std::string reason(int error) { return error != 0 ? std::string(": ") + std::strerror(error) : ""; }
 
@@ -156,6 +155,13 @@ void check_output_directory(const std::string& path) {
   if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
     throw Error(ErrorCategory::io, "cannot write '" + path + "': no directory '" + dir.string() + "'");
 }
+
+void check_output(const std::string& path, const std::string& format) {
+  (void)output_format(path, format);
+  check_output_directory(path);
+}
+
+Coordinates coordinates_of(bool float_output) { return float_output ? Coordinates::double_ : Coordinates::exact; }
 
 std::string check_mesh_path(const std::string& path) {
   if (is_std_stream(path)) return {};

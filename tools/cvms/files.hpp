@@ -60,6 +60,13 @@ void write_stdout(const std::function<void(std::ostream&)>& write);
 /// not exist or the output is a directory. \throw Error(io) naming the file.
 void check_output_directory(const std::string& path);
 
+/// Fails before any work if the output cannot be written: an unknown format
+/// (a UsageError), a missing directory, a directory.
+void check_output(const std::string& path, const std::string& format);
+
+/// The coordinates --float asks for: nearest doubles, else exact rationals.
+Coordinates coordinates_of(bool float_output);
+
 /// Empty if path is "-" or ends in .off/.obj/.stl (any case), else a message;
 /// used as a CLI11 validator so a wrong extension is a usage error.
 std::string check_mesh_path(const std::string& path);

@@ -29,8 +29,8 @@ void prefer_huge_heap_pages() noexcept {
   // Address space: nothing is backed until touched, but it counts against
   // RLIMIT_AS/RLIMIT_DATA and strict overcommit; where the heap cannot grow
   // that far, the probe below is mapped elsewhere and nothing is advised.
-  // 64 MiB left the last 8 MiB of Sphere6 + rotated Sphere6 (74 MiB peak)
-  // on ordinary pages, 1,900 faults.
+  // It covers the peak heap of the largest benchmark sum (Sphere6 + rotated
+  // Sphere6, 74 MiB) with room to spare.
   constexpr int reserve = 256 << 20;
   static_assert(reserve <= INT_MAX / 2, "M_TRIM_THRESHOLD takes 2 * reserve as an int");
   constexpr int largest_heap_block = 32 << 20;  // glibc's maximum for M_MMAP_THRESHOLD (64-bit)
@@ -64,8 +64,8 @@ void prefer_huge_heap_pages() noexcept {
   // The freed probe went back to the top of the heap, from which glibc
   // carves new blocks in address order: the next ones would fill [at, begin)
   // first, 1 to 3 MiB of ordinary pages below the first huge one (a fault
-  // each; `cvms check sphere6.off` took 370 to 890 faults, depending on where
-  // the randomised heap starts). A block that lives as long as the process
+  // each: hundreds for `cvms check sphere6.off`, depending on where the
+  // randomised heap starts). A block that lives as long as the process
   // takes that stretch; of its pages only its first (the probe's header)
   // and the one that held the top's header are ever backed. (Were there
   // fastbin blocks, free() would consolidate them and the top would start a

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Transparent huge pages for the tool's heap (issue 14, end to end). The
-// exact numbers are many small heap blocks: `cvms check sphere6.off` touches
-// about 18 MB of fresh heap, and the kernel backs it one 4 KiB page fault at a
-// time (8 to 13 us each on the benchmark's virtual machine: a third of the
-// command's time). With huge pages it is one fault per 2 MiB.
+// Transparent huge pages for the tool's heap. The exact numbers are many
+// small heap blocks: `cvms check sphere6.off` touches about 18 MB of fresh
+// heap, and the kernel backs it one 4 KiB page fault at a time (microseconds
+// each on a virtual machine: a large share of the command's time). With huge
+// pages it is one fault per 2 MiB.
 //
 // Like the sum limits of machine_memory.hpp, this is the tool's business,
 // not the library's: a library must not change its caller's allocator.

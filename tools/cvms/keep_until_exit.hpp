@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Results a command is done with, left to the process's exit instead of
 // being freed one by one. An exact polyhedron of 20,000 facets holds about
-// 250,000 heap blocks (a limb or two per rational); freeing them was 11 % of
-// the instructions of `cvms check sphere6.off`, while the kernel takes the
-// whole heap back at exit at once. Compilers do the same with what they
-// build (clang's -disable-free).
+// 250,000 heap blocks (a limb or two per rational); freeing them would cost
+// about a tenth of the instructions of `cvms check sphere6.off`, while the
+// kernel takes the whole heap back at exit at once. Compilers do the same
+// with what they build (clang's -disable-free).
 //
 // The objects stay reachable from a static pointer, so valgrind and
 // LeakSanitizer count them as reachable, not leaked. The library itself

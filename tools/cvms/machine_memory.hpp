@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The command-line tool's defaults for a sum's output limits, fitted to the
-// machine it runs on (issue 18, item 5: a sum too big for the machine must end
-// in a `limit` error naming the option, never in the kernel's OOM killer).
+// machine it runs on: a sum too big for the machine must end in a `limit`
+// error naming the option, never in the kernel's OOM killer.
 //
 // The library's own defaults (SumLimits: 4 GiB) stay fixed on purpose: a
 // library must not consult the machine behind its caller's back, and what it

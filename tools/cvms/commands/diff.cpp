@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// `cvms diff A B`: the exact Pontryagin difference A - B = {x : x + B inside A}
+// of convex sets of any dimension, written as a set, reported as check does.
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "cvms/halfspaces.hpp"
+#include "files.hpp"
+#include "keep_until_exit.hpp"
+#include "options.hpp"
+#include "reports.hpp"
+#include "set_files.hpp"
+#include "usage_error.hpp"
+
+namespace cvms::cli {
+namespace {
+
+struct DiffArgs {
+  std::string a, b, output = "-", format;
+  bool float_output = false;
+};
+
+// The report goes to stderr when the difference goes to stdout.
+void run_diff(const DiffArgs& args) {
+  if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
+  check_output(args.output, args.format);
+  ConvexSet a = read_set(args.a), b = read_set(args.b);
+  ConvexSet d = pontryagin_difference(a, b);
+  write_set(args.output, d, coordinates_of(args.float_output), args.format);
+  report_set("difference", d, args.output == "-" ? std::cerr : std::cout);
+  keep_until_exit(std::move(a));
+  keep_until_exit(std::move(b));
+  keep_until_exit(std::move(d));
+}
+
+}  // namespace
+
+void register_diff(CLI::App& app, Commands& commands) {
+  auto args = std::make_shared<DiffArgs>();
+  CLI::App* command =
+      app.add_subcommand("diff", "Pontryagin difference A - B = {x : x + B inside A}, exact, any dimension");
+  command->add_option("A", args->a, "the set eroded")->required()->check(mesh_path());
+  command->add_option("B", args->b, "the set it is eroded by")->required()->check(mesh_path());
+  command->add_option("-o,--output", args->output, "output file (.off/.obj/.stl), '-' for OFF on stdout");
+  command->add_option("--format", args->format, "output format off|obj|stl (default: from the extension)");
+  command->add_flag("--float", args->float_output, "write nearest doubles instead of exact rationals");
+  commands.push_back({command, [args] { run_diff(*args); }});
+}
+
+}  // namespace cvms::cli

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// `cvms sum A B [C ...]`: the Minkowski sum of convex sets of any dimension.
+// Two polyhedra go through minkowski_sum; flat operands, or more than two,
+// through the sum of convex sets.
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "cvms/error.hpp"
+#include "cvms/set_sum.hpp"
+#include "files.hpp"
+#include "keep_until_exit.hpp"
+#include "machine_memory.hpp"
+#include "options.hpp"
+#include "reports.hpp"
+#include "set_files.hpp"
+#include "sizes.hpp"
+#include "timed_sum.hpp"
+#include "usage_error.hpp"
+
+namespace cvms::cli {
+namespace {
+
+struct SumArgs {
+  std::string a, b, output = "-";
+  std::vector<std::string> more;  ///< operands after B
+  std::string format;  ///< --format, empty: from the output path
+  Algorithm algorithm = Options{}.algorithm;
+  unsigned threads = 1;  ///< --threads: Options::threads
+  bool float_output = false;
+  bool stats = false;
+  SumLimits limits;  ///< --max-facets, --max-memory
+
+  [[nodiscard]] Options options() const {
+    Options options;
+    options.algorithm = algorithm;
+    options.threads = threads;
+    options.limits = limits;
+    return options;
+  }
+};
+
+// --max-facets and --max-memory; `limits` holds the defaults (machine_memory.hpp).
+void add_sum_limit_options(CLI::App& command, SumLimits& limits) {
+  command.add_option("--max-facets", limits.max_output_facets, "refuse a sum with more output facets")
+      ->default_val(limits.max_output_facets)
+      ->check(CLI::PositiveNumber);
+  command
+      .add_option_function<std::string>(
+          "--max-memory", [&limits](const std::string& text) { limits.max_memory_bytes = parse_byte_size(text); },
+          "refuse a sum whose output is estimated to need more memory (bytes, or 512M, 4G, ...; "
+          "at most half of this machine's memory by default)")
+      ->check([](const std::string& text) {
+        try {
+          parse_byte_size(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      })
+      ->default_str(format_byte_size(limits.max_memory_bytes));
+}
+
+// A limit error names the option that raises it (sizes.hpp).
+template <class Sum>
+auto with_limit_hint(Sum&& sum) {
+  try {
+    return sum();
+  } catch (const Error& e) {
+    rethrow_with_limit_hint(e);
+  }
+}
+
+void sum_polyhedra(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args, std::ostream& report) {
+  Timed sum = with_limit_hint([&] { return timed_sum(a, b, args.options()); });
+  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format);
+  if (args.stats) {
+    report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
+           << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
+    print_stats(report, sum.result.stats);
+  }
+  keep_until_exit(std::move(sum.result.polyhedron));
+}
+
+void sum_sets(const std::vector<ConvexSet>& operands, const SumArgs& args, std::ostream& report) {
+  const auto start = std::chrono::steady_clock::now();
+  const ConvexSet sum = with_limit_hint([&] { return minkowski_sum(operands, args.options()); });
+  const auto time = std::chrono::steady_clock::now() - start;
+  write_set(args.output, sum, coordinates_of(args.float_output), args.format);
+  if (!args.stats) return;
+  for (std::size_t i = 0; i < operands.size(); ++i)
+    report << "operand " << i + 1 << ": " << kind(operands[i]) << ", " << size_text(operands[i]) << "\n";
+  report << "sum: " << kind(sum) << ", " << size_text(sum) << "\nalgorithm: " << to_string(args.algorithm)
+         << "\ntime: " << milliseconds(time) << "\n";
+}
+
+// Moved in one by one: a braced list would copy every operand (its elements
+// are const), as costly as a sum on large operands.
+std::vector<ConvexSet> read_operands(const SumArgs& args) {
+  std::vector<ConvexSet> sets;
+  sets.reserve(2 + args.more.size());
+  sets.push_back(read_set(args.a));
+  sets.push_back(read_set(args.b));
+  for (const std::string& path : args.more) sets.push_back(read_set(path));
+  return sets;
+}
+
+// With stats, the counts, the time and the algorithm's statistics go to report.
+void run_sum(const SumArgs& args, std::ostream& report) {
+  if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
+  check_output(args.output, args.format);
+  if (std::count(args.more.begin(), args.more.end(), "-") + (args.a == "-") + (args.b == "-") > 1)
+    throw UsageError("only one input can be read from stdin");
+  std::vector<ConvexSet> sets = read_operands(args);
+  if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
+    sum_sets(sets, args, report);
+  else
+    sum_polyhedra(sets[0].polyhedron(), sets[1].polyhedron(), args, report);
+  keep_until_exit(std::move(sets));
+}
+
+}  // namespace
+
+void register_sum(CLI::App& app, Commands& commands) {
+  auto args = std::make_shared<SumArgs>();
+  args->limits = sum_limits_for_memory(usable_memory_bytes());
+  CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
+  add_operands(*command, args->a, args->b);
+  command->add_option("C", args->more, "further operands")->check(mesh_path());
+  add_output_options(*command, args->output, args->format, args->float_output);
+  add_algorithm_option(*command, args->algorithm);
+  command
+      ->add_option("--threads", args->threads,
+                   "threads for each sum of two polyhedra by cvms, used where they pay (the output is identical)")
+      ->check(CLI::Range(1u, 1024u))
+      ->default_val(1u);
+  command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");
+  add_sum_limit_options(*command, args->limits);
+  commands.push_back({command, [args] { run_sum(*args, args->output == "-" ? std::cerr : std::cout); }});
+}
+
+}  // namespace cvms::cli

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Options shared by several commands (see options.hpp).
+#include "options.hpp"
+
+#include <string_view>
+#include <vector>
+
+#include "files.hpp"
+
+namespace cvms::cli {
+namespace {
+
+// CLI11 alone would wrap "-1" and saturate 2^64 silently.
+std::string check_unsigned_64(const std::string& text) {
+  constexpr std::string_view max = "18446744073709551615";
+  const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+  std::string_view value = text;
+  while (value.size() > 1 && value.front() == '0') value.remove_prefix(1);
+  if (!digits || value.size() > max.size() || (value.size() == max.size() && value > max))
+    return "'" + text + "' is not an integer from 0 to 18446744073709551615";
+  return {};
+}
+
+constexpr Algorithm algorithms[] = {Algorithm::cvms, Algorithm::essdms, Algorithm::chms};
+
+}  // namespace
+
+const CLI::Validator& mesh_path() {
+  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
+  return validator;
+}
+
+const CLI::Validator& unsigned_64() {
+  static const CLI::Validator validator{check_unsigned_64, "UINT64", "unsigned 64-bit integer"};
+  return validator;
+}
+
+void add_read_limit_options(CLI::App& app) {
+  ReadLimits& limits = read_limits();
+  app.add_option("--max-bytes", limits.max_bytes, "largest input read, in bytes")
+      ->check(unsigned_64())
+      ->default_str(std::to_string(limits.max_bytes));
+  app.add_option("--max-line-bytes", limits.max_line_bytes, "longest line of a text input, in bytes")
+      ->check(unsigned_64())
+      ->default_str(std::to_string(limits.max_line_bytes));
+}
+
+void add_operands(CLI::App& command, std::string& a, std::string& b) {
+  command.add_option("A", a, "first operand")->required()->check(mesh_path());
+  command.add_option("B", b, "second operand")->required()->check(mesh_path());
+}
+
+void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output) {
+  command.add_option("-o,--output", output, "result file (default -, OFF on stdout)")->default_str("-");
+  command
+      .add_option("--format", format,
+                  "off, obj or stl (default: the output's extension; OFF for - and /dev/null, /dev/stdout, ...)")
+      ->check(CLI::IsMember({"off", "obj", "stl"}, CLI::ignore_case));
+  command.add_flag("--float", float_output, "round output coordinates to the nearest double");
+}
+
+void add_algorithm_option(CLI::App& command, Algorithm& algorithm) {
+  std::vector<std::string> names;
+  for (Algorithm a : algorithms) names.emplace_back(to_string(a));
+  command
+      .add_option_function<std::string>(
+          "--algorithm",
+          [&algorithm](const std::string& name) {
+            for (Algorithm a : algorithms)
+              if (name == to_string(a)) algorithm = a;
+          },
+          "cvms, essdms or chms")
+      ->transform(CLI::IsMember(names, CLI::ignore_case))
+      ->default_str(to_string(Options{}.algorithm));
+}
+
+}  // namespace cvms::cli

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// Command-line options that several commands share, so that each is spelled,
+// checked and explained the same way wherever it appears.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "cvms/minkowski.hpp"
+
+namespace cvms::cli {
+
+/// Accepts "-" or a path ending in .off, .obj or .stl (files.hpp's check_mesh_path).
+const CLI::Validator& mesh_path();
+
+/// Accepts a decimal integer from 0 to 2^64-1, digits only.
+const CLI::Validator& unsigned_64();
+
+/// --max-bytes and --max-line-bytes, which set read_limits() (files.hpp) for
+/// every command that reads; added to the top-level app, they may stand
+/// before or after the command name.
+void add_read_limit_options(CLI::App& app);
+
+/// The operands A and B, both required mesh paths.
+void add_operands(CLI::App& command, std::string& a, std::string& b);
+
+/// -o, --format and --float of a command that writes a polyhedron. The
+/// output is checked when the command runs (its format may come from
+/// --format), before any work.
+void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output);
+
+/// --algorithm: cvms, essdms or chms; the default is the library's.
+void add_algorithm_option(CLI::App& command, Algorithm& algorithm);
+
+}  // namespace cvms::cli

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// See proximity_report.hpp.
+#include "proximity_report.hpp"
+
+#include <charconv>
+#include <ostream>
+
+#include "cvms/error.hpp"
+#include "cvms/proximity.hpp"
+#include "files.hpp"
+#include "set_files.hpp"
+#include "usage_error.hpp"
+
+namespace cvms::cli {
+namespace {
+
+std::string shortest(double d) {
+  char digits[64];
+  auto result = std::to_chars(digits, digits + sizeof digits, d);
+  return std::string(digits, result.ptr);
+}
+
+ConvexSet read_operand(const std::string& path) {
+  ConvexSet s = read_set(path);
+  if (s.empty())
+    throw Error(ErrorCategory::invalid_argument, input_name(path) + ": the empty set has no distance or depth");
+  return s;
+}
+
+}  // namespace
+
+Operands read_operands(const std::string& a, const std::string& b) {
+  if (a == "-" && b == "-") throw UsageError("only one input can be read from stdin");
+  ConvexSet first = read_operand(a);
+  ConvexSet second = read_operand(b);
+  return {std::move(first), std::move(second)};
+}
+
+void print_square_and_root(std::ostream& out, const char* name, const char* rounded_name, const Rational& square) {
+  out << name << ' ' << to_string(square) << '\n'
+      << rounded_name << ' ' << shortest(nearest_double_sqrt(square)) << '\n';
+}
+
+void print_point(std::ostream& out, const char* name, const Vec3& p) {
+  out << name << ' ' << to_string(p.x) << ' ' << to_string(p.y) << ' ' << to_string(p.z) << '\n';
+}
+
+void print_intersect(std::ostream& out, bool intersect) { out << "intersect " << (intersect ? "yes" : "no") << '\n'; }
+
+}  // namespace cvms::cli
