@@ -105,7 +105,8 @@ Rational rational_from_python(py::handle value) {
 }
 
 std::vector<Rational> rationals_from_python(py::handle values, const char* what) {
-  if (py::isinstance<py::array>(values)) values = values.attr("tolist")();
+  py::object list;  // owns the list an array becomes
+  if (py::isinstance<py::array>(values)) values = list = values.attr("tolist")();
   if (!py::isinstance<py::sequence>(values) || py::isinstance<py::str>(values))
     throw py::type_error(std::string("cvms: ") + what + " must be a sequence of numbers");
   std::vector<Rational> out;
@@ -130,6 +131,7 @@ struct Rows {
 
 Rows rows_from_python(py::handle value, const char* what, bool keep_doubles) {
   Rows rows;
+  py::object list;  // owns the list an array becomes
   if (py::isinstance<py::array>(value)) {
     py::array array = py::reinterpret_borrow<py::array>(value);
     if (array.size() == 0 && array.ndim() <= 2) return rows;
@@ -168,7 +170,7 @@ Rows rows_from_python(py::handle value, const char* what, bool keep_doubles) {
       }
       return rows;
     }
-    value = value.attr("tolist")();  // object arrays, uint64, long double: element by element
+    value = list = value.attr("tolist")();  // object arrays, uint64, long double: element by element
   }
   if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value))
     throw py::type_error(std::string("cvms: ") + what + " must be an (n, 3) array or a sequence of triples");
@@ -492,11 +494,19 @@ sums. Picklable (through its exact OFF text). a + b is the Minkowski sum,
   set.def("__ne__", [](const ConvexSet& a, const ConvexSet& b) { return !same_set(a, b); }, py::is_operator(),
           "Exact inequality of the sets.");
   set.def("__repr__", &repr);
-  set.def(py::pickle([](const ConvexSet& s) { return py::make_tuple(to_off_text(s)); },
-                     [](const py::tuple& state) {
-                       if (state.size() != 1) invalid("a pickled ConvexSet holds one OFF text");
-                       return from_off_text(state[0].cast<std::string>());
-                     }));
+  // Pickled as a call of cvms.from_off (a Python function, so it pickles by
+  // name under every protocol) on the exact OFF text.
+  set.def(
+      "__reduce__",
+      [](const ConvexSet& s) {
+        std::string text;
+        {
+          py::gil_scoped_release release;
+          text = to_off_text(s);
+        }
+        return py::make_tuple(py::module_::import("cvms").attr("from_off"), py::make_tuple(text));
+      },
+      "Pickling: cvms.from_off of the exact OFF text.");
 
   m.def(
       "from_off",
