@@ -4,10 +4,12 @@
 sum in C++ (the time `cvms sum --stats` reports for the sum alone), on the
 same input files, the best of several runs each.
 
-    /usr/bin/python3 python/bench/sum_overhead.py --cvms build/release/tools/cvms
+    cmake -S . -B build/python -DCVMS_BUILD_TOOLS=ON   # after scripts/python.sh
+    cmake --build build/python --target _cvms cvms_cli
+    PYTHONPATH=build/python/python /usr/bin/python3 python/bench/sum_overhead.py --cvms build/python/tools/cvms
 
-The module and the tool should come from builds of the same type (the
-PYTHONPATH of a build tree, or scripts/python.sh with build/release).
+The module and the tool should come from one build tree, so that both link
+the same library objects.
 """
 
 import argparse

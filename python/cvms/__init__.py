@@ -19,7 +19,9 @@ them to workers); each one's docstring is the extension's.
 from . import _cvms
 from ._cvms import ConvexSet, DistanceResult, Error, PenetrationResult, __version__
 
-Error.__module__ = "cvms"
+for _name in ("ConvexSet", "DistanceResult", "PenetrationResult", "Error"):
+    globals()[_name].__module__ = "cvms"
+del _name
 
 __all__ = [
     "ConvexSet", "DistanceResult", "Error", "PenetrationResult", "__version__",
