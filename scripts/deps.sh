@@ -2,7 +2,10 @@
 # Installs the Debian packages cvms needs when they are missing (as root), or
 # prints the exact install line (otherwise). Safe to run repeatedly.
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libgmp-dev libgtest-dev libbenchmark-dev libcli11-dev)
+# The Python module (CVMS_BUILD_PYTHON, on in the dev preset) and its tests:
+# pybind11, Debian's python3 with numpy and headers, pytest, dask.distributed.
+packages=(cmake ninja-build g++ pkg-config libgmp-dev libgtest-dev libbenchmark-dev libcli11-dev
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep "install ok installed" >/dev/null || missing+=("$p")
