@@ -10,6 +10,7 @@
 # to one on the interpreter's path, e.g. its user site directory).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+scripts/deps.sh
 python=${PYTHON:-/usr/bin/python3}
 [ -x "$python" ] || { echo "cvms: $python not found (set PYTHON=/path/to/python3)" >&2; exit 1; }
 # The interpreter's own answer, never the first python3 on PATH: the local
