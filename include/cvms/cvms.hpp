@@ -26,7 +26,6 @@
 #include "cvms/halfspace_io.hpp"
 #include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"
-#include "cvms/kept_allocator.hpp"
 #include "cvms/mesh.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/planar_sum.hpp"
