@@ -22,6 +22,7 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/convex_set.hpp"
+#include "cvms/diagnostics.hpp"
 #include "cvms/error.hpp"
 #include "cvms/halfspace_io.hpp"
 #include "cvms/halfspaces.hpp"

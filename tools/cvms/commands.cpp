@@ -38,6 +38,7 @@ std::string milliseconds(std::chrono::steady_clock::duration d) {
 
 struct Timed {
   MinkowskiResult result;
+  SumDiagnostics diagnostics;
   std::chrono::steady_clock::duration time;
 };
 
@@ -48,16 +49,19 @@ struct Timed {
 Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
   for (const ConvexPolyhedron* p : {&a, &b})
     if (p->num_facets() > 0) (void)p->normal(FaceId(0));
+  SumDiagnostics diagnostics;
+  Options counted = options;
+  counted.diagnostics = &diagnostics;
   auto start = std::chrono::steady_clock::now();
-  MinkowskiResult result = minkowski_sum(a, b, options);
-  return {std::move(result), std::chrono::steady_clock::now() - start};
+  MinkowskiResult result = minkowski_sum(a, b, counted);
+  return {std::move(result), diagnostics, std::chrono::steady_clock::now() - start};
 }
 
-void print_stats(std::ostream& report, const Stats& s) {
+void print_stats(std::ostream& report, const Stats& s, const SumDiagnostics& d) {
   report << "facets: translated " << s.translated_facets << ", corner " << s.corner_facets << ", edge "
          << s.edge_facets << "\n"
-         << "contributing-vertex ties: " << s.contributing_ties << "\n"
-         << "predicates: filtered " << s.predicate_filtered << ", exact " << s.predicate_exact << "\n";
+         << "contributing-vertex ties: " << d.contributing_ties << "\n"
+         << "predicates: filtered " << d.predicate_filtered << ", exact " << d.predicate_exact << "\n";
 }
 
 // A limit error names the option that raises it (sizes.hpp).
@@ -111,7 +115,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
-    print_stats(report, sum.result.stats);
+    print_stats(report, sum.result.stats, sum.diagnostics);
   }
   keep_until_exit(std::move(sum.result.polyhedron));
   keep_until_exit(std::move(sets));
@@ -210,7 +214,7 @@ void run_demo(const DemoArgs& args, std::ostream& report) {
          << "  sum       " << counts(sum.result.polyhedron) << "\n"
          << "algorithm: " << to_string(args.algorithm) << "\n"
          << "time: " << milliseconds(sum.time) << " (wall, the sum only)\n";
-  print_stats(report, sum.result.stats);
+  print_stats(report, sum.result.stats, sum.diagnostics);
 }
 
 }  // namespace cvms::cli
