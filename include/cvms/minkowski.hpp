@@ -95,6 +95,10 @@ struct Options {
 /// ESSDMS, translated + corner + edge facets equals the number of facets of
 /// the result. The search's own counters are diagnostics
 /// (Options::diagnostics, cvms/diagnostics.hpp).
+// The deprecated fields' own initializers would warn in every
+// default-constructed Stats; only reading them should.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 struct Stats {
   std::uint64_t translated_facets = 0;  ///< facets parallel to a facet of A
   std::uint64_t corner_facets = 0;      ///< facets parallel to a facet of B only
@@ -115,6 +119,7 @@ struct Stats {
   [[deprecated("read SumDiagnostics::predicate_exact through Options::diagnostics")]]
   std::uint64_t predicate_exact = 0;
 };
+#pragma GCC diagnostic pop
 
 /// The sum and how it was computed.
 struct MinkowskiResult {
