@@ -61,7 +61,7 @@ TEST(Essdms, VertexRegionsAndCrossingArcs) {
   // exactly one octahedron arc, (1,1,1)-(1,1,-1), at (1,1,0): 12 edge facets.
   const auto c = shapes::cube();
   const auto o = shapes::octahedron();
-  const MinkowskiResult r = essdms(c, o);
+  const CountedSum r = essdms(c, o);
   EXPECT_EQ(r.polyhedron.num_facets(), 26u);
   EXPECT_EQ(r.stats.translated_facets, 6u);
   EXPECT_EQ(r.stats.corner_facets, 8u);
