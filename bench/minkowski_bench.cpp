@@ -54,13 +54,14 @@ void run_sum(benchmark::State& state, const cvms::Options& options, const cvms::
   const ConvexPolyhedron cube = cvms::shapes::cube();
   const ConvexPolyhedron& b = operand(row);
   std::uint32_t facets = 0;
-  cvms::Stats stats;
+  cvms::SumDiagnostics diagnostics;
+  cvms::Options counted = options;
+  counted.diagnostics = &diagnostics;
   cvms_bench::reset_heap_peak();
   for (auto _ : state) {
     try {
-      cvms::MinkowskiResult r = cvms::detail::minkowski_sum(cube, b, options, research);
+      cvms::MinkowskiResult r = cvms::detail::minkowski_sum(cube, b, counted, research);
       facets = r.polyhedron.num_facets();
-      stats = r.stats;
       benchmark::DoNotOptimize(facets);
     } catch (const cvms::Error& e) {
       state.SkipWithError(e.what());
@@ -74,9 +75,9 @@ void run_sum(benchmark::State& state, const cvms::Options& options, const cvms::
   state.counters["output_facets"] = facets;
   state.counters["facets_per_second"] =
       benchmark::Counter(static_cast<double>(facets), benchmark::Counter::kIsIterationInvariantRate);
-  const double predicates = static_cast<double>(stats.predicate_filtered + stats.predicate_exact);
+  const double predicates = static_cast<double>(diagnostics.predicate_filtered + diagnostics.predicate_exact);
   if (predicates > 0)
-    state.counters["exact_fallback_rate"] = static_cast<double>(stats.predicate_exact) / predicates;
+    state.counters["exact_fallback_rate"] = static_cast<double>(diagnostics.predicate_exact) / predicates;
 }
 
 void table_args(benchmark::internal::Benchmark* b) {
@@ -112,9 +113,12 @@ void run_family(benchmark::State& state, Family family, const cvms::Options& opt
   const Pair& p = family_pair(family, k);
   std::uint32_t facets = 0;
   cvms::Stats stats;
+  cvms::SumDiagnostics diagnostics;
+  cvms::Options counted = options;
+  counted.diagnostics = &diagnostics;
   cvms_bench::reset_heap_peak();
   for (auto _ : state) {
-    cvms::MinkowskiResult r = cvms::detail::minkowski_sum(p.a, p.b, options, research);
+    cvms::MinkowskiResult r = cvms::detail::minkowski_sum(p.a, p.b, counted, research);
     facets = r.polyhedron.num_facets();
     stats = r.stats;
     benchmark::DoNotOptimize(facets);
@@ -124,9 +128,9 @@ void run_family(benchmark::State& state, Family family, const cvms::Options& opt
   state.SetLabel(family_label(family, k));
   per_facet_counters(state, p, facets);
   state.counters["edge_facets"] = static_cast<double>(stats.edge_facets);
-  const double predicates = static_cast<double>(stats.predicate_filtered + stats.predicate_exact);
+  const double predicates = static_cast<double>(diagnostics.predicate_filtered + diagnostics.predicate_exact);
   if (predicates > 0)
-    state.counters["exact_fallback_rate"] = static_cast<double>(stats.predicate_exact) / predicates;
+    state.counters["exact_fallback_rate"] = static_cast<double>(diagnostics.predicate_exact) / predicates;
 }
 
 // The limit: only the output construction, from the final facet vertex-pair
@@ -137,7 +141,7 @@ void run_family(benchmark::State& state, Family family, const cvms::Options& opt
 void run_output_only(benchmark::State& state, Family family, bool full) {
   const int k = static_cast<int>(state.range(0));
   const Pair& p = family_pair(family, k);
-  cvms::Stats stats;
+  cvms::detail::SumCounters stats;
   const cvms::detail::SumFacetBuilder facets = cvms::detail::cvms_facets(p.a, p.b, cvms::Options{}, {}, stats);
   cvms_bench::reset_heap_peak();
   for (auto _ : state) {

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
     const cvms::ConvexPolyhedron b = cvms::read_polyhedron(argv[2]);
 
     cvms::Options options;  // the defaults: the CVMS algorithm
+    cvms::SumDiagnostics diagnostics;
+    options.diagnostics = &diagnostics;  // optional: the search's counters
     const cvms::MinkowskiResult sum = cvms::minkowski_sum(a, b, options);
 
     cvms::write_file(argv[3], sum.polyhedron);  // exact coordinates
@@ -43,7 +45,8 @@ int main(int argc, char** argv) {
     const cvms::Stats& stats = sum.stats;
     std::cout << "facets: " << stats.translated_facets << " translated, " << stats.corner_facets
               << " corner, " << stats.edge_facets << " edge\n"
-              << "predicates: " << stats.predicate_filtered << " decided in double, " << stats.predicate_exact
+              << "predicates: " << diagnostics.predicate_filtered << " decided in double, "
+              << diagnostics.predicate_exact
               << " needed exact arithmetic\n";
     return 0;
   } catch (const cvms::Error& e) {

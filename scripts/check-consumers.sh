@@ -179,8 +179,9 @@ pc_full_static() {
 # internals (the filter machinery, its counters, unchecked construction) may
 # appear in them, and each must compile on its own.
 installed_surface() {
-  ! grep -rnE 'from_trusted_soup|ConvexPolyhedronAccess|Vec[23]Ref|ApproxVec[23]|PredicateCounters|predicate_counters|EdgeFacetSearch|ContributingVertexSearch' \
-    "$static_prefix/include"
+  ! grep -rnE 'from_trusted_soup|ConvexPolyhedronAccess|Vec[23]Ref|ApproxVec[23]|PredicateCounters|predicate_counters|EdgeFacetSearch|ContributingVertexSearch|KeptAllocator|KeptVector|ResultSlab|allocate_kept|LimbArena|PolyhedronParts|PolyhedronApproximations|FacetPlanes|PlaneStore|DistinctPoints|PackedVectors|DyadicPoints|cond INTERNAL|namespace detail|detail::|std::atomic' \
+    "$static_prefix/include" &&
+    [[ ! -e "$static_prefix/include/cvms/kept_allocator.hpp" ]]
 }
 headers_self_contained() {
   local h

@@ -355,8 +355,8 @@ void expect_made_once_for_concurrent_readers(const ConvexPolyhedron& a, const Co
   detail::ResearchOptions research;
   research.worker_minimums = {0, 0, true};
   const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
-  EXPECT_EQ(p.mesh().packed_positions() != nullptr, dyadic);
-  EXPECT_NE(p.planes().packed_normals, nullptr);
+  EXPECT_EQ(MeshAccess::packed_positions(p.mesh()) != nullptr, dyadic);
+  EXPECT_NE(PolyhedronAccess::planes(p).packed_normals, nullptr);
   const ConvexPolyhedron copy = p;
   const auto seen = addresses_read_at_once(p, num_readers, [](const ConvexPolyhedron& q, FaceId f) {
     (void)q.vertex(q.mesh().from(q.mesh().halfedge(f)));
@@ -407,23 +407,23 @@ TEST(ArenaStorage, ASumsArraysAreCarvedFromTwoSlabsSizedExactly) {
     detail::ResearchOptions research;
     research.worker_minimums = {0, 0, true};
     const ConvexPolyhedron p = detail::minkowski_sum(a, b, options, research).polyhedron;
-    ASSERT_NE(p.mesh().packed_positions(), nullptr);
-    ASSERT_NE(p.planes().packed_normals, nullptr);
-    const detail::ResultSlab* slab = p.mesh().packed_positions()->slab();
+    ASSERT_NE(MeshAccess::packed_positions(p.mesh()), nullptr);
+    ASSERT_NE(PolyhedronAccess::planes(p).packed_normals, nullptr);
+    const detail::ResultSlab* slab = MeshAccess::packed_positions(p.mesh())->slab();
     ASSERT_NE(slab, nullptr);
-    const detail::ResultSlab* planes_slab = p.planes().packed_normals->packed().slab();
+    const detail::ResultSlab* planes_slab = PolyhedronAccess::planes(p).packed_normals->packed().slab();
     ASSERT_NE(planes_slab, nullptr);
     EXPECT_NE(planes_slab, slab);
-    EXPECT_TRUE(slab->holds(&p.mesh().packed_positions()->coordinate(0, 0)));
-    EXPECT_TRUE(slab->holds(p.approximations().vertices.data()));
-    EXPECT_TRUE(planes_slab->holds(&p.planes().packed_normals->packed().coordinate(0, 0)));
-    EXPECT_TRUE(planes_slab->holds(&p.planes().normal_approx[0]));
+    EXPECT_TRUE(slab->holds(&MeshAccess::packed_positions(p.mesh())->coordinate(0, 0)));
+    EXPECT_TRUE(slab->holds(PolyhedronAccess::approximations(p).vertices.data()));
+    EXPECT_TRUE(planes_slab->holds(&PolyhedronAccess::planes(p).packed_normals->packed().coordinate(0, 0)));
+    EXPECT_TRUE(planes_slab->holds(&PolyhedronAccess::planes(p).normal_approx[0]));
     for (const detail::ResultSlab* s : {slab, planes_slab}) {
       EXPECT_FALSE(s->refused()) << "an array did not fit: the plan fell short";
       EXPECT_EQ(s->carved(), s->size()) << "the plan and what was carved differ";
     }
     const ConvexPolyhedron copy = p;  // shares the packed values, and the slab with them
-    EXPECT_EQ(copy.mesh().packed_positions()->slab(), slab);
+    EXPECT_EQ(MeshAccess::packed_positions(copy.mesh())->slab(), slab);
   }
 }
 

@@ -80,13 +80,26 @@ test::SumOptions variant_options(Variant v) {
   return o;
 }
 
-MinkowskiResult sum_with(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const test::SumOptions& o) {
-  return detail::minkowski_sum(a, b, o.options, o.research);
+// A sum with its diagnostic counters (Options::diagnostics).
+struct CountedSum : MinkowskiResult {
+  SumDiagnostics diagnostics;
+};
+
+CountedSum counted(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Options options,
+                   const detail::ResearchOptions& research = {}) {
+  CountedSum r;
+  options.diagnostics = &r.diagnostics;
+  static_cast<MinkowskiResult&>(r) = detail::minkowski_sum(a, b, options, research);
+  return r;
+}
+
+CountedSum sum_with(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const test::SumOptions& o) {
+  return counted(a, b, o.options, o.research);
 }
 
 // "" iff x and y are the identical polyhedron (soup equality: positions,
 // facet cycles, numbering; and planes) with the same facet counts.
-std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, const std::string& what) {
+std::string same_result(const CountedSum& x, const CountedSum& y, const std::string& what) {
   const PolygonSoup sx = x.polyhedron.to_soup();
   const PolygonSoup sy = y.polyhedron.to_soup();
   if (sx.points != sy.points) return what + " give different vertices";
@@ -98,26 +111,28 @@ std::string same_result(const MinkowskiResult& x, const MinkowskiResult& y, cons
       return what + " give different planes at facet " + std::to_string(f.index());
   const Stats &r = x.stats, &s = y.stats;
   if (r.translated_facets != s.translated_facets || r.corner_facets != s.corner_facets ||
-      r.edge_facets != s.edge_facets || r.contributing_ties != s.contributing_ties)
+      r.edge_facets != s.edge_facets || x.diagnostics.contributing_ties != y.diagnostics.contributing_ties)
     return what + " count facets differently";
   return "";
 }
 
 // CVMS (default mode) with Options::threads = n and the workers started
 // however small the sum (minkowski_sum keeps small sums on one thread).
-MinkowskiResult with_workers_always(const ConvexPolyhedron& a, const ConvexPolyhedron& b, unsigned n) {
+CountedSum with_workers_always(const ConvexPolyhedron& a, const ConvexPolyhedron& b, unsigned n) {
   Options options;
   options.threads = n;
   detail::ResearchOptions research;
   research.worker_minimums = {0, 0, true};
-  return detail::minkowski_sum(a, b, options, research);
+  return counted(a, b, options, research);
 }
 
 // Every counter, the search work included.
-bool same_stats(const Stats& x, const Stats& y) {
-  const auto fields = [](const Stats& s) {
-    return std::array{s.translated_facets, s.corner_facets,         s.edge_facets,        s.contributing_ties,
-                      s.edge_candidates,   s.edge_paper_rejections, s.predicate_filtered, s.predicate_exact};
+bool same_stats(const CountedSum& x, const CountedSum& y) {
+  const auto fields = [](const CountedSum& r) {
+    const Stats& s = r.stats;
+    const SumDiagnostics& d = r.diagnostics;
+    return std::array{s.translated_facets, s.corner_facets,         s.edge_facets,        d.contributing_ties,
+                      d.edge_candidates,   d.edge_paper_rejections, d.predicate_filtered, d.predicate_exact};
   };
   return fields(x) == fields(y);
 }
@@ -133,15 +148,15 @@ constexpr unsigned thread_counts[] = {2, 4, 8};
 // evaluations).
 std::string cvms_modes_agree(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                              std::span<const unsigned> threads) {
-  const MinkowskiResult ref = sum_with(a, b, variant_options({Algorithm::cvms, true}));
-  const MinkowskiResult fast = sum_with(a, b, variant_options({Algorithm::cvms, false}));
+  const CountedSum ref = sum_with(a, b, variant_options({Algorithm::cvms, true}));
+  const CountedSum fast = sum_with(a, b, variant_options({Algorithm::cvms, false}));
   std::string why = same_result(ref, fast, "the two CVMS modes");
   for (const unsigned n : threads) {
     if (!why.empty()) break;
-    const MinkowskiResult threaded = with_workers_always(a, b, n);
+    const CountedSum threaded = with_workers_always(a, b, n);
     const std::string what = "one and " + std::to_string(n) + " threads";
     why = same_result(fast, threaded, what);
-    if (why.empty() && !same_stats(fast.stats, threaded.stats)) why = what + " report different Stats";
+    if (why.empty() && !same_stats(fast, threaded)) why = what + " report different Stats";
   }
   return why;
 }
@@ -166,7 +181,7 @@ test::Shape brute_force_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   return test::brute_force_hull(test::pairwise_sums(pa, pb));
 }
 
-MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) { return minkowski_sum(a, b); }
+CountedSum cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) { return counted(a, b, {}); }
 
 // The suite keeps the name Cvms; the parameter is the algorithm under test.
 class Cvms : public ::testing::TestWithParam<Variant> {
@@ -182,7 +197,7 @@ class Cvms : public ::testing::TestWithParam<Variant> {
     return ab.empty() ? cvms_modes_agree(b, a, threads) : ab;
   }
   // Shadows the free function: the algorithm under test.
-  [[nodiscard]] static MinkowskiResult cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  [[nodiscard]] static CountedSum cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
     return sum_with(a, b, options());
   }
   // CVMS and ESSDMS classify facets alike (translated, corner, edge) and
@@ -219,7 +234,7 @@ TEST_P(Cvms, CubePlusCubeIsTheDoubledCube) {
   EXPECT_EQ(r.stats.translated_facets, 6u);
   EXPECT_EQ(r.stats.corner_facets, 0u);  // every facet of B is used with its partner (Property 2)
   EXPECT_EQ(r.stats.edge_facets, 0u);
-  EXPECT_EQ(r.stats.contributing_ties, 12u);
+  EXPECT_EQ(r.diagnostics.contributing_ties, 12u);
 }
 
 TEST_P(Cvms, CubePlusAxisAlignedBox) {
@@ -250,7 +265,7 @@ TEST_P(Cvms, SumWithItselfIsTheDoubledShape) {
     const auto r = cvms_sum(s, s);
     EXPECT_EQ(r.stats.edge_facets, 0u);
     EXPECT_EQ(r.stats.corner_facets, 0u);
-    EXPECT_EQ(r.stats.contributing_ties, 2u * s.num_facets());
+    EXPECT_EQ(r.diagnostics.contributing_ties, 2u * s.num_facets());
   }
   const auto tc = shapes::truncated_cube();
   EXPECT_SUM(tc, tc, shape_of(scaled(tc, 2)));
@@ -329,7 +344,7 @@ TEST_P(Cvms, FacetOfAParallelToAnEdgeOfB) {
   const auto t = shapes::tetrahedron();
   EXPECT_SUM(c, t, brute_force_sum(c, t));
   if (counts_facets()) {
-    EXPECT_EQ(cvms_sum(c, t).stats.contributing_ties, 6u);
+    EXPECT_EQ(cvms_sum(c, t).diagnostics.contributing_ties, 6u);
   }
 }
 
@@ -361,7 +376,7 @@ TEST_P(Cvms, PaperCriterionAloneWouldDuplicateACornerFacet) {
   const auto b = hull({v3(-2, 1, 3), v3(8, -4, -2), v3(-2, -4, -2), v3(-2, 6, -2)});
   EXPECT_SUM(c, b, brute_force_sum(c, b));
   if (algorithm() == Algorithm::cvms && GetParam().reference) {
-    EXPECT_GT(cvms_sum(c, b).stats.edge_paper_rejections, 0u);
+    EXPECT_GT(cvms_sum(c, b).diagnostics.edge_paper_rejections, 0u);
   }
 }
 
@@ -375,7 +390,7 @@ TEST_P(Cvms, TiesOfContributingVertices) {
   EXPECT_SUM(wedge, o, brute_force_sum(wedge, o));
   EXPECT_SUM(wedge, wedge.reflected(), brute_force_sum(wedge, wedge.reflected()));
   if (counts_facets()) {
-    EXPECT_GT(cvms_sum(wedge, box).stats.contributing_ties, 0u);
+    EXPECT_GT(cvms_sum(wedge, box).diagnostics.contributing_ties, 0u);
   }
 }
 
@@ -523,10 +538,10 @@ TEST_P(Cvms, ArcEndingOnAnotherArc) {
     // facet of either operand with two contributing vertices.
     const auto r = cvms_sum(c, b);
     EXPECT_EQ(r.stats.corner_facets, 4u);
-    EXPECT_EQ(r.stats.contributing_ties, 1u);
+    EXPECT_EQ(r.diagnostics.contributing_ties, 1u);
     // B2: (1, 1, 0) and (1, -1, 0) on cube arcs, and the cube's (1, 0, 0) on
     // B2's arc.
-    EXPECT_EQ(cvms_sum(c, b2).stats.contributing_ties, 3u);
+    EXPECT_EQ(cvms_sum(c, b2).diagnostics.contributing_ties, 3u);
   }
 }
 
@@ -576,10 +591,11 @@ TEST_P(Cvms, RandomPairsAgreeWithChms) {
     }
     // One thread count per pair, in turn: the threaded runs cost what one did.
     ASSERT_EQ(modes_agree(p.a, p.b, {&thread_counts[i % std::size(thread_counts)], 1}), "");
-    const Stats s = cvms_sum(p.a, p.b).stats;
-    with_edge_ties += s.contributing_ties > 0;
+    const CountedSum r = cvms_sum(p.a, p.b);
+    const Stats& s = r.stats;
+    with_edge_ties += r.diagnostics.contributing_ties > 0;
     with_parallel_facets += s.corner_facets < p.b.num_facets();
-    with_rejections += s.edge_paper_rejections > 0;
+    with_rejections += r.diagnostics.edge_paper_rejections > 0;
     with_edge_facets += s.edge_facets > 0;
   }
   std::printf(
@@ -634,16 +650,16 @@ TEST(MinkowskiSum, ThreadsComputeIndependently) {
   const auto c = shapes::rotated_geodesic_sphere(1);
   const auto expected_ab = cvms_sum(a, b);
   const auto expected_ac = cvms_sum(a, c);
-  MinkowskiResult ab;
-  MinkowskiResult ac;
+  CountedSum ab;
+  CountedSum ac;
   std::thread t1([&] { ab = cvms_sum(a, b); });
   std::thread t2([&] { ac = cvms_sum(a, c); });
   t1.join();
   t2.join();
   EXPECT_TRUE(shape_of(ab.polyhedron) == shape_of(expected_ab.polyhedron));
   EXPECT_TRUE(shape_of(ac.polyhedron) == shape_of(expected_ac.polyhedron));
-  EXPECT_EQ(ab.stats.predicate_exact + ab.stats.predicate_filtered,
-            expected_ab.stats.predicate_exact + expected_ab.stats.predicate_filtered);
+  EXPECT_EQ(ab.diagnostics.predicate_exact + ab.diagnostics.predicate_filtered,
+            expected_ab.diagnostics.predicate_exact + expected_ab.diagnostics.predicate_filtered);
 }
 
 // A's contributing-vertex walk cut into pieces (here one per 16 facets, at
@@ -662,19 +678,19 @@ TEST(MinkowskiSum, WalkPiecesOnThreadsGiveTheSameSum) {
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     SCOPED_TRACE("pair " + std::to_string(i));
     const auto& [a, b] = pairs[i];
-    const MinkowskiResult one_piece = minkowski_sum(a, b);
-    MinkowskiResult first;
+    const CountedSum one_piece = counted(a, b, {});
+    CountedSum first;
     for (const unsigned n : {1u, 2u, 4u, 8u}) {
       Options options;
       options.threads = n;
       detail::ResearchOptions research;
       research.worker_minimums = {0, 0, true};
       research.walk_piece_facets = 16;
-      const MinkowskiResult pieces = detail::minkowski_sum(a, b, options, research);
+      const CountedSum pieces = counted(a, b, options, research);
       const std::string what = "pieces on " + std::to_string(n) + " threads";
       EXPECT_EQ(same_result(one_piece, pieces, what), "");
       if (n == 1) first = pieces;
-      EXPECT_TRUE(same_stats(first.stats, pieces.stats)) << what;
+      EXPECT_TRUE(same_stats(first, pieces)) << what;
     }
   }
 }

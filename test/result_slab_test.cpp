@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ResultSlab, SlabPlan and KeptAllocator (lib/numeric/result_slab.hpp,
-// cvms/kept_allocator.hpp): carved arrays are aligned, disjoint and inside
+// kept_allocator.hpp): carved arrays are aligned, disjoint and inside
 // the slab, a plan is exactly what its arrays carve, what does not fit gets
 // a block of its own with its contents intact, copies never carve, and the
 // slab lives exactly as long as the last array carved from it. Whether a

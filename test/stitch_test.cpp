@@ -314,7 +314,7 @@ TEST(Stitch, BuildMeshHasTheFacetsCornersAsExactSums) {
   const std::pair<ConvexPolyhedron, ConvexPolyhedron> cases[] = {
       {shapes::geodesic_sphere(3), shapes::rotated_geodesic_sphere(3)}, {shapes::geodesic_sphere(2), third}};
   for (const auto& [a, b] : cases) {
-    Stats stats;
+    SumCounters stats;
     const SumFacetBuilder facets = cvms_facets(a, b, Options{}, {}, stats);
     const PolygonSoup mesh = facets.build_mesh().to_soup();
     ASSERT_EQ(mesh.num_faces(), facets.num_facets());

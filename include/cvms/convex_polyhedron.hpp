@@ -19,7 +19,6 @@
 /// and flat input (degenerate).
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -29,17 +28,6 @@
 #include "cvms/vec.hpp"
 
 namespace cvms {
-
-namespace detail {
-// Defined only inside the library (lib/mesh/polyhedron_builder.hpp): a user
-// can neither make nor read one, so the class invariant holds for every
-// instance (see the constructor that takes them).
-struct PolyhedronParts;
-struct PolyhedronApproximations;
-struct FacetPlanes;
-class PlaneStore;
-class LimbArena;
-}  // namespace detail
 
 /// A convex polyhedron with maximal facets, extreme vertices and cached
 /// exact facet planes (see the file comment).
@@ -62,9 +50,9 @@ class ConvexPolyhedron {
   /// The empty polyhedron (no vertices; not a valid operand).
   ConvexPolyhedron();
   ~ConvexPolyhedron();
-  /// Copies share the (immutable) internal approximations and a sum's
-  /// packed vertices and normals (see Mesh::position); their other exact
-  /// values are their own.
+  /// Copies share the (immutable) connectivity, the internal approximations
+  /// and a sum's packed vertices and normals (see Mesh::position); their
+  /// other exact values are their own.
   ConvexPolyhedron(const ConvexPolyhedron&);
   /// Moves leave `other` empty.
   ConvexPolyhedron(ConvexPolyhedron&& other) noexcept;
@@ -143,42 +131,21 @@ class ConvexPolyhedron {
   /// -P = {-x : x in P}, for configuration-space obstacles A + (-B).
   [[nodiscard]] ConvexPolyhedron reflected() const;
 
-  /// \cond INTERNAL
-  // The library's own construction, from parts that only its builder
-  // (lib/mesh/polyhedron_builder.hpp) can make and whose geometry it has
-  // checked or derived. Not callable from outside the library: the
-  // parameter type is incomplete there.
-  explicit ConvexPolyhedron(detail::PolyhedronParts&& parts);
-  // The approximations the library's predicates use; the type is incomplete
-  // outside the library. Precondition: the instance is not empty.
-  [[nodiscard]] const detail::PolyhedronApproximations& approximations() const noexcept { return *approx_; }
-  // The facets' planes (normals, their approximations; offsets only if they
-  // came with them, else empty: read offsets through plane_offset()), made
-  // now if they were not yet; the type is incomplete outside the library.
-  [[nodiscard]] const detail::FacetPlanes& planes() const {
-    const detail::FacetPlanes* made = planes_made_.load(std::memory_order_acquire);
-    return made != nullptr ? *made : make_planes();
-  }
-  // The offsets if they are made already (one per facet), else null: what a
-  // derived polyhedron can reuse without making them.
-  [[nodiscard]] const Rational* made_offsets() const noexcept;
-  /// \endcond
-
  private:
-  // The limbs of the exact values below when the library built them in one
-  // arena (lib/numeric/limb_arena.hpp); null when they own their limbs.
-  // Declared first so that it outlives every value that points into it.
-  std::shared_ptr<const detail::LimbArena> exact_limbs_;
-  Mesh mesh_;
-  std::shared_ptr<const detail::PolyhedronApproximations> approx_;  // null for a default-constructed instance
-  // The planes; null for a default-constructed instance.
-  std::shared_ptr<detail::PlaneStore> planes_;
-  // The planes once made or given (null before): what planes() reads without
-  // a call or a lock. Written by whichever reader made them; every writer
-  // writes the same pointer.
-  mutable std::atomic<const detail::FacetPlanes*> planes_made_{nullptr};
+  // The library's own access: its constructor from parts whose geometry it
+  // has checked or derived, and the approximations and planes its predicates
+  // read. Declared here only as a friend, so no user can name it or build an
+  // unchecked instance; defined inside the library
+  // (lib/mesh/polyhedron_access.hpp).
+  friend struct PolyhedronAccess;
+  // The approximations, the planes and the arena of the exact values;
+  // defined inside the library with PolyhedronAccess.
+  struct Impl;
 
-  const detail::FacetPlanes& make_planes() const;
+  // Null for an empty instance. Declared first so that the arena it holds
+  // outlives every value of mesh_ that points into it.
+  std::unique_ptr<Impl> impl_;
+  Mesh mesh_;
 };
 
 /// Scales a nonzero rational vector by a positive factor to the primitive

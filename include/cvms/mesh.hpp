@@ -11,19 +11,13 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
-#include "cvms/kept_allocator.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms {
-
-namespace detail {
-struct DistinctPoints;  // lib/mesh/polyhedron_builder.hpp: defined only inside the library
-class PackedVectors;   // lib/mesh/packed_vectors.hpp: likewise
-class DyadicPoints;    // lib/numeric/dyadic_points.hpp: likewise
-}  // namespace detail
 
 /// A typed 32-bit index, invalid by default.
 template <class Tag>
@@ -158,14 +152,29 @@ class HalfedgeCirculator {
 };
 
 /// A closed, consistently oriented 2-manifold polygon mesh (see the file
-/// comment). Immutable once built; copy and move are cheap array copies/moves.
+/// comment). Immutable once built: copies share the arrays (a copy costs a
+/// reference count, not the arrays), and a move leaves the source empty.
 ///
 /// \pre Accessors taking a handle require a valid handle of this mesh
 ///   (index below the matching num_*()); this is not checked.
 /// Thread-safety: const member functions may run concurrently.
 class Mesh {
  public:
-  Mesh() = default;
+  /// The empty mesh (no vertices, halfedges or faces).
+  Mesh() noexcept = default;
+  /// Shares other's (immutable) arrays.
+  Mesh(const Mesh& other) = default;
+  /// Takes other's arrays and leaves it empty.
+  Mesh(Mesh&& other) noexcept { swap_with(other); }
+  /// Shares other's (immutable) arrays.
+  Mesh& operator=(const Mesh& other) = default;
+  /// Takes other's arrays and leaves it empty.
+  Mesh& operator=(Mesh&& other) noexcept {
+    Mesh taken(std::move(other));
+    swap_with(taken);
+    return *this;
+  }
+  ~Mesh() = default;
 
   /// Builds the half-edge structure of a closed, consistently oriented
   /// 2-manifold polygon mesh. Points are moved in (coordinates canonicalised,
@@ -187,19 +196,13 @@ class Mesh {
   static Mesh from_soup(PolygonSoup soup);
 
   /// Number of vertices.
-  [[nodiscard]] std::uint32_t num_vertices() const noexcept {
-    return static_cast<std::uint32_t>(vertex_he_.size());
-  }
+  [[nodiscard]] std::uint32_t num_vertices() const noexcept { return num_vertices_; }
   /// Number of halfedges (twice the number of edges).
-  [[nodiscard]] std::uint32_t num_halfedges() const noexcept {
-    return static_cast<std::uint32_t>(he_to_.size());
-  }
+  [[nodiscard]] std::uint32_t num_halfedges() const noexcept { return num_halfedges_; }
   /// Number of undirected edges.
   [[nodiscard]] std::uint32_t num_edges() const noexcept { return num_halfedges() / 2; }
   /// Number of faces.
-  [[nodiscard]] std::uint32_t num_faces() const noexcept {
-    return static_cast<std::uint32_t>(face_he_.size());
-  }
+  [[nodiscard]] std::uint32_t num_faces() const noexcept { return num_faces_; }
 
   /// All vertex handles, for range-for.
   [[nodiscard]] IdRange<VertexId> vertices() const { return IdRange<VertexId>(num_vertices()); }
@@ -246,10 +249,12 @@ class Mesh {
   /// values (a sum's output) makes its Vec3s on the first call of this or
   /// positions(), once (safe from concurrent readers).
   /// \throw std::bad_alloc only then, if memory runs out.
-  [[nodiscard]] const Vec3& position(VertexId v) const { return positions()[v.index()]; }
+  [[nodiscard]] const Vec3& position(VertexId v) const {
+    return position_data_ != nullptr ? position_data_[v.index()] : made_positions()[v.index()];
+  }
   /// All positions, indexed by vertex (made on first use, as for position()).
   [[nodiscard]] const std::vector<Vec3>& positions() const {
-    return packed_positions_ == nullptr ? positions_ : made_positions();
+    return positions_ != nullptr ? *positions_ : made_positions();
   }
 
   /// Checks every stored reference (ranges, twin/next/prev/face/vertex
@@ -266,47 +271,47 @@ class Mesh {
   /// \throw Error(invalid_argument) if the count differs from num_vertices().
   [[nodiscard]] Mesh with_positions(std::vector<Vec3> positions) const;
 
-  /// \cond INTERNAL
-  // from_soup without the point checks (canonical coordinates, no two points
-  // equal), for the algorithms' output, whose points are distinct sums
-  // a_i + b_j by construction; topology is checked in full. Only the library
-  // can call it: the promise's type is incomplete outside.
-  static Mesh from_soup(PolygonSoup soup, const detail::DistinctPoints& promise);
-  // with_positions, and each face's stored halfedge the one leaving its
-  // smallest vertex: by the numbering rules above, the mesh from_soup builds
-  // from this mesh's soup with every face cycle rotated to start there.
-  [[nodiscard]] Mesh with_faces_from_smallest_vertex(std::vector<Vec3> positions,
-                                                     const detail::DistinctPoints& promise) const;
-  // from_soup(faces, promise) for a soup without points whose points are
-  // `positions`, kept packed until a caller asks for Vec3s; the connectivity
-  // carved from `slab` when it has room (kept_allocator.hpp).
-  static Mesh from_soup(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
-                        const detail::DistinctPoints& promise,
-                        const std::shared_ptr<detail::ResultSlab>& slab);
-  // The exact positions as packed dyadics if the mesh keeps them so, else
-  // null: what the library's own readers take instead of making Vec3s.
-  [[nodiscard]] const detail::DyadicPoints* packed_positions() const noexcept;
-  // to(h) is halfedge_targets()[h]: for loops that fetch it ahead.
-  [[nodiscard]] const VertexId* halfedge_targets() const noexcept { return he_to_.data(); }
-  /// \endcond
-
  private:
-  static Mesh build(PolygonSoup soup, bool check_points, std::size_t num_points,
-                    const std::shared_ptr<detail::ResultSlab>& slab);
-  [[nodiscard]] const std::vector<Vec3>& made_positions() const;
-  // This connectivity with the given positions; no checks.
-  [[nodiscard]] Mesh same_connectivity(std::vector<Vec3> positions) const;
+  // The library's own access: its unchecked constructors for outputs whose
+  // points are distinct by construction, packed positions, raw arrays for
+  // prefetching. Declared here only as a friend, so no user can name it;
+  // defined inside the library (lib/mesh/mesh_access.hpp).
+  friend struct MeshAccess;
+  // The arrays, shared by copies; defined inside the library with MeshAccess.
+  struct Storage;
 
-  std::vector<Vec3> positions_;  // empty when packed_positions_ holds them
-  std::shared_ptr<const detail::PackedVectors> packed_positions_;
-  // The connectivity's arrays: on their own, or carved from one slab with
-  // the rest of a result (kept_allocator.hpp).
-  detail::KeptVector<HalfedgeId> vertex_he_;  // one outgoing halfedge per vertex
-  detail::KeptVector<VertexId> he_to_;
-  detail::KeptVector<HalfedgeId> he_next_;
-  detail::KeptVector<HalfedgeId> he_prev_;
-  detail::KeptVector<FaceId> he_face_;
-  detail::KeptVector<HalfedgeId> face_he_;
+  // positions() of a mesh that keeps its positions packed (made on first
+  // use) or has none.
+  [[nodiscard]] const std::vector<Vec3>& made_positions() const;
+  void swap_with(Mesh& other) noexcept {
+    storage_.swap(other.storage_);
+    std::swap(positions_, other.positions_);
+    std::swap(position_data_, other.position_data_);
+    std::swap(vertex_he_, other.vertex_he_);
+    std::swap(he_to_, other.he_to_);
+    std::swap(he_next_, other.he_next_);
+    std::swap(he_prev_, other.he_prev_);
+    std::swap(he_face_, other.he_face_);
+    std::swap(face_he_, other.face_he_);
+    std::swap(num_vertices_, other.num_vertices_);
+    std::swap(num_halfedges_, other.num_halfedges_);
+    std::swap(num_faces_, other.num_faces_);
+  }
+
+  std::shared_ptr<const Storage> storage_;  // null for an empty mesh
+  // Views into *storage_, so that every accessor is one load: the positions
+  // (null when they are packed), and the connectivity.
+  const std::vector<Vec3>* positions_ = nullptr;
+  const Vec3* position_data_ = nullptr;
+  const HalfedgeId* vertex_he_ = nullptr;  // one outgoing halfedge per vertex
+  const VertexId* he_to_ = nullptr;
+  const HalfedgeId* he_next_ = nullptr;
+  const HalfedgeId* he_prev_ = nullptr;
+  const FaceId* he_face_ = nullptr;
+  const HalfedgeId* face_he_ = nullptr;
+  std::uint32_t num_vertices_ = 0;
+  std::uint32_t num_halfedges_ = 0;
+  std::uint32_t num_faces_ = 0;
 };
 
 inline HalfedgeCirculator::iterator& HalfedgeCirculator::iterator::operator++() {

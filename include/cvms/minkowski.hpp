@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/diagnostics.hpp"
 
 namespace cvms {
 
@@ -38,13 +39,13 @@ const char* to_string(Algorithm algorithm) noexcept;
 struct SumLimits {
   /// Estimated bytes of the exact output per output facet: normals, offsets,
   /// vertices (at most 2 per facet) and mesh of a ConvexPolyhedron, with the
-  /// build's temporaries. Measured at the peak: about 680 for Sphere8 +
+  /// build's temporaries. At the peak: about 680 for Sphere8 +
   /// rotated Sphere8 (double coordinates), 1,140 for two 1,000-gon prisms
   /// with perpendicular axes (rationals with 40-bit denominators).
   static constexpr std::uint64_t bytes_per_output_facet = 1024;
   /// Estimated bytes CHMS needs per pairwise vertex sum: its double
-  /// approximation and its entries in the hull's conflict lists (measured:
-  /// about 130), not counting the output hull.
+  /// approximation and its entries in the hull's conflict lists (about
+  /// 130), not counting the output hull.
   static constexpr std::uint64_t bytes_per_pairwise_sum = 128;
 
   /// Most facets the sum may have (CVMS, ESSDMS). The default, 2^26 =
@@ -79,35 +80,46 @@ struct Options {
   /// for more. Then one worker computes the output's facet planes while the
   /// calling thread builds the vertices and the mesh and then helps with the
   /// planes. Small sums stay on the calling thread, where starting threads
-  /// would cost more than it saves. The result (numbering included) and
-  /// Stats are identical for every N.
+  /// would cost more than it saves. The result (numbering included), Stats
+  /// and the diagnostics are identical for every N.
   unsigned threads = 1;
   /// Bounds on the sum's output size, memory and (ESSDMS) work.
   SumLimits limits;
+  /// When not null, the sum writes its diagnostic counters there
+  /// (cvms/diagnostics.hpp); null (the default) skips nothing and costs
+  /// nothing: the counters are kept either way.
+  SumDiagnostics* diagnostics = nullptr;
 };
 
-/// What an algorithm did. For CVMS, translated + corner + edge facets equals
-/// the number of facets of the result.
+/// What an algorithm did: the output's facets by kind. For CVMS and
+/// ESSDMS, translated + corner + edge facets equals the number of facets of
+/// the result. The search's own counters are diagnostics
+/// (Options::diagnostics, cvms/diagnostics.hpp).
+// The deprecated fields' own initializers would warn in every
+// default-constructed Stats; only reading them should.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 struct Stats {
   std::uint64_t translated_facets = 0;  ///< facets parallel to a facet of A
   std::uint64_t corner_facets = 0;      ///< facets parallel to a facet of B only
   std::uint64_t edge_facets = 0;        ///< edge(A) + edge(B) facets
-  /// Facets of A and of B with 2 or more contributing vertices (CVMS, ESSDMS).
+  /// SumDiagnostics::contributing_ties, kept for source compatibility.
+  [[deprecated("read SumDiagnostics::contributing_ties through Options::diagnostics")]]
   std::uint64_t contributing_ties = 0;
-  /// (edge of A, horizon edge of B) pairs that passed Property 1 and were
-  /// tested with the normal-orientation criterion (CVMS, paper search); for
-  /// CVMS with the walk, the steps of all arc walks; for
-  /// ESSDMS, the (arc of A, arc of B) pairs that passed the contributing-vertex
-  /// pre-check and were tested for a proper crossing.
+  /// SumDiagnostics::edge_candidates, kept for source compatibility.
+  [[deprecated("read SumDiagnostics::edge_candidates through Options::diagnostics")]]
   std::uint64_t edge_candidates = 0;
-  /// Candidates the paper's criterion alone (Eq. 4 with "not invisible"
-  /// including parallel facets, plus Eq. 5) would accept but the exact
-  /// Gaussian-map test rejects: the facet of B is parallel to the edge of A,
-  /// and the true facet is the corner facet f_B + e_A (see lib/minkowski/cvms_algorithm.cpp).
+  /// SumDiagnostics::edge_paper_rejections, kept for source compatibility.
+  [[deprecated("read SumDiagnostics::edge_paper_rejections through Options::diagnostics")]]
   std::uint64_t edge_paper_rejections = 0;
-  std::uint64_t predicate_filtered = 0;  ///< predicate calls the double filter answered
-  std::uint64_t predicate_exact = 0;     ///< predicate calls that needed exact arithmetic
+  /// SumDiagnostics::predicate_filtered, kept for source compatibility.
+  [[deprecated("read SumDiagnostics::predicate_filtered through Options::diagnostics")]]
+  std::uint64_t predicate_filtered = 0;
+  /// SumDiagnostics::predicate_exact, kept for source compatibility.
+  [[deprecated("read SumDiagnostics::predicate_exact through Options::diagnostics")]]
+  std::uint64_t predicate_exact = 0;
 };
+#pragma GCC diagnostic pop
 
 /// The sum and how it was computed.
 struct MinkowskiResult {

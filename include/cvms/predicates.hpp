@@ -1,18 +1,14 @@
 // SPDX-License-Identifier: MIT
 /// \file
-/// Every sign decision of the library. Each predicate first evaluates its
-/// polynomial in double with a running error bound (inputs carry their own
-/// bound, see approx.hpp; each operation adds its rounding and a term for
-/// underflow), answers when |value| > bound, and otherwise falls back to exact
-/// rational evaluation. The answer is therefore always the exact sign.
+/// Exact geometric predicates: every sign decision of the library is one of
+/// these. Each first evaluates its polynomial in double with a running error
+/// bound (each operation adds its rounding and a term for underflow), answers
+/// when |value| > bound, and otherwise falls back to exact rational
+/// evaluation. The answer is therefore always the exact sign.
 ///
 /// Cost: O(1) double operations when the filter answers; otherwise exact GMP
 /// arithmetic, whose cost grows with the bit length of the inputs.
-/// Thread-safe: no shared state (the counters are per thread).
-///
-/// The library's own algorithms call overloads of these that take cached
-/// approximations (lib/predicates/filtered_predicates.hpp, private); these
-/// build the approximations on the fly (slower, same answer).
+/// Thread-safe: no shared state.
 #pragma once
 
 #include "cvms/sign.hpp"

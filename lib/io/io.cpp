@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "face_lists.hpp"
+#include "mesh_access.hpp"
 #include "file_output.hpp"
 #include "io_reader.hpp"
 
@@ -119,7 +120,7 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
 // the text formats no Rational of a packed one (a sum's output).
 io_detail::SoupView polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces) {
   faces = detail::face_lists(p.mesh());
-  if (const detail::DyadicPoints* packed = p.mesh().packed_positions(); packed != nullptr && format != FileFormat::stl)
+  if (const detail::DyadicPoints* packed = MeshAccess::packed_positions(p.mesh()); packed != nullptr && format != FileFormat::stl)
     return {{}, faces.offsets, faces.indices, packed};
   return {p.mesh().positions(), faces.offsets, faces.indices};
 }

@@ -663,13 +663,12 @@ Mesh merged_mesh(const Mesh& mesh, const PolygonSoup& facet_corners, const Facet
   // of Mesh::from_soup), without a second build.
   if (owned != nullptr && !flip && facet_corners.num_faces() == mesh.num_faces() &&
       facet_corners.face_indices.size() == mesh.num_halfedges() && keeps_every_vertex(mesh, facets_at))
-    return mesh.with_faces_from_smallest_vertex(kept_points(mesh, facets_at, owned), detail::DistinctPoints{});
+    return MeshAccess::with_faces_from_smallest_vertex(mesh, kept_points(mesh, facets_at, owned));
   PolygonSoup out = merged_faces(mesh, facet_corners, facets_at, flip);
   out.points = kept_points(mesh, facets_at, owned);
   Mesh merged;
   try {
-    merged = owned != nullptr ? Mesh::from_soup(std::move(out), detail::DistinctPoints{})
-                              : Mesh::from_soup(std::move(out));
+    merged = owned != nullptr ? MeshAccess::from_distinct_points(std::move(out)) : Mesh::from_soup(std::move(out));
   } catch (const Error& e) {
     not_convex(std::string("the merged facets do not form a closed surface: ") + e.what());
   }
@@ -688,7 +687,7 @@ ConvexPolyhedron merged_polyhedron(Mesh merged, const Points& points, const Face
   for (std::uint32_t v = 0; v < facets_at.count.size(); ++v)
     if (facets_at.extreme(v)) parts.vertex_approx.push_back(points.approx(VertexId(v)));
   parts.mesh = std::move(merged);
-  return ConvexPolyhedron(std::move(parts));
+  return PolyhedronAccess::make(std::move(parts));
 }
 
 // 8. Global: an interior point o below every facet, and a ray from o that
@@ -857,30 +856,41 @@ ConvexPolyhedron ConvexPolyhedron::from_soup(PolygonSoup soup) {
 
 ConvexPolyhedron::ConvexPolyhedron() = default;
 ConvexPolyhedron::~ConvexPolyhedron() = default;
-// A copy's Vec3 values own their limbs (copying a rational allocates them),
-// so it does not keep the original's arena alive: planes and offsets made
-// already are copied, those not yet made are made by the copy when it needs
-// them (into an arena of its own). A sum's packed vertices and normals
-// (packed_vectors.hpp) are immutable and shared, with the limbs they keep.
-ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other) : mesh_(other.mesh_), approx_(other.approx_) {
-  if (!other.planes_) return;
-  const detail::FacetPlanes* made = other.planes_made_.load(std::memory_order_acquire);
+
+namespace {
+
+// The mesh of a copy. A copy's Vec3 values own their limbs (copying a
+// rational allocates them), so it does not keep the original's arena alive:
+// positions in an arena are copied. Other meshes are shared (immutable),
+// a sum's packed vertices (packed_vectors.hpp) with the limbs they keep.
+Mesh mesh_of_copy(const Mesh& mesh, const std::shared_ptr<const detail::LimbArena>& limbs) {
+  if (limbs == nullptr || MeshAccess::packed_positions(mesh) != nullptr) return mesh;
+  return mesh.with_positions(mesh.positions());
+}
+
+}  // namespace
+
+// Planes and offsets made already are copied, those not yet made are made
+// by the copy when it needs them (into an arena of its own).
+ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other)
+    : mesh_(mesh_of_copy(other.mesh_, other.impl_ != nullptr ? other.impl_->exact_limbs : nullptr)) {
+  if (other.impl_ == nullptr) return;
+  impl_ = std::make_unique<Impl>();
+  impl_->approx = other.impl_->approx;
+  impl_->vertex_approx = other.impl_->vertex_approx;
+  if (!other.impl_->planes) return;
+  const detail::FacetPlanes* made = other.impl_->planes_made.load(std::memory_order_acquire);
   if (made == nullptr) {
-    planes_ = std::make_shared<detail::PlaneStore>();
+    impl_->planes = std::make_shared<detail::PlaneStore>();
     return;
   }
   detail::FacetPlanes copied = *made;
-  if (const auto* offsets = other.planes_->offsets_if_made(); offsets != nullptr && copied.offsets.empty())
+  if (const auto* offsets = other.impl_->planes->offsets_if_made(); offsets != nullptr && copied.offsets.empty())
     copied.offsets = *offsets;
-  planes_ = std::make_shared<detail::PlaneStore>(std::move(copied), nullptr);
-  planes_made_.store(&planes_->get(mesh_, approx_->vertices), std::memory_order_release);
+  impl_->planes = std::make_shared<detail::PlaneStore>(std::move(copied), nullptr);
+  impl_->planes_made.store(&impl_->planes->get(mesh_, impl_->approx->vertices), std::memory_order_release);
 }
-ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept
-    : exact_limbs_(std::move(other.exact_limbs_)),
-      mesh_(std::move(other.mesh_)),
-      approx_(std::move(other.approx_)),
-      planes_(std::move(other.planes_)),
-      planes_made_(other.planes_made_.exchange(nullptr, std::memory_order_acq_rel)) {}
+ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept = default;
 ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
   ConvexPolyhedron copy(other);
   return *this = std::move(copy);
@@ -889,41 +899,47 @@ ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
 // into it (destroying a view reads no limb, but the order keeps the rule simple).
 ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&& other) noexcept {
   mesh_ = std::move(other.mesh_);
-  approx_ = std::move(other.approx_);
-  planes_ = std::move(other.planes_);
-  planes_made_.store(other.planes_made_.exchange(nullptr, std::memory_order_acq_rel), std::memory_order_release);
-  exact_limbs_ = std::move(other.exact_limbs_);
+  impl_ = std::move(other.impl_);
   return *this;
 }
 
-ConvexPolyhedron::ConvexPolyhedron(detail::PolyhedronParts&& parts)
-    : exact_limbs_(parts.limbs.capacity_bytes() > 0 ? std::make_shared<const detail::LimbArena>(std::move(parts.limbs))
-                                                    : nullptr),
-      mesh_(std::move(parts.mesh)),
-      approx_(std::make_shared<const detail::PolyhedronApproximations>(
-          detail::PolyhedronApproximations{std::move(parts.vertex_approx)})),
-      planes_(parts.planes ? std::make_shared<detail::PlaneStore>(std::move(*parts.planes), exact_limbs_)
-                           : std::make_shared<detail::PlaneStore>()) {
-  if (parts.planes) planes_made_.store(&planes_->get(mesh_, approx_->vertices), std::memory_order_release);
+ConvexPolyhedron PolyhedronAccess::make(detail::PolyhedronParts&& parts) {
+  ConvexPolyhedron p;
+  auto impl = std::make_unique<ConvexPolyhedron::Impl>();
+  if (parts.limbs.capacity_bytes() > 0) {
+    impl->exact_limbs = std::make_shared<const detail::LimbArena>(std::move(parts.limbs));
+    MeshAccess::keep_limbs(parts.mesh, impl->exact_limbs);
+  }
+  impl->approx = std::make_shared<const detail::PolyhedronApproximations>(
+      detail::PolyhedronApproximations{std::move(parts.vertex_approx)});
+  impl->vertex_approx = impl->approx->vertices.data();
+  impl->planes = parts.planes ? std::make_shared<detail::PlaneStore>(std::move(*parts.planes), impl->exact_limbs)
+                              : std::make_shared<detail::PlaneStore>();
+  p.mesh_ = std::move(parts.mesh);
+  if (parts.planes)
+    impl->planes_made.store(&impl->planes->get(p.mesh_, impl->approx->vertices), std::memory_order_release);
+  p.impl_ = std::move(impl);
+  return p;
 }
 
-const detail::FacetPlanes& ConvexPolyhedron::make_planes() const {
+const detail::FacetPlanes& PolyhedronAccess::make_planes(const ConvexPolyhedron& p) {
   static const detail::FacetPlanes none;  // a default-constructed instance has no facets
-  if (!planes_) return none;
-  const detail::FacetPlanes& made = planes_->get(mesh_, approx_->vertices);
-  planes_made_.store(&made, std::memory_order_release);
+  ConvexPolyhedron::Impl* impl = p.impl_.get();
+  if (impl == nullptr || !impl->planes) return none;
+  const detail::FacetPlanes& made = impl->planes->get(p.mesh_, impl->approx->vertices);
+  impl->planes_made.store(&made, std::memory_order_release);
   return made;
 }
 
-const Vec3& ConvexPolyhedron::normal(FaceId f) const { return planes().exact_normals()[f.index()]; }
+const Vec3& ConvexPolyhedron::normal(FaceId f) const { return PolyhedronAccess::planes(*this).exact_normals()[f.index()]; }
 const Rational& ConvexPolyhedron::plane_offset(FaceId f) const {
-  if (const Rational* made = made_offsets()) return made[f.index()];
-  (void)planes();  // published, so that a copy takes them rather than making its own
-  return planes_->offsets(mesh_, approx_->vertices)[f.index()];
+  if (const Rational* made = PolyhedronAccess::made_offsets(*this)) return made[f.index()];
+  (void)PolyhedronAccess::planes(*this);  // published, so that a copy takes them rather than making its own
+  return impl_->planes->offsets(mesh_, impl_->approx->vertices)[f.index()];
 }
 
-const Rational* ConvexPolyhedron::made_offsets() const noexcept {
-  const auto* offsets = planes_ ? planes_->offsets_if_made() : nullptr;
+const Rational* PolyhedronAccess::made_offsets(const ConvexPolyhedron& p) noexcept {
+  const auto* offsets = p.impl_ != nullptr && p.impl_->planes ? p.impl_->planes->offsets_if_made() : nullptr;
   return offsets != nullptr && !offsets->empty() ? offsets->data() : nullptr;
 }
 
@@ -938,10 +954,11 @@ bool ConvexPolyhedron::is_convex() const {
     return false;
   }
   if (euler_characteristic() != 2) return false;
-  if (!approx_ || !planes_ || approx_->vertices.size() != m.num_vertices()) return false;
-  const detail::FacetPlanes& made = planes();
+  if (!impl_ || !impl_->approx || !impl_->planes || impl_->approx->vertices.size() != m.num_vertices())
+    return false;
+  const detail::FacetPlanes& made = PolyhedronAccess::planes(*this);
   const std::span<const Vec3> normals = made.exact_normals();
-  const auto& offsets = planes_->offsets(m, approx_->vertices);
+  const auto& offsets = impl_->planes->offsets(m, impl_->approx->vertices);
   if (normals.size() != m.num_faces() || made.normal_approx.size() != m.num_faces() ||
       offsets.size() != m.num_faces())
     return false;
@@ -978,7 +995,7 @@ bool ConvexPolyhedron::is_convex() const {
   if (distinct.size() != normals.size()) return false;
   for (VertexId v : m.vertices()) {
     const ApproxVec3 a = ApproxVec3::of(m.position(v));
-    const ApproxVec3& b = approx_->vertices[v.index()];
+    const ApproxVec3& b = impl_->approx->vertices[v.index()];
     if (a.x.value != b.x.value || a.y.value != b.y.value || a.z.value != b.z.value) return false;
   }
   return true;
@@ -1000,7 +1017,7 @@ ConvexPolyhedron ConvexPolyhedron::transformed(const Mat3& linear, const Vec3& o
     pts.push_back(linear * vertex(v) + offset);
     for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();  // in case the caller's matrix was not
   }
-  if (det == Sign::positive) return ConvexPolyhedron(detail::trusted_parts(mesh_.with_positions(std::move(pts))));
+  if (det == Sign::positive) return PolyhedronAccess::make(detail::trusted_parts(mesh_.with_positions(std::move(pts))));
   // Orientation reversing: reverse every facet so it stays counterclockwise
   // seen from outside.
   PolygonSoup soup = mesh_.to_soup();
@@ -1017,16 +1034,16 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
     pts.push_back(vertex(v) + offset);
     for (int i = 0; i < 3; ++i) pts.back()[i].canonicalize();
   }
-  if (!approx_) return {};
+  if (!impl_) return {};
   detail::PolyhedronParts p;
   p.mesh = mesh_.with_positions(std::move(pts));
   p.vertex_approx.reserve(num_vertices());
   for (VertexId v : p.mesh.vertices()) p.vertex_approx.push_back(ApproxVec3::of(p.mesh.position(v)));
-  const detail::FacetPlanes& old = planes();
+  const detail::FacetPlanes& old = PolyhedronAccess::planes(*this);
   detail::FacetPlanes moved{old.normals, old.packed_normals, old.normal_approx, {}};
   // Offsets not made here are not made for the image either: it makes its
   // own when asked, equal to these shifted.
-  if (const Rational* offsets = made_offsets()) {
+  if (const Rational* offsets = PolyhedronAccess::made_offsets(*this)) {
     moved.offsets.reserve(num_facets());
     for (FaceId f : mesh_.faces()) {
       moved.offsets.push_back(offsets[f.index()] + dot(old.exact_normals()[f.index()], offset));
@@ -1034,7 +1051,7 @@ ConvexPolyhedron ConvexPolyhedron::translated(const Vec3& offset) const {
     }
   }
   p.planes = std::move(moved);
-  return ConvexPolyhedron(std::move(p));
+  return PolyhedronAccess::make(std::move(p));
 }
 
 ConvexPolyhedron ConvexPolyhedron::reflected() const {

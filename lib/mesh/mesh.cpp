@@ -14,6 +14,7 @@
 #include "element_names.hpp"
 #include "face_lists.hpp"
 #include "huge_page_blocks.hpp"
+#include "mesh_access.hpp"
 #include "packed_vectors.hpp"
 #include "no_index.hpp"
 #include "representation_order.hpp"
@@ -343,33 +344,10 @@ std::uint32_t Mesh::degree(FaceId f) const noexcept {
   return n;
 }
 
-Mesh Mesh::from_soup(PolygonSoup soup) {
-  const std::size_t n = soup.points.size();
-  return build(std::move(soup), true, n, nullptr);
-}
+namespace {
 
-Mesh Mesh::from_soup(PolygonSoup soup, const detail::DistinctPoints&) {
-  const std::size_t n = soup.points.size();
-  return build(std::move(soup), false, n, nullptr);
-}
-
-Mesh Mesh::from_soup(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
-                     const detail::DistinctPoints&, const std::shared_ptr<detail::ResultSlab>& slab) {
-  if (!faces.points.empty())
-    throw Error(ErrorCategory::invalid_argument, "from_soup: packed positions come with a soup without points");
-  Mesh m = build(std::move(faces), false, positions->packed().size(), slab);
-  m.packed_positions_ = std::move(positions);
-  return m;
-}
-
-const detail::DyadicPoints* Mesh::packed_positions() const noexcept {
-  return packed_positions_ == nullptr ? nullptr : &packed_positions_->packed();
-}
-
-const std::vector<Vec3>& Mesh::made_positions() const { return packed_positions_->vectors(); }
-
-Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points,
-                 const std::shared_ptr<detail::ResultSlab>& slab) {
+Mesh build(PolygonSoup soup, bool check_points, std::size_t num_points,
+           std::shared_ptr<const detail::PackedVectors> packed, const std::shared_ptr<detail::ResultSlab>& slab) {
   check_soup_shape(soup, num_points);
   const auto n = static_cast<std::uint32_t>(num_points);
   check_faces(soup, n);
@@ -381,16 +359,59 @@ Mesh Mesh::build(PolygonSoup soup, bool check_points, std::size_t num_points,
   const std::uint32_t num_edges = check_edge_groups(keyed, soup.face_indices, soup.face_offsets);
   Connectivity c = link_halfedges(soup, keyed, num_edges, n, slab);
 
-  Mesh m;
-  m.positions_ = std::move(soup.points);
-  m.vertex_he_ = std::move(c.vertex_he);
-  m.he_to_ = std::move(c.he_to);
-  m.he_next_ = std::move(c.he_next);
-  m.he_prev_ = std::move(c.he_prev);
-  m.he_face_ = std::move(c.he_face);
-  m.face_he_ = std::move(c.face_he);
+  auto storage = std::make_shared<MeshAccess::Storage>();
+  storage->positions = std::move(soup.points);
+  storage->packed_positions = std::move(packed);
+  storage->vertex_he = std::move(c.vertex_he);
+  storage->he_to = std::move(c.he_to);
+  storage->he_next = std::move(c.he_next);
+  storage->he_prev = std::move(c.he_prev);
+  storage->he_face = std::move(c.he_face);
+  storage->face_he = std::move(c.face_he);
+  Mesh m = MeshAccess::view(std::move(storage));
   check_manifold_vertices(m, c.out_degree);
   return m;
+}
+
+// m's connectivity with the given positions; no checks.
+std::shared_ptr<MeshAccess::Storage> same_connectivity(const Mesh& m, std::vector<Vec3> positions) {
+  auto storage = std::make_shared<MeshAccess::Storage>();
+  storage->positions = std::move(positions);
+  if (const MeshAccess::Storage* s = MeshAccess::storage(m)) {
+    storage->vertex_he = s->vertex_he;
+    storage->he_to = s->he_to;
+    storage->he_next = s->he_next;
+    storage->he_prev = s->he_prev;
+    storage->he_face = s->he_face;
+    storage->face_he = s->face_he;
+  }
+  return storage;
+}
+
+}  // namespace
+
+Mesh Mesh::from_soup(PolygonSoup soup) {
+  const std::size_t n = soup.points.size();
+  return build(std::move(soup), true, n, nullptr, nullptr);
+}
+
+Mesh MeshAccess::from_distinct_points(PolygonSoup soup) {
+  const std::size_t n = soup.points.size();
+  return build(std::move(soup), false, n, nullptr, nullptr);
+}
+
+Mesh MeshAccess::from_distinct_points(PolygonSoup faces, std::shared_ptr<const detail::PackedVectors> positions,
+                                      const std::shared_ptr<detail::ResultSlab>& slab) {
+  if (!faces.points.empty())
+    throw Error(ErrorCategory::invalid_argument, "from_soup: packed positions come with a soup without points");
+  const std::size_t n = positions->packed().size();
+  return build(std::move(faces), false, n, std::move(positions), slab);
+}
+
+const std::vector<Vec3>& Mesh::made_positions() const {
+  static const std::vector<Vec3> none;  // an empty mesh has no positions
+  if (storage_ == nullptr || storage_->packed_positions == nullptr) return none;
+  return storage_->packed_positions->vectors();
 }
 
 namespace {
@@ -481,13 +502,15 @@ void check_distinct_edges(const Mesh& m) {
 }  // namespace
 
 void Mesh::validate() const {
-  const std::size_t nh = he_to_.size();
-  if (nh % 2 != 0 || he_next_.size() != nh || he_prev_.size() != nh || he_face_.size() != nh)
+  static const Storage none;
+  const Storage& s = storage_ != nullptr ? *storage_ : none;
+  const std::size_t nh = s.he_to.size();
+  if (nh % 2 != 0 || s.he_next.size() != nh || s.he_prev.size() != nh || s.he_face.size() != nh)
     fail("validate: halfedge arrays have inconsistent sizes");
   const std::size_t num_points =
-      packed_positions_ == nullptr ? positions_.size() : packed_positions_->packed().size();
-  if (vertex_he_.size() != num_points) fail("validate: vertex arrays have inconsistent sizes");
-  if (nh >= no_index || num_points >= no_index || face_he_.size() >= no_index)
+      s.packed_positions == nullptr ? s.positions.size() : s.packed_positions->packed().size();
+  if (s.vertex_he.size() != num_points) fail("validate: vertex arrays have inconsistent sizes");
+  if (nh >= no_index || num_points >= no_index || s.face_he.size() >= no_index)
     fail("validate: element counts exceed 32-bit handles");
   if (num_vertices() == 0 || num_faces() == 0) fail("validate: empty mesh");
   check_halfedge_links(*this);
@@ -507,39 +530,27 @@ PolygonSoup Mesh::to_soup() const {
 
 // The count is read off the connectivity: the positions may be this mesh's
 // own, moved out (from_soup's result takes them over).
-Mesh Mesh::with_faces_from_smallest_vertex(std::vector<Vec3> positions, const detail::DistinctPoints&) const {
-  if (positions.size() != vertex_he_.size())
+Mesh MeshAccess::with_faces_from_smallest_vertex(const Mesh& m, std::vector<Vec3> positions) {
+  if (positions.size() != m.num_vertices())
     throw Error(ErrorCategory::invalid_argument, "with_faces_from_smallest_vertex: got " +
                                                      std::to_string(positions.size()) + " positions for " +
-                                                     std::to_string(vertex_he_.size()) + " vertices");
-  Mesh m = same_connectivity(std::move(positions));
-  for (std::size_t f = 0; f < m.face_he_.size(); ++f) {
-    HalfedgeId smallest = m.face_he_[f];
+                                                     std::to_string(m.num_vertices()) + " vertices");
+  const std::shared_ptr<MeshAccess::Storage> storage = same_connectivity(m, std::move(positions));
+  for (std::size_t f = 0; f < storage->face_he.size(); ++f) {
+    HalfedgeId smallest = storage->face_he[f];
     for (HalfedgeId h : m.face_halfedges(FaceId(static_cast<std::uint32_t>(f))))
       if (m.from(h) < m.from(smallest)) smallest = h;
-    m.face_he_[f] = smallest;
+    storage->face_he[f] = smallest;
   }
-  return m;
+  return view(storage);
 }
 
 Mesh Mesh::with_positions(std::vector<Vec3> positions) const {
-  if (positions.size() != vertex_he_.size())
+  if (positions.size() != num_vertices())
     throw Error(ErrorCategory::invalid_argument, "with_positions: got " + std::to_string(positions.size()) +
-                                                     " positions for " + std::to_string(vertex_he_.size()) +
+                                                     " positions for " + std::to_string(num_vertices()) +
                                                      " vertices");
-  return same_connectivity(std::move(positions));
-}
-
-Mesh Mesh::same_connectivity(std::vector<Vec3> positions) const {
-  Mesh m;
-  m.positions_ = std::move(positions);
-  m.vertex_he_ = vertex_he_;
-  m.he_to_ = he_to_;
-  m.he_next_ = he_next_;
-  m.he_prev_ = he_prev_;
-  m.he_face_ = he_face_;
-  m.face_he_ = face_he_;
-  return m;
+  return MeshAccess::view(same_connectivity(*this, std::move(positions)));
 }
 
 }  // namespace cvms

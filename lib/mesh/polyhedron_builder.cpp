@@ -29,14 +29,14 @@ PolyhedronParts trusted_parts(Mesh mesh) {
 }
 
 ConvexPolyhedron trusted_polyhedron(PolygonSoup soup) {
-  return ConvexPolyhedron(trusted_parts(Mesh::from_soup(std::move(soup))));
+  return PolyhedronAccess::make(trusted_parts(Mesh::from_soup(std::move(soup))));
 }
 
-Mesh output_mesh(PolygonSoup soup) { return Mesh::from_soup(std::move(soup), DistinctPoints{}); }
+Mesh output_mesh(PolygonSoup soup) { return MeshAccess::from_distinct_points(std::move(soup)); }
 
 Mesh output_mesh(PolygonSoup faces, std::shared_ptr<const PackedVectors> positions,
                  const std::shared_ptr<ResultSlab>& slab) {
-  return Mesh::from_soup(std::move(faces), std::move(positions), DistinctPoints{}, slab);
+  return MeshAccess::from_distinct_points(std::move(faces), std::move(positions), slab);
 }
 
 void plan_output_mesh(SlabPlan& plan, std::size_t vertices, std::size_t corners, std::size_t faces) {
@@ -59,7 +59,7 @@ ConvexPolyhedron assemble(Mesh mesh, VertexApproximations vertex_approx, FacetPl
                     " approximations for " + std::to_string(mesh.num_faces()) + " faces and " +
                     std::to_string(mesh.num_vertices()) + " vertices");
   PolyhedronParts parts{std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(limbs)};
-  return ConvexPolyhedron(std::move(parts));
+  return PolyhedronAccess::make(std::move(parts));
 }
 
 }  // namespace cvms::detail

@@ -26,29 +26,10 @@
 #include "packed_vectors.hpp"
 #include "limb_arena.hpp"
 #include "cvms/convex_polyhedron.hpp"
+#include "mesh_access.hpp"
+#include "polyhedron_access.hpp"
 
 namespace cvms::detail {
-
-/// The promise of Mesh::from_soup's unchecked-points overload.
-struct DistinctPoints {};
-
-/// The approximations of a polyhedron's vertices, one per vertex: kept with
-/// the polyhedron, carved from a result's slab where it has one.
-using VertexApproximations = KeptVector<ApproxVec3>;
-
-struct PolyhedronApproximations {
-  VertexApproximations vertices;  ///< one per vertex
-};
-
-/// What ConvexPolyhedron's library constructor takes, index by index.
-struct PolyhedronParts {
-  Mesh mesh;
-  VertexApproximations vertex_approx;  ///< one per vertex
-  /// The facets' planes when the builder knows them; nullopt: made from the
-  /// facets' first corners when first needed (facet_planes.hpp).
-  std::optional<FacetPlanes> planes;
-  LimbArena limbs;  ///< where the exact values above keep their limbs, if they do
-};
 
 /// The parts of a mesh whose faces meet the guarantee above: the vertices'
 /// approximations and the planes from each face's first corners, made now
@@ -82,17 +63,17 @@ ConvexPolyhedron assemble(Mesh mesh, VertexApproximations vertex_approx, FacetPl
                           LimbArena limbs = {});
 
 inline const ApproxVec3& vertex_approx(const ConvexPolyhedron& p, VertexId v) noexcept {
-  return p.approximations().vertices[v.index()];
+  return PolyhedronAccess::vertex_approx(p, v);
 }
 /// vertex(v) with its approximation, for the filtered predicates.
 inline Vec3Ref vertex_ref(const ConvexPolyhedron& p, VertexId v) { return {p.vertex(v), vertex_approx(p, v)}; }
 /// The approximation of normal(f); makes the planes if they were not yet.
 inline const ApproxVec3& normal_approx(const ConvexPolyhedron& p, FaceId f) {
-  return p.planes().normal_approx[f.index()];
+  return PolyhedronAccess::planes(p).normal_approx[f.index()];
 }
 /// normal(f) with its approximation, for the filtered predicates.
 inline Vec3Ref normal_ref(const ConvexPolyhedron& p, FaceId f) {
-  const FacetPlanes& planes = p.planes();
+  const FacetPlanes& planes = PolyhedronAccess::planes(p);
   return {planes.exact_normals()[f.index()], planes.normal_approx[f.index()]};
 }
 

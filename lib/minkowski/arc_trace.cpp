@@ -177,7 +177,7 @@ class FacetSides {
 const PlaneFilterExtent& normals_extent(const ConvexPolyhedron& b, ArcTraceScratch& scratch) {
   if (scratch.normals_of != &b) {
     scratch.normals_extent = {};
-    for (const ApproxVec3& n : b.planes().normal_approx) scratch.normals_extent.add(n);
+    for (const ApproxVec3& n : PolyhedronAccess::planes(b).normal_approx) scratch.normals_extent.add(n);
     scratch.normals_of = &b;
   }
   return scratch.normals_extent;

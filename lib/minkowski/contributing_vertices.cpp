@@ -215,7 +215,7 @@ void contributing_vertices_walk(const ConvexPolyhedron& p, const ConvexPolyhedro
   if (nf == 0) return;
   const FacetOrder order = breadth_first_facets(p.mesh(), nf);
   PlaneFilterExtent q_extent;
-  for (const ApproxVec3& a : q.approximations().vertices) q_extent.add(a);
+  for (const ApproxVec3& a : PolyhedronAccess::approximations(q).vertices) q_extent.add(a);
   std::vector<VertexId> answer(nf);  // by position in the order: the first contributing vertex, once done
   const unsigned pieces = std::clamp(split.pieces, 1u, nf);
   if (pieces == 1) {

@@ -107,7 +107,7 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
 // horizon edge and the is_parallel test is implied.)
 void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                        const std::vector<HalfedgeId>& edges_a, const std::vector<HalfedgeId>& edges_b,
-                       const EdgeFacetBudget& budget, SumFacetBuilder& out, Stats& stats) {
+                       const EdgeFacetBudget& budget, SumFacetBuilder& out, SumCounters& stats) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   std::vector<Sign> visibility(b.num_facets());  // sign of <d_A, n(f_B)>: positive = invisible
@@ -169,7 +169,7 @@ std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron&
 
 // Step 3 with the arc walk, for the edges of A that pass Property 1.
 void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
-                      const EdgeFacetBudget& budget, SumFacetBuilder& out, Stats& stats) {
+                      const EdgeFacetBudget& budget, SumFacetBuilder& out, SumCounters& stats) {
   ArcTraceScratch scratch;
   std::uint64_t found = 0;
   for (HalfedgeId ha : edges_passing_property1(a, cv_a)) {
@@ -232,7 +232,7 @@ class ThreadedTrace {
 
   // After every run() returned: the facets into out, in one thread's order,
   // and the counts into stats. \throw Error(limit) as edge_facets_walk.
-  void merge(SumFacetBuilder& out, Stats& stats) const {
+  void merge(SumFacetBuilder& out, SumCounters& stats) const {
     std::uint64_t found = 0;
     for (const std::size_t n : facets_of_edge_) {
       budget_.check(found);
@@ -326,7 +326,7 @@ ContributingVertices find_contributing_vertices(const ConvexPolyhedron& p, const
 // with the same normal, if any (then f_B contributes with it, Property 2).
 std::vector<FaceId> add_translated_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                                           const ContributingVertices& cv_a, SumFacetBuilder& out,
-                                          Stats& stats) {
+                                          SumCounters& stats) {
   std::vector<FaceId> partner(b.num_facets());
   for (FaceId fa : a.mesh().faces()) {
     const std::span<const VertexId> c = cv_a.of(fa);
@@ -358,7 +358,7 @@ std::uint64_t count_corner_facets(std::span<const FaceId> partner) {
 
 // Step 2: corner facets, from the facets of B without a partner.
 void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv_b,
-                       std::span<const FaceId> partner, SumFacetBuilder& out, Stats& stats) {
+                       std::span<const FaceId> partner, SumFacetBuilder& out, SumCounters& stats) {
   for (FaceId fb : b.mesh().faces()) {
     if (partner[fb.index()].is_valid()) {
       ++stats.contributing_ties;
@@ -380,14 +380,14 @@ void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv
 }  // namespace
 
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          const ResearchOptions& research, Stats& stats) {
+                          const ResearchOptions& research, SumCounters& stats) {
   const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
   const bool large = facets.num_facets() >= research.worker_minimums.output_facets;
   return facets.build(large ? usable_threads(options, research) : 1);
 }
 
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            const ResearchOptions& research, Stats& stats) {
+                            const ResearchOptions& research, SumCounters& stats) {
   check_search_modes(research);
   const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
   SumFacetBuilder out(a, b);
@@ -428,7 +428,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   if (threads > 1 && research.edge_facet_search == EdgeFacetSearch::walk && large) {
     if (threads == 2) {
       SumFacetBuilder tracer_out(a, b);
-      Stats tracer_stats;
+      SumCounters tracer_stats;
       Worker tracer;  // after what it writes: destroyed (joined) first
       bool refused = false;
       try {

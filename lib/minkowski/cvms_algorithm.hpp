@@ -13,11 +13,11 @@ namespace cvms::detail {
 /// candidate counts to `stats` (not the predicate counters: the caller
 /// measures those). \pre a and b are non-empty.
 ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          const ResearchOptions& research, Stats& stats);
+                          const ResearchOptions& research, SumCounters& stats);
 
 /// The facets cvms_sum glues, before gluing (for benchmarks that time the
 /// output construction alone). The builder refers to a and b.
 SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            const ResearchOptions& research, Stats& stats);
+                            const ResearchOptions& research, SumCounters& stats);
 
 }  // namespace cvms::detail

@@ -102,7 +102,7 @@ struct EdgeArcs {
 // Case 1 (Eqs. 6-7).
 void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                              std::vector<FacetPointLocation>& loc_a, std::vector<FacetPointLocation>& loc_b,
-                             SumFacetBuilder& out, Stats& stats) {
+                             SumFacetBuilder& out, SumCounters& stats) {
   for (FaceId fa : a.mesh().faces()) {
     const Vec3Ref na = detail::normal_ref(a, fa);
     for (FaceId fb : b.mesh().faces()) {
@@ -124,7 +124,7 @@ void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& 
 // Case 2 (Eqs. 8-11) for the facet points of p against the arcs of q.
 void facet_points_on_arcs(Operand which, const ConvexPolyhedron& p, std::vector<FacetPointLocation>& loc,
                           const ConvexPolyhedron& q, const EdgeArcs& arcs_q, SumFacetBuilder& out,
-                          Stats& stats) {
+                          SumCounters& stats) {
   const Mesh& mq = q.mesh();
   for (FaceId f : p.mesh().faces()) {
     if (loc[f.index()].where != Location::unknown) continue;
@@ -149,7 +149,7 @@ void facet_points_on_arcs(Operand which, const ConvexPolyhedron& p, std::vector<
 // Case 4: the facet points of p left over lie inside vertex regions of q.
 void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
                                     std::vector<FacetPointLocation>& loc, const ConvexPolyhedron& q,
-                                    SumFacetBuilder& out, Stats& stats) {
+                                    SumFacetBuilder& out, SumCounters& stats) {
   std::vector<VertexId> cv;
   for (FaceId f : p.mesh().faces()) {
     if (loc[f.index()].where != Location::unknown) continue;
@@ -243,7 +243,7 @@ std::uint64_t location_pair_tests(const ConvexPolyhedron& a, const ConvexPolyhed
 void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const EdgeArcs& arcs_a,
                         const EdgeArcs& arcs_b, const std::vector<std::uint32_t>& ia,
                         const std::vector<std::uint32_t>& ib, const OutputBudget& budget, SumFacetBuilder& out,
-                        Stats& stats) {
+                        SumCounters& stats) {
   const Mesh& ma = a.mesh();
   const std::uint64_t translated = stats.translated_facets, corner = stats.corner_facets;
   std::uint64_t found = 0;
@@ -269,7 +269,7 @@ void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, co
 }  // namespace
 
 ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
-                            Stats& stats) {
+                            SumCounters& stats) {
   PairWork work(limits);
   work.add(location_pair_tests(a, b), "the facet point locations (f_A f_B + f_A e_B + f_B e_A + f_A v_B + f_B v_A)");
   const OutputBudget budget(limits, "essdms");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "cvms/minkowski.hpp"
+#include "sum_counters.hpp"
 
 namespace cvms::detail {
 
@@ -14,6 +15,6 @@ namespace cvms::detail {
 /// \throw Error(limit) beyond `limits`, before the loop or the output that
 ///   would pass them (output_budget.hpp).
 ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
-                            Stats& stats);
+                            SumCounters& stats);
 
 }  // namespace cvms::detail

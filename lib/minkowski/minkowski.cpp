@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // minkowski_sum: checks its operands, dispatches to the chosen algorithm and
-// measures the predicate counters around it; the algorithms' names.
+// measures the predicate counters around it, hands out Stats and the
+// diagnostics; the algorithms' names.
 #include "cvms/minkowski.hpp"
 
 #include "cvms_algorithm.hpp"
@@ -36,23 +37,26 @@ MinkowskiResult detail::minkowski_sum(const ConvexPolyhedron& a, const ConvexPol
   // The counters are per thread, so the difference is this call's share.
   const PredicateCounters before = predicate_counters();
   MinkowskiResult result;
+  SumCounters counters;
   switch (options.algorithm) {
     case Algorithm::cvms:
-      result.polyhedron = cvms_sum(a, b, options, research, result.stats);
+      result.polyhedron = cvms_sum(a, b, options, research, counters);
       break;
     case Algorithm::chms:
       result.polyhedron = cvms::chms(a, b, options.limits);
       break;
     case Algorithm::essdms:
-      result.polyhedron = essdms_sum(a, b, options.limits, result.stats);
+      result.polyhedron = essdms_sum(a, b, options.limits, counters);
       break;
     default:
       throw Error(ErrorCategory::invalid_argument,
                   "minkowski_sum: unknown algorithm " + std::to_string(static_cast<int>(options.algorithm)));
   }
   const PredicateCounters& after = predicate_counters();
-  result.stats.predicate_filtered = after.filtered - before.filtered;
-  result.stats.predicate_exact = after.exact - before.exact;
+  counters.predicate_filtered = after.filtered - before.filtered;
+  counters.predicate_exact = after.exact - before.exact;
+  result.stats = counters.stats();
+  if (options.diagnostics != nullptr) *options.diagnostics = counters;
   return result;
 }
 

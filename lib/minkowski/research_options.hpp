@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "cvms/minkowski.hpp"
+#include "sum_counters.hpp"
 
 namespace cvms::detail {
 
@@ -75,7 +76,8 @@ inline ResearchOptions paper_search() {
   return {ContributingVertexSearch::scan, EdgeFacetSearch::paper, {}, default_walk_piece_facets};
 }
 
-/// minkowski_sum with the research switches; the same checks, result and Stats.
+/// minkowski_sum with the research switches; the same checks, result, Stats
+/// and diagnostics.
 /// \throw Error(invalid_argument) also for an unknown search mode.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
                               const ResearchOptions& research);

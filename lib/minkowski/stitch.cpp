@@ -124,7 +124,7 @@ class EdgeDirections {
   // the fetching itself: GCC drops a void helper's prefetches.
   void fetch_ends(HalfedgeId h) const noexcept {
     __builtin_prefetch(&state_[Mesh::edge(h).index()]);
-    __builtin_prefetch(p_.mesh().halfedge_targets() + Mesh::halfedge(Mesh::edge(h)).index());
+    __builtin_prefetch(MeshAccess::halfedge_targets(p_.mesh()) + Mesh::halfedge(Mesh::edge(h)).index());
   }
   [[nodiscard]] std::array<const void*, 2> read_by_small(HalfedgeId h) const noexcept {
     const EdgeId e = Mesh::edge(h);

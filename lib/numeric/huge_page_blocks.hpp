@@ -49,7 +49,7 @@
 #include <utility>
 #include <vector>
 
-#include "cvms/kept_allocator.hpp"
+#include "kept_allocator.hpp"
 
 // Sanitizers that check memory see only blocks from their own allocator;
 // mapping needs Linux's MADV_HUGEPAGE. Where this is defined, every block

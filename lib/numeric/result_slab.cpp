@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // ResultSlab and the kept allocator's functions (result_slab.hpp,
-// cvms/kept_allocator.hpp).
+// kept_allocator.hpp).
 #include "result_slab.hpp"
 
 #include <limits>

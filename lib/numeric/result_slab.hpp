@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // One block for the arrays of one result, so that it faults in few pages.
 //
-// Why: see cvms/kept_allocator.hpp. A sum's output arrays, each its own
+// Why: see kept_allocator.hpp. A sum's output arrays, each its own
 // block, are fresh memory at every call and fault in 4 KiB at a time; carved
 // from one block mapped on huge pages (huge_page_blocks.hpp, BlockLife::slab)
 // they fault once per 2 MiB.
@@ -20,7 +20,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "cvms/kept_allocator.hpp"
+#include "kept_allocator.hpp"
 #include "huge_page_blocks.hpp"
 
 namespace cvms::detail {

@@ -4,7 +4,7 @@
 // error bound, lib/numeric/approx.hpp), so the filter costs a few flops and no
 // conversion. Same exact answers as the public overloads in cvms/predicates.hpp
 // (lib/predicates/predicates.cpp holds both). Private: the filter machinery is
-// not part of the public API, and Stats reports the counters to users.
+// not part of the public API, and SumDiagnostics reports the counters to users.
 #pragma once
 
 #include <cstdint>
@@ -20,7 +20,7 @@ namespace cvms {
 // makes two to four; a true is_parallel is always an exact evaluation). Per
 // thread: predicates running in different threads never share counters, so
 // the library stays free of shared mutable state. minkowski_sum reports the
-// difference over its call in Stats.
+// difference over its call in SumDiagnostics.
 struct PredicateCounters {
   std::uint64_t filtered = 0;  ///< answered by the double filter
   std::uint64_t exact = 0;     ///< fell back to exact rational evaluation

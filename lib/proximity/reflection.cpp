@@ -31,7 +31,7 @@ ConvexPolyhedron reflection(const ConvexPolyhedron& p) {
   planes.normal_approx.reserve(p.num_facets());
   // The offsets stay those of p (dot(-n, -x) = dot(n, x)); not made there,
   // they are made by -P when asked (a sum's operand never is).
-  const Rational* offsets = p.made_offsets();
+  const Rational* offsets = PolyhedronAccess::made_offsets(p);
   if (offsets != nullptr) planes.offsets.reserve(p.num_facets());
   for (FaceId f : p.mesh().faces()) {
     planes.normals.push_back(-p.normal(f));

@@ -35,11 +35,11 @@ void report_set(const std::string& name, const ConvexSet& set, std::ostream& rep
   }
 }
 
-void print_stats(std::ostream& report, const Stats& s) {
+void print_stats(std::ostream& report, const Stats& s, const SumDiagnostics& d) {
   report << "facets: translated " << s.translated_facets << ", corner " << s.corner_facets << ", edge "
          << s.edge_facets << "\n"
-         << "contributing-vertex ties: " << s.contributing_ties << "\n"
-         << "predicates: filtered " << s.predicate_filtered << ", exact " << s.predicate_exact << "\n";
+         << "contributing-vertex ties: " << d.contributing_ties << "\n"
+         << "predicates: filtered " << d.predicate_filtered << ", exact " << d.predicate_exact << "\n";
 }
 
 std::string milliseconds(std::chrono::steady_clock::duration d) {

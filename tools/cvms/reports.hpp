@@ -9,6 +9,7 @@
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/convex_set.hpp"
+#include "cvms/diagnostics.hpp"
 #include "cvms/minkowski.hpp"
 
 namespace cvms::cli {
@@ -26,7 +27,7 @@ std::string size_text(const ConvexSet& s);
 void report_set(const std::string& name, const ConvexSet& set, std::ostream& report);
 
 /// The sum's facet kinds, contributing-vertex ties and predicate counts (--stats, demo).
-void print_stats(std::ostream& report, const Stats& s);
+void print_stats(std::ostream& report, const Stats& s, const SumDiagnostics& d);
 
 /// "12.345 ms".
 std::string milliseconds(std::chrono::steady_clock::duration d);

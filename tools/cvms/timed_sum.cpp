@@ -13,9 +13,12 @@ namespace cvms::cli {
 Timed timed_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options) {
   for (const ConvexPolyhedron* p : {&a, &b})
     if (p->num_facets() > 0) (void)p->normal(FaceId(0));
+  SumDiagnostics diagnostics;
+  Options counted = options;
+  counted.diagnostics = &diagnostics;
   auto start = std::chrono::steady_clock::now();
-  MinkowskiResult result = minkowski_sum(a, b, options);
-  return {std::move(result), std::chrono::steady_clock::now() - start};
+  MinkowskiResult result = minkowski_sum(a, b, counted);
+  return {std::move(result), diagnostics, std::chrono::steady_clock::now() - start};
 }
 
 }  // namespace cvms::cli

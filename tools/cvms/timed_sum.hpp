@@ -5,12 +5,14 @@
 #include <chrono>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/diagnostics.hpp"
 #include "cvms/minkowski.hpp"
 
 namespace cvms::cli {
 
 struct Timed {
   MinkowskiResult result;
+  SumDiagnostics diagnostics;  // what the search did, for --stats
   std::chrono::steady_clock::duration time;
 };
 

@@ -24,7 +24,7 @@ void run_demo(Algorithm algorithm, std::ostream& report) {
          << "  sum       " << counts(sum.result.polyhedron) << "\n"
          << "algorithm: " << to_string(algorithm) << "\n"
          << "time: " << milliseconds(sum.time) << " (wall, the sum only)\n";
-  print_stats(report, sum.result.stats);
+  print_stats(report, sum.result.stats, sum.diagnostics);
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ void sum_polyhedra(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const S
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
-    print_stats(report, sum.result.stats);
+    print_stats(report, sum.result.stats, sum.diagnostics);
   }
   keep_until_exit(std::move(sum.result.polyhedron));
 }

@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: MIT
 /// \file
-/// Internal to cvms, not an API: the allocator of the arrays a result keeps (Mesh's
-/// connectivity among them), public only because Mesh's members name it.
+/// The allocator of the arrays a result keeps (Mesh's connectivity among
+/// them). Private to the library.
 ///
 /// Why it has state: a sum's output is a dozen arrays of 0.2-3 MB, and each
 /// from malloc, or a mapping of its own, is fresh memory at every call under
-/// glibc's default policy, faulted in 4 KiB at a time (issue 14: about 2,900
-/// faults per Sphere6 + rot. Sphere6 sum, 14-31 us each on the virtual
-/// machines measured). The library carves such a result's arrays from one
-/// block on huge pages (a ResultSlab, lib/numeric/result_slab.hpp) that each
+/// glibc's default policy, faulted in 4 KiB at a time (thousands of faults
+/// per Sphere6 + rot. Sphere6 sum, each costing tens of microseconds on a
+/// virtual machine). The library carves such a result's arrays from one
+/// block on huge pages (a ResultSlab, result_slab.hpp) that each
 /// array's allocator keeps alive; without a slab (every default-constructed
 /// allocator, and every copy of a container: a copy never carves from the
 /// slab of what it copies) an array is a block of its own, from
-/// lib/numeric/huge_page_blocks.hpp's kept blocks.
+/// huge_page_blocks.hpp's kept blocks.
 #pragma once
 
 #include <cstddef>
@@ -23,10 +23,9 @@
 #include <utility>
 #include <vector>
 
-/// \cond INTERNAL
 namespace cvms::detail {
 
-class ResultSlab;  // lib/numeric/result_slab.hpp
+class ResultSlab;  // result_slab.hpp
 
 /// `bytes` bytes aligned for any fundamental type: carved from slab when it
 /// is not null and has room, else a kept block of their own.
@@ -79,4 +78,3 @@ template <class T>
 using KeptVector = std::vector<T, KeptAllocator<T>>;
 
 }  // namespace cvms::detail
-/// \endcond
