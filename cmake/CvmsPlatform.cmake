@@ -25,6 +25,13 @@ function(cvms_check_platform)
     message(FATAL_ERROR "cvms: unsupported compiler: ${CMAKE_CXX_COMPILER_ID} (MSVC has no __int128). ${why}")
   endif()
 
+  # A failed check runs again at the next configure (after the user fixed
+  # the cause); a passed one is cached.
+  foreach(result IN ITEMS CVMS_HAVE_64BIT_LONG CVMS_HAVE_INT128 CVMS_HAVE_GMP_64BIT_LIMBS)
+    if(DEFINED CACHE{${result}} AND NOT ${result})
+      unset(${result} CACHE)
+    endif()
+  endforeach()
   cmake_push_check_state(RESET)
   set(CMAKE_REQUIRED_QUIET ON)
   check_cxx_source_compiles([[
