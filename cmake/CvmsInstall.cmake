@@ -6,7 +6,9 @@
 #  - the same three files for the build tree (export()), so another project
 #    can use an uninstalled build with -Dcvms_DIR=<build dir>;
 #  - cvms.pc for pkg-config, relocatable (paths relative to the .pc file), so
-#    `cmake --install --prefix <anywhere>` and packagers moving the tree work.
+#    `cmake --install --prefix <anywhere>` and packagers moving the tree work;
+#  - the licence text, share/doc/cvms/LICENSE (CMAKE_INSTALL_DOCDIR): the MIT
+#    licence asks that it travel with every copy, binaries included.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -61,3 +63,5 @@ foreach(dir IN ITEMS LIBDIR INCLUDEDIR)
 endforeach()
 configure_file("${PROJECT_SOURCE_DIR}/cmake/cvms.pc.in" "${PROJECT_BINARY_DIR}/cvms.pc" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/cvms.pc" DESTINATION "${CVMS_PC_DIR}")
+
+install(FILES "${PROJECT_SOURCE_DIR}/LICENSE" DESTINATION ${CMAKE_INSTALL_DOCDIR})

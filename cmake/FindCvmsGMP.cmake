@@ -20,9 +20,19 @@
 #                            fully static executables). Ignored when the
 #                            conan targets are used.
 #   CvmsGMP_NO_CONFIG        ON: skip step 1.
+#   CvmsGMP_LIBRARY_RELEASE, CvmsGMP_LIBRARY_DEBUG, CvmsGMP_GMPXX_LIBRARY_RELEASE,
+#   CvmsGMP_GMPXX_LIBRARY_DEBUG  (cache) the libraries, to give them by hand;
+#                            CvmsGMP_LIBRARY / CvmsGMP_GMPXX_LIBRARY given
+#                            by hand count as the release ones.
+# Step 2 looks for release libraries (gmp, gmpxx) and debug ones (gmpd,
+# gmpxxd, or gmp, gmpxx under <root>/debug/lib as vcpkg lays them out). When
+# both are found and differ, the targets' Debug configuration links the debug
+# ones and every other configuration the release ones.
 # Result:
 #   CvmsGMP_FOUND, CvmsGMP_VERSION (from gmp.h when it can be read),
 #   CvmsGMP_FROM_CONFIG (TRUE when step 1 supplied the targets),
+#   CvmsGMP_LIBRARY, CvmsGMP_GMPXX_LIBRARY (step 2: see
+#   select_library_configurations),
 #   imported targets CvmsGMP::gmp and CvmsGMP::gmpxx (gmpxx links gmp).
 include(FindPackageHandleStandardArgs)
 
@@ -82,18 +92,48 @@ if(CvmsGMP_USE_STATIC_LIBS)
     set(CMAKE_FIND_LIBRARY_SUFFIXES .a)
   endif()
 endif()
-# vcpkg's and MSVC builds name the import library gmp.lib or libgmp.lib.
-find_library(CvmsGMP_LIBRARY NAMES gmp libgmp NAMES_PER_DIR
+# A library given the old way (-DCvmsGMP_LIBRARY=...) is the release one.
+foreach(_cvms_lib IN ITEMS CvmsGMP CvmsGMP_GMPXX)
+  if(${_cvms_lib}_LIBRARY AND NOT ${_cvms_lib}_LIBRARY_RELEASE AND NOT ${_cvms_lib}_LIBRARY_DEBUG)
+    set(${_cvms_lib}_LIBRARY_RELEASE "${${_cvms_lib}_LIBRARY}" CACHE FILEPATH "Path to a library.")
+  endif()
+endforeach()
+unset(_cvms_lib)
+# Release: vcpkg's and MSVC builds name the import library gmp.lib or
+# libgmp.lib. Debug: the "d" suffix of Windows-style debug builds, or the
+# plain name in <root>/debug/lib (vcpkg's layout; its installed tree is a
+# root when its toolchain is used).
+if(VCPKG_TOOLCHAIN AND DEFINED _VCPKG_INSTALLED_DIR AND DEFINED VCPKG_TARGET_TRIPLET)
+  list(APPEND _cvms_gmp_roots "${_VCPKG_INSTALLED_DIR}/${VCPKG_TARGET_TRIPLET}")
+endif()
+find_library(CvmsGMP_LIBRARY_RELEASE NAMES gmp libgmp NAMES_PER_DIR
   HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMP_LIBDIR} ${PC_CVMS_GMP_LIBRARY_DIRS}
   PATH_SUFFIXES lib)
-find_library(CvmsGMP_GMPXX_LIBRARY NAMES gmpxx libgmpxx NAMES_PER_DIR
+find_library(CvmsGMP_GMPXX_LIBRARY_RELEASE NAMES gmpxx libgmpxx NAMES_PER_DIR
   HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMPXX_LIBDIR} ${PC_CVMS_GMPXX_LIBRARY_DIRS}
   PATH_SUFFIXES lib)
+find_library(CvmsGMP_LIBRARY_DEBUG NAMES gmpd libgmpd NAMES_PER_DIR
+  HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMP_LIBDIR} ${PC_CVMS_GMP_LIBRARY_DIRS}
+  PATH_SUFFIXES lib)
+find_library(CvmsGMP_GMPXX_LIBRARY_DEBUG NAMES gmpxxd libgmpxxd NAMES_PER_DIR
+  HINTS ${_cvms_gmp_roots} ${PC_CVMS_GMPXX_LIBDIR} ${PC_CVMS_GMPXX_LIBRARY_DIRS}
+  PATH_SUFFIXES lib)
+if(_cvms_gmp_roots)
+  find_library(CvmsGMP_LIBRARY_DEBUG NAMES gmpd libgmpd gmp libgmp NAMES_PER_DIR
+    PATHS ${_cvms_gmp_roots} PATH_SUFFIXES debug/lib NO_DEFAULT_PATH)
+  find_library(CvmsGMP_GMPXX_LIBRARY_DEBUG NAMES gmpxxd libgmpxxd gmpxx libgmpxx NAMES_PER_DIR
+    PATHS ${_cvms_gmp_roots} PATH_SUFFIXES debug/lib NO_DEFAULT_PATH)
+endif()
 if(CvmsGMP_USE_STATIC_LIBS)
   set(CMAKE_FIND_LIBRARY_SUFFIXES ${_cvms_gmp_suffixes})
   unset(_cvms_gmp_suffixes)
 endif()
 unset(_cvms_gmp_roots)
+# CvmsGMP_LIBRARY and CvmsGMP_GMPXX_LIBRARY: the release library, or the
+# debug one when only it was found, or "optimized;<release>;debug;<debug>".
+include(SelectLibraryConfigurations)
+select_library_configurations(CvmsGMP)
+select_library_configurations(CvmsGMP_GMPXX)
 
 # The version gmp.h declares (the same header gmpxx.h includes).
 if(CvmsGMP_INCLUDE_DIR AND EXISTS "${CvmsGMP_INCLUDE_DIR}/gmp.h")
@@ -122,19 +162,40 @@ find_package_handle_standard_args(CvmsGMP
   REQUIRED_VARS CvmsGMP_LIBRARY CvmsGMP_GMPXX_LIBRARY CvmsGMP_INCLUDE_DIR CvmsGMP_GMPXX_INCLUDE_DIR
   VERSION_VAR CvmsGMP_VERSION)
 
+# _cvms_gmp_locations(TARGET PREFIX): IMPORTED_LOCATION is the release
+# library (the debug one if it is all there is), which every configuration
+# without its own uses; a distinct debug library becomes the Debug
+# configuration's.
+function(_cvms_gmp_locations target prefix)
+  set(release "${${prefix}_LIBRARY_RELEASE}")
+  set(debug "${${prefix}_LIBRARY_DEBUG}")
+  if(release)
+    set_target_properties(${target} PROPERTIES IMPORTED_LOCATION "${release}")
+  else()
+    set_target_properties(${target} PROPERTIES IMPORTED_LOCATION "${debug}")
+  endif()
+  if(release AND debug AND NOT release STREQUAL debug)
+    set_property(TARGET ${target} APPEND PROPERTY IMPORTED_CONFIGURATIONS RELEASE DEBUG)
+    set_target_properties(${target} PROPERTIES
+      IMPORTED_LOCATION_RELEASE "${release}"
+      IMPORTED_LOCATION_DEBUG "${debug}")
+  endif()
+endfunction()
+
 if(CvmsGMP_FOUND)
   if(NOT TARGET CvmsGMP::gmp)
     add_library(CvmsGMP::gmp UNKNOWN IMPORTED)
     set_target_properties(CvmsGMP::gmp PROPERTIES
-      IMPORTED_LOCATION "${CvmsGMP_LIBRARY}"
       INTERFACE_INCLUDE_DIRECTORIES "${CvmsGMP_INCLUDE_DIR}")
+    _cvms_gmp_locations(CvmsGMP::gmp CvmsGMP)
   endif()
   if(NOT TARGET CvmsGMP::gmpxx)
     add_library(CvmsGMP::gmpxx UNKNOWN IMPORTED)
     set_target_properties(CvmsGMP::gmpxx PROPERTIES
-      IMPORTED_LOCATION "${CvmsGMP_GMPXX_LIBRARY}"
       INTERFACE_INCLUDE_DIRECTORIES "${CvmsGMP_GMPXX_INCLUDE_DIR}"
       INTERFACE_LINK_LIBRARIES CvmsGMP::gmp)
+    _cvms_gmp_locations(CvmsGMP::gmpxx CvmsGMP_GMPXX)
   endif()
 endif()
-mark_as_advanced(CvmsGMP_INCLUDE_DIR CvmsGMP_GMPXX_INCLUDE_DIR CvmsGMP_LIBRARY CvmsGMP_GMPXX_LIBRARY)
+mark_as_advanced(CvmsGMP_INCLUDE_DIR CvmsGMP_GMPXX_INCLUDE_DIR CvmsGMP_LIBRARY CvmsGMP_GMPXX_LIBRARY
+  CvmsGMP_LIBRARY_RELEASE CvmsGMP_LIBRARY_DEBUG CvmsGMP_GMPXX_LIBRARY_RELEASE CvmsGMP_GMPXX_LIBRARY_DEBUG)

@@ -4,7 +4,9 @@
 #   - CMake find_package: static install, shared install, build tree;
 #   - pkg-config on the command line: static and shared installs, --static;
 #   - fully static executables (-static), by pkg-config and by CMake;
-#   - package metadata: version check, soname, relocatable cvms.pc.
+#   - a plugin: a shared object linking the static libcvms.a (by CMake and by
+#     pkg-config), loaded with dlopen and run on two threads;
+#   - package metadata: version check, soname, relocatable cvms.pc, LICENSE.
 #
 # Usage: scripts/check-consumers.sh [STATIC_BUILD_DIR [SHARED_BUILD_DIR]]
 #   STATIC_BUILD_DIR: an already built static cvms build tree to install and
@@ -132,6 +134,33 @@ full_static_cmake() {
     is_fully_static "$work/c-full/cvms_consumer" &&
     "$work/c-full/cvms_consumer"
 }
+# The static library is position-independent by default: a shared object
+# links libcvms.a (its thread-local data included) and runs when loaded.
+plugin_so() { echo "$1/libcvms_plugin.so"; }
+plugin_cmake() {
+  cmake_consumer test/consumer "$work/c-plugin" -DCMAKE_PREFIX_PATH="$static_prefix" \
+    -DCVMS_CONSUMER_PLUGIN=ON &&
+    ! readelf -dW "$(plugin_so "$work/c-plugin")" | grep libcvms >/dev/null &&
+    "$work/c-plugin/cvms_plugin_host" "$(plugin_so "$work/c-plugin")"
+}
+plugin_pc() {
+  # shellcheck disable=SC2046  # word splitting of pkg-config output is intended
+  "$cxx" "${cxxflags[@]}" -shared -fPIC -Wl,-z,defs test/consumer/plugin.cpp -o "$work/pc-plugin.so" \
+    $(pc "$static_prefix" --cflags --libs cvms) &&
+    "$cxx" "${cxxflags[@]}" test/consumer/plugin_host.cpp -o "$work/pc-plugin-host" -pthread -ldl &&
+    "$work/pc-plugin-host" "$work/pc-plugin.so"
+}
+# CMAKE_POSITION_INDEPENDENT_CODE=OFF still turns it off (configured only).
+pic_off() {
+  cmake -S "$root" -B "$work/nopic" -G Ninja -DCMAKE_BUILD_TYPE=Release "${lib_only[@]}" \
+    -DCMAKE_POSITION_INDEPENDENT_CODE=OFF >/dev/null &&
+    grep -q 'FLAGS = .*-fPIC' "$static_build/build.ninja" &&
+    ! grep -q 'FLAGS = .*-fPIC' "$work/nopic/build.ninja"
+}
+license_installed() {
+  cmp "$root/LICENSE" "$static_prefix/share/doc/cvms/LICENSE" &&
+    cmp "$root/LICENSE" "$shared_prefix/share/doc/cvms/LICENSE"
+}
 test_package_cmake() {
   cmake_consumer test_package "$work/c-tp" -DCMAKE_PREFIX_PATH="$static_prefix" &&
     "$work/c-tp/test_package"
@@ -201,6 +230,8 @@ check "shared install: soname libcvms.so.$major_minor and symlinks" shared_sonam
 check "build tree (-Dcvms_DIR=$static_build): build, run" tree_cmake
 check "fully static (-static, CvmsGMP_USE_STATIC_LIBS): build, run" full_static_cmake
 check "conan test_package's CMake project on the static install" test_package_cmake
+check "plugin: shared object linking the static libcvms.a, dlopen, two threads" plugin_cmake
+check "CMAKE_POSITION_INDEPENDENT_CODE=OFF: no -fPIC" pic_off
 check "find_package(cvms $major_minor) accepted" version_request "$major_minor"
 check "find_package(cvms $other_minor) refused" version_refused "$other_minor"
 
@@ -215,6 +246,10 @@ check "--libs and --static --libs: -lcvms -lgmpxx -lgmp" pc_libs
 check "static install: c++ \$(pkg-config --cflags --libs cvms), run" pc_static
 check "shared install: c++ \$(pkg-config --cflags --libs cvms), run" pc_shared
 check "fully static: c++ -static \$(pkg-config --static ...), run" pc_full_static
+check "plugin: c++ -shared \$(pkg-config ...) on libcvms.a, dlopen, run" plugin_pc
+
+echo "== package files"
+check "LICENSE installed in share/doc/cvms" license_installed
 
 echo "consumers: $passed passed, $failed failed"
 [[ $failed -eq 0 ]]

@@ -10,13 +10,20 @@ if(NOT EXISTS "${SOURCE_PATH}/CMakeLists.txt" OR NOT EXISTS "${SOURCE_PATH}/incl
                       "use the port from inside a cvms checkout or switch to vcpkg_from_git")
 endif()
 
+# Feature "tools": the cvms command-line tool (needs CLI11).
+vcpkg_check_features(OUT_FEATURE_OPTIONS FEATURE_OPTIONS
+  FEATURES
+    tools CVMS_BUILD_TOOLS
+)
+
 # BUILD_SHARED_LIBS follows VCPKG_LIBRARY_LINKAGE (set by vcpkg_cmake_configure).
+# The static library is position-independent either way (cvms's default).
 vcpkg_cmake_configure(
   SOURCE_PATH "${SOURCE_PATH}"
   OPTIONS
+    ${FEATURE_OPTIONS}
     -DCVMS_BUILD_TESTS=OFF
     -DCVMS_BUILD_BENCHMARKS=OFF
-    -DCVMS_BUILD_TOOLS=OFF
     -DCVMS_BUILD_EXAMPLES=OFF
     -DCVMS_WARNINGS_AS_ERRORS=OFF
 )
@@ -24,9 +31,16 @@ vcpkg_cmake_install()
 vcpkg_cmake_config_fixup(PACKAGE_NAME cvms CONFIG_PATH lib/cmake/cvms)
 vcpkg_fixup_pkgconfig()
 
+if("tools" IN_LIST FEATURES)
+  # Moves bin/cvms to tools/cvms/ and removes the (then empty) bin folders.
+  vcpkg_copy_tools(TOOL_NAMES cvms AUTO_CLEAN)
+endif()
+
+# The licence goes to share/cvms/copyright (below), where vcpkg expects it.
 file(REMOVE_RECURSE
   "${CURRENT_PACKAGES_DIR}/debug/include"
   "${CURRENT_PACKAGES_DIR}/debug/share"
+  "${CURRENT_PACKAGES_DIR}/share/doc"
 )
 
 file(INSTALL "${CMAKE_CURRENT_LIST_DIR}/usage" DESTINATION "${CURRENT_PACKAGES_DIR}/share/${PORT}")
