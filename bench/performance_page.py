@@ -109,6 +109,11 @@ build/release/bench/cvms_load_bench --benchmark_min_time=0.3 --benchmark_repetit
 # whole `cvms` runs from file to file (minimum of 5 rounds)
 bench/end_to_end.py --cvms build/release/tools/cvms --json docs/bench/end_to_end.json
 
+# a sum called from Python against the same sum in C++ (the module and the tool of one tree)
+scripts/python.sh && cmake -S . -B build/python -DCVMS_BUILD_TOOLS=ON && cmake --build build/python --target cvms_cli
+PYTHONPATH=build/python/python /usr/bin/python3 python/bench/sum_overhead.py --cvms build/python/tools/cvms \
+    --runs 9 --json docs/bench/python_overhead.json
+
 # then this page
 bench/performance_page.py
 ```"""
@@ -353,6 +358,23 @@ def end_to_end_section(page, path):
     page.block(lines)
 
 
+def python_section(page, path):
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        results = json.load(f)
+    page.add("## From Python", "")
+    page.para(f"*`docs/bench/{os.path.basename(path)}` (`python/bench/sum_overhead.py`): the same sum called "
+              "from Python (`cvms.minkowski_sum`) and in C++ (the time `cvms sum --stats` reports for the sum "
+              "alone), on the same files, the module and the tool from one release build tree; the minimum of "
+              "interleaved runs of each.*")
+    lines = ["| sum | C++ (ms) | Python (ms) | Python / C++ |", "|---|---:|---:|---:|"]
+    for name, r in results.items():
+        lines.append(f"| {name} | {fmt_ms(r['cpp_ms'])} | {fmt_ms(r['python_ms'])} "
+                     f"| {r['python_ms'] / r['cpp_ms']:.2f} |")
+    page.block(lines)
+
+
 def explanations(page, stimes, speaks, sfacets):
     """What the numbers mean: lasting explanations, with their figures taken from the JSON."""
     page.add("## What the numbers mean", "")
@@ -500,6 +522,7 @@ def build(bench_dir):
     decimal_section(page, path_in(bench_dir, "decimal_sum.json"))
     load_section(page, path_in(bench_dir, "load.json"), path_in(bench_dir, "load_before_after.json"))
     end_to_end_section(page, path_in(bench_dir, "end_to_end.json"))
+    python_section(page, path_in(bench_dir, "python_overhead.json"))
     explanations(page, stimes, speaks, sfacets)
     return page.text()
 

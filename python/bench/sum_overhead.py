@@ -13,6 +13,7 @@ the same library objects.
 """
 
 import argparse
+import json
 import pathlib
 import re
 import subprocess
@@ -41,7 +42,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cvms", required=True, help="the cvms command-line tool")
     parser.add_argument("--runs", type=int, default=7, help="runs of each, the best counts (default 7)")
+    parser.add_argument("--json", help="also write the minima here (docs/bench/python_overhead.json)")
     args = parser.parse_args()
+    results = {}
     print("| sum | C++ (ms) | Python (ms) | ratio |")
     print("|---|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
@@ -57,6 +60,11 @@ def main():
                 cpp.append(cpp_ms(args.cvms, *files))
                 py.append(python_ms(a, b))
             print(f"| {name_a} + {name_b} | {min(cpp):.1f} | {min(py):.1f} | {min(py) / min(cpp):.2f} |")
+            results[f"{name_a} + {name_b}"] = {"cpp_ms": min(cpp), "python_ms": min(py), "runs": args.runs}
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(results, f, indent=2)
+            f.write("\n")
 
 
 if __name__ == "__main__":
