@@ -564,6 +564,46 @@ TEST_F(Cli, FailedWritesNameTheFileAndTheReason) {
   expect_bad_input("gen cube -o d.off", "cannot write 'd.off': it is a directory");
 }
 
+// Every command that writes to stdout (results, reports, help) exits 1 with
+// an io error when its output is lost, never 0 with the output gone.
+TEST_F(Cli, LostOutputOnStdoutIsAnErrorForEveryCommand) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  ASSERT_EQ(run("gen cube -o c.off").code, 0);
+  ASSERT_EQ(run("gen octahedron -o o.off").code, 0);
+  write_text("points.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  write_text("rows.ine", "H-representation\nbegin\n4 4 integer\n0 1 0 0\n0 0 1 0\n0 0 0 1\n1 -1 -1 -1\nend\n");
+  const std::vector<std::string> commands = {
+      "gen cube",
+      "gen zonotope",
+      "demo",
+      "check c.off",
+      "distance c.off o.off",
+      "penetration c.off o.off",
+      "sum c.off o.off",
+      "sum c.off o.off c.off",
+      "sum c.off o.off -o s.off --stats",
+      "hull points.xyz",
+      "hull --from-halfspaces rows.ine",
+      "diff c.off o.off",
+      "diff c.off o.off -o d.off",
+      "halfspaces c.off",
+      "--help",
+  };
+#ifdef CVMS_CLI_PATH
+  for (const std::string& args : commands) {
+    SCOPED_TRACE("cvms " + args);
+    const std::string command = "cd '" + dir_.string() + "' && '" CVMS_CLI_PATH "' " + args +
+                                " > /dev/full 2> '" + path("full.txt") + "'";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+    const std::string err = slurp(file("full.txt"));
+    EXPECT_EQ(err, "cvms: io: cannot write standard output: No space left on device\n");
+  }
+#else
+  (void)commands;
+#endif
+}
+
 // `hull DIR` names the directory, not "read error after 0 bytes"; an
 // unreadable stdin is named as such, not "empty input".
 TEST_F(Cli, DirectoriesAndUnreadableStdinAreNamed) {

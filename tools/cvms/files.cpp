@@ -146,6 +146,16 @@ void write_stdout(const std::function<void(std::ostream&)>& write) {
   if (!std::cout) throw Error(ErrorCategory::io, "cannot write standard output" + reason(error));
 }
 
+void finish_stdout() {
+  errno = 0;
+  std::cout.flush();
+  int error = errno;
+  const bool flushed = std::fflush(stdout) == 0;
+  if (error == 0) error = errno;
+  if (!std::cout || !flushed || std::ferror(stdout) != 0)
+    throw Error(ErrorCategory::io, "cannot write standard output" + reason(error));
+}
+
 void check_output_directory(const std::string& path) {
   if (is_std_stream(path)) return;
   std::error_code ec;

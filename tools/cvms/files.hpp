@@ -56,6 +56,12 @@ bool is_std_stream(const std::string& path);
 /// \throw Error(io) "cannot write standard output: <reason>" if that fails.
 void write_stdout(const std::function<void(std::ostream&)>& write);
 
+/// Flushes std::cout and stdout: a command's last write to standard output
+/// (a report, a result, help) is only known to have arrived then.
+/// \throw Error(io) "cannot write standard output: <reason>" if any write to
+/// it failed, earlier or now.
+void finish_stdout();
+
 /// Fails early, before a long computation, if the output's directory does
 /// not exist or the output is a directory. \throw Error(io) naming the file.
 void check_output_directory(const std::string& path);
