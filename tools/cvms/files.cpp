@@ -14,6 +14,7 @@
 #include <iostream>
 
 #include "cvms/error.hpp"
+#include "cvms/halfspace_io.hpp"
 #include "usage_error.hpp"
 
 namespace cvms::cli {
@@ -115,6 +116,12 @@ PolygonSoup read_soup(const std::string& path) {
 ConvexPolyhedron read_polyhedron(const std::string& path) {
   if (is_std_stream(path)) return to_polyhedron(read_soup(path), input_name(path));
   return cvms::read_polyhedron(path, read_limits());
+}
+
+HalfspaceSystem read_halfspace_rows(const std::string& path) {
+  if (is_std_stream(path))
+    return read_stdin([&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), read_limits()); });
+  return read_halfspace_file(path, read_limits());
 }
 
 std::vector<Vec3> read_point_cloud(const std::string& path) {

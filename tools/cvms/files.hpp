@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/vec.hpp"
@@ -39,6 +40,10 @@ PolygonSoup read_soup(const std::string& path);
 /// cvms::read_polyhedron, or for "-" the same on stdin: every error names the
 /// file ("<stdin>").
 ConvexPolyhedron read_polyhedron(const std::string& path);
+
+/// The rows of a half-space file (.ine cdd, other: plain rows), or cdd on
+/// stdin for "-". \throw Error naming the file once ("<stdin>").
+HalfspaceSystem read_halfspace_rows(const std::string& path);
 
 /// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle corners.
 std::vector<Vec3> read_point_cloud(const std::string& path);
