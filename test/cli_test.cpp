@@ -472,6 +472,24 @@ TEST_F(Cli, GenZonotope) {
   expect_usage("gen zonotope --generators 0");
 }
 
+// gen takes --max-memory as sum does: a zonotope whose output is estimated
+// beyond it is refused before anything is built (at once, not after the
+// gigabytes of 2048 generators).
+TEST_F(Cli, GenZonotopeRespectsMaxMemory) {
+  Outcome o = run("gen zonotope --generators 2048 --max-memory 100M -o z.off");
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_EQ(o.err,
+            "cvms: limit: minkowski_sum (zonotope of 2048 segments in 2048 directions): the sum has up to 4192256 "
+            "facets, which need about 4292870144 bytes (1024 per facet), beyond the limit of 104857600 bytes "
+            "(SumLimits::max_memory_bytes); raise it with --max-memory\n");
+  EXPECT_FALSE(fs::exists(file("z.off")));
+  // 40 generators: 1560 facets, 1597440 bytes by the estimate.
+  expect_bad_input("gen zonotope --generators 40 --max-memory 1M -o z.off", "raise it with --max-memory");
+  Outcome fits = run("gen zonotope --generators 40 --max-memory 2M -o z.off");
+  EXPECT_EQ(fits.code, 0) << fits.err;
+  expect_usage("gen zonotope --max-memory 1X");
+}
+
 // Output quadratic in the input, for the sums of sets: a polygon plus a polyhedron (and
 // sums of many) are counted before they are built and refused with the
 // same limit error and hint as two polyhedra; a huge zonotope is refused

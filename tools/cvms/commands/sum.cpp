@@ -6,7 +6,6 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,20 +49,7 @@ void add_sum_limit_options(CLI::App& command, SumLimits& limits) {
   command.add_option("--max-facets", limits.max_output_facets, "refuse a sum with more output facets")
       ->default_val(limits.max_output_facets)
       ->check(CLI::PositiveNumber);
-  command
-      .add_option_function<std::string>(
-          "--max-memory", [&limits](const std::string& text) { limits.max_memory_bytes = parse_byte_size(text); },
-          "refuse a sum whose output is estimated to need more memory (bytes, or 512M, 4G, ...; "
-          "at most half of this machine's memory by default)")
-      ->check([](const std::string& text) {
-        try {
-          parse_byte_size(text);
-          return std::string();
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
-        }
-      })
-      ->default_str(format_byte_size(limits.max_memory_bytes));
+  add_max_memory_option(command, limits.max_memory_bytes, "a sum");
 }
 
 // A limit error names the option that raises it (sizes.hpp).
