@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
@@ -470,6 +471,43 @@ TEST_F(Cli, GenZonotope) {
   EXPECT_NE(run("check seg.off").out.find("segment"), std::string::npos);
   expect_usage("gen cube --generators 3");
   expect_usage("gen zonotope --generators 0");
+}
+
+// The same set gives the same bytes whatever the operand order (which
+// decides the partial sums, and so the numbering) and thread count:
+// vertices in lexicographic order, faces from their smallest vertex.
+TEST_F(Cli, SumOfManyWritesTheSameBytesInEveryOperandOrder) {
+  ASSERT_EQ(run("gen random --points 8 --seed 5 -o r.off").code, 0);
+  ASSERT_EQ(run("gen octahedron -o o.off").code, 0);
+  ASSERT_EQ(run("gen box -o b.off").code, 0);
+  write_text("square.off", "OFF\n4 1 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n4 0 1 2 3\n");
+  write_text("segment.off", "OFF\n2 0 0\n0 0 0\n1 1 1\n");
+  for (const std::vector<std::string>& operands :
+       {std::vector<std::string>{"r.off", "o.off", "b.off"}, {"square.off", "segment.off", "o.off"},
+        {"segment.off", "square.off", "segment.off", "r.off"}}) {
+    std::vector<std::string> order = operands;
+    std::sort(order.begin(), order.end());
+    std::string first;
+    do {
+      std::string args = "sum";
+      for (const std::string& o : order) args += " " + o;
+      for (const char* threads : {"1", "3"}) {
+        SCOPED_TRACE(args + " --threads " + threads);
+        const Outcome o = run(args + " --threads " + threads);
+        ASSERT_EQ(o.code, 0) << o.err;
+        if (first.empty()) first = o.out;
+        EXPECT_EQ(o.out, first);
+      }
+    } while (std::next_permutation(order.begin(), order.end()));
+    // The order is lexicographic in the exact coordinates.
+    const ConvexSet sum = read_convex_set([&] {
+      write_text("sum.off", first);
+      return file("sum.off");
+    }());
+    const std::vector<Vec3> v = sum.vertices();
+    for (std::size_t i = 1; i < v.size(); ++i)
+      EXPECT_TRUE(std::tie(v[i - 1].x, v[i - 1].y, v[i - 1].z) < std::tie(v[i].x, v[i].y, v[i].z)) << i;
+  }
 }
 
 // gen takes --max-memory as sum does: a zonotope whose output is estimated
