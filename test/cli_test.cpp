@@ -510,6 +510,110 @@ TEST_F(Cli, SumOfManyWritesTheSameBytesInEveryOperandOrder) {
   }
 }
 
+// Every format a command writes reads back in every command that takes
+// that kind of input: sets written as OFF, OBJ, STL (sum, hull, diff, gen)
+// and cdd V-representation (halfspaces -o .ext) are read by hull, check,
+// sum, diff, distance, penetration and halfspaces; rows written as .ine,
+// plain rows and cdd on stdout (halfspaces) by hull --from-halfspaces.
+TEST_F(Cli, EveryWrittenFormatReadsBackInEveryReader) {
+  write_text("square.off", "OFF\n4 1 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n4 0 1 2 3\n");
+  ASSERT_EQ(run("gen random --points 30 --seed 7 -o solid.off").code, 0);
+  for (const std::string base : {"solid", "square"}) {
+    SCOPED_TRACE(base);
+    const test::SetShape expected = test::describe_set(read_convex_set(file(base + ".off")));
+    const bool solid = base == "solid";
+    // Each command's output on the OFF original, compared with its output on each copy.
+    const auto output_on = [&](const std::string& command_with_x, const std::string& name) {
+      std::string args = command_with_x;
+      for (std::size_t at; (at = args.find('X')) != std::string::npos;) args.replace(at, 1, name);
+      const Outcome o = run(args);
+      EXPECT_EQ(o.code, 0) << args << ": " << o.err;
+      std::string out = o.out;
+      for (std::size_t at; (at = out.find(name)) != std::string::npos;) out.replace(at, name.size(), "X");
+      return out;
+    };
+    const std::vector<std::string> set_readers = {
+        "check X",          "sum X square.off",   "sum square.off X solid.off", "diff X X",
+        "distance X solid.off", "penetration X solid.off", "halfspaces X -o -"};
+    for (const std::string format : {"off", "obj", "stl"}) {
+      if (format == "stl" && !solid) continue;  // STL holds no flat set as one
+      ASSERT_EQ(run("hull " + base + ".off -o " + base + "_hull." + format).code, 0) << format;
+    }
+    ASSERT_EQ(run("halfspaces " + base + ".off -o " + base + ".ext").code, 0);
+    ASSERT_EQ(run("halfspaces " + base + ".off -o " + base + "_rows.ine").code, 0);
+    ASSERT_EQ(run("halfspaces " + base + ".off -o " + base + "_rows.txt").code, 0);
+    const Outcome rows_on_stdout = run("halfspaces " + base + ".off -o -");
+    ASSERT_EQ(rows_on_stdout.code, 0);
+    write_text(base + "_stdout.ine", rows_on_stdout.out);
+    std::vector<std::string> copies = {base + "_hull.off", base + "_hull.obj", base + ".ext"};
+    if (solid) copies.push_back(base + "_hull.stl");
+    for (const std::string& copy : copies) {
+      SCOPED_TRACE(copy);
+      ASSERT_EQ(run("hull " + copy + " -o back.off").code, 0);
+      EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), expected);
+      for (const std::string& reader : set_readers) {
+        SCOPED_TRACE(reader);
+        std::string on_copy = output_on(reader, copy);
+        std::string on_original = output_on(reader, base + ".off");
+        if (reader == "check X") {  // the input counts differ by format (STL: triangles)
+          for (std::string* out : {&on_copy, &on_original}) {
+            const std::size_t at = out->find("input:");
+            if (at != std::string::npos) out->erase(at, out->find('\n', at) + 1 - at);
+          }
+        }
+        if (reader.rfind("halfspaces", 0) == 0) {  // the same rows, perhaps in another order
+          write_text("rows_copy.ine", on_copy);
+          write_text("rows_original.ine", on_original);
+          ASSERT_EQ(run("hull --from-halfspaces rows_copy.ine -o a.off").code, 0);
+          ASSERT_EQ(run("hull --from-halfspaces rows_original.ine -o b.off").code, 0);
+          EXPECT_EQ(test::describe_set(read_convex_set(file("a.off"))), expected);
+          EXPECT_EQ(test::describe_set(read_convex_set(file("b.off"))), expected);
+          continue;
+        }
+        if (reader.rfind("sum", 0) == 0) {  // the same set, numbered by the operands
+          write_text("sum_copy.off", on_copy);
+          write_text("sum_original.off", on_original);
+          EXPECT_EQ(test::describe_set(read_convex_set(file("sum_copy.off"))),
+                    test::describe_set(read_convex_set(file("sum_original.off"))));
+          continue;
+        }
+        EXPECT_EQ(on_copy, on_original);
+      }
+    }
+    for (const std::string& rows : {base + "_rows.ine", base + "_rows.txt", base + "_stdout.ine"}) {
+      SCOPED_TRACE(rows);
+      ASSERT_EQ(run("hull --from-halfspaces " + rows + " -o back.off").code, 0);
+      EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), expected);
+    }
+    ASSERT_EQ(run("hull --from-halfspaces - -o back.off", base + "_stdout.ine").code, 0);
+    EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), expected);
+  }
+}
+
+// cdd V-representations hold bounded sets only here: rays and lines are
+// refused with the reason, and a V-representation is not read as rows.
+TEST_F(Cli, CddPointsRefuseRaysAndLines) {
+  write_text("ray.ext", "V-representation\nbegin\n2 4 integer\n1 0 0 0\n0 1 0 0\nend\n");
+  write_text("line.ext", "V-representation\nlinearity 1 1\nbegin\n1 4 integer\n0 1 0 0\nend\n");
+  write_text("points.ext", "V-representation\nbegin\n1 4 integer\n1 0 0 0\nend\n");
+  for (const std::string command : {"hull", "check", "halfspaces"}) {
+    Outcome o = run(command + " ray.ext");
+    EXPECT_EQ(o.code, 1);
+    EXPECT_EQ(o.err, "cvms: parse: ray.ext: vertex 2 is a ray (first number 0): unbounded sets are not supported\n");
+    o = run(command + " line.ext");
+    EXPECT_EQ(o.code, 1);
+    EXPECT_EQ(o.err,
+              "cvms: parse: line.ext:6: linearity in a V-representation describes lines: unbounded sets are not "
+              "supported\n");
+  }
+  Outcome o = run("hull --from-halfspaces points.ext");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.err, "cvms: parse: points.ext:1: this is a V-representation, expected a H-representation\n");
+  o = run("check points.txt");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("expected '-' or a file ending in .off, .obj, .stl or .ext"), std::string::npos) << o.err;
+}
+
 // gen takes --max-memory as sum does: a zonotope whose output is estimated
 // beyond it is refused before anything is built (at once, not after the
 // gigabytes of 2048 generators).

@@ -66,7 +66,20 @@ bool is_device_path(const std::string& path) {
   return path.rfind("/dev/", 0) == 0 && std::filesystem::path(path).extension().empty();
 }
 
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::vector<Vec3> read_cdd_points_file(const std::string& path) {
+  std::ifstream in = open_input(path);
+  return read_cdd_points(in, path, read_limits());
+}
+
 }  // namespace
+
+bool is_cdd_points_path(const std::string& path) { return !is_std_stream(path) && lower_extension(path) == ".ext"; }
 
 bool is_std_stream(const std::string& path) { return path == "-"; }
 
@@ -110,6 +123,11 @@ FileFormat output_format(const std::string& path, const std::string& format) {
 
 PolygonSoup read_soup(const std::string& path) {
   if (is_std_stream(path)) return read_stdin([&] { return read_off(std::cin, input_name(path), read_limits()); });
+  if (is_cdd_points_path(path)) {
+    PolygonSoup soup;
+    soup.points = read_cdd_points_file(path);
+    return soup;
+  }
   return read_file(path, read_limits());
 }
 
@@ -121,16 +139,20 @@ ConvexPolyhedron read_polyhedron(const std::string& path) {
 HalfspaceSystem read_halfspace_rows(const std::string& path) {
   if (is_std_stream(path))
     return read_stdin([&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), read_limits()); });
+  if (is_cdd_points_path(path)) {
+    // Read as cdd, so that its V-representation line is named, not a row error.
+    std::ifstream in = open_input(path);
+    return read_halfspaces(in, HalfspaceFormat::cdd, path, read_limits());
+  }
   return read_halfspace_file(path, read_limits());
 }
 
 std::vector<Vec3> read_point_cloud(const std::string& path) {
   if (is_std_stream(path))
     return read_stdin([&] { return read_points(std::cin, input_name(path), read_limits()); });
+  if (is_cdd_points_path(path)) return read_cdd_points_file(path);
   std::ifstream in = open_input(path);
-  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".stl") return read_stl(in, path, read_limits()).points;
+  if (lower_extension(path) == ".stl") return read_stl(in, path, read_limits()).points;
   return read_points(in, path, read_limits());
 }
 
@@ -181,12 +203,12 @@ void check_output(const std::string& path, const std::string& format) {
 Coordinates coordinates_of(bool float_output) { return float_output ? Coordinates::double_ : Coordinates::exact; }
 
 std::string check_mesh_path(const std::string& path) {
-  if (is_std_stream(path)) return {};
+  if (is_std_stream(path) || is_cdd_points_path(path)) return {};
   try {
     (void)format_from_extension(path);
     return {};
   } catch (const Error&) {
-    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj or .stl";
+    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj, .stl or .ext";
   }
 }
 

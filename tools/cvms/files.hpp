@@ -34,7 +34,8 @@ std::string printable(std::string_view text);
 /// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them tells.
 FileFormat output_format(const std::string& path, const std::string& format);
 
-/// Reads a polygon mesh. \throw Error naming the file.
+/// Reads a polygon mesh; a cdd V-representation (.ext) is its points without
+/// faces, as a points-only OFF. \throw Error naming the file.
 PolygonSoup read_soup(const std::string& path);
 
 /// cvms::read_polyhedron, or for "-" the same on stdin: every error names the
@@ -45,7 +46,8 @@ ConvexPolyhedron read_polyhedron(const std::string& path);
 /// stdin for "-". \throw Error naming the file once ("<stdin>").
 HalfspaceSystem read_halfspace_rows(const std::string& path);
 
-/// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle corners.
+/// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle
+/// corners; the vertices of a cdd V-representation (.ext).
 std::vector<Vec3> read_point_cloud(const std::string& path);
 
 /// cvms::write_file (atomic: a failed write leaves an existing file as it
@@ -53,6 +55,9 @@ std::vector<Vec3> read_point_cloud(const std::string& path);
 /// \throw Error naming the file ("standard output" for "-") and the reason.
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
                       const std::string& format = {});
+
+/// True for a path ending in .ext (any case): cdd's V-representation, points.
+bool is_cdd_points_path(const std::string& path);
 
 /// True for "-" (stdin or stdout).
 bool is_std_stream(const std::string& path);
@@ -78,7 +83,7 @@ void check_output(const std::string& path, const std::string& format);
 /// The coordinates --float asks for: nearest doubles, else exact rationals.
 Coordinates coordinates_of(bool float_output);
 
-/// Empty if path is "-" or ends in .off/.obj/.stl (any case), else a message;
+/// Empty if path is "-" or ends in .off/.obj/.stl/.ext (any case), else a message;
 /// used as a CLI11 validator so a wrong extension is a usage error.
 std::string check_mesh_path(const std::string& path);
 

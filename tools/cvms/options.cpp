@@ -28,7 +28,7 @@ constexpr Algorithm algorithms[] = {Algorithm::cvms, Algorithm::essdms, Algorith
 }  // namespace
 
 const CLI::Validator& mesh_path() {
-  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
+  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|.ext|-)", "mesh path"};
   return validator;
 }
 
