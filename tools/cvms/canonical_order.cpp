@@ -8,8 +8,6 @@
 #include <span>
 #include <vector>
 
-#include "cvms/convex_hull.hpp"
-
 namespace cvms::cli {
 namespace {
 
@@ -23,9 +21,8 @@ bool lexicographically_less(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-ConvexSet in_canonical_order(const ConvexSet& set) {
-  if (set.dimension() < 1) return set;
-  const PolygonSoup soup = set.to_soup();
+PolygonSoup canonical_soup(const ConvexPolyhedron& p) {
+  PolygonSoup soup = p.to_soup();
   std::vector<std::uint32_t> order(soup.points.size());
   std::iota(order.begin(), order.end(), std::uint32_t{0});
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
@@ -36,18 +33,19 @@ ConvexSet in_canonical_order(const ConvexSet& set) {
   canonical.points.reserve(order.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) {
     rank[order[i]] = i;
-    canonical.points.push_back(soup.points[order[i]]);
+    canonical.points.push_back(std::move(soup.points[order[i]]));
   }
-  // Each face renumbered and rotated to start at its smallest number (a
-  // rotation keeps its orientation), then the faces sorted.
+  // Each facet renumbered and rotated to start at its smallest number (a
+  // rotation keeps its orientation), then the facets sorted.
   std::vector<std::vector<std::uint32_t>> faces(soup.num_faces());
   for (std::size_t f = 0; f < faces.size(); ++f) {
     for (std::uint32_t v : soup.face(f)) faces[f].push_back(rank[v]);
     std::rotate(faces[f].begin(), std::min_element(faces[f].begin(), faces[f].end()), faces[f].end());
   }
   std::sort(faces.begin(), faces.end());
+  canonical.face_indices.reserve(soup.face_indices.size());
   for (const std::vector<std::uint32_t>& face : faces) canonical.add_face(std::span<const std::uint32_t>(face));
-  return convex_set_from_soup(std::move(canonical));
+  return canonical;
 }
 
 }  // namespace cvms::cli

@@ -163,6 +163,13 @@ void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordi
   write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates); });
 }
 
+void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,
+                const std::string& format) {
+  const FileFormat chosen = output_format(path, format);
+  if (!is_std_stream(path)) return write_file(path, soup, chosen, coordinates);
+  write_stdout([&](std::ostream& out) { write(out, soup, chosen, coordinates); });
+}
+
 void write_stdout(const std::function<void(std::ostream&)>& write) {
   errno = 0;
   try {

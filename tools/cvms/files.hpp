@@ -56,6 +56,11 @@ std::vector<Vec3> read_point_cloud(const std::string& path);
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
                       const std::string& format = {});
 
+/// write_file of a soup (atomic), or stdout for "-", in output_format(path,
+/// format). \throw Error naming the file ("standard output" for "-").
+void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,
+                const std::string& format = {});
+
 /// True for a path ending in .ext (any case): cdd's V-representation, points.
 bool is_cdd_points_path(const std::string& path);
 
