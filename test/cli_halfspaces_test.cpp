@@ -88,4 +88,42 @@ TEST_F(CliHalfspaces, BadInputAndUsage) {
   EXPECT_EQ(o.code, 2) << o.err;
 }
 
+// Each message names the file once, quotes the input as written, and says
+// what is wrong with an empty input rather than a line 0 or a whole space.
+TEST_F(CliHalfspaces, MessagesNameTheFileOnceAndQuoteTheInputAsWritten) {
+  const auto expect_error = [&](const std::string& args, const std::string& message) {
+    SCOPED_TRACE("cvms " + args);
+    const cvms::test::CliOutcome o = run(args);
+    EXPECT_EQ(o.code, 1);
+    EXPECT_EQ(o.err, "cvms: " + message + "\n");
+  };
+  dir_.write("empty.off", "OFF\n0 0 0\n");
+  expect_error("diff unit.off empty.off -o d.off",
+               "invalid_argument: empty.off: B is empty (the difference A - B would be all of space)");
+  dir_.write("header.ine", "H-representation\nbegin\n2 3 integer\nend\n");
+  expect_error("hull --from-halfspaces header.ine",
+               "parse: header.ine:3: expected 'm 4 integer|rational|real' (3D: 4 columns), got '2 3 integer'");
+  dir_.write("empty.ine", "");
+  expect_error("hull --from-halfspaces empty.ine", "parse: empty.ine: empty input (no 'begin' line)");
+  expect_error("hull --from-halfspaces - < empty.ine", "parse: <stdin>: empty input (no 'begin' line)");
+  dir_.write("count.ine", "linearity 18446744073709551616 1\nbegin\n1 4 integer\n1 0 0 0\nend\n");
+  expect_error("hull --from-halfspaces count.ine",
+               "parse: count.ine:1: linearity: expected 18446744073709551616 row indices");
+  dir_.write("index.ine", "linearity 1 18446744073709551616\nbegin\n1 4 integer\n1 0 0 0\nend\n");
+  expect_error("hull --from-halfspaces index.ine",
+               "parse: index.ine:1: linearity index 18446744073709551616 is not a row");
+  std::filesystem::create_directory(dir_.path() / "rows.ine");
+  expect_error("hull --from-halfspaces rows.ine", "io: cannot read 'rows.ine': it is a directory");
+  expect_error("hull --from-halfspaces - < /", "io: cannot read standard input: it is a directory");
+  dir_.write("empty.txt", "");
+  expect_error("hull --from-halfspaces empty.txt", "parse: empty.txt: empty input (no rows)");
+  dir_.write("comments.txt", "# nothing\n\n");
+  expect_error("hull --from-halfspaces comments.txt", "parse: comments.txt:2: no rows, only comments and blank lines");
+  // 3y - 4.5z <= 0 and 0 <= 1: unbounded along (0, -3, -2) at any scaling.
+  dir_.write("open2.txt", "0 3 -4.5 0\n0 0 0 1\n");
+  expect_error("hull --from-halfspaces open2.txt",
+               "invalid_argument: open2.txt: the half-spaces do not bound their intersection: it is unbounded in "
+               "direction (0, -3, -2)");
+}
+
 }  // namespace

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
@@ -472,6 +473,165 @@ TEST_F(Cli, GenZonotope) {
   expect_usage("gen zonotope --generators 0");
 }
 
+// The same set gives the same bytes whatever the operand order (which
+// decides the partial sums, and so the numbering) and thread count:
+// vertices in lexicographic order, faces from their smallest vertex.
+TEST_F(Cli, SumOfManyWritesTheSameBytesInEveryOperandOrder) {
+  ASSERT_EQ(run("gen random --points 8 --seed 5 -o r.off").code, 0);
+  ASSERT_EQ(run("gen octahedron -o o.off").code, 0);
+  ASSERT_EQ(run("gen box -o b.off").code, 0);
+  write_text("square.off", "OFF\n4 1 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n4 0 1 2 3\n");
+  write_text("segment.off", "OFF\n2 0 0\n0 0 0\n1 1 1\n");
+  for (const std::vector<std::string>& operands :
+       {std::vector<std::string>{"r.off", "o.off", "b.off"}, {"square.off", "segment.off", "o.off"},
+        {"segment.off", "square.off", "segment.off", "r.off"}}) {
+    std::vector<std::string> order = operands;
+    std::sort(order.begin(), order.end());
+    std::string first;
+    do {
+      std::string args = "sum";
+      for (const std::string& o : order) args += " " + o;
+      for (const char* threads : {"1", "3"}) {
+        SCOPED_TRACE(args + " --threads " + threads);
+        const Outcome o = run(args + " --threads " + threads);
+        ASSERT_EQ(o.code, 0) << o.err;
+        if (first.empty()) first = o.out;
+        EXPECT_EQ(o.out, first);
+      }
+    } while (std::next_permutation(order.begin(), order.end()));
+    // The order is lexicographic in the exact coordinates.
+    const ConvexSet sum = read_convex_set([&] {
+      write_text("sum.off", first);
+      return file("sum.off");
+    }());
+    const std::vector<Vec3> v = sum.vertices();
+    for (std::size_t i = 1; i < v.size(); ++i)
+      EXPECT_TRUE(std::tie(v[i - 1].x, v[i - 1].y, v[i - 1].z) < std::tie(v[i].x, v[i].y, v[i].z)) << i;
+  }
+}
+
+// Every format a command writes reads back in every command that takes
+// that kind of input: sets written as OFF, OBJ, STL (sum, hull, diff, gen)
+// and cdd V-representation (halfspaces -o .ext) are read by hull, check,
+// sum, diff, distance, penetration and halfspaces; rows written as .ine,
+// plain rows and cdd on stdout (halfspaces) by hull --from-halfspaces.
+TEST_F(Cli, EveryWrittenFormatReadsBackInEveryReader) {
+  write_text("square.off", "OFF\n4 1 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n4 0 1 2 3\n");
+  ASSERT_EQ(run("gen random --points 30 --seed 7 -o solid.off").code, 0);
+  for (const std::string base : {"solid", "square"}) {
+    SCOPED_TRACE(base);
+    const test::SetShape expected = test::describe_set(read_convex_set(file(base + ".off")));
+    const bool solid = base == "solid";
+    // Each command's output on the OFF original, compared with its output on each copy.
+    const auto output_on = [&](const std::string& command_with_x, const std::string& name) {
+      std::string args = command_with_x;
+      for (std::size_t at; (at = args.find('X')) != std::string::npos;) args.replace(at, 1, name);
+      const Outcome o = run(args);
+      EXPECT_EQ(o.code, 0) << args << ": " << o.err;
+      std::string out = o.out;
+      for (std::size_t at; (at = out.find(name)) != std::string::npos;) out.replace(at, name.size(), "X");
+      return out;
+    };
+    const std::vector<std::string> set_readers = {
+        "check X",          "sum X square.off",   "sum square.off X solid.off", "diff X X",
+        "distance X solid.off", "penetration X solid.off", "halfspaces X -o -"};
+    for (const std::string format : {"off", "obj", "stl"}) {
+      if (format == "stl" && !solid) continue;  // STL holds no flat set as one
+      ASSERT_EQ(run("hull " + base + ".off -o " + base + "_hull." + format).code, 0) << format;
+    }
+    ASSERT_EQ(run("halfspaces " + base + ".off -o " + base + ".ext").code, 0);
+    ASSERT_EQ(run("halfspaces " + base + ".off -o " + base + "_rows.ine").code, 0);
+    ASSERT_EQ(run("halfspaces " + base + ".off -o " + base + "_rows.txt").code, 0);
+    const Outcome rows_on_stdout = run("halfspaces " + base + ".off -o -");
+    ASSERT_EQ(rows_on_stdout.code, 0);
+    write_text(base + "_stdout.ine", rows_on_stdout.out);
+    std::vector<std::string> copies = {base + "_hull.off", base + "_hull.obj", base + ".ext"};
+    if (solid) copies.push_back(base + "_hull.stl");
+    for (const std::string& copy : copies) {
+      SCOPED_TRACE(copy);
+      ASSERT_EQ(run("hull " + copy + " -o back.off").code, 0);
+      EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), expected);
+      for (const std::string& reader : set_readers) {
+        SCOPED_TRACE(reader);
+        std::string on_copy = output_on(reader, copy);
+        std::string on_original = output_on(reader, base + ".off");
+        if (reader == "check X") {  // the input counts differ by format (STL: triangles)
+          for (std::string* out : {&on_copy, &on_original}) {
+            const std::size_t at = out->find("input:");
+            if (at != std::string::npos) out->erase(at, out->find('\n', at) + 1 - at);
+          }
+        }
+        if (reader.rfind("halfspaces", 0) == 0) {  // the same rows, perhaps in another order
+          write_text("rows_copy.ine", on_copy);
+          write_text("rows_original.ine", on_original);
+          ASSERT_EQ(run("hull --from-halfspaces rows_copy.ine -o a.off").code, 0);
+          ASSERT_EQ(run("hull --from-halfspaces rows_original.ine -o b.off").code, 0);
+          EXPECT_EQ(test::describe_set(read_convex_set(file("a.off"))), expected);
+          EXPECT_EQ(test::describe_set(read_convex_set(file("b.off"))), expected);
+          continue;
+        }
+        if (reader.rfind("sum", 0) == 0) {  // the same set, numbered by the operands
+          write_text("sum_copy.off", on_copy);
+          write_text("sum_original.off", on_original);
+          EXPECT_EQ(test::describe_set(read_convex_set(file("sum_copy.off"))),
+                    test::describe_set(read_convex_set(file("sum_original.off"))));
+          continue;
+        }
+        EXPECT_EQ(on_copy, on_original);
+      }
+    }
+    for (const std::string& rows : {base + "_rows.ine", base + "_rows.txt", base + "_stdout.ine"}) {
+      SCOPED_TRACE(rows);
+      ASSERT_EQ(run("hull --from-halfspaces " + rows + " -o back.off").code, 0);
+      EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), expected);
+    }
+    ASSERT_EQ(run("hull --from-halfspaces - -o back.off", base + "_stdout.ine").code, 0);
+    EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), expected);
+  }
+}
+
+// cdd V-representations hold bounded sets only here: rays and lines are
+// refused with the reason, and a V-representation is not read as rows.
+TEST_F(Cli, CddPointsRefuseRaysAndLines) {
+  write_text("ray.ext", "V-representation\nbegin\n2 4 integer\n1 0 0 0\n0 1 0 0\nend\n");
+  write_text("line.ext", "V-representation\nlinearity 1 1\nbegin\n1 4 integer\n0 1 0 0\nend\n");
+  write_text("points.ext", "V-representation\nbegin\n1 4 integer\n1 0 0 0\nend\n");
+  for (const std::string command : {"hull", "check", "halfspaces"}) {
+    Outcome o = run(command + " ray.ext");
+    EXPECT_EQ(o.code, 1);
+    EXPECT_EQ(o.err, "cvms: parse: ray.ext: vertex 2 is a ray (first number 0): unbounded sets are not supported\n");
+    o = run(command + " line.ext");
+    EXPECT_EQ(o.code, 1);
+    EXPECT_EQ(o.err,
+              "cvms: parse: line.ext:6: linearity in a V-representation describes lines: unbounded sets are not "
+              "supported\n");
+  }
+  Outcome o = run("hull --from-halfspaces points.ext");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.err, "cvms: parse: points.ext:1: this is a V-representation, expected a H-representation\n");
+  o = run("check points.txt");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("expected '-' or a file ending in .off, .obj, .stl or .ext"), std::string::npos) << o.err;
+}
+
+// gen takes --max-memory as sum does: a zonotope whose output is estimated
+// beyond it is refused before anything is built (at once, not after the
+// gigabytes of 2048 generators).
+TEST_F(Cli, GenZonotopeRespectsMaxMemory) {
+  Outcome o = run("gen zonotope --generators 2048 --max-memory 100M -o z.off");
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_EQ(o.err,
+            "cvms: limit: minkowski_sum (zonotope of 2048 segments in 2048 directions): the sum has up to 4192256 "
+            "facets, which need about 4292870144 bytes (1024 per facet), beyond the limit of 104857600 bytes "
+            "(SumLimits::max_memory_bytes); raise it with --max-memory\n");
+  EXPECT_FALSE(fs::exists(file("z.off")));
+  // 40 generators: 1560 facets, 1597440 bytes by the estimate.
+  expect_bad_input("gen zonotope --generators 40 --max-memory 1M -o z.off", "raise it with --max-memory");
+  Outcome fits = run("gen zonotope --generators 40 --max-memory 2M -o z.off");
+  EXPECT_EQ(fits.code, 0) << fits.err;
+  expect_usage("gen zonotope --max-memory 1X");
+}
+
 // Output quadratic in the input, for the sums of sets: a polygon plus a polyhedron (and
 // sums of many) are counted before they are built and refused with the
 // same limit error and hint as two polyhedra; a huge zonotope is refused
@@ -562,6 +722,46 @@ TEST_F(Cli, FailedWritesNameTheFileAndTheReason) {
 #endif
   fs::create_directory(file("d.off"));
   expect_bad_input("gen cube -o d.off", "cannot write 'd.off': it is a directory");
+}
+
+// Every command that writes to stdout (results, reports, help) exits 1 with
+// an io error when its output is lost, never 0 with the output gone.
+TEST_F(Cli, LostOutputOnStdoutIsAnErrorForEveryCommand) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  ASSERT_EQ(run("gen cube -o c.off").code, 0);
+  ASSERT_EQ(run("gen octahedron -o o.off").code, 0);
+  write_text("points.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  write_text("rows.ine", "H-representation\nbegin\n4 4 integer\n0 1 0 0\n0 0 1 0\n0 0 0 1\n1 -1 -1 -1\nend\n");
+  const std::vector<std::string> commands = {
+      "gen cube",
+      "gen zonotope",
+      "demo",
+      "check c.off",
+      "distance c.off o.off",
+      "penetration c.off o.off",
+      "sum c.off o.off",
+      "sum c.off o.off c.off",
+      "sum c.off o.off -o s.off --stats",
+      "hull points.xyz",
+      "hull --from-halfspaces rows.ine",
+      "diff c.off o.off",
+      "diff c.off o.off -o d.off",
+      "halfspaces c.off",
+      "--help",
+  };
+#ifdef CVMS_CLI_PATH
+  for (const std::string& args : commands) {
+    SCOPED_TRACE("cvms " + args);
+    const std::string command = "cd '" + dir_.string() + "' && '" CVMS_CLI_PATH "' " + args +
+                                " > /dev/full 2> '" + path("full.txt") + "'";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status;
+    const std::string err = slurp(file("full.txt"));
+    EXPECT_EQ(err, "cvms: io: cannot write standard output: No space left on device\n");
+  }
+#else
+  (void)commands;
+#endif
 }
 
 // `hull DIR` names the directory, not "read error after 0 bytes"; an

@@ -122,6 +122,16 @@ TEST(CddFormat, ManyRowsComeBackExactlyInOrder) {
 TEST(CddFormat, HostileInputNamesTheLine) {
   expect_error("begin\n1 4 integer\n1 0 0 0\n", ErrorCategory::parse, "test.ine:3: no 'end' line");
   expect_error("H-representation\n1 4 integer\n", ErrorCategory::parse, "no 'begin' line");
+  expect_error("", ErrorCategory::parse, "test.ine: empty input (no 'begin' line)");
+  expect_error("", ErrorCategory::parse, "test.ine: empty input (no rows)", HalfspaceFormat::plain);
+  expect_error("# only a comment\n", ErrorCategory::parse, "test.ine:1: no rows, only comments and blank lines",
+               HalfspaceFormat::plain);
+  expect_error("begin\n2 3 integer\nend\n", ErrorCategory::parse,
+               "test.ine:2: expected 'm 4 integer|rational|real' (3D: 4 columns), got '2 3 integer'");
+  expect_error("linearity 18446744073709551616 1\nbegin\n", ErrorCategory::parse,
+               "test.ine:1: linearity: expected 18446744073709551616 row indices");
+  expect_error("linearity 1 99999999999999999999\nbegin\n", ErrorCategory::parse,
+               "test.ine:1: linearity index 99999999999999999999 is not a row");
   expect_error("begin\n2 4 integer\n1 0 0 0\nend\n", ErrorCategory::parse, "test.ine:4: 1 rows before 'end', the header says 2");
   expect_error("begin\n1 4 integer\n1 0 0 0\n1 0 0 0\nend\n", ErrorCategory::parse, "test.ine:4: more rows");
   expect_error("begin\n1 4 integer\n1 0 x 0\nend\n", ErrorCategory::parse, "test.ine:3:");

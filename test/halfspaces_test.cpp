@@ -115,6 +115,13 @@ void expect_unbounded(const std::vector<HalfspaceRow>& rows) {
   ASSERT_TRUE(r.unbounded_direction.has_value());
   EXPECT_FALSE(is_zero(*r.unbounded_direction));
   for (const HalfspaceRow& h : rows) EXPECT_LE(dot(h.normal, *r.unbounded_direction), 0);
+  // A primitive integer vector: integer coordinates without a common factor.
+  mpz_class divisor = 0;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ((*r.unbounded_direction)[k].get_den(), 1) << to_string((*r.unbounded_direction)[k]);
+    mpz_gcd(divisor.get_mpz_t(), divisor.get_mpz_t(), (*r.unbounded_direction)[k].get_num_mpz_t());
+  }
+  EXPECT_EQ(divisor, 1);
   expect_invalid_argument([&] { (void)from_halfspaces(rows); }, "unbounded in direction");
 }
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <optional>
 #include <random>
 #include <string>
@@ -117,6 +118,56 @@ TEST(MaxSlackLp, MatchesTheBruteForceOptimum) {
   EXPECT_GE(positive, 50) << zero << " " << negative;
   EXPECT_GE(zero, 50) << positive << " " << negative;
   EXPECT_GE(negative, 50) << positive << " " << zero;
+}
+
+// Tangent planes n·u <= n·c + 1 of the unit sphere about c = (3, 0, 0),
+// which does not hold the origin (so some right-hand sides are negative),
+// with exact rational unit normals (inverse stereographic projection of a
+// grid), sorted by their normals: the farthest planes first, neighbours
+// next to each other, the order in which a rule that prefers low row
+// indices walks over every plane. The same rows in a few shuffled orders
+// take about as many pivots: the LP processes rows in an order of its own.
+std::vector<LpRow> sorted_tangent_planes(int side) {
+  std::vector<std::vector<Rational>> normals;
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const Rational a = Rational(4 * i - 2 * side, side) + Rational(1, 2 * side + 1);
+      const Rational b = Rational(4 * j - 2 * side, side) + Rational(1, 3 * side + 1);
+      const Rational s = 1 + a * a + b * b;
+      std::vector<Rational> n{2 * a / s, 2 * b / s, (1 - a * a - b * b) / s};
+      for (Rational& v : n) v.canonicalize();
+      normals.push_back(std::move(n));
+    }
+  }
+  std::sort(normals.begin(), normals.end());
+  std::vector<LpRow> rows;
+  for (std::vector<Rational>& n : normals) {
+    Rational b = 3 * n[0] + 1;
+    rows.push_back({std::move(n), std::move(b)});
+  }
+  return rows;
+}
+
+TEST(MaxSlackLp, SortedRowsTakeAboutAsManyPivotsAsShuffledOnes) {
+  const std::vector<LpRow> sorted = sorted_tangent_planes(30);  // 900 rows
+  const detail::MaxSlack answer = detail::max_slack(sorted, 3);
+  ASSERT_GT(sgn(answer.slack), 0);
+  std::size_t most_shuffled = 0;
+  Rng rng(5);
+  for (int k = 0; k < 5; ++k) {
+    std::vector<LpRow> shuffled = sorted;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    const detail::MaxSlack s = detail::max_slack(shuffled, 3);
+    EXPECT_EQ(s.slack, answer.slack);
+    most_shuffled = std::max(most_shuffled, s.pivots);
+  }
+  // Taken in the given order, Bland's rule walks over the planes (more than
+  // a thousand pivots); in a random order it takes about ten. A small
+  // allowance on top of twice the shuffled count keeps the test independent
+  // of how std::shuffle draws on a given library.
+  EXPECT_LE(answer.pivots, 2 * most_shuffled + 10)
+      << answer.pivots << " pivots sorted, " << most_shuffled << " shuffled";
+  EXPECT_LE(answer.pivots, 100u);
 }
 
 }  // namespace

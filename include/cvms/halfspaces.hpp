@@ -43,7 +43,9 @@ struct HalfspaceIntersection {
   ConvexSet set;
   /// When the intersection is non-empty and unbounded: a nonzero d with
   /// a·d <= 0 for every inequality and a·d == 0 for every equality (so x + s·d
-  /// stays inside for every s >= 0); set is then the empty set.
+  /// stays inside for every s >= 0); set is then the empty set. Its
+  /// coordinates are coprime integers (the primitive integer vector of the
+  /// direction).
   std::optional<Vec3> unbounded_direction;
 };
 

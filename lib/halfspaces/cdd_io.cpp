@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <deque>
 #include <fstream>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <system_error>
@@ -63,15 +64,23 @@ struct CddBody {
   std::vector<std::uint64_t> linearity;
 };
 
+// Numbers are quoted as written: parse_unsigned saturates at 2^64-1, which
+// would misreport a larger one. An index of 2^64-1 or more is never a row
+// (the header's count is at most a ReadLimits count).
 void read_linearity(LineReader& reader, Tokenizer& tokens, CddBody& body) {
-  const auto count = io_detail::parse_unsigned(tokens.next());
+  const std::string_view count_token = tokens.next();
+  const auto count = io_detail::parse_unsigned(count_token);
   if (!count) reader.fail("linearity: expected the number of indices");
+  const std::string announced = io_detail::typed(count_token);
   for (std::uint64_t i = 0; i < *count; ++i) {
-    const auto index = io_detail::parse_unsigned(tokens.next());
-    if (!index) reader.fail("linearity: expected " + std::to_string(*count) + " row indices");
+    const std::string_view token = tokens.next();
+    const auto index = io_detail::parse_unsigned(token);
+    if (!index) reader.fail("linearity: expected " + announced + " row indices");
+    if (*index == std::numeric_limits<std::uint64_t>::max())
+      reader.fail("linearity index " + io_detail::typed(token) + " is not a row");
     body.linearity.push_back(*index);
   }
-  if (!tokens.at_end()) reader.fail("linearity: more indices than the " + std::to_string(*count) + " announced");
+  if (!tokens.at_end()) reader.fail("linearity: more indices than the " + announced + " announced");
 }
 
 CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std::uint64_t max_rows,
@@ -91,7 +100,10 @@ CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std:
     if (word == "linearity") read_linearity(reader, tokens, body);
     // Anything else before begin is a name or a cdd option: ignored.
   }
-  if (!begun) reader.fail("no 'begin' line");
+  if (!begun) {
+    if (reader.line_number() == 0) reader.fail("empty input (no 'begin' line)");
+    reader.fail("no 'begin' line");
+  }
   std::uint64_t declared = 0;
   for (;;) {
     if (!reader.next(line)) reader.fail("end of input before the 'm n type' line");
@@ -101,7 +113,7 @@ CddBody read_cdd(LineReader& reader, const char* wanted, const char* other, std:
     const std::string type = lower(tokens.next());
     const auto rows = io_detail::parse_unsigned(m);
     if (!rows || n != "4" || (type != "integer" && type != "rational" && type != "real") || !tokens.at_end()) {
-      reader.fail("expected 'm 4 integer|rational|real' (3D: 4 columns), got '" + io_detail::quote(line) + "'");
+      reader.fail("expected 'm 4 integer|rational|real' (3D: 4 columns), got " + io_detail::quote(line));
     }
     if (*rows > max_rows) reader.fail("header announces " + io_detail::typed(m) + " rows, beyond the limit", ErrorCategory::limit);
     declared = *rows;
@@ -175,6 +187,11 @@ HalfspaceSystem read_plain_halfspaces(LineReader& reader) {
     const auto end = line.find('#');
     const std::uint64_t index = rows.size() + 1;  // before the row is added
     read_row(reader, line.substr(0, end), index, "row", rows.emplace_back());
+  }
+  // No rows would be the whole space: an empty or truncated file, not a set.
+  if (rows.empty()) {
+    if (reader.line_number() == 0) reader.fail("empty input (no rows)");
+    reader.fail("no rows, only comments and blank lines");
   }
   HalfspaceSystem system;
   system.inequalities.reserve(rows.size());

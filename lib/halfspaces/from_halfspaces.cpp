@@ -202,9 +202,22 @@ std::string text(const Vec3& v) {
   return "(" + to_string(v.x) + ", " + to_string(v.y) + ", " + to_string(v.z) + ")";
 }
 
-}  // namespace
+// The positive multiple of d with coprime integer coordinates: the same
+// direction, and the same text whatever scaling the dual hull found it at.
+Vec3 primitive(const Vec3& d) {
+  mpz_class scale = 1;
+  for (int k = 0; k < 3; ++k) mpz_lcm(scale.get_mpz_t(), scale.get_mpz_t(), d[k].get_den_mpz_t());
+  Vec3 out = d;
+  mpz_class divisor = 0;
+  for (int k = 0; k < 3; ++k) {
+    out[k] *= scale;
+    mpz_gcd(divisor.get_mpz_t(), divisor.get_mpz_t(), out[k].get_num_mpz_t());
+  }
+  for (int k = 0; k < 3; ++k) out[k] /= divisor;
+  return out;
+}
 
-HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities) {
+HalfspaceIntersection intersect_inequalities(std::span<const HalfspaceRow> inequalities) {
   // Any strict interior point gives the same bounded set, in the documented
   // order (halfspaces.hpp), so when the origin is one the LP is skipped and
   // the rows are dualised as given; an unbounded set still names its
@@ -242,6 +255,14 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
     for (const Vec3& v : dual.vertices) points.push_back(to_space(chart, chart_vector(v, dimension)));
     return {convex_hull_set(points), std::nullopt};
   }
+}
+
+}  // namespace
+
+HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities) {
+  HalfspaceIntersection answer = intersect_inequalities(inequalities);
+  if (answer.unbounded_direction) answer.unbounded_direction = primitive(*answer.unbounded_direction);
+  return answer;
 }
 
 HalfspaceIntersection intersect_halfspaces(const HalfspaceSystem& system) {

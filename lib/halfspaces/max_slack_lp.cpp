@@ -9,7 +9,11 @@
 // right-hand side b_i + M (and the bound 1 + M on t') is >= 0 and the origin
 // is a feasible basis: one phase suffices. Bland's rule (smallest index
 // enters and leaves) excludes cycling, so the method terminates; the
-// objective t' is bounded by 1 + M, so it ends at an optimum.
+// objective t' is bounded by 1 + M, so it ends at an optimum. The indices
+// Bland's rule compares are those of a pseudo-random order of the rows
+// (pseudo_random_order): in the order given, rows sorted by an adversary
+// make it take a pivot per row (the tangent planes of a sphere, farthest
+// first: over a thousand pivots for 900 rows, about ten when shuffled).
 //
 // Revision: the dictionary of a basis is unique, so any way of computing
 // its entries takes the same pivots. The 2d + 1 structural variables
@@ -26,7 +30,10 @@
 // multiplication, so the scan builds no rational.
 #include "max_slack_lp.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <utility>
 
@@ -52,8 +59,9 @@ struct IntegerConstraint {
 // per constraint (the last constraint is t' <= 1 + M, with a == 0).
 class Simplex {
  public:
-  Simplex(const std::vector<LpRow>& rows, int d, const Rational& shift)
-      : d_(static_cast<std::size_t>(d)), columns_(2 * d_ + 1), rows_(rows), shift_(shift) {
+  // Constraint i is rows[order[i]].
+  Simplex(const std::vector<LpRow>& rows, std::vector<std::size_t> order, int d, const Rational& shift)
+      : d_(static_cast<std::size_t>(d)), columns_(2 * d_ + 1), rows_(rows), order_(std::move(order)), shift_(shift) {
     for (std::size_t j = 0; j < columns_; ++j) nonbasic_.push_back(j);
     column_of_.assign(columns_ + rows.size() + 1, none);
     for (std::size_t j = 0; j < columns_; ++j) column_of_[j] = j;
@@ -64,7 +72,7 @@ class Simplex {
   }
 
   void run() {
-    for (std::size_t column; (column = entering_column()) != none;) pivot(leaving_variable(column), column);
+    for (std::size_t column; (column = entering_column()) != none; ++pivots_) pivot(leaving_variable(column), column);
   }
 
   MaxSlack result() const {
@@ -74,15 +82,19 @@ class Simplex {
     for (std::size_t j = 0; j < columns_; ++j) {
       const std::size_t var = nonbasic_[j];
       if (var >= columns_ && var - columns_ < rows_.size() && sgn(objective_.coef[j]) < 0)
-        result.tight.push_back(var - columns_);
+        result.tight.push_back(order_[var - columns_]);
     }
+    std::sort(result.tight.begin(), result.tight.end());
+    result.pivots = pivots_;
     return result;
   }
 
  private:
   // The constraint's a_k (zero for the bound on t') and b + M.
-  const Rational* a(std::size_t i, std::size_t k) const { return i < rows_.size() ? &rows_[i].a[k] : nullptr; }
-  Rational right_side(std::size_t i) const { return (i < rows_.size() ? rows_[i].b : Rational(1)) + shift_; }
+  const Rational* a(std::size_t i, std::size_t k) const {
+    return i < rows_.size() ? &rows_[order_[i]].a[k] : nullptr;
+  }
+  Rational right_side(std::size_t i) const { return (i < rows_.size() ? rows_[order_[i]].b : Rational(1)) + shift_; }
 
   // The constraint times L_i, the lcm of its denominators.
   IntegerConstraint integer_constraint(std::size_t i) const {
@@ -259,13 +271,49 @@ class Simplex {
 
   std::size_t d_, columns_;
   const std::vector<LpRow>& rows_;
+  std::vector<std::size_t> order_;  // constraint i is rows_[order_[i]]
   Rational shift_;
+  std::size_t pivots_ = 0;
   std::vector<std::size_t> nonbasic_;            // variable of each column
   std::vector<std::size_t> column_of_;           // column of each variable, none if basic
   std::vector<std::optional<Row>> structural_;   // rows of the basic structural variables
   Row objective_;
   std::vector<IntegerConstraint> integer_;
 };
+
+// splitmix64 (Steele, Lea, Flood: "Fast splittable pseudorandom number
+// generators"): a fixed, portable generator, so the order is the same on
+// every platform (std::shuffle's is not).
+std::uint64_t next_random(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+void mix(std::uint64_t& hash, const mpz_class& n) {
+  hash = (hash ^ mpz_get_ui(n.get_mpz_t()) ^ static_cast<std::uint64_t>(mpz_sgn(n.get_mpz_t()) + 1)) *
+         0x100000001b3ULL;
+}
+
+// A Fisher-Yates permutation of the rows, seeded from their numbers (the
+// low bits of each numerator and denominator, in row order): deterministic,
+// and an input cannot be arranged for it without searching for a seed.
+std::vector<std::size_t> pseudo_random_order(const std::vector<LpRow>& rows) {
+  std::uint64_t state = 0xcbf29ce484222325ULL;
+  for (const LpRow& row : rows) {
+    for (const Rational& v : row.a) {
+      mix(state, v.get_num());
+      mix(state, v.get_den());
+    }
+    mix(state, row.b.get_num());
+    mix(state, row.b.get_den());
+  }
+  std::vector<std::size_t> order(rows.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[next_random(state) % i]);
+  return order;
+}
 
 }  // namespace
 
@@ -274,7 +322,7 @@ MaxSlack max_slack(const std::vector<LpRow>& rows, int dimension) {
   for (const LpRow& row : rows) {
     if (row.b < -shift) shift = -row.b;
   }
-  Simplex simplex(rows, dimension, shift);
+  Simplex simplex(rows, pseudo_random_order(rows), dimension, shift);
   simplex.run();
   return simplex.result();
 }

@@ -25,10 +25,17 @@ struct LpRow {
 struct MaxSlack {
   Rational slack;                 ///< t*, at most 1
   std::vector<Rational> point;    ///< a maximiser u*
-  std::vector<std::size_t> tight; ///< rows with a positive dual multiplier
+  std::vector<std::size_t> tight; ///< rows with a positive dual multiplier, in increasing order
+  std::size_t pivots = 0;         ///< simplex pivots taken (for tests of the order's effect)
 };
 
 /// Solves the LP for the rows in `dimension` unknowns (at least one row).
+/// The rows are taken in a pseudo-random order seeded from their contents
+/// (the same rows in the same order give the same order, so the answer is
+/// deterministic): Bland's rule prefers low row indices, and rows sorted by
+/// an adversary (tangent planes of a sphere, farthest first) would make it
+/// walk over every row, a quadratic time where a random order takes few
+/// pivots.
 MaxSlack max_slack(const std::vector<LpRow>& rows, int dimension);
 
 }  // namespace cvms::detail

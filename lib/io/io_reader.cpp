@@ -210,7 +210,9 @@ void LineReader::fail_binary(std::size_t at) const {
 }
 
 void LineReader::fail(std::string_view message, ErrorCategory category) const {
-  std::string text = std::string(source()) + ":" + std::to_string(line_number_) + ": " + std::string(message);
+  // Before the first line (an empty input) there is no line to name.
+  std::string text = std::string(source()) + (line_number_ == 0 ? "" : ":" + std::to_string(line_number_)) + ": " +
+                     std::string(message);
   // A '\r' inside a line (line ends are stripped of theirs) means the file
   // ends its lines with '\r' alone (classic Mac OS), so the whole file is one
   // line and the error above seems unrelated: say why.

@@ -14,6 +14,7 @@
 #include <iostream>
 
 #include "cvms/error.hpp"
+#include "cvms/halfspace_io.hpp"
 #include "usage_error.hpp"
 
 namespace cvms::cli {
@@ -65,7 +66,20 @@ bool is_device_path(const std::string& path) {
   return path.rfind("/dev/", 0) == 0 && std::filesystem::path(path).extension().empty();
 }
 
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::vector<Vec3> read_cdd_points_file(const std::string& path) {
+  std::ifstream in = open_input(path);
+  return read_cdd_points(in, path, read_limits());
+}
+
 }  // namespace
+
+bool is_cdd_points_path(const std::string& path) { return !is_std_stream(path) && lower_extension(path) == ".ext"; }
 
 bool is_std_stream(const std::string& path) { return path == "-"; }
 
@@ -109,6 +123,11 @@ FileFormat output_format(const std::string& path, const std::string& format) {
 
 PolygonSoup read_soup(const std::string& path) {
   if (is_std_stream(path)) return read_stdin([&] { return read_off(std::cin, input_name(path), read_limits()); });
+  if (is_cdd_points_path(path)) {
+    PolygonSoup soup;
+    soup.points = read_cdd_points_file(path);
+    return soup;
+  }
   return read_file(path, read_limits());
 }
 
@@ -117,13 +136,23 @@ ConvexPolyhedron read_polyhedron(const std::string& path) {
   return cvms::read_polyhedron(path, read_limits());
 }
 
+HalfspaceSystem read_halfspace_rows(const std::string& path) {
+  if (is_std_stream(path))
+    return read_stdin([&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), read_limits()); });
+  if (is_cdd_points_path(path)) {
+    // Read as cdd, so that its V-representation line is named, not a row error.
+    std::ifstream in = open_input(path);
+    return read_halfspaces(in, HalfspaceFormat::cdd, path, read_limits());
+  }
+  return read_halfspace_file(path, read_limits());
+}
+
 std::vector<Vec3> read_point_cloud(const std::string& path) {
   if (is_std_stream(path))
     return read_stdin([&] { return read_points(std::cin, input_name(path), read_limits()); });
+  if (is_cdd_points_path(path)) return read_cdd_points_file(path);
   std::ifstream in = open_input(path);
-  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".stl") return read_stl(in, path, read_limits()).points;
+  if (lower_extension(path) == ".stl") return read_stl(in, path, read_limits()).points;
   return read_points(in, path, read_limits());
 }
 
@@ -132,6 +161,13 @@ void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordi
   const FileFormat chosen = output_format(path, format);
   if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates);
   write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates); });
+}
+
+void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,
+                const std::string& format) {
+  const FileFormat chosen = output_format(path, format);
+  if (!is_std_stream(path)) return write_file(path, soup, chosen, coordinates);
+  write_stdout([&](std::ostream& out) { write(out, soup, chosen, coordinates); });
 }
 
 void write_stdout(const std::function<void(std::ostream&)>& write) {
@@ -144,6 +180,16 @@ void write_stdout(const std::function<void(std::ostream&)>& write) {
   }
   const int error = errno;
   if (!std::cout) throw Error(ErrorCategory::io, "cannot write standard output" + reason(error));
+}
+
+void finish_stdout() {
+  errno = 0;
+  std::cout.flush();
+  int error = errno;
+  const bool flushed = std::fflush(stdout) == 0;
+  if (error == 0) error = errno;
+  if (!std::cout || !flushed || std::ferror(stdout) != 0)
+    throw Error(ErrorCategory::io, "cannot write standard output" + reason(error));
 }
 
 void check_output_directory(const std::string& path) {
@@ -164,12 +210,12 @@ void check_output(const std::string& path, const std::string& format) {
 Coordinates coordinates_of(bool float_output) { return float_output ? Coordinates::double_ : Coordinates::exact; }
 
 std::string check_mesh_path(const std::string& path) {
-  if (is_std_stream(path)) return {};
+  if (is_std_stream(path) || is_cdd_points_path(path)) return {};
   try {
     (void)format_from_extension(path);
     return {};
   } catch (const Error&) {
-    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj or .stl";
+    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj, .stl or .ext";
   }
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/vec.hpp"
@@ -33,14 +34,20 @@ std::string printable(std::string_view text);
 /// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them tells.
 FileFormat output_format(const std::string& path, const std::string& format);
 
-/// Reads a polygon mesh. \throw Error naming the file.
+/// Reads a polygon mesh; a cdd V-representation (.ext) is its points without
+/// faces, as a points-only OFF. \throw Error naming the file.
 PolygonSoup read_soup(const std::string& path);
 
 /// cvms::read_polyhedron, or for "-" the same on stdin: every error names the
 /// file ("<stdin>").
 ConvexPolyhedron read_polyhedron(const std::string& path);
 
-/// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle corners.
+/// The rows of a half-space file (.ine cdd, other: plain rows), or cdd on
+/// stdin for "-". \throw Error naming the file once ("<stdin>").
+HalfspaceSystem read_halfspace_rows(const std::string& path);
+
+/// Points for a hull: OFF/OBJ vertices or "x y z" lines; STL triangle
+/// corners; the vertices of a cdd V-representation (.ext).
 std::vector<Vec3> read_point_cloud(const std::string& path);
 
 /// cvms::write_file (atomic: a failed write leaves an existing file as it
@@ -49,12 +56,26 @@ std::vector<Vec3> read_point_cloud(const std::string& path);
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
                       const std::string& format = {});
 
+/// write_file of a soup (atomic), or stdout for "-", in output_format(path,
+/// format). \throw Error naming the file ("standard output" for "-").
+void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,
+                const std::string& format = {});
+
+/// True for a path ending in .ext (any case): cdd's V-representation, points.
+bool is_cdd_points_path(const std::string& path);
+
 /// True for "-" (stdin or stdout).
 bool is_std_stream(const std::string& path);
 
 /// Runs `write` on std::cout and flushes it.
 /// \throw Error(io) "cannot write standard output: <reason>" if that fails.
 void write_stdout(const std::function<void(std::ostream&)>& write);
+
+/// Flushes std::cout and stdout: a command's last write to standard output
+/// (a report, a result, help) is only known to have arrived then.
+/// \throw Error(io) "cannot write standard output: <reason>" if any write to
+/// it failed, earlier or now.
+void finish_stdout();
 
 /// Fails early, before a long computation, if the output's directory does
 /// not exist or the output is a directory. \throw Error(io) naming the file.
@@ -67,7 +88,7 @@ void check_output(const std::string& path, const std::string& format);
 /// The coordinates --float asks for: nearest doubles, else exact rationals.
 Coordinates coordinates_of(bool float_output);
 
-/// Empty if path is "-" or ends in .off/.obj/.stl (any case), else a message;
+/// Empty if path is "-" or ends in .off/.obj/.stl/.ext (any case), else a message;
 /// used as a CLI11 validator so a wrong extension is a usage error.
 std::string check_mesh_path(const std::string& path);
 

@@ -45,6 +45,9 @@ int run_selected(const cvms::cli::Commands& commands) {
   try {
     for (const cvms::cli::Command& command : commands)
       if (*command.app) command.run();
+    // Every command may write to stdout (results, reports): output lost on
+    // the way (a full disk, a closed pipe) is an error, never a success.
+    cvms::cli::finish_stdout();
   } catch (const cvms::cli::UsageError& e) {
     std::cerr << "cvms: " << one_line(e.what()) << "\nRun with --help for more information.\n";
     return exit_usage;
@@ -74,7 +77,14 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help, or the error with a hint
-    return code == 0 ? 0 : exit_usage;
+    if (code != 0) return exit_usage;
+    try {
+      cvms::cli::finish_stdout();  // the help text, when stdout cannot take it
+    } catch (const cvms::Error& lost) {
+      std::cerr << "cvms: " << one_line(lost.what()) << "\n";
+      return exit_bad_input;
+    }
+    return 0;
   }
   return run_selected(commands);
 }

@@ -2,10 +2,12 @@
 // Options shared by several commands (see options.hpp).
 #include "options.hpp"
 
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "files.hpp"
+#include "sizes.hpp"
 
 namespace cvms::cli {
 namespace {
@@ -26,7 +28,7 @@ constexpr Algorithm algorithms[] = {Algorithm::cvms, Algorithm::essdms, Algorith
 }  // namespace
 
 const CLI::Validator& mesh_path() {
-  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|-)", "mesh path"};
+  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|.ext|-)", "mesh path"};
   return validator;
 }
 
@@ -57,6 +59,23 @@ void add_output_options(CLI::App& command, std::string& output, std::string& for
                   "off, obj or stl (default: the output's extension; OFF for - and /dev/null, /dev/stdout, ...)")
       ->check(CLI::IsMember({"off", "obj", "stl"}, CLI::ignore_case));
   command.add_flag("--float", float_output, "round output coordinates to the nearest double");
+}
+
+void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::string& what) {
+  command
+      .add_option_function<std::string>(
+          "--max-memory", [&bytes](const std::string& text) { bytes = parse_byte_size(text); },
+          "refuse " + what + " whose output is estimated to need more memory (bytes, or 512M, 4G, ...; "
+          "at most half of this machine's memory by default)")
+      ->check([](const std::string& text) {
+        try {
+          parse_byte_size(text);
+          return std::string();
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+      })
+      ->default_str(format_byte_size(bytes));
 }
 
 void add_algorithm_option(CLI::App& command, Algorithm& algorithm) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
 
 #include "cvms/minkowski.hpp"
@@ -28,6 +29,10 @@ void add_operands(CLI::App& command, std::string& a, std::string& b);
 /// output is checked when the command runs (its format may come from
 /// --format), before any work.
 void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output);
+
+/// --max-memory SIZE into `bytes` (whose value is the default shown): the
+/// memory the output of `what` ("a sum") may be estimated to need.
+void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::string& what);
 
 /// --algorithm: cvms, essdms or chms; the default is the library's.
 void add_algorithm_option(CLI::App& command, Algorithm& algorithm);

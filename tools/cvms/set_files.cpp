@@ -20,7 +20,7 @@ ConvexSet set_from_soup(PolygonSoup soup, const std::string& source) {
 }
 
 ConvexSet read_set(const std::string& path) {
-  if (!is_std_stream(path)) return read_convex_set(path, read_limits());
+  if (!is_std_stream(path) && !is_cdd_points_path(path)) return read_convex_set(path, read_limits());
   return set_from_soup(read_soup(path), input_name(path));
 }
 

@@ -21,7 +21,8 @@ std::string format_byte_size(std::uint64_t bytes);
 
 /// Rethrows `e`; an Error(limit) naming SumLimits::max_output_facets or
 /// max_memory_bytes (as the library's sums do) gets the option that raises
-/// it appended ("; raise it with --max-facets"). For every `cvms sum` path.
+/// it appended ("; raise it with --max-facets"). For every `cvms sum` path
+/// and `cvms gen zonotope`.
 [[noreturn]] void rethrow_with_limit_hint(const Error& e);
 
 }  // namespace cvms::cli

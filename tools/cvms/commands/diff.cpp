@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "cvms/error.hpp"
 #include "cvms/halfspaces.hpp"
 #include "files.hpp"
 #include "keep_until_exit.hpp"
@@ -27,6 +28,9 @@ void run_diff(const DiffArgs& args) {
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
   check_output(args.output, args.format);
   ConvexSet a = read_set(args.a), b = read_set(args.b);
+  if (b.empty())
+    throw Error(ErrorCategory::invalid_argument,
+                input_name(args.b) + ": B is empty (the difference A - B would be all of space)");
   ConvexSet d = pontryagin_difference(a, b);
   write_set(args.output, d, coordinates_of(args.float_output), args.format);
   report_set("difference", d, args.output == "-" ? std::cerr : std::cout);

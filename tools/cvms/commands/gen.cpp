@@ -7,11 +7,14 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "cvms/set_sum.hpp"
 #include "files.hpp"
+#include "machine_memory.hpp"
 #include "options.hpp"
 #include "set_files.hpp"
+#include "sizes.hpp"
 #include "usage_error.hpp"
 
 namespace cvms::cli {
@@ -27,6 +30,7 @@ struct GenArgs {
   int points = 0;      ///< 0: the shape's default
   int generators = 0;  ///< zonotope; 0: the default (10)
   bool float_output = false;
+  SumLimits limits;  ///< --max-memory (zonotope)
 };
 
 // shapes::prism's and shapes::random_hull's limits.
@@ -52,10 +56,15 @@ void check_shape_options(const GenArgs& args) {
 
 // The zonotope of n generators random_points(seed, n) (integer coordinates
 // in [-1000, 1000]) centred at the origin; flat for fewer than 3 generators.
-ConvexSet random_zonotope(int generators, std::uint64_t seed) {
+// zonotope() checks the limits before it builds anything.
+ConvexSet random_zonotope(int generators, std::uint64_t seed, const SumLimits& limits) {
   std::vector<Vec3> g = shapes::random_points(seed, generators < 4 ? 4 : generators);
   g.resize(static_cast<std::size_t>(generators));
-  return zonotope(Vec3{0, 0, 0}, g);
+  try {
+    return zonotope(Vec3{0, 0, 0}, g, limits);
+  } catch (const Error& e) {
+    rethrow_with_limit_hint(e);
+  }
 }
 
 ConvexPolyhedron counted_shape(const GenArgs& args) {
@@ -88,7 +97,7 @@ void run_gen(const GenArgs& args) {
   check_output(args.output, args.format);
   const Coordinates coordinates = coordinates_of(args.float_output);
   if (args.shape == "zonotope")
-    return write_set(args.output, random_zonotope(args.generators != 0 ? args.generators : 10, args.seed),
+    return write_set(args.output, random_zonotope(args.generators != 0 ? args.generators : 10, args.seed, args.limits),
                      coordinates, args.format);
   write_polyhedron(args.output, polyhedron(args), coordinates, args.format);
 }
@@ -115,6 +124,8 @@ void register_gen(CLI::App& app, Commands& commands) {
   command->add_option("--generators", args->generators, "generators of zonotope (default 10)")
       ->check(CLI::Range(1, 100'000));
   add_output_options(*command, args->output, args->format, args->float_output);
+  args->limits = sum_limits_for_memory(usable_memory_bytes());
+  add_max_memory_option(*command, args->limits.max_memory_bytes, "a zonotope");
   commands.push_back({command, [args, subdivisions, seed] {
                         args->subdivisions_given = subdivisions->count() > 0;
                         args->seed_given = seed->count() > 0;

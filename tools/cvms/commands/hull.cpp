@@ -27,20 +27,13 @@ struct HullArgs {
   std::string rows_input;  ///< --from-halfspaces
 };
 
-HalfspaceSystem read_rows(const std::string& path) {
-  if (!is_std_stream(path)) return read_halfspace_file(path, read_limits());
-  return read_halfspaces(std::cin, HalfspaceFormat::cdd, "<stdin>", read_limits());
-}
-
-// Every error names the file, once.
+// The readers name the file in their errors; from_halfspaces does not.
 ConvexSet set_from_rows(const std::string& path) {
+  HalfspaceSystem rows = read_halfspace_rows(path);
   try {
-    return from_halfspaces(read_rows(path));
+    return from_halfspaces(rows);
   } catch (const Error& e) {
-    const std::string name = input_name(path);
-    const std::string message = e.message();
-    if (message.rfind(name, 0) == 0) throw;
-    throw Error(e.category(), name + ": " + message);
+    throw Error(e.category(), input_name(path) + ": " + e.message());
   }
 }
 
@@ -72,7 +65,7 @@ void run_hull(const HullArgs& args) {
 void register_hull(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<HullArgs>();
   CLI::App* command = app.add_subcommand("hull", "exact convex hull of points");
-  CLI::Option* points = command->add_option("POINTS", args->input, "OFF/OBJ/STL vertices or one 'x y z' per line");
+  CLI::Option* points = command->add_option("POINTS", args->input, "OFF/OBJ/STL vertices, cdd .ext vertices or one 'x y z' per line");
   add_output_options(*command, args->output, args->format, args->float_output);
   command
       ->add_option("--from-halfspaces", args->rows_input,

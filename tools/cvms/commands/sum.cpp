@@ -6,10 +6,10 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "canonical_order.hpp"
 #include "commands.hpp"
 #include "cvms/error.hpp"
 #include "cvms/set_sum.hpp"
@@ -50,20 +50,7 @@ void add_sum_limit_options(CLI::App& command, SumLimits& limits) {
   command.add_option("--max-facets", limits.max_output_facets, "refuse a sum with more output facets")
       ->default_val(limits.max_output_facets)
       ->check(CLI::PositiveNumber);
-  command
-      .add_option_function<std::string>(
-          "--max-memory", [&limits](const std::string& text) { limits.max_memory_bytes = parse_byte_size(text); },
-          "refuse a sum whose output is estimated to need more memory (bytes, or 512M, 4G, ...; "
-          "at most half of this machine's memory by default)")
-      ->check([](const std::string& text) {
-        try {
-          parse_byte_size(text);
-          return std::string();
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
-        }
-      })
-      ->default_str(format_byte_size(limits.max_memory_bytes));
+  add_max_memory_option(command, limits.max_memory_bytes, "a sum");
 }
 
 // A limit error names the option that raises it (sizes.hpp).
@@ -91,7 +78,13 @@ void sum_sets(const std::vector<ConvexSet>& operands, const SumArgs& args, std::
   const auto start = std::chrono::steady_clock::now();
   const ConvexSet sum = with_limit_hint([&] { return minkowski_sum(operands, args.options()); });
   const auto time = std::chrono::steady_clock::now() - start;
-  write_set(args.output, sum, coordinates_of(args.float_output), args.format);
+  // The order of the operands decides which partial sums are made, and so
+  // the numbering of a polyhedron: written in an order of the set alone
+  // (flat sets are canonical already).
+  if (sum.dimension() == 3)
+    write_soup(args.output, canonical_soup(sum.polyhedron()), coordinates_of(args.float_output), args.format);
+  else
+    write_set(args.output, sum, coordinates_of(args.float_output), args.format);
   if (!args.stats) return;
   for (std::size_t i = 0; i < operands.size(); ++i)
     report << "operand " << i + 1 << ": " << kind(operands[i]) << ", " << size_text(operands[i]) << "\n";
