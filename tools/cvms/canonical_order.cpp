@@ -9,25 +9,15 @@
 #include <vector>
 
 namespace cvms::cli {
-namespace {
-
-// Exact comparison of coordinates: an order of numbers, not a geometric
-// decision (no predicate needed).
-bool lexicographically_less(const Vec3& a, const Vec3& b) {
-  if (a.x != b.x) return a.x < b.x;
-  if (a.y != b.y) return a.y < b.y;
-  return a.z < b.z;
-}
-
-}  // namespace
 
 PolygonSoup canonical_soup(const ConvexPolyhedron& p) {
   PolygonSoup soup = p.to_soup();
   std::vector<std::uint32_t> order(soup.points.size());
   std::iota(order.begin(), order.end(), std::uint32_t{0});
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return lexicographically_less(soup.points[a], soup.points[b]);
-  });
+  // Vec3's operator< is the exact lexicographic order: an order of numbers,
+  // not a geometric decision, so no predicate is needed.
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return soup.points[a] < soup.points[b]; });
   std::vector<std::uint32_t> rank(order.size());
   PolygonSoup canonical;
   canonical.points.reserve(order.size());
@@ -44,7 +34,8 @@ PolygonSoup canonical_soup(const ConvexPolyhedron& p) {
   }
   std::sort(faces.begin(), faces.end());
   canonical.face_indices.reserve(soup.face_indices.size());
-  for (const std::vector<std::uint32_t>& face : faces) canonical.add_face(std::span<const std::uint32_t>(face));
+  for (const std::vector<std::uint32_t>& face : faces)
+    canonical.add_face(std::span<const std::uint32_t>(face));
   return canonical;
 }
 
