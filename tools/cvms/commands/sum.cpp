@@ -130,7 +130,7 @@ void register_sum(CLI::App& app, Commands& commands) {
   args->limits = sum_limits_for_memory(usable_memory_bytes());
   CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
   add_operands(*command, args->a, args->b);
-  command->add_option("C", args->more, "further operands")->check(mesh_path());
+  command->add_option("C", args->more, "further operands")->check(set_path());
   add_output_options(*command, args->output, args->format, args->float_output);
   add_algorithm_option(*command, args->algorithm);
   command
