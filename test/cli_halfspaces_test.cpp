@@ -100,9 +100,9 @@ TEST_F(CliHalfspaces, MessagesNameTheFileOnceAndQuoteTheInputAsWritten) {
   dir_.write("empty.off", "OFF\n0 0 0\n");
   expect_error("diff unit.off empty.off -o d.off",
                "invalid_argument: empty.off: B is empty (the difference A - B would be all of space)");
-  dir_.write("header.ine", "H-representation\nbegin\n2 3 integer\nend\n");
+  dir_.write("header.ine", "H-representation\nbegin\n2 5 integer\nend\n");
   expect_error("hull --from-halfspaces header.ine",
-               "parse: header.ine:3: expected 'm 4 integer|rational|real' (3D: 4 columns), got '2 3 integer'");
+               "parse: header.ine:3: expected 'm 4 integer|rational|real' (3-D: 4 columns; 2-D: 3), got '2 5 integer'");
   dir_.write("empty.ine", "");
   expect_error("hull --from-halfspaces empty.ine", "parse: empty.ine: empty input (no 'begin' line)");
   expect_error("hull --from-halfspaces - < empty.ine", "parse: <stdin>: empty input (no 'begin' line)");

@@ -126,8 +126,8 @@ TEST(CddFormat, HostileInputNamesTheLine) {
   expect_error("", ErrorCategory::parse, "test.ine: empty input (no rows)", HalfspaceFormat::plain);
   expect_error("# only a comment\n", ErrorCategory::parse, "test.ine:1: no rows, only comments and blank lines",
                HalfspaceFormat::plain);
-  expect_error("begin\n2 3 integer\nend\n", ErrorCategory::parse,
-               "test.ine:2: expected 'm 4 integer|rational|real' (3D: 4 columns), got '2 3 integer'");
+  expect_error("begin\n2 5 integer\nend\n", ErrorCategory::parse,
+               "test.ine:2: expected 'm 4 integer|rational|real' (3-D: 4 columns; 2-D: 3), got '2 5 integer'");
   expect_error("linearity 18446744073709551616 1\nbegin\n", ErrorCategory::parse,
                "test.ine:1: linearity: expected 18446744073709551616 row indices");
   expect_error("linearity 1 99999999999999999999\nbegin\n", ErrorCategory::parse,
@@ -137,7 +137,8 @@ TEST(CddFormat, HostileInputNamesTheLine) {
   expect_error("begin\n1 4 integer\n1 0 x 0\nend\n", ErrorCategory::parse, "test.ine:3:");
   expect_error("begin\n1 4 integer\n1 0 0\nend\n", ErrorCategory::parse, "test.ine:3: row 1 has fewer than 4 numbers");
   expect_error("begin\n1 4 integer\n1 0 0 0 0\nend\n", ErrorCategory::parse, "more than 4 numbers");
-  expect_error("begin\n1 3 integer\n1 0 0\nend\n", ErrorCategory::parse, "test.ine:2: expected 'm 4");
+  expect_error("begin\n1 5 integer\n1 0 0 0 0\nend\n", ErrorCategory::parse, "test.ine:2: expected 'm 4");
+  expect_error("begin\n1 3 integer\n1 0 0 0\nend\n", ErrorCategory::parse, "test.ine:3: row 1 has more than 3 numbers");
   expect_error("begin\n1 4 float\n1 0 0 0\nend\n", ErrorCategory::parse, "expected 'm 4");
   expect_error("linearity 1 2\nbegin\n1 4 integer\n1 0 0 0\nend\n", ErrorCategory::parse, "linearity index 2 is not a row");
   expect_error("linearity 2 1\nbegin\n", ErrorCategory::parse, "test.ine:1: linearity");
@@ -146,8 +147,41 @@ TEST(CddFormat, HostileInputNamesTheLine) {
   // A header that lies about its size: refused at the end, nothing reserved for it.
   expect_error("begin\n18446744073709551615 4 integer\n1 0 0 0\nend\n", ErrorCategory::limit, "test.ine:2:");
   expect_error("begin\n99999999 4 integer\n1 0 0 0\nend\n", ErrorCategory::parse, "the header says 99999999");
-  expect_error("1 0 0\n", ErrorCategory::parse, "test.ine:1: row 1 has fewer", HalfspaceFormat::plain);
+  expect_error("1 0\n", ErrorCategory::parse, "test.ine:1: row 1 has fewer than 3 numbers", HalfspaceFormat::plain);
+  expect_error("1 0 1\n1 0 0 1\n", ErrorCategory::parse, "test.ine:2: row 2 has 4 numbers, row 1 has 3",
+               HalfspaceFormat::plain);
   expect_error("# ok\n1 0 0 1\n1 0 0 1 2\n", ErrorCategory::parse, "test.ine:3:", HalfspaceFormat::plain);
+}
+
+// Files of the plane: rows a b c (cdd: m 3) are the polygon in z = 0, and
+// written back with dimension 2 they are the same rows (hand-checked).
+TEST(CddFormat, RowsAndPointsOfThePlane) {
+  std::istringstream plain("# the square |x| <= 1, 0 <= y <= 2\n1 0 1\n-1 0 1\n0 1 2\n0 -1 0\n");
+  const HalfspaceFile file = read_halfspaces_of_any_dimension(plain, HalfspaceFormat::plain);
+  EXPECT_EQ(file.dimension, 2);
+  ASSERT_EQ(file.system.equalities.size(), 1u);
+  EXPECT_EQ(file.system.equalities[0], (HalfspaceRow{{0, 0, 1}, 0}));
+  ASSERT_EQ(file.system.inequalities.size(), 4u);
+  EXPECT_EQ(file.system.inequalities[2], (HalfspaceRow{{0, 1, 0}, 2}));
+  const ConvexSet square = from_halfspaces(file.system);
+  ASSERT_EQ(square.dimension(), 2);
+  std::ostringstream cdd;
+  write_halfspaces(cdd, to_halfspaces(square), HalfspaceFormat::cdd, 2);
+  EXPECT_EQ(cdd.str(), "H-representation\nbegin\n4 3 integer\n0 0 1\n1 -1 0\n2 0 -1\n1 1 0\nend\n");
+  std::istringstream cdd_in(cdd.str());
+  const HalfspaceFile back = read_halfspaces_of_any_dimension(cdd_in, HalfspaceFormat::cdd);
+  EXPECT_EQ(back.dimension, 2);
+  EXPECT_EQ(describe_set(from_halfspaces(back.system)), describe_set(square));
+  std::ostringstream points;
+  write_plain_points(points, square, 2);
+  EXPECT_EQ(points.str(), "-1 0\n1 0\n1 2\n-1 2\n");
+  std::istringstream points_in(points.str());
+  const PointFile read_back = read_plain_points(points_in);
+  EXPECT_EQ(read_back.dimension, 2);
+  EXPECT_EQ(read_back.points, square.vertices());
+  // A vertex off the plane cannot go into a file of the plane.
+  std::ostringstream ignored;
+  EXPECT_THROW(write_cdd_points(ignored, ConvexSet::point({0, 0, 1}), 2), Error);
 }
 
 TEST(CddFormat, VRepresentationRefusesRaysAndLines) {

@@ -22,19 +22,6 @@ namespace {
 
 std::string reason(int error) { return error != 0 ? std::string(": ") + std::strerror(error) : ""; }
 
-std::ifstream open_input(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(ErrorCategory::io, "cannot read '" + path + "': it is a directory");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    int error = errno;
-    throw Error(ErrorCategory::io, "cannot open '" + path + "'" + reason(error));
-  }
-  return in;
-}
-
 // Standard input must be open for reading and not a directory; otherwise a
 // read fails at once and would look like an empty input.
 void check_stdin() {
@@ -66,18 +53,31 @@ bool is_device_path(const std::string& path) {
   return path.rfind("/dev/", 0) == 0 && std::filesystem::path(path).extension().empty();
 }
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 std::vector<Vec3> read_cdd_points_file(const std::string& path) {
   std::ifstream in = open_input(path);
   return read_cdd_points(in, path, read_limits());
 }
 
 }  // namespace
+
+std::ifstream open_input(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(ErrorCategory::io, "cannot read '" + path + "': it is a directory");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    int error = errno;
+    throw Error(ErrorCategory::io, "cannot open '" + path + "'" + reason(error));
+  }
+  return in;
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 bool is_cdd_points_path(const std::string& path) { return !is_std_stream(path) && lower_extension(path) == ".ext"; }
 

@@ -3,6 +3,7 @@
 // or "-" for OFF on stdin/stdout. Errors name the file.
 #pragma once
 
+#include <fstream>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -60,6 +61,13 @@ void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordi
 /// format). \throw Error naming the file ("standard output" for "-").
 void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,
                 const std::string& format = {});
+
+/// Opens a file for reading. \throw Error(io) naming it, with the reason,
+/// if it cannot be opened or is a directory.
+std::ifstream open_input(const std::string& path);
+
+/// The extension of a path in lower case (".off"), empty if none.
+std::string lower_extension(const std::string& path);
 
 /// True for a path ending in .ext (any case): cdd's V-representation, points.
 bool is_cdd_points_path(const std::string& path);

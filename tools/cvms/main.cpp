@@ -3,6 +3,8 @@
 // (commands.hpp), parses the command line with CLI11, runs the command it
 // selects and maps outcomes to exit codes: 0 success, 1 bad input (one line
 // on stderr, from the library's Error), 2 usage.
+#include <gmp.h>
+
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -24,6 +26,13 @@ constexpr int exit_usage = 2;
 // One line, whatever the message holds, and no control bytes: a file name
 // with terminal escape codes is shown as \x1b[..., never run.
 std::string one_line(const std::string& text) { return cvms::cli::printable(text); }
+
+// --version: the project's version (CMake's project(VERSION)), the version
+// of the GMP library running (gmp_version, which may differ from the one
+// built against) and the build type.
+std::string version_text() {
+  return std::string("cvms ") + CVMS_VERSION + "\nGMP " + gmp_version + "\nbuild type: " + CVMS_BUILD_TYPE;
+}
 
 // In the order --help lists them.
 cvms::cli::Commands register_commands(CLI::App& app) {
@@ -69,6 +78,7 @@ int run_selected(const cvms::cli::Commands& commands) {
 int main(int argc, char** argv) {
   cvms::cli::prefer_huge_heap_pages();
   CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL; '-' is OFF on stdin/stdout)"};
+  app.set_version_flag("--version", version_text(), "print the versions of cvms and GMP and the build type");
   app.require_subcommand(1);  // exactly one
   app.fallthrough();          // the read limits may follow the command name too
   cvms::cli::add_read_limit_options(app);

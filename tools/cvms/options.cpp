@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "files.hpp"
+#include "set_files.hpp"
 #include "sizes.hpp"
 
 namespace cvms::cli {
@@ -48,8 +49,8 @@ void add_read_limit_options(CLI::App& app) {
 }
 
 void add_operands(CLI::App& command, std::string& a, std::string& b) {
-  command.add_option("A", a, "first operand")->required()->check(mesh_path());
-  command.add_option("B", b, "second operand")->required()->check(mesh_path());
+  command.add_option("A", a, "first operand")->required()->check(set_path());
+  command.add_option("B", b, "second operand")->required()->check(set_path());
 }
 
 void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output) {

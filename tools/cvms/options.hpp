@@ -22,7 +22,7 @@ const CLI::Validator& unsigned_64();
 /// before or after the command name.
 void add_read_limit_options(CLI::App& app);
 
-/// The operands A and B, both required mesh paths.
+/// The operands A and B, both required paths of a set in any form (set_files.hpp).
 void add_operands(CLI::App& command, std::string& a, std::string& b);
 
 /// -o, --format and --float of a command that writes a polyhedron. The

@@ -17,6 +17,7 @@
 #include "keep_until_exit.hpp"
 #include "machine_memory.hpp"
 #include "options.hpp"
+#include "placement.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
 #include "sizes.hpp"
@@ -35,6 +36,7 @@ struct SumArgs {
   bool float_output = false;
   bool stats = false;
   SumLimits limits;  ///< --max-facets, --max-memory
+  Placement place_a, place_b;  ///< --rotate-a, --translate-b, --negate-b, ...
 
   [[nodiscard]] Options options() const {
     Options options;
@@ -109,7 +111,11 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   check_output(args.output, args.format);
   if (std::count(args.more.begin(), args.more.end(), "-") + (args.a == "-") + (args.b == "-") > 1)
     throw UsageError("only one input can be read from stdin");
+  check_placement(args.place_a, "a");
+  check_placement(args.place_b, "b");
   std::vector<ConvexSet> sets = read_operands(args);
+  sets[0] = placed(std::move(sets[0]), args.place_a, "a");
+  sets[1] = placed(std::move(sets[1]), args.place_b, "b");
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
     sum_sets(sets, args, report);
   else
@@ -124,7 +130,7 @@ void register_sum(CLI::App& app, Commands& commands) {
   args->limits = sum_limits_for_memory(usable_memory_bytes());
   CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
   add_operands(*command, args->a, args->b);
-  command->add_option("C", args->more, "further operands")->check(mesh_path());
+  command->add_option("C", args->more, "further operands")->check(set_path());
   add_output_options(*command, args->output, args->format, args->float_output);
   add_algorithm_option(*command, args->algorithm);
   command
@@ -134,6 +140,8 @@ void register_sum(CLI::App& app, Commands& commands) {
       ->default_val(1u);
   command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");
   add_sum_limit_options(*command, args->limits);
+  add_placement_options(*command, args->place_a, "a");
+  add_placement_options(*command, args->place_b, "b");
   commands.push_back({command, [args] { run_sum(*args, args->output == "-" ? std::cerr : std::cout); }});
 }
 
