@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// Two interior-disjoint convex bodies A and B have a convex union exactly
+// when vol(hull(A u B)) == vol(A) + vol(B): the hull contains A u B, and
+// equal volumes of closed polyhedra one inside the other leave no room for
+// a difference of positive volume, and a difference of zero volume between
+// a convex body and a closed finite union of polyhedra is empty. The
+// volumes are exact rationals, so the test is exact.
+//
+// The merge is greedy: each piece in turn absorbs every later piece it can,
+// and passes repeat until none merges. Only pieces whose bounding boxes
+// meet are tried (a convex union of two bodies is connected).
+#include "cell_merge.hpp"
+
+#include <cstddef>
+
+#include "cvms/convex_hull.hpp"
+
+namespace cvms::decomposition {
+namespace {
+
+struct Piece {
+  ConvexPolyhedron polyhedron;
+  Rational volume6;
+  Vec3 lo, hi;
+};
+
+Piece make_piece(ConvexPolyhedron polyhedron) {
+  Piece piece;
+  const auto& points = polyhedron.mesh().positions();
+  piece.lo = piece.hi = points.front();
+  for (const Vec3& p : points)
+    for (int axis = 0; axis < 3; ++axis) {
+      if (p[axis] < piece.lo[axis]) piece.lo[axis] = p[axis];
+      if (piece.hi[axis] < p[axis]) piece.hi[axis] = p[axis];
+    }
+  piece.volume6 = six_volume(polyhedron);
+  piece.polyhedron = std::move(polyhedron);
+  return piece;
+}
+
+bool boxes_meet(const Piece& a, const Piece& b) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (a.hi[axis] < b.lo[axis] || b.hi[axis] < a.lo[axis]) return false;
+  return true;
+}
+
+// The merged piece when the union of a and b is convex.
+bool try_merge(Piece& a, const Piece& b) {
+  if (!boxes_meet(a, b)) return false;
+  std::vector<Vec3> points = a.polyhedron.mesh().positions();
+  const auto& more = b.polyhedron.mesh().positions();
+  points.insert(points.end(), more.begin(), more.end());
+  ConvexPolyhedron hull = convex_hull(points);
+  if (six_volume(hull) != a.volume6 + b.volume6) return false;
+  a = make_piece(std::move(hull));
+  return true;
+}
+
+}  // namespace
+
+Rational six_volume(const ConvexPolyhedron& polyhedron) {
+  PolygonSoup soup = polyhedron.to_soup();
+  const Vec3& origin = soup.points.front();
+  Rational sum;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    auto face = soup.face(f);
+    const Vec3 a = soup.points[face[0]] - origin;
+    for (std::size_t k = 1; k + 1 < face.size(); ++k)
+      sum += dot(a, cross(soup.points[face[k]] - origin, soup.points[face[k + 1]] - origin));
+  }
+  return sum;
+}
+
+std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<Vec3>>& cells) {
+  std::vector<Piece> pieces;
+  pieces.reserve(cells.size());
+  for (const auto& cell : cells) pieces.push_back(make_piece(convex_hull(cell)));
+  bool merged = true;
+  while (merged) {
+    merged = false;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      for (std::size_t j = i + 1; j < pieces.size();) {
+        if (try_merge(pieces[i], pieces[j])) {
+          pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(j));
+          merged = true;
+          j = i + 1;
+        } else {
+          ++j;
+        }
+      }
+    }
+  }
+  std::vector<ConvexPolyhedron> result;
+  result.reserve(pieces.size());
+  for (Piece& piece : pieces) result.push_back(std::move(piece.polyhedron));
+  return result;
+}
+
+}  // namespace cvms::decomposition
