@@ -350,26 +350,24 @@ TEST(ConvexDecomposition, Deterministic) {
     EXPECT_EQ(a.pieces()[i].mesh().positions(), b.pieces()[i].mesh().positions()) << "piece " << i;
 }
 
+void expect_limit(const Solid& solid, const DecompositionOptions& options, const std::string& named) {
+  try {
+    (void)convex_decomposition(solid, options);
+    ADD_FAILURE() << "no limit error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::limit);
+    EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+  }
+}
+
 TEST(ConvexDecomposition, Limits) {
   auto g = unit_grid(3, 1, 2, [](int i, int, int k) { return k == 0 || i != 1; });
   DecompositionOptions few;
   few.limits.max_pieces = 2;
-  try {
-    (void)convex_decomposition(g.solid(), few);
-    FAIL() << "no limit error";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::limit);
-    EXPECT_NE(std::string(e.what()).find("max_pieces"), std::string::npos) << e.what();
-  }
+  expect_limit(g.solid(), few, "max_pieces");
   DecompositionOptions small;
   small.limits.max_memory_bytes = 1000;
-  try {
-    (void)convex_decomposition(g.solid(), small);
-    FAIL() << "no limit error";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::limit);
-    EXPECT_NE(std::string(e.what()).find("max_memory_bytes"), std::string::npos) << e.what();
-  }
+  expect_limit(g.solid(), small, "max_memory_bytes");
 }
 
 TEST(ConvexDecomposition, EmptySolid) {

@@ -8,12 +8,14 @@
 //
 // The merge is greedy: each piece in turn absorbs every later piece it can,
 // and passes repeat until none merges. Only pieces whose bounding boxes
-// meet are tried (a convex union of two bodies is connected).
+// meet (a convex union is connected) and that pass facets_keep_sides are
+// given to the exact hull.
 #include "cell_merge.hpp"
 
 #include <cstddef>
 
 #include "cvms/convex_hull.hpp"
+#include "cvms/predicates.hpp"
 
 namespace cvms::decomposition {
 namespace {
@@ -44,9 +46,29 @@ bool boxes_meet(const Piece& a, const Piece& b) {
   return true;
 }
 
+// Whether every facet plane of a has all of b on one closed side. Necessary
+// for a convex union: if a u b = C is convex, every facet plane of a either
+// supports C (b behind or on it) or is the plane between a and b (b in
+// front or on it). Cheap (filtered predicates), it rejects most pairs before
+// the exact hull.
+bool facets_keep_sides(const Piece& a, const Piece& b) {
+  const ConvexPolyhedron& pa = a.polyhedron;
+  const auto& points = b.polyhedron.mesh().positions();
+  for (FaceId f : pa.mesh().faces()) {
+    bool behind = false, front = false;
+    for (const Vec3& p : points) {
+      Sign s = side_of_plane(p, pa.normal(f), pa.plane_offset(f));
+      behind = behind || s == Sign::negative;
+      front = front || s == Sign::positive;
+      if (behind && front) return false;
+    }
+  }
+  return true;
+}
+
 // The merged piece when the union of a and b is convex.
 bool try_merge(Piece& a, const Piece& b) {
-  if (!boxes_meet(a, b)) return false;
+  if (!boxes_meet(a, b) || !facets_keep_sides(a, b) || !facets_keep_sides(b, a)) return false;
   std::vector<Vec3> points = a.polyhedron.mesh().positions();
   const auto& more = b.polyhedron.mesh().positions();
   points.insert(points.end(), more.begin(), more.end());
