@@ -62,17 +62,25 @@ class ConvexUnion {
   /// True when there are no pieces.
   [[nodiscard]] bool empty() const noexcept { return size() == 0; }
 
-  /// Whether p is in the union (boundary included), exactly.
+  /// Whether p is in the union (boundary included), exactly: on the facet
+  /// planes of the pieces whose boxes contain p.
   [[nodiscard]] bool contains(const Vec3& p) const;
 
-  /// Whether the union and the other set share a point (touching counts).
+  /// Whether the union and the other set share a point (touching counts),
+  /// by the exact intersects() of cvms/proximity.hpp on the pieces whose
+  /// boxes meet the other's. An empty union meets nothing.
+  /// \throw Error(invalid_argument) if the other convex set is empty.
   [[nodiscard]] bool intersects(const ConvexPolyhedron& other) const;
   [[nodiscard]] bool intersects(const PlacedPolyhedron& other) const;
   [[nodiscard]] bool intersects(const ConvexSet& other) const;
   [[nodiscard]] bool intersects(const ConvexUnion& other) const;
 
   /// The exact squared distance to the other set and its witnesses: the
-  /// minimum over piece pairs, with the pieces that attain it.
+  /// minimum over piece pairs, with the pieces that attain it (witness_a in
+  /// this union's piece, witness_b in the other set). Among pairs at the
+  /// same minimum, the first in (piece, other_piece) order. Branch and bound
+  /// on the box hierarchy: pieces are visited in order of a lower bound of
+  /// their box distance, until that bound exceeds the best exact value.
   /// \throw Error(invalid_argument) if either set is empty.
   [[nodiscard]] UnionDistance squared_distance(const ConvexPolyhedron& other) const;
   [[nodiscard]] UnionDistance squared_distance(const ConvexSet& other) const;
@@ -86,11 +94,22 @@ class ConvexUnion {
 
 /// (A1 u ... u An) + (B1 u ... u Bm) as the union of the n m pairwise sums
 /// Ai + Bj, each by minkowski_sum with `options` (its algorithm and limits).
-/// options.threads spreads the pairs over threads; the result's pieces are in
+/// options.threads spreads the pairs over that many threads (no more than the
+/// machine has cores; each pair on one thread); the result's pieces are in
 /// the order (i, j) lexicographic whatever the thread count. Limits apply to
-/// each pair and to the total output (facets and memory over all pairs).
+/// each pair and to the total output (facets and memory over all pairs, the
+/// memory at SumLimits::bytes_per_output_facet per facet whatever the
+/// algorithm), checked as the pairs' results arrive; while the total is
+/// within them, each running thread may also hold one pair's sum up to the
+/// per-pair limits. When options.diagnostics is set it receives the
+/// counters summed over all pairs. An error from a pair stops the threads
+/// from taking more pairs and is rethrown, naming the pair; the pair named
+/// (and the result) is the same for every thread count: the first failing
+/// pair in (i, j) order.
 /// \throw Error(invalid_argument) if either union is empty;
-/// \throw Error(limit) as minkowski_sum, for the first pair or the total.
+/// \throw Error(limit) as minkowski_sum, for the first pair or the total,
+///   naming the pair; also before any sum when n m pieces of at least 4
+///   facets each could not fit the limits.
 ConvexUnion minkowski_sum(const ConvexUnion& a, const ConvexUnion& b, const Options& options = {});
 
 }  // namespace cvms

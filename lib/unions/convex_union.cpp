@@ -6,12 +6,19 @@
 #include <utility>
 
 #include "cvms/error.hpp"
+#include "union_impl.hpp"
 
 namespace cvms {
 
-struct ConvexUnion::Impl {
-  std::vector<ConvexPolyhedron> pieces;
-};
+const unions::BoxHierarchy& ConvexUnion::Impl::hierarchy() const {
+  std::call_once(built_, [this] {
+    std::vector<unions::OutwardBox> boxes;
+    boxes.reserve(pieces.size());
+    for (const ConvexPolyhedron& piece : pieces) boxes.push_back(unions::polyhedron_box(piece));
+    hierarchy_ = std::make_unique<const unions::BoxHierarchy>(boxes);
+  });
+  return *hierarchy_;
+}
 
 ConvexUnion::ConvexUnion() = default;
 ConvexUnion::~ConvexUnion() = default;
