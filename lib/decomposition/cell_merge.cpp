@@ -8,10 +8,12 @@
 //
 // The merge is greedy: each piece in turn absorbs every later piece it can,
 // and passes repeat until none merges. Only pieces whose bounding boxes
-// meet (a convex union is connected) and that pass facets_keep_sides are
-// given to the exact hull.
+// meet (a convex union is connected) and that pass the exact necessary
+// conditions share_cross_section and facets_keep_sides are given to the
+// exact hull.
 #include "cell_merge.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 #include "cvms/convex_hull.hpp"
@@ -46,6 +48,39 @@ bool boxes_meet(const Piece& a, const Piece& b) {
   return true;
 }
 
+// Whether a facet plane H of a has all of b on or in front of it and a and
+// b have the same vertices on H. Necessary for a convex union C of
+// interior-disjoint a and b: some facet plane H of a separates them, and
+// then a and b both meet H in the whole cross section C n H (a point of
+// C n H is in a or in b, and each of them is the closure of its open half of
+// C), a polygon whose vertices are those of a on H and those of b on H. It
+// also makes the merge visit only cells that share a whole facet.
+bool share_cross_section(const Piece& a, const Piece& b) {
+  const ConvexPolyhedron& pa = a.polyhedron;
+  const auto& points_a = pa.mesh().positions();
+  const auto& points_b = b.polyhedron.mesh().positions();
+  for (FaceId f : pa.mesh().faces()) {
+    std::vector<Vec3> on_b;
+    bool behind = false;
+    for (const Vec3& p : points_b) {
+      Sign s = side_of_plane(p, pa.normal(f), pa.plane_offset(f));
+      if (s == Sign::negative) {
+        behind = true;
+        break;
+      }
+      if (s == Sign::zero) on_b.push_back(p);
+    }
+    if (behind || on_b.size() < 3) continue;
+    std::vector<Vec3> on_a;
+    for (const Vec3& p : points_a)
+      if (side_of_plane(p, pa.normal(f), pa.plane_offset(f)) == Sign::zero) on_a.push_back(p);
+    std::sort(on_a.begin(), on_a.end());
+    std::sort(on_b.begin(), on_b.end());
+    if (on_a == on_b) return true;
+  }
+  return false;
+}
+
 // Whether every facet plane of a has all of b on one closed side. Necessary
 // for a convex union: if a u b = C is convex, every facet plane of a either
 // supports C (b behind or on it) or is the plane between a and b (b in
@@ -68,7 +103,8 @@ bool facets_keep_sides(const Piece& a, const Piece& b) {
 
 // The merged piece when the union of a and b is convex.
 bool try_merge(Piece& a, const Piece& b) {
-  if (!boxes_meet(a, b) || !facets_keep_sides(a, b) || !facets_keep_sides(b, a)) return false;
+  if (!boxes_meet(a, b) || !share_cross_section(a, b) || !facets_keep_sides(a, b) || !facets_keep_sides(b, a))
+    return false;
   std::vector<Vec3> points = a.polyhedron.mesh().positions();
   const auto& more = b.polyhedron.mesh().positions();
   points.insert(points.end(), more.begin(), more.end());
