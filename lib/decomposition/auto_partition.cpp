@@ -17,7 +17,8 @@
 // (those are the cuts a convex decomposition cannot avoid), and among the
 // candidates the one that cuts the fewest fragments (fewer fragments, fewer
 // cells). At most kCandidates planes are scored per node, chosen evenly over
-// the sorted candidates, so a node costs O(kCandidates * fragments).
+// the sorted candidates, each scored on at most kScored fragments, so the
+// choice costs O(kCandidates * kScored) and the split O(fragments).
 #include "auto_partition.hpp"
 
 #include <algorithm>
@@ -31,6 +32,7 @@ namespace cvms::decomposition {
 namespace {
 
 constexpr std::size_t kCandidates = 12;
+constexpr std::size_t kScored = 256;
 // A rough size of one exact point in a cell or a fragment: three small
 // rationals with their limbs and the bookkeeping beside them.
 constexpr std::uint64_t kPointBytes = 256;
@@ -51,9 +53,14 @@ struct Splitter {
   int side = 1;
 };
 
+// The fragments a plane cuts, among at most kScored of them spread evenly
+// over the node's list (the score only ranks candidates; the split itself
+// tests every fragment).
 std::size_t count_cuts(const std::vector<Fragment>& fragments, const Plane& plane) {
   std::size_t cuts = 0;
-  for (const Fragment& f : fragments) {
+  const std::size_t scored = std::min(fragments.size(), kScored);
+  for (std::size_t k = 0; k < scored; ++k) {
+    const Fragment& f = fragments[k * fragments.size() / scored];
     bool back = false, front = false;
     for (const Vec3& p : f.points) {
       int s = oriented_side(plane, 1, p);

@@ -6,15 +6,16 @@
 // a convex body and a closed finite union of polyhedra is empty. The
 // volumes are exact rationals, so the test is exact.
 //
-// The merge is greedy: each piece in turn absorbs every later piece it can,
-// and passes repeat until none merges. Only pieces whose bounding boxes
-// meet (a convex union is connected) and that pass the exact necessary
-// conditions share_cross_section and facets_keep_sides are given to the
-// exact hull.
+// The merge is greedy: each piece in turn absorbs the neighbours it can
+// (see merge_convex_cells). Only pieces whose bounding boxes meet (a convex
+// union is connected) and that pass the exact necessary conditions
+// share_cross_section and facets_keep_sides are given to the exact hull.
 #include "cell_merge.hpp"
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <map>
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/predicates.hpp"
@@ -133,24 +134,41 @@ std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<V
   std::vector<Piece> pieces;
   pieces.reserve(cells.size());
   for (const auto& cell : cells) pieces.push_back(make_piece(convex_hull(cell)));
-  bool merged = true;
-  while (merged) {
-    merged = false;
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-      for (std::size_t j = i + 1; j < pieces.size();) {
-        if (try_merge(pieces[i], pieces[j])) {
-          pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(j));
-          merged = true;
-          j = i + 1;
-        } else {
-          ++j;
-        }
+  // The pieces at each vertex: two pieces with a convex union share the
+  // vertices of their cross section, so only these are candidates. An
+  // ordered map: exact keys, and no hashing of values derived from input.
+  std::map<Vec3, std::vector<std::uint32_t>> at;
+  auto index_piece = [&](std::uint32_t i) {
+    for (const Vec3& p : pieces[i].polyhedron.mesh().positions()) at[p].push_back(i);
+  };
+  for (std::uint32_t i = 0; i < pieces.size(); ++i) index_piece(i);
+  std::vector<std::uint8_t> alive(pieces.size(), 1);
+  // Each piece in turn absorbs neighbours while it can, scanning again after
+  // each growth; a piece that stops growing never changes again, and every
+  // later piece tries it after its own last growth, so one sweep leaves no
+  // two neighbours with a convex union untried.
+  for (std::uint32_t i = 0; i < pieces.size(); ++i) {
+    bool grew = alive[i] != 0;
+    while (grew) {
+      grew = false;
+      std::vector<std::uint32_t> near;
+      for (const Vec3& p : pieces[i].polyhedron.mesh().positions())
+        for (std::uint32_t j : at[p])
+          if (j != i && alive[j] != 0) near.push_back(j);
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+      for (std::uint32_t j : near) {
+        if (!try_merge(pieces[i], pieces[j])) continue;
+        alive[j] = 0;
+        index_piece(i);
+        grew = true;
+        break;
       }
     }
   }
   std::vector<ConvexPolyhedron> result;
-  result.reserve(pieces.size());
-  for (Piece& piece : pieces) result.push_back(std::move(piece.polyhedron));
+  for (std::uint32_t i = 0; i < pieces.size(); ++i)
+    if (alive[i] != 0) result.push_back(std::move(pieces[i].polyhedron));
   return result;
 }
 
