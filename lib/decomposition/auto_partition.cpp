@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: MIT
+// Auto-partition of the bounding box by the solid's facet planes.
+//
+// Each node is a convex cell with the boundary fragments (parts of the
+// solid's triangles) inside it. A node is split by the plane of one of its
+// fragments: fragments on that plane are used up there, the others go to
+// the side they lie on or are cut in two. A part with no fragment left holds
+// no boundary in its interior, so it is wholly inside or wholly outside the
+// solid; and it touches the chosen fragment, which lies in the whole cross
+// section of the parent cell: behind that fragment (against its outward
+// normal) the solid is inside, in front of it outside. So a fragment-free
+// part behind the splitting fragment is an inside cell, in front an outside
+// one. Every split uses up at least one fragment and a fragment is only cut
+// by planes other than its own, so the partition is finite.
+//
+// Which plane: a plane holding a facet on a reflex edge when there is one
+// (those are the cuts a convex decomposition cannot avoid), and among the
+// candidates the one that cuts the fewest fragments (fewer fragments, fewer
+// cells). At most kCandidates planes are scored per node, chosen evenly over
+// the sorted candidates, each scored on at most kScored fragments, so the
+// choice costs O(kCandidates * kScored) and the split O(fragments).
+#include "auto_partition.hpp"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "convex_cell.hpp"
+#include "cvms/error.hpp"
+
+namespace cvms::decomposition {
+namespace {
+
+constexpr std::size_t kCandidates = 12;
+constexpr std::size_t kScored = 256;
+// A rough size of one exact point in a cell or a fragment: three small
+// rationals with their limbs and the bookkeeping beside them.
+constexpr std::uint64_t kPointBytes = 256;
+
+struct Node {
+  Cell cell;
+  std::vector<Fragment> fragments;
+};
+
+std::uint64_t node_bytes(const Node& node) {
+  std::uint64_t points = node.cell.vertices.size();
+  for (const Fragment& f : node.fragments) points += f.points.size();
+  return points * kPointBytes + node.fragments.size() * sizeof(Fragment) + sizeof(Node);
+}
+
+struct Splitter {
+  std::uint32_t plane = 0;
+  int side = 1;
+};
+
+// The fragments a plane cuts, among at most kScored of them spread evenly
+// over the node's list (the score only ranks candidates; the split itself
+// tests every fragment).
+std::size_t count_cuts(const std::vector<Fragment>& fragments, const Plane& plane) {
+  std::size_t cuts = 0;
+  const std::size_t scored = std::min(fragments.size(), kScored);
+  for (std::size_t k = 0; k < scored; ++k) {
+    const Fragment& f = fragments[k * fragments.size() / scored];
+    bool back = false, front = false;
+    for (const Vec3& p : f.points) {
+      int s = oriented_side(plane, 1, p);
+      back = back || s < 0;
+      front = front || s > 0;
+      if (back && front) break;
+    }
+    if (back && front) ++cuts;
+  }
+  return cuts;
+}
+
+Splitter choose_splitter(const std::vector<Fragment>& fragments, const BoundaryPlanes& planes) {
+  std::vector<std::uint32_t> all;
+  all.reserve(fragments.size());
+  for (const Fragment& f : fragments) all.push_back(f.plane);
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  std::vector<std::uint32_t> reflex;
+  for (std::uint32_t p : all)
+    if (planes.reflex_plane[p] != 0) reflex.push_back(p);
+  const std::vector<std::uint32_t>& pool = reflex.empty() ? all : reflex;
+  std::size_t count = std::min(pool.size(), kCandidates);
+  std::uint32_t best = pool[0];
+  std::size_t best_cuts = static_cast<std::size_t>(-1);
+  for (std::size_t k = 0; k < count; ++k) {
+    std::uint32_t candidate = pool[k * pool.size() / count];
+    std::size_t cuts = count_cuts(fragments, planes.planes[candidate]);
+    if (cuts < best_cuts) {
+      best_cuts = cuts;
+      best = candidate;
+    }
+  }
+  for (const Fragment& f : fragments)
+    if (f.plane == best) return Splitter{best, f.side};
+  return Splitter{best, 1};
+}
+
+[[noreturn]] void memory_limit(std::uint64_t needed, std::uint64_t limit) {
+  throw Error(ErrorCategory::limit,
+              "convex_decomposition: the partition would need about " + std::to_string(needed) +
+                  " bytes of working memory, more than max_memory_bytes = " + std::to_string(limit));
+}
+
+Node root_node(const Solid& solid, BoundaryPlanes& planes) {
+  auto vertices = solid.vertices();
+  auto triangles = solid.triangles();
+  Vec3 lo = vertices[triangles[0][0]], hi = lo;
+  for (const auto& tri : triangles)
+    for (std::uint32_t v : tri)
+      for (int axis = 0; axis < 3; ++axis) {
+        if (vertices[v][axis] < lo[axis]) lo[axis] = vertices[v][axis];
+        if (hi[axis] < vertices[v][axis]) hi[axis] = vertices[v][axis];
+      }
+  Node root;
+  auto sorted = static_cast<std::uint32_t>(planes.planes.size());
+  root.cell = box_cell(lo, hi, planes.planes, sorted);
+  planes.reflex_plane.resize(planes.planes.size(), 0);
+  root.fragments.reserve(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    Fragment f;
+    for (std::uint32_t v : triangles[t]) f.points.push_back(vertices[v]);
+    f.plane = planes.triangle_plane[t];
+    f.side = planes.triangle_side[t];
+    root.fragments.push_back(std::move(f));
+  }
+  return root;
+}
+
+}  // namespace
+
+std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& planes,
+                                            const DecompositionLimits& limits) {
+  const std::uint64_t root_estimate =
+      (std::uint64_t{8} + 3 * std::uint64_t{solid.triangles().size()}) * kPointBytes +
+      solid.triangles().size() * sizeof(Fragment);
+  if (root_estimate > limits.max_memory_bytes) memory_limit(root_estimate, limits.max_memory_bytes);
+
+  std::vector<std::vector<Vec3>> inside;
+  std::vector<Node> stack;
+  stack.push_back(root_node(solid, planes));
+  std::uint64_t live = node_bytes(stack.back());
+  while (!stack.empty()) {
+    Node node = std::move(stack.back());
+    stack.pop_back();
+    live -= std::min(live, node_bytes(node));
+    Splitter s = choose_splitter(node.fragments, planes);
+    const Plane& plane = planes.planes[s.plane];
+
+    Node back, front;
+    for (const Fragment& f : node.fragments) {
+      if (f.plane == s.plane) continue;  // on the splitting plane: used up here
+      FragmentSplit parts = split_fragment(f, plane, s.side);
+      if (parts.has_back) back.fragments.push_back(std::move(parts.back));
+      if (parts.has_front) front.fragments.push_back(std::move(parts.front));
+    }
+    CellSplit cells = split_cell(node.cell, planes.planes, s.plane, s.side);
+    back.cell = std::move(cells.back);
+    front.cell = std::move(cells.front);
+    node = Node{};
+
+    std::uint64_t added = node_bytes(back) + node_bytes(front);
+    if (live + added > limits.max_memory_bytes) memory_limit(live + added, limits.max_memory_bytes);
+    // Push front first so that the back part is taken next (depth first,
+    // back before front: a fixed order, so the output is deterministic).
+    if (!front.cell.vertices.empty() && !front.fragments.empty()) {
+      live += node_bytes(front);
+      stack.push_back(std::move(front));
+    }
+    if (!back.cell.vertices.empty()) {
+      if (back.fragments.empty()) {
+        std::vector<Vec3> points;
+        points.reserve(back.cell.vertices.size());
+        for (CellVertex& v : back.cell.vertices) points.push_back(std::move(v.point));
+        live += points.size() * kPointBytes;
+        inside.push_back(std::move(points));
+      } else {
+        live += node_bytes(back);
+        stack.push_back(std::move(back));
+      }
+    }
+  }
+  return inside;
+}
+
+}  // namespace cvms::decomposition

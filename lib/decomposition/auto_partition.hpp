@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// The inside cells of a binary space partition of the solid's bounding box
+// by the solid's own facet planes (an auto-partition): convex, interior-
+// disjoint, and together exactly the solid.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "boundary_planes.hpp"
+#include "cvms/decomposition.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms::decomposition {
+
+// The vertices of each inside cell, in depth-first order (the part behind a
+// splitting plane before the part in front).
+// \throw Error(limit) when the estimated working memory would exceed
+//   limits.max_memory_bytes.
+std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& planes,
+                                            const DecompositionLimits& limits);
+
+}  // namespace cvms::decomposition
