@@ -102,12 +102,12 @@ std::uint64_t candidate_pairs(int k) {
 }
 
 TEST(SelfIntersection, CandidatePairsGrowLinearly) {
-  const std::uint64_t small = candidate_pairs(12);  // 1728 triangles
-  const std::uint64_t large = candidate_pairs(36);  // 15552 triangles, 9 times as many
-  std::printf("candidate pairs: %llu for 1728 triangles, %llu for 15552\n", static_cast<unsigned long long>(small),
+  const std::uint64_t small = candidate_pairs(8);  // 768 triangles
+  const std::uint64_t large = candidate_pairs(24);  // 6912 triangles, 9 times as many
+  std::printf("candidate pairs: %llu for 768 triangles, %llu for 6912\n", static_cast<unsigned long long>(small),
               static_cast<unsigned long long>(large));
   EXPECT_LT(large, 12 * small);          // linear: about 9 times; quadratic would be 81
-  EXPECT_LT(large, 20ull * 15552);       // a few neighbours per triangle
+  EXPECT_LT(large, 20ull * 6912);       // a few neighbours per triangle
 }
 
 TEST(SolidAccess, AssumeValidDerivesTheProperties) {

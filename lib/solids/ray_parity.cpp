@@ -20,6 +20,7 @@
 // that sign: orient3d(a, b, c, p) = dot(n, p - a).
 #include "ray_parity.hpp"
 
+#include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
 
 namespace cvms::detail {
@@ -33,7 +34,7 @@ Vec3 direction(int k) {
   return {7 + 3 * t + t2, 2 - 5 * t + t2, -3 + t + 2 * t2};
 }
 
-enum class Hit { none, crossing, degenerate };
+enum class Hit { none, crossing, degenerate, at_start };
 
 Hit ray_hit(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
   const int s1 = static_cast<int>(orient3d(p, q, a, b));
@@ -45,7 +46,7 @@ Hit ray_hit(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Ve
   if (positive && negative) return Hit::none;
   const int side = static_cast<int>(orient3d(a, b, c, p));
   const int toward = positive ? 1 : -1;  // sign of dot(n, d)
-  if (side == 0) return Hit::degenerate;  // excluded by the precondition unless in the plane
+  if (side == 0) return Hit::at_start;  // the line meets the triangle at p itself
   if (side == toward) return Hit::none;  // the plane is behind p
   return s1 == 0 || s2 == 0 || s3 == 0 ? Hit::degenerate : Hit::crossing;
 }
@@ -64,6 +65,9 @@ bool odd_crossings(const TriangleTree& tree, std::span<const Vec3> points,
       if (!counts(t)) return false;
       const auto& tri = triangles[t];
       const Hit hit = ray_hit(p, q, points[tri[0]], points[tri[1]], points[tri[2]]);
+      // No direction helps then: every ray from p starts on the triangle.
+      if (hit == Hit::at_start)
+        throw Error(ErrorCategory::invalid_argument, "odd_crossings: the point lies on a counted triangle");
       if (hit == Hit::degenerate) degenerate = true;
       if (hit == Hit::crossing) odd = !odd;
       return degenerate;

@@ -46,18 +46,18 @@ bool segment_meets_triangle_2d(const Vec2& p, const Vec2& q, const Vec2& a, cons
          segments_meet(p, q, b, c) || segments_meet(p, q, c, a);
 }
 
-// The closed segment [p, q] and the closed triangle (a, b, c).
-bool segment_meets_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const int op = o3(a, b, c, p);
-  const int oq = o3(a, b, c, q);
+// The closed segment [p, q] and the closed triangle (a, b, c), given op,
+// oq: the sides of p and q of the triangle's plane.
+bool segment_crosses_triangle(const Vec3& p, const Vec3& q, int op, int oq, const Vec3& a, const Vec3& b,
+                              const Vec3& c) {
   if (op * oq > 0) return false;
   if (op == 0 && oq == 0) {
     const Chart chart(a, b, c);
     return segment_meets_triangle_2d(chart(p), chart(q), chart(a), chart(b), chart(c));
   }
-  // The segment crosses the plane at one point: it is in the triangle iff
-  // the line pq passes through the closed triangle, i.e. it turns the same
-  // way (or not at all) around the three edges.
+  // The segment meets the plane at one point: it is in the triangle iff the
+  // line pq passes through the closed triangle, i.e. it turns the same way
+  // (or not at all) around the three edges.
   const int s1 = o3(p, q, a, b);
   const int s2 = o3(p, q, b, c);
   const int s3 = o3(p, q, c, a);
@@ -66,16 +66,30 @@ bool segment_meets_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const V
   return !(positive && negative);
 }
 
+// Does the direction x - v lie in the closed angle at v spanned by c - v
+// and d - v (less than a half-turn)?
+bool in_angle(const Vec2& v, const Vec2& c, const Vec2& d, const Vec2& x) {
+  const int s = o2(v, c, d);
+  return o2(v, c, x) * s >= 0 && o2(v, x, d) * s >= 0;
+}
+
 // a lies in the plane of the triangle (v, c, d): does the direction a - v
 // lie in the triangle's closed angle at v?
 bool in_angle(const Vec3& v, const Vec3& c, const Vec3& d, const Vec3& a) {
   const Chart chart(v, c, d);
-  const Vec2 v2 = chart(v);
-  const Vec2 c2 = chart(c);
-  const Vec2 d2 = chart(d);
-  const Vec2 a2 = chart(a);
-  const int s = o2(v2, c2, d2);
-  return o2(v2, c2, a2) * s >= 0 && o2(v2, a2, d2) * s >= 0;
+  return in_angle(chart(v), chart(c), chart(d), chart(a));
+}
+
+// Coplanar triangles (v, a, b) and (v, c, d) sharing only v meet beyond v
+// iff their angles at v share a direction (a common point s != v puts the
+// direction s - v in both, by convexity; a common direction puts a short
+// segment from v in both). Two angles below a half-turn, arcs of the circle
+// of directions, share one iff a side of one lies in the other.
+bool overlap_at_vertex_coplanar(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Chart chart(v, a, b);
+  const Vec2 v2 = chart(v), a2 = chart(a), b2 = chart(b), c2 = chart(c), d2 = chart(d);
+  return in_angle(v2, a2, b2, c2) || in_angle(v2, a2, b2, d2) || in_angle(v2, c2, d2, a2) ||
+         in_angle(v2, c2, d2, b2);
 }
 
 // t = (v, a, b) and u = (v, c, d) share exactly the vertex v.
@@ -83,10 +97,11 @@ bool overlap_at_vertex(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& 
   const int oc = o3(v, a, b, c);
   const int od = o3(v, a, b, d);
   if (oc * od > 0) return false;  // u meets t's plane only at v
+  if (oc == 0 && od == 0) return overlap_at_vertex_coplanar(v, a, b, c, d);
   const int oa = o3(v, c, d, a);
   const int ob = o3(v, c, d, b);
   if (oa * ob > 0) return false;
-  if (segment_meets_triangle(a, b, v, c, d) || segment_meets_triangle(c, d, v, a, b)) return true;
+  if (segment_crosses_triangle(a, b, oa, ob, v, c, d) || segment_crosses_triangle(c, d, oc, od, v, a, b)) return true;
   return (oa == 0 && in_angle(v, c, d, a)) || (ob == 0 && in_angle(v, c, d, b)) ||
          (oc == 0 && in_angle(v, a, b, c)) || (od == 0 && in_angle(v, a, b, d));
 }
@@ -101,19 +116,27 @@ bool overlap_at_edge(const Vec3& u, const Vec3& v, const Vec3& a, const Vec3& b)
   return o2(u2, v2, chart(a)) == o2(u2, v2, chart(b));
 }
 
+bool overlap_coplanar(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e, const Vec3& f) {
+  const Chart chart(a, b, c);
+  const Vec2 a2 = chart(a), b2 = chart(b), c2 = chart(c), d2 = chart(d), e2 = chart(e), f2 = chart(f);
+  return segment_meets_triangle_2d(a2, b2, d2, e2, f2) || segment_meets_triangle_2d(b2, c2, d2, e2, f2) ||
+         segment_meets_triangle_2d(c2, a2, d2, e2, f2) || point_in_triangle(d2, a2, b2, c2);
+}
+
 bool overlap_disjoint_ids(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
                           const Vec3& f) {
   const int od = o3(a, b, c, d);
   const int oe = o3(a, b, c, e);
   const int of = o3(a, b, c, f);
   if ((od > 0 && oe > 0 && of > 0) || (od < 0 && oe < 0 && of < 0)) return false;
+  if (od == 0 && oe == 0 && of == 0) return overlap_coplanar(a, b, c, d, e, f);
   const int oa = o3(d, e, f, a);
   const int ob = o3(d, e, f, b);
   const int oc = o3(d, e, f, c);
   if ((oa > 0 && ob > 0 && oc > 0) || (oa < 0 && ob < 0 && oc < 0)) return false;
-  return segment_meets_triangle(a, b, d, e, f) || segment_meets_triangle(b, c, d, e, f) ||
-         segment_meets_triangle(c, a, d, e, f) || segment_meets_triangle(d, e, a, b, c) ||
-         segment_meets_triangle(e, f, a, b, c) || segment_meets_triangle(f, d, a, b, c);
+  return segment_crosses_triangle(a, b, oa, ob, d, e, f) || segment_crosses_triangle(b, c, ob, oc, d, e, f) ||
+         segment_crosses_triangle(c, a, oc, oa, d, e, f) || segment_crosses_triangle(d, e, od, oe, a, b, c) ||
+         segment_crosses_triangle(e, f, oe, of, a, b, c) || segment_crosses_triangle(f, d, of, od, a, b, c);
 }
 
 }  // namespace
