@@ -61,7 +61,7 @@ TEST(TriangleOverlap, NoSharedVertex) {
   p[4] = {6, 5, 0};
   p[5] = {5, 6, 0};
   EXPECT_FALSE(triangles_overlap(p, {0, 1, 2}, {3, 4, 5}));  // coplanar, apart
-  p[3] = {2, 2, 0};  // on the hypotenuse x + y = 4
+  p[3] = {2, 2, 0};                                          // on the hypotenuse x + y = 4
   EXPECT_TRUE(triangles_overlap(p, {0, 1, 2}, {3, 4, 5}));
 }
 
@@ -96,32 +96,37 @@ std::uint64_t candidate_pairs(int k) {
   const auto& impl = cvms::SolidAccess::impl(solid);
   std::vector<std::uint32_t> own_face(impl.triangles.size());
   for (std::uint32_t t = 0; t < own_face.size(); ++t) own_face[t] = t;  // compare every pair
-  const auto found = cvms::detail::find_self_intersection(impl.tree(), impl.vertices, impl.triangles, own_face);
+  const auto found =
+      cvms::detail::find_self_intersection(impl.tree(), impl.vertices, impl.triangles, own_face);
   EXPECT_FALSE(found.faces.has_value());
   return found.candidate_pairs;
 }
 
 TEST(SelfIntersection, CandidatePairsGrowLinearly) {
-  const std::uint64_t small = candidate_pairs(8);  // 768 triangles
+  const std::uint64_t small = candidate_pairs(8);   // 768 triangles
   const std::uint64_t large = candidate_pairs(24);  // 6912 triangles, 9 times as many
-  std::printf("candidate pairs: %llu for 768 triangles, %llu for 6912\n", static_cast<unsigned long long>(small),
-              static_cast<unsigned long long>(large));
-  EXPECT_LT(large, 12 * small);          // linear: about 9 times; quadratic would be 81
-  EXPECT_LT(large, 20ull * 6912);       // a few neighbours per triangle
+  std::printf("candidate pairs: %llu for 768 triangles, %llu for 6912\n",
+              static_cast<unsigned long long>(small), static_cast<unsigned long long>(large));
+  EXPECT_LT(large, 12 * small);    // linear: about 9 times; quadratic would be 81
+  EXPECT_LT(large, 20ull * 6912);  // a few neighbours per triangle
 }
 
 TEST(SolidAccess, AssumeValidDerivesTheProperties) {
   // The L-block's triangles: same derived data as through the validation.
-  const cvms::Solid checked = cvms::read_solid(std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids" / "l_block.off");
-  const cvms::Solid trusted = cvms::SolidAccess::assume_valid(
-      {checked.vertices().begin(), checked.vertices().end()}, {checked.triangles().begin(), checked.triangles().end()});
+  const cvms::Solid checked =
+      cvms::read_solid(std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids" / "l_block.off");
+  const cvms::Solid trusted =
+      cvms::SolidAccess::assume_valid({checked.vertices().begin(), checked.vertices().end()},
+                                      {checked.triangles().begin(), checked.triangles().end()});
   EXPECT_EQ(trusted.volume(), 3);
   EXPECT_EQ(trusted.num_facets(), 8u);
   EXPECT_EQ(trusted.num_reflex_edges(), 1u);
   EXPECT_EQ(trusted.num_shells(), 1u);
   EXPECT_EQ(trusted.genus(), 0u);
-  EXPECT_EQ(trusted.locate({cvms::Rational(1, 2), cvms::Rational(3, 2), cvms::Rational(1, 2)}), cvms::Location::inside);
-  EXPECT_EQ(trusted.locate({cvms::Rational(3, 2), cvms::Rational(3, 2), cvms::Rational(1, 2)}), cvms::Location::outside);
+  EXPECT_EQ(trusted.locate({cvms::Rational(1, 2), cvms::Rational(3, 2), cvms::Rational(1, 2)}),
+            cvms::Location::inside);
+  EXPECT_EQ(trusted.locate({cvms::Rational(3, 2), cvms::Rational(3, 2), cvms::Rational(1, 2)}),
+            cvms::Location::outside);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // on a real mesh. Oracles: volumes, genus, shells and reflex edges counted
 // by hand from the fixtures' comments; locate against a membership function
 // written for each box-made fixture (see local_location).
+#include "cvms/solid.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,7 +19,6 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
-#include "cvms/solid.hpp"
 
 namespace {
 
@@ -66,7 +67,8 @@ TEST(Solid, ValidFixturesHaveTheirHandCountedProperties) {
       const std::uint32_t f = s.triangle_facets()[t];
       const Vec3& n = s.facet_normal(f);
       for (std::uint32_t v : tri) EXPECT_EQ(cvms::dot(n, s.vertices()[v]), s.facet_offset(f));
-      const Vec3 area = cvms::cross(s.vertices()[tri[1]] - s.vertices()[tri[0]], s.vertices()[tri[2]] - s.vertices()[tri[0]]);
+      const Vec3 area = cvms::cross(s.vertices()[tri[1]] - s.vertices()[tri[0]],
+                                    s.vertices()[tri[2]] - s.vertices()[tri[0]]);
       EXPECT_GT(cvms::dot(area, n), 0);
     }
   }
@@ -90,7 +92,9 @@ struct Invalid {
 TEST(Solid, InvalidFixturesGiveLocatedErrors) {
   const std::vector<Invalid> cases = {
       {"open_box.off", ErrorCategory::topology, {"open surface", "boundary edge"}},
-      {"cubes_sharing_edge.off", ErrorCategory::topology, {"edge (2, 6) is shared by 4 faces", "non-manifold edge"}},
+      {"cubes_sharing_edge.off",
+       ErrorCategory::topology,
+       {"edge (2, 6) is shared by 4 faces", "non-manifold edge"}},
       {"cubes_sharing_corner.off", ErrorCategory::topology, {"vertex 6: ", "non-manifold vertex"}},
       {"fold.off", ErrorCategory::topology, {"intersect"}},
       {"inverted_cube.off", ErrorCategory::topology, {"inverted orientation", "shell of face 0"}},
@@ -149,7 +153,12 @@ TEST(Solid, OverlappingCubesNameTwoFacesThatReallyMeet) {
 cvms::PolygonSoup unit_cube_soup() {
   cvms::PolygonSoup soup;
   soup.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (auto f : {std::vector<std::uint32_t>{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}})
+  for (auto f : {std::vector<std::uint32_t>{0, 3, 2, 1},
+                 {4, 5, 6, 7},
+                 {0, 1, 5, 4},
+                 {1, 2, 6, 5},
+                 {2, 3, 7, 6},
+                 {3, 0, 4, 7}})
     soup.add_face(f);
   return soup;
 }
@@ -222,7 +231,8 @@ Location local_location(const std::function<bool(const Vec3&)>& in_closed_set, c
   if (!in_closed_set(p)) return Location::outside;
   const Rational d(1, 16);
   for (int mask = 0; mask < 8; ++mask) {
-    const Vec3 q{p.x + ((mask & 1) != 0 ? d : -d), p.y + ((mask & 2) != 0 ? d : -d), p.z + ((mask & 4) != 0 ? d : -d)};
+    const Vec3 q{p.x + ((mask & 1) != 0 ? d : -d), p.y + ((mask & 2) != 0 ? d : -d),
+                 p.z + ((mask & 4) != 0 ? d : -d)};
     if (!in_closed_set(q)) return Location::boundary;
   }
   return Location::inside;
@@ -241,16 +251,31 @@ TEST(Solid, LocateAgreesWithMembershipOfBoxes) {
     std::function<bool(const Vec3&)> in;
   };
   const std::vector<Case> cases = {
-      {"l_block.off", [](const Vec3& p) { return in_box(p, {0, 0, 0}, {2, 1, 1}) || in_box(p, {0, 0, 0}, {1, 2, 1}); }},
+      {"l_block.off",
+       [](const Vec3& p) {
+         return in_box(p, {0, 0, 0}, {2, 1, 1}) || in_box(p, {0, 0, 0}, {1, 2, 1});
+       }},
       {"box_with_hole.off",
        [](const Vec3& p) {
-         return in_box(p, {0, 0, 0}, {3, 1, 1}) || in_box(p, {0, 2, 0}, {3, 3, 1}) || in_box(p, {0, 0, 0}, {1, 3, 1}) ||
-                in_box(p, {2, 0, 0}, {3, 3, 1});
+         return in_box(p, {0, 0, 0}, {3, 1, 1}) || in_box(p, {0, 2, 0}, {3, 3, 1}) ||
+                in_box(p, {0, 0, 0}, {1, 3, 1}) || in_box(p, {2, 0, 0}, {3, 3, 1});
        }},
-      {"two_cubes.off", [](const Vec3& p) { return in_box(p, {0, 0, 0}, {1, 1, 1}) || in_box(p, {2, 2, 2}, {3, 3, 3}); }},
-      {"cavity_cube.off", [](const Vec3& p) { return in_box(p, {0, 0, 0}, {3, 3, 3}) && !in_open_box(p, {1, 1, 1}, {2, 2, 2}); }},
-      {"split_top_cube.off", [](const Vec3& p) { return in_box(p, {0, 0, 0}, {2, 2, 2}); }},
-      {"collinear_cube.off", [](const Vec3& p) { return in_box(p, {0, 0, 0}, {2, 2, 2}); }},
+      {"two_cubes.off",
+       [](const Vec3& p) {
+         return in_box(p, {0, 0, 0}, {1, 1, 1}) || in_box(p, {2, 2, 2}, {3, 3, 3});
+       }},
+      {"cavity_cube.off",
+       [](const Vec3& p) {
+         return in_box(p, {0, 0, 0}, {3, 3, 3}) && !in_open_box(p, {1, 1, 1}, {2, 2, 2});
+       }},
+      {"split_top_cube.off",
+       [](const Vec3& p) {
+         return in_box(p, {0, 0, 0}, {2, 2, 2});
+       }},
+      {"collinear_cube.off",
+       [](const Vec3& p) {
+         return in_box(p, {0, 0, 0}, {2, 2, 2});
+       }},
   };
   const unsigned seed = 4049;
   std::mt19937 rng(seed);
@@ -275,16 +300,17 @@ TEST(Solid, LocateAgreesWithMembershipOfBoxes) {
 TEST(Solid, LocateOnTheStarPrismAndDecimalBox) {
   const Solid star = cvms::read_solid(data("star_prism.off"));
   EXPECT_EQ(star.locate({0, 0, 1}), Location::inside);
-  EXPECT_EQ(star.locate({3, 0, 1}), Location::inside);            // in a point of the star
-  EXPECT_EQ(star.locate({2, 2, 1}), Location::outside);           // between two points
+  EXPECT_EQ(star.locate({3, 0, 1}), Location::inside);                              // in a point of the star
+  EXPECT_EQ(star.locate({2, 2, 1}), Location::outside);                             // between two points
   EXPECT_EQ(star.locate({Rational(5, 2), Rational(1, 2), 1}), Location::boundary);  // on the edge (4,0)-(1,1)
-  EXPECT_EQ(star.locate({1, 1, 1}), Location::boundary);          // on a reflex edge
-  EXPECT_EQ(star.locate({0, 0, 2}), Location::boundary);          // on the top cap
+  EXPECT_EQ(star.locate({1, 1, 1}), Location::boundary);                            // on a reflex edge
+  EXPECT_EQ(star.locate({0, 0, 2}), Location::boundary);                            // on the top cap
   EXPECT_EQ(star.locate({0, 0, 3}), Location::outside);
   const Solid box = cvms::read_solid(data("decimal_box.off"));
   EXPECT_EQ(box.locate({Rational(1, 5), 0, Rational(6, 5)}), Location::inside);
   EXPECT_EQ(box.locate({Rational(1, 10), 0, Rational(6, 5)}), Location::boundary);
-  EXPECT_EQ(box.locate({Rational(1, 10), Rational(-1, 5), Rational(21, 20)}), Location::boundary);  // a corner
+  EXPECT_EQ(box.locate({Rational(1, 10), Rational(-1, 5), Rational(21, 20)}),
+            Location::boundary);  // a corner
   EXPECT_EQ(box.locate({Rational(9, 100), 0, Rational(6, 5)}), Location::outside);
 }
 
@@ -332,8 +358,9 @@ TEST(Solid, RealMeshValidates) {
   const Solid spot = Solid::from_soup(std::move(soup));
   const auto done = std::chrono::steady_clock::now();
   std::printf("spot.obj: read in %.3f s, validated in %.3f s (%zu vertices, %zu triangles)\n",
-              std::chrono::duration<double>(read - start).count(), std::chrono::duration<double>(done - read).count(),
-              spot.vertices().size(), spot.triangles().size());
+              std::chrono::duration<double>(read - start).count(),
+              std::chrono::duration<double>(done - read).count(), spot.vertices().size(),
+              spot.triangles().size());
   EXPECT_EQ(spot.num_shells(), 1u);
   EXPECT_EQ(spot.num_cavities(), 0u);
   EXPECT_EQ(spot.genus(), 0u);

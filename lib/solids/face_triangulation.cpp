@@ -36,8 +36,8 @@ namespace {
 
 class FaceCheck {
  public:
-  FaceCheck(std::span<const Vec3> points, std::span<const std::uint32_t> ids, std::span<const std::uint32_t> names,
-            std::uint32_t face)
+  FaceCheck(std::span<const Vec3> points, std::span<const std::uint32_t> ids,
+            std::span<const std::uint32_t> names, std::uint32_t face)
       : points_(points), ids_(ids), names_(names), where_("face " + str(face)) {}
 
   // The plane's normal from the first two corners and a third not collinear with them.
@@ -102,7 +102,8 @@ class FaceCheck {
 
 class EarClipper {
  public:
-  EarClipper(std::span<const Vec2> p, int turn) : p_(p), turn_(turn), prev_(p.size()), next_(p.size()), ear_(p.size()) {
+  EarClipper(std::span<const Vec2> p, int turn)
+      : p_(p), turn_(turn), prev_(p.size()), next_(p.size()), ear_(p.size()) {
     const std::size_t k = p.size();
     for (std::size_t i = 0; i < k; ++i) {
       prev_[i] = (i + k - 1) % k;
@@ -169,7 +170,8 @@ void triangulate_face(std::span<const Vec3> points, std::span<const std::uint32_
                       std::span<const std::uint32_t> input_names, std::uint32_t face,
                       std::vector<std::array<std::uint32_t, 3>>& out, std::vector<Vec3>& areas) {
   const std::size_t k = ids.size();
-  if (k < 3) degenerate("face " + str(face) + " has " + std::to_string(k) + " vertices (at least 3 are needed)");
+  if (k < 3)
+    degenerate("face " + str(face) + " has " + std::to_string(k) + " vertices (at least 3 are needed)");
   if (k > max_face_corners)
     throw Error(ErrorCategory::limit, "face " + str(face) + " has " + std::to_string(k) +
                                           " vertices; at most " + std::to_string(max_face_corners) +

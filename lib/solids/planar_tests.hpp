@@ -11,7 +11,9 @@
 
 namespace cvms::detail {
 
-inline int orient2(const Vec2& a, const Vec2& b, const Vec2& c) { return static_cast<int>(orient2d(a, b, c)); }
+inline int orient2(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return static_cast<int>(orient2d(a, b, c));
+}
 
 /// For p, q, r collinear: is r on the closed segment [p, q]?
 inline bool between(const Vec2& p, const Vec2& q, const Vec2& r) {

@@ -46,7 +46,7 @@ Hit ray_hit(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Ve
   if (positive && negative) return Hit::none;
   const int side = static_cast<int>(orient3d(a, b, c, p));
   const int toward = positive ? 1 : -1;  // sign of dot(n, d)
-  if (side == 0) return Hit::at_start;  // the line meets the triangle at p itself
+  if (side == 0) return Hit::at_start;   // the line meets the triangle at p itself
   if (side == toward) return Hit::none;  // the plane is behind p
   return s1 == 0 || s2 == 0 || s3 == 0 ? Hit::degenerate : Hit::crossing;
 }

@@ -96,10 +96,12 @@ Location Solid::locate(const Vec3& p) const {
   tree.for_each_overlapping(detail::point_box(p), [&](std::uint32_t t) {
     const auto& tri = impl.triangles[t];
     if (!on_boundary)
-      on_boundary = detail::point_on_triangle(p, impl.vertices[tri[0]], impl.vertices[tri[1]], impl.vertices[tri[2]]);
+      on_boundary =
+          detail::point_on_triangle(p, impl.vertices[tri[0]], impl.vertices[tri[1]], impl.vertices[tri[2]]);
   });
   if (on_boundary) return Location::boundary;
-  const bool odd = detail::odd_crossings(tree, impl.vertices, impl.triangles, p, [](std::uint32_t) { return true; });
+  const bool odd =
+      detail::odd_crossings(tree, impl.vertices, impl.triangles, p, [](std::uint32_t) { return true; });
   return odd ? Location::inside : Location::outside;
 }
 

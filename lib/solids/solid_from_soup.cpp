@@ -52,21 +52,22 @@ void check_shape(const PolygonSoup& soup) {
                 "malformed polygon soup: face_offsets must start at 0 and end at face_indices.size()");
   for (std::size_t f = 0; f + 1 < offsets.size(); ++f)
     if (offsets[f + 1] < offsets[f])
-      throw Error(ErrorCategory::invalid_argument, "malformed polygon soup: face_offsets decrease at face " +
-                                                       std::to_string(f));
+      throw Error(ErrorCategory::invalid_argument,
+                  "malformed polygon soup: face_offsets decrease at face " + std::to_string(f));
   if (soup.num_faces() == 0) topology("empty solid: the soup has no faces");
   // Half-edge numbers of the triangles go up to three times the corners.
   constexpr std::size_t max_corners = std::size_t{1} << 30;
   if (soup.face_indices.size() >= max_corners || soup.points.size() >= max_corners)
     throw Error(ErrorCategory::limit, "solid too large: " + std::to_string(soup.points.size()) + " points, " +
-                                          std::to_string(soup.face_indices.size()) + " face corners (at most " +
-                                          std::to_string(max_corners - 1) + " each)");
+                                          std::to_string(soup.face_indices.size()) +
+                                          " face corners (at most " + std::to_string(max_corners - 1) +
+                                          " each)");
   const std::size_t n = soup.points.size();
   for (std::size_t f = 0; f < soup.num_faces(); ++f)
     for (std::uint32_t v : soup.face(f))
       if (v >= n)
-        topology("face " + std::to_string(f) + ": vertex index " + str(v) + " out of range (" + std::to_string(n) +
-                 " points)");
+        topology("face " + std::to_string(f) + ": vertex index " + str(v) + " out of range (" +
+                 std::to_string(n) + " points)");
 }
 
 struct Merged {
@@ -104,7 +105,8 @@ Merged merge_points(const PolygonSoup& soup) {
   return m;
 }
 
-void check_orientation(const SolidAccess::Impl& impl, const detail::Shells& shells, std::span<const std::uint32_t> face_of) {
+void check_orientation(const SolidAccess::Impl& impl, const detail::Shells& shells,
+                       std::span<const std::uint32_t> face_of) {
   const auto count = static_cast<std::uint32_t>(shells.signed_volumes.size());
   for (std::uint32_t s = 0; s < count; ++s) {
     const std::string shell = "the shell of face " + str(face_of[shells.first_triangle[s]]);
@@ -141,8 +143,8 @@ Solid Solid::from_soup(PolygonSoup soup) {
     detail::triangulate_face(merged.vertices, ids, merged.names, f, triangles, areas);
     face_of.resize(triangles.size(), f);
   }
-  detail::check_closed_manifold({soup.face_offsets, merged.corners, static_cast<std::uint32_t>(merged.vertices.size())},
-                                merged.names);
+  detail::check_closed_manifold(
+      {soup.face_offsets, merged.corners, static_cast<std::uint32_t>(merged.vertices.size())}, merged.names);
   auto impl = std::make_shared<Impl>();
   impl->vertices = std::move(merged.vertices);
   impl->triangles = std::move(triangles);

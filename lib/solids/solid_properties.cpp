@@ -29,7 +29,9 @@ namespace {
 
 class UnionFind {
  public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::uint32_t{0}); }
+  explicit UnionFind(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+  }
   std::uint32_t find(std::uint32_t x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
     return x;
@@ -54,7 +56,8 @@ class UnionFind {
 
 // Pairs of (triangle, corner) half-edges on the same edge: the half-edge
 // 3t + i runs from corner i to corner i + 1 of triangle t.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> edge_pairs(std::span<const std::array<std::uint32_t, 3>> tris) {
+std::vector<std::pair<std::uint32_t, std::uint32_t>> edge_pairs(
+    std::span<const std::array<std::uint32_t, 3>> tris) {
   const std::size_t n = tris.size() * 3;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
   for (std::uint32_t h = 0; h < n; ++h) {

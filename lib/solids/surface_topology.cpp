@@ -63,7 +63,8 @@ std::vector<std::uint32_t> match_edges(const HalfEdges& h, std::span<const std::
     const std::uint32_t a = keyed[k].second;
     const std::string edge = edge_name(names[h.from[a]], names[h.to[a]]);
     if (e - k == 1)
-      fail("open surface: " + edge + " of face " + str(h.face[a]) + " has no face on its other side (boundary edge)");
+      fail("open surface: " + edge + " of face " + str(h.face[a]) +
+           " has no face on its other side (boundary edge)");
     if (e - k > 2)
       fail(edge + " is shared by " + std::to_string(e - k) + " faces (" + str(h.face[a]) + ", " +
            str(h.face[keyed[k + 1].second]) + ", " + str(h.face[keyed[k + 2].second]) +
@@ -86,7 +87,8 @@ void check_fans(const HalfEdges& h, std::span<const std::uint32_t> twin, std::ui
   for (std::uint32_t start = 0; start < h.from.size(); ++start) {
     if (visited[start]) continue;
     const std::uint32_t v = h.from[start];
-    if (has_fan[v]) fail("vertex " + str(names[v]) + ": its faces form more than one fan (non-manifold vertex)");
+    if (has_fan[v])
+      fail("vertex " + str(names[v]) + ": its faces form more than one fan (non-manifold vertex)");
     has_fan[v] = true;
     for (std::uint32_t e = start; !visited[e]; e = h.next[twin[e]]) visited[e] = true;
   }

@@ -101,7 +101,8 @@ bool overlap_at_vertex(const Vec3& v, const Vec3& a, const Vec3& b, const Vec3& 
   const int oa = o3(v, c, d, a);
   const int ob = o3(v, c, d, b);
   if (oa * ob > 0) return false;
-  if (segment_crosses_triangle(a, b, oa, ob, v, c, d) || segment_crosses_triangle(c, d, oc, od, v, a, b)) return true;
+  if (segment_crosses_triangle(a, b, oa, ob, v, c, d) || segment_crosses_triangle(c, d, oc, od, v, a, b))
+    return true;
   return (oa == 0 && in_angle(v, c, d, a)) || (ob == 0 && in_angle(v, c, d, b)) ||
          (oc == 0 && in_angle(v, a, b, c)) || (od == 0 && in_angle(v, a, b, d));
 }
@@ -116,7 +117,8 @@ bool overlap_at_edge(const Vec3& u, const Vec3& v, const Vec3& a, const Vec3& b)
   return o2(u2, v2, chart(a)) == o2(u2, v2, chart(b));
 }
 
-bool overlap_coplanar(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e, const Vec3& f) {
+bool overlap_coplanar(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                      const Vec3& f) {
   const Chart chart(a, b, c);
   const Vec2 a2 = chart(a), b2 = chart(b), c2 = chart(c), d2 = chart(d), e2 = chart(e), f2 = chart(f);
   return segment_meets_triangle_2d(a2, b2, d2, e2, f2) || segment_meets_triangle_2d(b2, c2, d2, e2, f2) ||
@@ -153,17 +155,18 @@ bool triangles_overlap(std::span<const Vec3> points, const Triangle& t, const Tr
   auto P = [&](std::uint32_t id) -> const Vec3& { return points[id]; };
   auto at = [](const Triangle& tri, int k) { return tri[static_cast<std::size_t>(((k % 3) + 3) % 3)]; };
   if (shared == 3) return true;
-  if (shared == 0)
-    return overlap_disjoint_ids(P(t[0]), P(t[1]), P(t[2]), P(u[0]), P(u[1]), P(u[2]));
+  if (shared == 0) return overlap_disjoint_ids(P(t[0]), P(t[1]), P(t[2]), P(u[0]), P(u[1]), P(u[2]));
   if (shared == 1) {
-    const int i = static_cast<int>(std::find_if(in_u.begin(), in_u.end(), [](int j) { return j >= 0; }) - in_u.begin());
+    const int i =
+        static_cast<int>(std::find_if(in_u.begin(), in_u.end(), [](int j) { return j >= 0; }) - in_u.begin());
     const int j = in_u[static_cast<std::size_t>(i)];
     return overlap_at_vertex(P(at(t, i)), P(at(t, i + 1)), P(at(t, i + 2)), P(at(u, j + 1)), P(at(u, j + 2)));
   }
   // Two shared: the corner of t not in u, and the corner of u not in t.
   const int i = static_cast<int>(std::find(in_u.begin(), in_u.end(), -1) - in_u.begin());
   int j = 0;
-  while (u[static_cast<std::size_t>(j)] == at(t, i + 1) || u[static_cast<std::size_t>(j)] == at(t, i + 2)) ++j;
+  while (u[static_cast<std::size_t>(j)] == at(t, i + 1) || u[static_cast<std::size_t>(j)] == at(t, i + 2))
+    ++j;
   return overlap_at_edge(P(at(t, i + 1)), P(at(t, i + 2)), P(at(t, i)), P(u[static_cast<std::size_t>(j)]));
 }
 

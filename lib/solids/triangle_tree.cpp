@@ -53,7 +53,8 @@ bool ray_meets_box(const Vec3& p, const Vec3& d, const Box& box) {
     const double hi = box.hi[i];
     const int dir = sgn(d[k]);
     if (dir == 0) {
-      if ((std::isfinite(lo) && p[k] < Rational(lo)) || (std::isfinite(hi) && p[k] > Rational(hi))) return false;
+      if ((std::isfinite(lo) && p[k] < Rational(lo)) || (std::isfinite(hi) && p[k] > Rational(hi)))
+        return false;
       continue;
     }
     // Moving along d, the ray enters the slab at the near bound and leaves it
@@ -82,7 +83,8 @@ double finite_part(double x) {
 
 }  // namespace
 
-TriangleTree::TriangleTree(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles) {
+TriangleTree::TriangleTree(std::span<const Vec3> vertices,
+                           std::span<const std::array<std::uint32_t, 3>> triangles) {
   std::vector<Box> vertex_boxes;
   vertex_boxes.reserve(vertices.size());
   for (const Vec3& v : vertices) vertex_boxes.push_back(point_box(v));
@@ -173,7 +175,8 @@ std::uint64_t TriangleTree::for_each_overlapping_pair(
   return pairs;
 }
 
-void TriangleTree::for_each_overlapping(const Box& box, const std::function<void(std::uint32_t)>& visit) const {
+void TriangleTree::for_each_overlapping(const Box& box,
+                                        const std::function<void(std::uint32_t)>& visit) const {
   if (nodes_.empty()) return;
   std::vector<std::uint32_t> stack{0};
   while (!stack.empty()) {

@@ -37,7 +37,8 @@ class TriangleTree {
 
   /// Calls visit(i, j), i < j, for every pair of triangles whose boxes
   /// overlap, until visit returns true. Returns the number of pairs visited.
-  std::uint64_t for_each_overlapping_pair(const std::function<bool(std::uint32_t, std::uint32_t)>& visit) const;
+  std::uint64_t for_each_overlapping_pair(
+      const std::function<bool(std::uint32_t, std::uint32_t)>& visit) const;
   /// Calls visit(t) for every triangle whose box overlaps `box`.
   void for_each_overlapping(const Box& box, const std::function<void(std::uint32_t)>& visit) const;
   /// Calls visit(t) for every triangle whose box the ray {p + s d : s >= 0}
