@@ -367,6 +367,23 @@ TEST(Solid, RealMeshValidates) {
   EXPECT_GT(spot.volume(), 0);
   EXPECT_GT(spot.num_reflex_edges(), 0u);
   EXPECT_FALSE(spot.is_convex());
+  // Every vertex is on the boundary; points beyond the bounding box are outside.
+  for (std::size_t v = 0; v < spot.vertices().size(); v += 7)
+    ASSERT_EQ(spot.locate(spot.vertices()[v]), Location::boundary) << "vertex " << v;
+  Vec3 lo = spot.vertices()[0], hi = lo;
+  for (const Vec3& p : spot.vertices())
+    for (int k = 0; k < 3; ++k) {
+      if (p[k] < lo[k]) lo[k] = p[k];
+      if (p[k] > hi[k]) hi[k] = p[k];
+    }
+  const auto located = std::chrono::steady_clock::now();
+  for (int i = 0; i < 100; ++i) {
+    const Rational t(i, 100);
+    ASSERT_EQ(spot.locate({hi.x + t, lo.y + t, lo.z}), Location::outside) << i;
+    ASSERT_EQ(spot.locate({lo.x - t, hi.y - t, hi.z}), Location::outside) << i;
+  }
+  std::printf("spot.obj: 200 outside points located in %.3f s\n",
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - located).count());
 }
 
 TEST(Solid, PlantedIntersectionInTheRealMeshIsFound) {
