@@ -49,6 +49,7 @@ TEST(Solid, ValidFixturesHaveTheirHandCountedProperties) {
       {"cavity_cube.off", 26, 2, 1, 0, 12, 12, false},
       {"collinear_cube.off", 8, 1, 0, 0, 0, 6, true},
       {"decimal_box.off", Rational(7, 320), 1, 0, 0, 0, 6, true},
+      {"nested_shells.off", 99, 3, 1, 0, 12, 18, false},
   };
   for (const Expected& e : cases) {
     SCOPED_TRACE(e.file);
@@ -221,6 +222,49 @@ TEST(Solid, SoupLevelDefects) {
     expect_error(soup, ErrorCategory::topology, "in the same direction (inconsistent orientation)");
   }
   expect_error(cvms::PolygonSoup{}, ErrorCategory::topology, "empty solid");
+  {
+    // A prism over a polygon of 4097 corners: refused before its quadratic checks.
+    cvms::PolygonSoup soup;
+    const std::uint32_t n = 4097;
+    for (std::uint32_t i = 0; i < n; ++i) soup.points.push_back({i, static_cast<long>(i) * i, 0});
+    std::vector<std::uint32_t> cap(n);
+    for (std::uint32_t i = 0; i < n; ++i) cap[i] = i;
+    soup.add_face(cap);
+    expect_error(soup, ErrorCategory::limit, "face 0 has 4097 vertices; at most 4096");
+  }
+}
+
+// Random soups on a small grid: every one is a valid solid or a cvms::Error,
+// and a valid one has positive volume and its vertices on its boundary.
+TEST(Solid, RandomSoupsAreSolidsOrErrors) {
+  const unsigned seed = 77;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coordinate(0, 2);
+  int valid = 0;
+  for (int round = 0; round < 300; ++round) {
+    SCOPED_TRACE("seed " + std::to_string(seed) + ", round " + std::to_string(round));
+    // A unit cube's faces with one or two vertices moved on the grid, or
+    // random triangles on the cube's points.
+    cvms::PolygonSoup soup = unit_cube_soup();
+    if (round % 3 == 2) {
+      soup.face_offsets = {0};
+      soup.face_indices.clear();
+      std::uniform_int_distribution<std::uint32_t> corner(0, 7);
+      for (int f = 0; f < 8; ++f) soup.add_face({corner(rng), corner(rng), corner(rng)});
+    } else {
+      for (int moved = 0; moved <= round % 3; ++moved)
+        soup.points[static_cast<std::size_t>(coordinate(rng) * 3 + coordinate(rng)) % 8] = {
+            coordinate(rng), coordinate(rng), coordinate(rng)};
+    }
+    try {
+      const Solid s = Solid::from_soup(soup);
+      ++valid;
+      EXPECT_GT(s.volume(), 0);
+      for (const Vec3& v : s.vertices()) EXPECT_EQ(s.locate(v), Location::boundary);
+    } catch (const cvms::Error&) {
+    }
+  }
+  EXPECT_GT(valid, 0);
 }
 
 // The location of p in a closed union of boxes with integer corners, for p
@@ -279,7 +323,7 @@ TEST(Solid, LocateAgreesWithMembershipOfBoxes) {
   };
   const unsigned seed = 4049;
   std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> quarter(-2, 14);  // -1/2 .. 7/2
+  std::uniform_int_distribution<int> quarter(-2, 22);  // -1/2 .. 11/2
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.file) + ", seed " + std::to_string(seed));
     const Solid s = cvms::read_solid(data(c.file));
