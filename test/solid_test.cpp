@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -428,6 +429,56 @@ TEST(Solid, RealMeshValidates) {
   }
   std::printf("spot.obj: 200 outside points located in %.3f s\n",
               std::chrono::duration<double>(std::chrono::steady_clock::now() - located).count());
+}
+
+// Inside or outside by brute force, independently of the library's ray
+// test: the crossings of the ray from p along +x with every triangle, in
+// plain rational arithmetic (the triangle projected on the yz-plane contains
+// (p.y, p.z), and the triangle's plane lies ahead there). Nothing when the
+// ray meets an edge or a vertex (a degenerate sample).
+std::optional<bool> inside_by_x_ray(const Solid& s, const Vec3& p) {
+  bool odd = false;
+  for (const auto& t : s.triangles()) {
+    const Vec3& a = s.vertices()[t[0]];
+    const Vec3& b = s.vertices()[t[1]];
+    const Vec3& c = s.vertices()[t[2]];
+    if ((p.y < a.y && p.y < b.y && p.y < c.y) || (p.y > a.y && p.y > b.y && p.y > c.y)) continue;
+    if ((p.z < a.z && p.z < b.z && p.z < c.z) || (p.z > a.z && p.z > b.z && p.z > c.z)) continue;
+    auto side = [&](const Vec3& u, const Vec3& v) {
+      const Rational value = (v.y - u.y) * (p.z - u.z) - (v.z - u.z) * (p.y - u.y);
+      return sgn(value);
+    };
+    const int s1 = side(a, b), s2 = side(b, c), s3 = side(c, a);
+    if ((s1 > 0 || s2 > 0 || s3 > 0) && (s1 < 0 || s2 < 0 || s3 < 0)) continue;
+    const Vec3 n = cvms::cross(b - a, c - a);
+    if (sgn(n.x) == 0) continue;  // the plane is parallel to the ray
+    if (s1 == 0 || s2 == 0 || s3 == 0) return std::nullopt;
+    // The plane's x above (p.y, p.z): n.x (x - a.x) + n.y (p.y - a.y) + n.z (p.z - a.z) = 0.
+    const Rational x = a.x - (n.y * (p.y - a.y) + n.z * (p.z - a.z)) / n.x;
+    if (x == p.x) return std::nullopt;
+    if (x > p.x) odd = !odd;
+  }
+  return odd;
+}
+
+TEST(Solid, LocateInTheRealMeshAgreesWithBruteForce) {
+  const Solid spot = cvms::read_solid(data("spot.obj"));
+  const unsigned seed = 2930;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coordinate(-1000, 1000);
+  int inside = 0, compared = 0;
+  for (int i = 0; i < 60; ++i) {
+    const Vec3 p{Rational(coordinate(rng), 1700), Rational(coordinate(rng), 1100),
+                 Rational(coordinate(rng), 1000)};
+    const std::optional<bool> expected = inside_by_x_ray(spot, p);
+    if (!expected) continue;
+    ++compared;
+    inside += *expected ? 1 : 0;
+    EXPECT_EQ(spot.locate(p), *expected ? Location::inside : Location::outside)
+        << "seed " << seed << ", p = (" << p.x << ", " << p.y << ", " << p.z << ")";
+  }
+  EXPECT_GT(compared, 50);
+  EXPECT_GT(inside, 0);
 }
 
 TEST(Solid, PlantedIntersectionInTheRealMeshIsFound) {
