@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -429,6 +430,34 @@ TEST(Solid, RealMeshValidates) {
   }
   std::printf("spot.obj: 200 outside points located in %.3f s\n",
               std::chrono::duration<double>(std::chrono::steady_clock::now() - located).count());
+}
+
+TEST(Solid, ManyDisjointPartsValidate) {
+  // 6 x 6 x 6 unit cubes two apart, with a cube-shaped cavity in the last one.
+  cvms::PolygonSoup soup;
+  const cvms::PolygonSoup cube = unit_cube_soup();
+  auto add_cube = [&](const Vec3& at, const Rational& scale, bool inward) {
+    const auto base = static_cast<std::uint32_t>(soup.points.size());
+    for (const Vec3& p : cube.points) soup.points.push_back(at + scale * p);
+    for (std::size_t f = 0; f < cube.num_faces(); ++f) {
+      std::vector<std::uint32_t> face;
+      for (std::uint32_t v : cube.face(f)) face.push_back(base + v);
+      if (inward) std::reverse(face.begin(), face.end());
+      soup.add_face(face);
+    }
+  };
+  for (int x = 0; x < 6; ++x)
+    for (int y = 0; y < 6; ++y)
+      for (int z = 0; z < 6; ++z) add_cube({2 * x, 2 * y, 2 * z}, 1, false);
+  add_cube({Rational(41, 4), Rational(41, 4), Rational(41, 4)}, Rational(1, 2), true);
+  const Solid s = Solid::from_soup(soup);
+  EXPECT_EQ(s.num_shells(), 217u);
+  EXPECT_EQ(s.num_cavities(), 1u);
+  EXPECT_EQ(s.volume(), 216 - Rational(1, 8));
+  EXPECT_EQ(s.locate({Rational(21, 2), Rational(21, 2), Rational(21, 2)}),
+            Location::outside);  // in the cavity
+  EXPECT_EQ(s.locate({Rational(101, 10), Rational(101, 10), Rational(101, 10)}), Location::inside);
+  EXPECT_EQ(s.locate({Rational(3, 2), Rational(1, 2), Rational(1, 2)}), Location::outside);  // between cubes
 }
 
 // Inside or outside by brute force, independently of the library's ray

@@ -105,23 +105,61 @@ Merged merge_points(const PolygonSoup& soup) {
   return m;
 }
 
+// The box of each shell, rounded outward.
+std::vector<detail::Box> shell_boxes(const SolidAccess::Impl& impl, const detail::Shells& shells) {
+  std::vector<detail::Box> boxes(shells.signed_volumes.size());
+  std::vector<bool> started(boxes.size(), false);
+  for (std::uint32_t t = 0; t < impl.triangles.size(); ++t) {
+    const std::uint32_t s = shells.of_triangle[t];
+    for (std::uint32_t v : impl.triangles[t]) {
+      const detail::Box b = detail::point_box(impl.vertices[v]);
+      if (started[s]) {
+        detail::extend(boxes[s], b);
+      } else {
+        boxes[s] = b;
+        started[s] = true;
+      }
+    }
+  }
+  return boxes;
+}
+
+// Whether each shell lies inside an odd number of the others. Only a shell
+// whose box holds the starting point can hold the point, so a shell that is
+// in no other's box needs no ray (the many parts of an assembly), and the
+// ray counts only the triangles of shells whose boxes do.
+std::vector<bool> odd_depths(const SolidAccess::Impl& impl, const detail::Shells& shells) {
+  const auto count = static_cast<std::uint32_t>(shells.signed_volumes.size());
+  std::vector<bool> odd(count, false);
+  if (count < 2) return odd;
+  const detail::TriangleTree shell_tree(shell_boxes(impl, shells));
+  std::vector<std::uint32_t> around(count, count);  // around[t] == s: t's box holds s's starting point
+  for (std::uint32_t s = 0; s < count; ++s) {
+    const Vec3& p = impl.vertices[impl.triangles[shells.first_triangle[s]][0]];
+    bool any = false;
+    shell_tree.for_each_overlapping(detail::point_box(p), [&](std::uint32_t t) {
+      if (t == s) return;
+      around[t] = s;
+      any = true;
+    });
+    if (any)
+      odd[s] = detail::odd_crossings(impl.tree(), impl.vertices, impl.triangles, p,
+                                     [&](std::uint32_t t) { return around[shells.of_triangle[t]] == s; });
+  }
+  return odd;
+}
+
 void check_orientation(const SolidAccess::Impl& impl, const detail::Shells& shells,
                        std::span<const std::uint32_t> face_of) {
-  const auto count = static_cast<std::uint32_t>(shells.signed_volumes.size());
-  for (std::uint32_t s = 0; s < count; ++s) {
+  const std::vector<bool> odd_depth = odd_depths(impl, shells);
+  for (std::uint32_t s = 0; s < odd_depth.size(); ++s) {
     const std::string shell = "the shell of face " + str(face_of[shells.first_triangle[s]]);
     const int orientation = sgn(shells.signed_volumes[s]);
     if (orientation == 0) throw Error(ErrorCategory::degenerate, shell + " encloses zero volume");
-    bool odd_depth = false;
-    if (count > 1) {
-      const Vec3& p = impl.vertices[impl.triangles[shells.first_triangle[s]][0]];
-      odd_depth = detail::odd_crossings(impl.tree(), impl.vertices, impl.triangles, p,
-                                        [&](std::uint32_t t) { return shells.of_triangle[t] != s; });
-    }
-    if (orientation < 0 && !odd_depth)
+    if (orientation < 0 && !odd_depth[s])
       topology("inverted orientation: " + shell +
                " faces inward but is not a cavity (it lies inside an even number of other shells)");
-    if (orientation > 0 && odd_depth)
+    if (orientation > 0 && odd_depth[s])
       topology("inconsistent orientation: " + shell +
                " lies inside an odd number of other shells, so it bounds a cavity, but faces outward");
   }

@@ -26,14 +26,14 @@ Box point_box(const Vec3& p) {
   return b;
 }
 
-namespace {
-
 void extend(Box& b, const Box& other) {
   for (std::size_t k = 0; k < 3; ++k) {
     b.lo[k] = std::min(b.lo[k], other.lo[k]);
     b.hi[k] = std::max(b.hi[k], other.hi[k]);
   }
 }
+
+namespace {
 
 bool overlap(const Box& a, const Box& b) {
   for (std::size_t k = 0; k < 3; ++k)
@@ -89,22 +89,30 @@ TriangleTree::TriangleTree(std::span<const Vec3> vertices,
   vertex_boxes.reserve(vertices.size());
   for (const Vec3& v : vertices) vertex_boxes.push_back(point_box(v));
   boxes_.reserve(triangles.size());
-  std::vector<std::array<double, 3>> centres;
-  centres.reserve(triangles.size());
   for (const auto& t : triangles) {
     Box b = vertex_boxes[t[0]];
     extend(b, vertex_boxes[t[1]]);
     extend(b, vertex_boxes[t[2]]);
     boxes_.push_back(b);
+  }
+  build_all();
+}
+
+TriangleTree::TriangleTree(std::vector<Box> boxes) : boxes_(std::move(boxes)) { build_all(); }
+
+void TriangleTree::build_all() {
+  std::vector<std::array<double, 3>> centres;
+  centres.reserve(boxes_.size());
+  for (const Box& b : boxes_) {
     std::array<double, 3> c{};
     for (std::size_t k = 0; k < 3; ++k) c[k] = finite_part(b.lo[k]) / 2 + finite_part(b.hi[k]) / 2;
     centres.push_back(c);
   }
-  order_.resize(triangles.size());
+  order_.resize(boxes_.size());
   for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
-  // A binary tree with leaves of 1 to 4 triangles has fewer than n nodes.
-  nodes_.reserve(triangles.size());
-  if (!triangles.empty()) build(0, static_cast<std::uint32_t>(triangles.size()), centres);
+  // A binary tree with leaves of 1 to 4 boxes has fewer than n nodes.
+  nodes_.reserve(boxes_.size());
+  if (!boxes_.empty()) build(0, static_cast<std::uint32_t>(boxes_.size()), centres);
 }
 
 std::uint32_t TriangleTree::build(std::uint32_t begin, std::uint32_t end,

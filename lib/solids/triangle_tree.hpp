@@ -30,10 +30,15 @@ double double_above(const Rational& x);
 
 /// The box of one point, rounded outward.
 Box point_box(const Vec3& p);
+/// Grows b to contain other.
+void extend(Box& b, const Box& other);
 
 class TriangleTree {
  public:
   TriangleTree(std::span<const Vec3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles);
+  /// A tree over any boxes (of shells, say): the searches below then report
+  /// indices into `boxes` where they say triangles.
+  explicit TriangleTree(std::vector<Box> boxes);
 
   /// Calls visit(i, j), i < j, for every pair of triangles whose boxes
   /// overlap, until visit returns true. Returns the number of pairs visited.
@@ -51,6 +56,7 @@ class TriangleTree {
     std::uint32_t begin, end;  // triangles order_[begin, end)
     std::uint32_t right;       // second child (the first is the next node); 0 for a leaf
   };
+  void build_all();
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::span<const std::array<double, 3>> centres);
   [[nodiscard]] bool is_leaf(const Node& n) const noexcept { return n.right == 0; }
 
