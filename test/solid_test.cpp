@@ -382,13 +382,17 @@ TEST(Solid, ConversionsAndEmpty) {
 }
 
 TEST(Solid, CopiesLocateConcurrently) {
-  const Solid s = cvms::read_solid(data("cavity_cube.off"));
+  // The cavity cube's hierarchy exists after validation; the polyhedron's is
+  // built by whichever thread asks first.
+  const Solid validated = cvms::read_solid(data("cavity_cube.off"));
+  const Solid lazy = Solid::from_polyhedron(cvms::ConvexPolyhedron::from_soup(unit_cube_soup()));
   std::vector<std::thread> threads;
   std::vector<int> wrong(4, 0);
   for (int i = 0; i < 4; ++i)
-    threads.emplace_back([copy = s, &wrong, i] {  // each thread its own copy of one shared solid
+    threads.emplace_back([copy = validated, lazy_copy = lazy, &wrong, i] {  // each its own copies
       for (int k = 0; k < 50; ++k) {
         const Rational t(k + 1, 52);
+        if (lazy_copy.locate({t, t, t}) != Location::inside) ++wrong[i];
         if (copy.locate({Rational(3, 2), Rational(3, 2), Rational(3, 2)}) != Location::outside) ++wrong[i];
         if (copy.locate({Rational(1, 2), t, Rational(1, 2)}) != Location::inside) ++wrong[i];
       }
