@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
-// The solid's value semantics and accessors. Its validation lives in the
-// files beside this one.
+// The solid's value semantics, accessors, conversions and point location.
+// Its validation is solid_from_soup.cpp.
 #include "cvms/solid.hpp"
 
 #include <memory>
 #include <utility>
 
+#include "cvms/error.hpp"
+#include "ray_parity.hpp"
 #include "solid_access.hpp"
 #include "solid_impl.hpp"
+#include "solid_properties.hpp"
+#include "triangle_intersection.hpp"
+#include "triangle_tree.hpp"
 
 namespace cvms {
 
@@ -49,17 +54,65 @@ const Rational& Solid::volume() const noexcept {
   return impl_ ? impl_->volume : zero;
 }
 
-// Placeholder until the derivation of facets, shells and volume lands: keeps
-// the vertices and triangles, which is all a decomposition reads.
 Solid SolidAccess::assume_valid(std::vector<Vec3> vertices,
                                 std::vector<std::array<std::uint32_t, 3>> triangles) {
   auto impl = std::make_shared<Solid::Impl>();
   impl->vertices = std::move(vertices);
   impl->triangles = std::move(triangles);
-  impl->shells = 1;
+  detail::derive_properties(*impl);
   Solid solid;
   solid.impl_ = std::move(impl);
   return solid;
+}
+
+// A convex polyhedron's facets are strictly convex polygons, so the fan of
+// each from its first corner has no zero-area triangle.
+Solid Solid::from_polyhedron(const ConvexPolyhedron& polyhedron) {
+  if (polyhedron.num_facets() == 0) return {};
+  PolygonSoup soup = polyhedron.to_soup();
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const auto face = soup.face(f);
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) triangles.push_back({face[0], face[i], face[i + 1]});
+  }
+  return SolidAccess::assume_valid(std::move(soup.points), std::move(triangles));
+}
+
+PolygonSoup Solid::to_soup() const {
+  PolygonSoup soup;
+  if (!impl_) return soup;
+  soup.points = impl_->vertices;
+  soup.face_indices.reserve(impl_->triangles.size() * 3);
+  soup.face_offsets.reserve(impl_->triangles.size() + 1);
+  for (const auto& t : impl_->triangles) soup.add_face(t);
+  return soup;
+}
+
+Location Solid::locate(const Vec3& p) const {
+  if (!impl_) return Location::outside;
+  const Impl& impl = *impl_;
+  const detail::TriangleTree& tree = impl.tree();
+  bool on_boundary = false;
+  tree.for_each_overlapping(detail::point_box(p), [&](std::uint32_t t) {
+    const auto& tri = impl.triangles[t];
+    if (!on_boundary)
+      on_boundary =
+          detail::point_on_triangle(p, impl.vertices[tri[0]], impl.vertices[tri[1]], impl.vertices[tri[2]]);
+  });
+  if (on_boundary) return Location::boundary;
+  const bool odd =
+      detail::odd_crossings(tree, impl.vertices, impl.triangles, p, [](std::uint32_t) { return true; });
+  return odd ? Location::inside : Location::outside;
+}
+
+Solid read_solid(const std::filesystem::path& path, const ReadLimits& limits) {
+  // read_file's own errors already name the file (and the line).
+  PolygonSoup soup = read_file(path, limits);
+  try {
+    return Solid::from_soup(std::move(soup));
+  } catch (const Error& e) {
+    throw Error(e.category(), path.string() + ": " + e.message());
+  }
 }
 
 }  // namespace cvms

@@ -14,6 +14,9 @@
 namespace cvms {
 
 struct SolidAccess {
+  // The data, by a name the library's own code may use.
+  using Impl = Solid::Impl;
+
   // A solid from closed, outward-oriented, non-self-intersecting triangles;
   // facets, planes, shells, reflex edges and volume are derived, not checked.
   // \pre the triangles bound a valid solid (as Solid::from_soup would accept).

@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+// The hierarchy of triangle_tree.hpp: its construction and its three
+// searches (pairs of overlapping boxes, boxes near a point, boxes on a ray).
+#include "triangle_tree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace cvms::detail {
+
+double double_below(const Rational& x) {
+  return std::nextafter(to_double_nearest(x), -std::numeric_limits<double>::infinity());
+}
+double double_above(const Rational& x) {
+  return std::nextafter(to_double_nearest(x), std::numeric_limits<double>::infinity());
+}
+
+Box point_box(const Vec3& p) {
+  Box b;
+  for (int k = 0; k < 3; ++k) {
+    b.lo[static_cast<std::size_t>(k)] = double_below(p[k]);
+    b.hi[static_cast<std::size_t>(k)] = double_above(p[k]);
+  }
+  return b;
+}
+
+void extend(Box& b, const Box& other) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    b.lo[k] = std::min(b.lo[k], other.lo[k]);
+    b.hi[k] = std::max(b.hi[k], other.hi[k]);
+  }
+}
+
+namespace {
+
+bool overlap(const Box& a, const Box& b) {
+  for (std::size_t k = 0; k < 3; ++k)
+    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+  return true;
+}
+
+// Exact slab test: is there s >= 0 with lo <= p + s d <= hi on every axis?
+// An infinite bound (a coordinate beyond the doubles) constrains nothing.
+bool ray_meets_box(const Vec3& p, const Vec3& d, const Box& box) {
+  Rational enter = 0;
+  Rational leave;
+  bool bounded = false;
+  for (int k = 0; k < 3; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double lo = box.lo[i];
+    const double hi = box.hi[i];
+    const int dir = sgn(d[k]);
+    if (dir == 0) {
+      if ((std::isfinite(lo) && p[k] < Rational(lo)) || (std::isfinite(hi) && p[k] > Rational(hi)))
+        return false;
+      continue;
+    }
+    // Moving along d, the ray enters the slab at the near bound and leaves it
+    // at the far one.
+    const double near = dir > 0 ? lo : hi;
+    const double far = dir > 0 ? hi : lo;
+    if (std::isfinite(near)) {
+      Rational s = (Rational(near) - p[k]) / d[k];
+      if (s > enter) enter = std::move(s);
+    }
+    if (std::isfinite(far)) {
+      Rational s = (Rational(far) - p[k]) / d[k];
+      if (!bounded || s < leave) {
+        leave = std::move(s);
+        bounded = true;
+      }
+    }
+    if (bounded && enter > leave) return false;
+  }
+  return true;
+}
+
+double finite_part(double x) {
+  return std::clamp(x, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+}
+
+}  // namespace
+
+TriangleTree::TriangleTree(std::span<const Vec3> vertices,
+                           std::span<const std::array<std::uint32_t, 3>> triangles) {
+  std::vector<Box> vertex_boxes;
+  vertex_boxes.reserve(vertices.size());
+  for (const Vec3& v : vertices) vertex_boxes.push_back(point_box(v));
+  boxes_.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    Box b = vertex_boxes[t[0]];
+    extend(b, vertex_boxes[t[1]]);
+    extend(b, vertex_boxes[t[2]]);
+    boxes_.push_back(b);
+  }
+  build_all();
+}
+
+TriangleTree::TriangleTree(std::vector<Box> boxes) : boxes_(std::move(boxes)) { build_all(); }
+
+void TriangleTree::build_all() {
+  std::vector<std::array<double, 3>> centres;
+  centres.reserve(boxes_.size());
+  for (const Box& b : boxes_) {
+    std::array<double, 3> c{};
+    for (std::size_t k = 0; k < 3; ++k) c[k] = finite_part(b.lo[k]) / 2 + finite_part(b.hi[k]) / 2;
+    centres.push_back(c);
+  }
+  order_.resize(boxes_.size());
+  for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+  // A binary tree with leaves of 1 to 4 boxes has fewer than n nodes.
+  nodes_.reserve(boxes_.size());
+  if (!boxes_.empty()) build(0, static_cast<std::uint32_t>(boxes_.size()), centres);
+}
+
+std::uint32_t TriangleTree::build(std::uint32_t begin, std::uint32_t end,
+                                  std::span<const std::array<double, 3>> centres) {
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  Box box = boxes_[order_[begin]];
+  for (std::uint32_t i = begin + 1; i < end; ++i) extend(box, boxes_[order_[i]]);
+  nodes_.push_back({box, begin, end, 0});
+  constexpr std::uint32_t leaf_size = 4;
+  if (end - begin <= leaf_size) return index;
+  std::size_t axis = 0;
+  for (std::size_t k = 1; k < 3; ++k)
+    if (box.hi[k] - box.lo[k] > box.hi[axis] - box.lo[axis]) axis = k;
+  // Always the median position, even when the centres are equal: the halves
+  // are then arbitrary but the depth stays logarithmic.
+  const std::uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
+  build(begin, mid, centres);
+  const std::uint32_t right = build(mid, end, centres);
+  nodes_[index].right = right;
+  return index;
+}
+
+std::uint64_t TriangleTree::for_each_overlapping_pair(
+    const std::function<bool(std::uint32_t, std::uint32_t)>& visit) const {
+  std::uint64_t pairs = 0;
+  if (nodes_.empty()) return pairs;
+  // Depth-first over pairs of nodes (a, b), a == b meaning pairs inside a.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
+  auto leaf_pairs = [&](const Node& a, const Node& b, bool same) {
+    for (std::uint32_t i = a.begin; i < a.end; ++i)
+      for (std::uint32_t j = same ? i + 1 : b.begin; j < b.end; ++j) {
+        const std::uint32_t s = order_[i];
+        const std::uint32_t t = order_[j];
+        if (!overlap(boxes_[s], boxes_[t])) continue;
+        ++pairs;
+        if (visit(std::min(s, t), std::max(s, t))) return true;
+      }
+    return false;
+  };
+  while (!stack.empty()) {
+    const auto [ia, ib] = stack.back();
+    stack.pop_back();
+    const Node& a = nodes_[ia];
+    const Node& b = nodes_[ib];
+    if (ia == ib) {
+      if (is_leaf(a)) {
+        if (leaf_pairs(a, a, true)) return pairs;
+      } else {
+        stack.push_back({ia + 1, a.right});
+        stack.push_back({a.right, a.right});
+        stack.push_back({ia + 1, ia + 1});
+      }
+      continue;
+    }
+    if (!overlap(a.box, b.box)) continue;
+    if (is_leaf(a) && is_leaf(b)) {
+      if (leaf_pairs(a, b, false)) return pairs;
+    } else if (is_leaf(b) || (!is_leaf(a) && a.end - a.begin >= b.end - b.begin)) {
+      stack.push_back({a.right, ib});
+      stack.push_back({ia + 1, ib});
+    } else {
+      stack.push_back({ia, b.right});
+      stack.push_back({ia, ib + 1});
+    }
+  }
+  return pairs;
+}
+
+void TriangleTree::for_each_overlapping(const Box& box,
+                                        const std::function<void(std::uint32_t)>& visit) const {
+  if (nodes_.empty()) return;
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    const std::uint32_t index = stack.back();
+    stack.pop_back();
+    if (!overlap(n.box, box)) continue;
+    if (is_leaf(n)) {
+      for (std::uint32_t i = n.begin; i < n.end; ++i)
+        if (overlap(boxes_[order_[i]], box)) visit(order_[i]);
+    } else {
+      stack.push_back(n.right);
+      stack.push_back(index + 1);
+    }
+  }
+}
+
+void TriangleTree::for_each_on_ray(const Vec3& p, const Vec3& d,
+                                   const std::function<bool(std::uint32_t)>& visit) const {
+  if (nodes_.empty()) return;
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const std::uint32_t index = stack.back();
+    const Node& n = nodes_[index];
+    stack.pop_back();
+    if (!ray_meets_box(p, d, n.box)) continue;
+    if (is_leaf(n)) {
+      for (std::uint32_t i = n.begin; i < n.end; ++i)
+        if (ray_meets_box(p, d, boxes_[order_[i]]) && visit(order_[i])) return;
+    } else {
+      stack.push_back(n.right);
+      stack.push_back(index + 1);
+    }
+  }
+}
+
+}  // namespace cvms::detail
