@@ -5,6 +5,8 @@
 // random exact points and on boundary points, intersects with every kind of
 // operand, squared distance with its witnesses and pieces; concurrent
 // queries on copies (the hierarchy is built once, by whichever comes first).
+#include "cvms/convex_union.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -13,7 +15,6 @@
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
-#include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/shapes.hpp"
@@ -55,7 +56,8 @@ TEST(ConvexUnionQueries, TwoUnitCubesThreeApartAreNineApartSquared) {
 
 TEST(ConvexUnionQueries, LShapeHandChecked) {
   // [0,3]x[0,1]x[0,1] and [0,1]x[0,1]x[1,3]: (2, 0, 2) is in the notch.
-  const ConvexUnion l(std::vector<ConvexPolyhedron>{shapes::box(v(0, 0, 0), v(3, 1, 1)), shapes::box(v(0, 0, 1), v(1, 1, 3))});
+  const ConvexUnion l(std::vector<ConvexPolyhedron>{shapes::box(v(0, 0, 0), v(3, 1, 1)),
+                                                    shapes::box(v(0, 0, 1), v(1, 1, 3))});
   EXPECT_TRUE(l.contains(v(0, 0, 0)));
   EXPECT_TRUE(l.contains(v(1, 1, 3)));
   EXPECT_TRUE(l.contains(Vec3{Rational(1), Rational(1, 2), Rational(2)}));
@@ -133,7 +135,8 @@ TEST(ConvexUnionQueries, LowerDimensionalOperandsAgreeWithBruteForce) {
   std::mt19937_64 rng(77);
   for (int k = 0; k < 40; ++k) {
     SCOPED_TRACE("draw " + std::to_string(k));
-    const Vec3 p = random_exact_point(rng, 14), q = random_exact_point(rng, 14), r = random_exact_point(rng, 14);
+    const Vec3 p = random_exact_point(rng, 14), q = random_exact_point(rng, 14),
+               r = random_exact_point(rng, 14);
     std::vector<ConvexSet> sets{ConvexSet::point(p)};
     if (p != q) sets.push_back(ConvexSet::segment(p, q));
     const std::vector<Vec3> triangle{p, q, r};

@@ -60,12 +60,25 @@ void expect_tight(const Rational& q) {
 }
 
 TEST(OutwardBox, RoundingIsOutwardAndTight) {
-  std::vector<Rational> values{0, 1, -1, Rational(1, 3), Rational(-1, 3), Rational(1, 10), Rational(2, 3),
-                               power_of_ten(400), -power_of_ten(400), power_of_ten(-400), -power_of_ten(-400),
-                               power_of_ten(-320), Rational(DBL_MAX), -Rational(DBL_MAX), Rational(DBL_MIN)};
+  std::vector<Rational> values{0,
+                               1,
+                               -1,
+                               Rational(1, 3),
+                               Rational(-1, 3),
+                               Rational(1, 10),
+                               Rational(2, 3),
+                               power_of_ten(400),
+                               -power_of_ten(400),
+                               power_of_ten(-400),
+                               -power_of_ten(-400),
+                               power_of_ten(-320),
+                               Rational(DBL_MAX),
+                               -Rational(DBL_MAX),
+                               Rational(DBL_MIN)};
   std::mt19937_64 rng(11);
   for (int k = 0; k < 500; ++k) {
-    values.push_back(Rational(static_cast<long>(rng() >> 1) - (1L << 62), static_cast<long>(rng() % 1000003 + 1)));
+    values.push_back(
+        Rational(static_cast<long>(rng() >> 1) - (1L << 62), static_cast<long>(rng() % 1000003 + 1)));
   }
   for (Rational& q : values) {
     q.canonicalize();

@@ -25,7 +25,8 @@ Vec3 v(long x, long y, long z) { return {Rational(x), Rational(y), Rational(z)};
 
 // Two boxes forming an L (in the xz plane), a cube and a tetrahedron.
 ConvexUnion l_shape() {
-  return ConvexUnion(std::vector<ConvexPolyhedron>{shapes::box(v(0, 0, 0), v(3, 1, 1)), shapes::box(v(0, 0, 1), v(1, 1, 3))});
+  return ConvexUnion(std::vector<ConvexPolyhedron>{shapes::box(v(0, 0, 0), v(3, 1, 1)),
+                                                   shapes::box(v(0, 0, 1), v(1, 1, 3))});
 }
 ConvexUnion cube_and_tetrahedron() {
   return ConvexUnion(std::vector<ConvexPolyhedron>{shapes::cube(), shapes::tetrahedron()});
@@ -40,7 +41,8 @@ std::string check_against_chms(const ConvexUnion& a, const ConvexUnion& b, const
       if (vertex_set(piece) != vertex_set(chms(a.pieces()[i], b.pieces()[j]))) {
         return "piece (" + std::to_string(i) + ", " + std::to_string(j) + ") differs from chms";
       }
-      if (!piece.is_convex()) return "piece (" + std::to_string(i) + ", " + std::to_string(j) + ") not convex";
+      if (!piece.is_convex())
+        return "piece (" + std::to_string(i) + ", " + std::to_string(j) + ") not convex";
     }
   }
   return "";
@@ -80,7 +82,8 @@ TEST(UnionSum, HandMadePiecesMatchChmsForEveryAlgorithm) {
 TEST(UnionSum, LShapePlusCubeIsAnLShapeGrown) {
   // [0,3]x[0,1]x[0,1] + [-1,1]^3 = [-1,4]x[-1,2]x[-1,2]; the upright box
   // grows to [-1,2]x[-1,2]x[0,4]: points of the sum, and one just outside.
-  const ConvexUnion sum = minkowski_sum(l_shape(), ConvexUnion(std::vector<ConvexPolyhedron>{shapes::cube()}));
+  const ConvexUnion sum =
+      minkowski_sum(l_shape(), ConvexUnion(std::vector<ConvexPolyhedron>{shapes::cube()}));
   ASSERT_EQ(sum.size(), 2U);
   EXPECT_TRUE(sum.contains(v(4, 2, 2)));
   EXPECT_TRUE(sum.contains(v(2, 2, 4)));
@@ -151,7 +154,8 @@ TEST(UnionSum, TheTotalIsLimitedAtTheFirstPairThatPassesIt) {
     Options options = with_threads(threads);
     options.limits.max_output_facets = 13;
     const std::string message = error_of(a, b, options);
-    EXPECT_NE(message.find("up to pair (2, 0) has 18 facets"), std::string::npos) << threads << ": " << message;
+    EXPECT_NE(message.find("up to pair (2, 0) has 18 facets"), std::string::npos)
+        << threads << ": " << message;
     options.limits.max_output_facets = 18;
     EXPECT_EQ(error_of(a, b, options), "");
   }

@@ -26,8 +26,8 @@ namespace cvms {
 
 /// A distance between a union and another set.
 struct UnionDistance {
-  DistanceResult distance;   ///< squared distance and witnesses (0 and a common point if they meet)
-  std::size_t piece = 0;     ///< the piece of this union that attains it
+  DistanceResult distance;      ///< squared distance and witnesses (0 and a common point if they meet)
+  std::size_t piece = 0;        ///< the piece of this union that attains it
   std::size_t other_piece = 0;  ///< the other union's piece (0 when the other is convex)
 };
 

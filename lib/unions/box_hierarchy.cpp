@@ -33,8 +33,8 @@ double extent(const OutwardBox& box) {
 BoxHierarchy::BoxHierarchy(std::span<const OutwardBox> boxes) {
   if (boxes.empty()) return;
   if (boxes.size() >= (std::size_t{1} << 31)) {
-    throw Error(ErrorCategory::limit,
-                "ConvexUnion: " + std::to_string(boxes.size()) + " pieces, beyond the 2^31 - 1 a union indexes");
+    throw Error(ErrorCategory::limit, "ConvexUnion: " + std::to_string(boxes.size()) +
+                                          " pieces, beyond the 2^31 - 1 a union indexes");
   }
   std::vector<std::uint32_t> pieces(boxes.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) pieces[i] = static_cast<std::uint32_t>(i);
@@ -75,7 +75,8 @@ std::uint32_t BoxHierarchy::build(std::span<const OutwardBox> boxes, std::span<s
   return static_cast<std::uint32_t>(nodes_.size() - 1);
 }
 
-bool BoxHierarchy::for_each_overlapping(const OutwardBox& query, const std::function<bool(std::size_t)>& visit) const {
+bool BoxHierarchy::for_each_overlapping(const OutwardBox& query,
+                                        const std::function<bool(std::size_t)>& visit) const {
   if (empty()) return false;
   std::vector<std::uint32_t> stack{root_};
   while (!stack.empty()) {
@@ -92,8 +93,8 @@ bool BoxHierarchy::for_each_overlapping(const OutwardBox& query, const std::func
   return false;
 }
 
-bool BoxHierarchy::for_each_overlapping_pair(const BoxHierarchy& other,
-                                             const std::function<bool(std::size_t, std::size_t)>& visit) const {
+bool BoxHierarchy::for_each_overlapping_pair(
+    const BoxHierarchy& other, const std::function<bool(std::size_t, std::size_t)>& visit) const {
   if (empty() || other.empty()) return false;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{root_, other.root_}};
   while (!stack.empty()) {

@@ -54,7 +54,8 @@ class BoxHierarchy {
                      const std::function<double()>& bound_limit) const;
 
   /// The same over pairs of pieces of two hierarchies.
-  void nearest_pairs_first(const BoxHierarchy& other, const std::function<void(std::size_t, std::size_t)>& visit,
+  void nearest_pairs_first(const BoxHierarchy& other,
+                           const std::function<void(std::size_t, std::size_t)>& visit,
                            const std::function<double()>& bound_limit) const;
 
  private:

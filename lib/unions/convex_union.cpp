@@ -30,8 +30,7 @@ ConvexUnion& ConvexUnion::operator=(ConvexUnion&&) noexcept = default;
 ConvexUnion::ConvexUnion(std::vector<ConvexPolyhedron> pieces) {
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     if (pieces[i].num_vertices() == 0) {
-      throw Error(ErrorCategory::invalid_argument,
-                  "ConvexUnion: piece " + std::to_string(i) + " is empty");
+      throw Error(ErrorCategory::invalid_argument, "ConvexUnion: piece " + std::to_string(i) + " is empty");
     }
   }
   auto impl = std::make_shared<Impl>();

@@ -50,7 +50,8 @@ class Nearest {
 };
 
 [[noreturn]] void empty_operand(const char* what) {
-  throw Error(ErrorCategory::invalid_argument, std::string("ConvexUnion::squared_distance: the ") + what + " is empty");
+  throw Error(ErrorCategory::invalid_argument,
+              std::string("ConvexUnion::squared_distance: the ") + what + " is empty");
 }
 
 }  // namespace
@@ -88,7 +89,9 @@ UnionDistance ConvexUnion::squared_distance(const ConvexUnion& other) const {
   Nearest nearest;
   impl_->hierarchy().nearest_pairs_first(
       other.impl_->hierarchy(),
-      [&](std::size_t i, std::size_t j) { nearest.offer(cvms::squared_distance(pieces[i], other_pieces[j]), i, j); },
+      [&](std::size_t i, std::size_t j) {
+        nearest.offer(cvms::squared_distance(pieces[i], other_pieces[j]), i, j);
+      },
       [&] { return nearest.limit(); });
   return nearest.take();
 }

@@ -3,7 +3,8 @@
 // pairwise sums: x is in (u Ai) + (u Bj) iff x = a + b with a in some Ai and
 // b in some Bj, iff x is in some Ai + Bj. Each pair is one convex sum
 // (minkowski_sum, cvms/minkowski.hpp), on one thread; the pairs are spread
-// over Options::threads threads.
+// over Options::threads threads (detail::run_on_threads, which counts the
+// workers' predicate evaluations as the caller's).
 //
 // Work sharing: threads take pair indices k = i m + j from one atomic
 // counter, in increasing order, and write each outcome to its own slot. A
@@ -26,6 +27,7 @@
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
+#include "worker.hpp"
 
 namespace cvms {
 namespace {
@@ -50,7 +52,8 @@ std::uint64_t facet_budget(const SumLimits& limits) {
 }
 
 [[noreturn]] void beyond_budget(std::uint64_t facets, const std::string& where, const SumLimits& limits) {
-  const bool by_memory = limits.max_memory_bytes / SumLimits::bytes_per_output_facet < limits.max_output_facets;
+  const bool by_memory =
+      limits.max_memory_bytes / SumLimits::bytes_per_output_facet < limits.max_output_facets;
   const std::string limit =
       by_memory ? std::to_string(limits.max_memory_bytes) + " bytes (SumLimits::max_memory_bytes, at " +
                       std::to_string(SumLimits::bytes_per_output_facet) + " bytes per facet)"
@@ -64,8 +67,9 @@ std::uint64_t facet_budget(const SumLimits& limits) {
 void check_pair_count(std::size_t n, std::size_t m, const SumLimits& limits) {
   const std::uint64_t budget = facet_budget(limits);
   if (n > budget / min_piece_facets / m) {
-    throw Error(ErrorCategory::limit, "minkowski_sum of unions: " + std::to_string(n) + " x " + std::to_string(m) +
-                                          " pieces would have at least " + std::to_string(min_piece_facets) +
+    throw Error(ErrorCategory::limit, "minkowski_sum of unions: " + std::to_string(n) + " x " +
+                                          std::to_string(m) + " pieces would have at least " +
+                                          std::to_string(min_piece_facets) +
                                           " facets each, beyond the limits (SumLimits::max_output_facets, "
                                           "max_memory_bytes)");
   }
@@ -74,21 +78,20 @@ void check_pair_count(std::size_t n, std::size_t m, const SumLimits& limits) {
 class PairSums {
  public:
   PairSums(std::span<const ConvexPolyhedron> a, std::span<const ConvexPolyhedron> b, const Options& options)
-      : a_(a), b_(b), options_(options), budget_(facet_budget(options.limits)), outcomes_(a.size() * b.size()) {}
+      : a_(a),
+        b_(b),
+        options_(options),
+        budget_(facet_budget(options.limits)),
+        outcomes_(a.size() * b.size()) {}
 
   void run() {
     const unsigned cores = std::thread::hardware_concurrency();
     unsigned threads = std::max(1U, options_.threads);
     if (cores != 0) threads = std::min(threads, cores);
     if (threads > outcomes_.size()) threads = static_cast<unsigned>(outcomes_.size());
-    std::vector<std::jthread> workers;
-    try {
-      for (unsigned t = 1; t < threads; ++t) workers.emplace_back([this] { work(); });
-    } catch (...) {
-      stop_.store(true);
-      throw;
-    }
-    work();
+    // Each call shares the pairs through the counter, so any number of
+    // threads started gives the same outcome.
+    detail::run_on_threads(threads, [this](unsigned) { work(); });
   }
 
   // The pieces in pair order, or the first failure in pair order.
@@ -98,7 +101,8 @@ class PairSums {
     for (std::size_t k = 0; k < taken; ++k) {
       if (outcomes_[k].error) rethrow_named(outcomes_[k].error, k);
       facets += outcomes_[k].sum.num_facets();
-      if (facets > budget_) beyond_budget(facets, "the union up to " + pair_name(k, b_.size()), options_.limits);
+      if (facets > budget_)
+        beyond_budget(facets, "the union up to " + pair_name(k, b_.size()), options_.limits);
     }
     if (options_.diagnostics != nullptr) *options_.diagnostics = summed_diagnostics();
     std::vector<ConvexPolyhedron> pieces;
@@ -163,8 +167,10 @@ class PairSums {
 }  // namespace
 
 ConvexUnion minkowski_sum(const ConvexUnion& a, const ConvexUnion& b, const Options& options) {
-  if (a.empty()) throw Error(ErrorCategory::invalid_argument, "minkowski_sum of unions: operand A has no pieces");
-  if (b.empty()) throw Error(ErrorCategory::invalid_argument, "minkowski_sum of unions: operand B has no pieces");
+  if (a.empty())
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum of unions: operand A has no pieces");
+  if (b.empty())
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum of unions: operand B has no pieces");
   check_pair_count(a.size(), b.size(), options.limits);
   PairSums sums(a.pieces(), b.pieces(), options);
   sums.run();

@@ -25,7 +25,8 @@ std::int64_t uniform(std::mt19937_64& rng, std::int64_t lo, std::int64_t hi) {
 }  // namespace
 
 bool union_contains_brute_force(const ConvexUnion& u, const Vec3& p) {
-  return std::ranges::any_of(u.pieces(), [&](const ConvexPolyhedron& piece) { return piece_contains(piece, p); });
+  return std::ranges::any_of(u.pieces(),
+                             [&](const ConvexPolyhedron& piece) { return piece_contains(piece, p); });
 }
 
 BruteNearest nearest_brute_force(const ConvexUnion& u, const ConvexUnion& other) {
