@@ -45,9 +45,13 @@ class ConvexUnion {
   /// The empty union.
   ConvexUnion();
   ~ConvexUnion();
+  /// Copies share the immutable pieces (cheap).
   ConvexUnion(const ConvexUnion&);
+  /// Moves leave the source empty.
   ConvexUnion(ConvexUnion&&) noexcept;
+  /// Copies share the immutable pieces (cheap).
   ConvexUnion& operator=(const ConvexUnion&);
+  /// Moves leave the source empty.
   ConvexUnion& operator=(ConvexUnion&&) noexcept;
 
   /// The union of these pieces, in this order.
@@ -71,8 +75,11 @@ class ConvexUnion {
   /// boxes meet the other's. An empty union meets nothing.
   /// \throw Error(invalid_argument) if the other convex set is empty.
   [[nodiscard]] bool intersects(const ConvexPolyhedron& other) const;
+  /// As above, for a polyhedron placed by a rigid motion.
   [[nodiscard]] bool intersects(const PlacedPolyhedron& other) const;
+  /// As above, for a convex set of any dimension.
   [[nodiscard]] bool intersects(const ConvexSet& other) const;
+  /// As above, for another union: whether any two pieces meet.
   [[nodiscard]] bool intersects(const ConvexUnion& other) const;
 
   /// The exact squared distance to the other set and its witnesses: the
@@ -83,7 +90,9 @@ class ConvexUnion {
   /// their box distance, until that bound exceeds the best exact value.
   /// \throw Error(invalid_argument) if either set is empty.
   [[nodiscard]] UnionDistance squared_distance(const ConvexPolyhedron& other) const;
+  /// As above, for a convex set of any dimension.
   [[nodiscard]] UnionDistance squared_distance(const ConvexSet& other) const;
+  /// As above, for another union (both hierarchies pruned together).
   [[nodiscard]] UnionDistance squared_distance(const ConvexUnion& other) const;
 
  private:

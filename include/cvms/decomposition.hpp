@@ -22,7 +22,7 @@ struct DecompositionLimits {
 
 /// How to decompose.
 struct DecompositionOptions {
-  DecompositionLimits limits;
+  DecompositionLimits limits;  ///< bounds on pieces and working memory
 };
 
 /// Interior-disjoint convex polyhedra whose union is the solid, exactly; few

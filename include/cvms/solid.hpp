@@ -54,9 +54,13 @@ class Solid {
   /// The empty solid.
   Solid();
   ~Solid();
+  /// Copies share the immutable validated solid (cheap).
   Solid(const Solid&);
+  /// Moves leave the source empty.
   Solid(Solid&&) noexcept;
+  /// Copies share the immutable validated solid (cheap).
   Solid& operator=(const Solid&);
+  /// Moves leave the source empty.
   Solid& operator=(Solid&&) noexcept;
 
   /// Validates a soup exactly (see the file comment). Points that no face
