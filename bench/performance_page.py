@@ -309,9 +309,13 @@ PAIR_LABELS = {
 
 
 def pieces_rows(path):
-    """{kind: {name: {threads: (ms, entry)}}} from the rows "BM_<kind>/<name>[/<threads>]"."""
+    """{kind: {name: {threads: (ms, entry)}}} from the rows "BM_<kind>/<name>[/<threads>]": the one-thread
+    rows in CPU time (steadier on a shared machine), the two-thread rows in wall time (their CPU time is
+    the calling thread's alone)."""
     out = {}
-    for key, value in bench_json.rows(path, "real_time", "min").items():
+    timed = dict(bench_json.rows(path, "real_time", "min"))
+    timed.update(bench_json.rows(path, "cpu_time", "min"))
+    for key, value in timed.items():
         parts = key.split("/")
         threads = int(parts[2]) if len(parts) == 3 else 1
         out.setdefault(parts[0], {}).setdefault(parts[1], {})[threads] = value
@@ -325,10 +329,10 @@ def pieces_section(page, path):
     decompositions = rows.get("BM_Decompose", {})
     sums, peers = rows.get("BM_SumPieces", {}), rows.get("BM_QhullPairs", {})
     page.add("## Non-convex solids", "")
-    page.para(run_line(path, "real_time", "min", " Every row is read in wall time (the two-thread rows' CPU time "
-                       "counts the calling thread only)."))
-    page.para("`cvms_pieces_bench` (reproduce with the command below). `convex_decomposition` cuts the "
-              "solid by its own facet planes (facets on reflex edges first) into convex cells and merges "
+    page.para(run_line(path, "cpu_time", "min", " The two-thread columns are wall time (their CPU time counts "
+                       "the calling thread only)."))
+    page.para("`cvms_pieces_bench`, reproduced by the command below. `convex_decomposition` cuts the solid by "
+              "its own facet planes (planes of facets on reflex edges first) into convex cells and merges "
               "neighbouring cells whose union is convex; the piece count drives every later step. The solids "
               "are the files of `test/data/solids`: spot.obj (CC0, the real mesh) and the small non-convex "
               "fixtures.")
@@ -347,25 +351,41 @@ def pieces_section(page, path):
               "The rows time that pairwise step alone, from the decompositions above. The peer is the "
               "floating-point hull-of-pairs sum: qhull's hull of the pairwise vertex sums of every piece pair, "
               "from the same pieces, the sums formed exactly and rounded to doubles before the timed loop "
-              "(which favours qhull), on as many threads as the exact rows (pairs shared through an atomic "
-              "counter). qhull's facets are merged in floating point; the exact facet count is ours.")
-    lines = ["| pair | pieces | output pieces | output facets (exact / qhull) | threads | exact (ms) | qhull (ms) "
-             "| exact / qhull |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+              "(which favours qhull), on as many threads as the exact rows (the pairs shared through an atomic "
+              "counter). qhull merges facets in floating point; the exact facet count is ours. Times in ms.")
+    lines = ["| pair | pieces | output pieces | output facets (exact / qhull) | exact, 1 thread | qhull, 1 thread "
+             "| exact / qhull | exact, 2 threads | qhull, 2 threads | exact / qhull |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for name, label in PAIR_LABELS.items():
-        for threads in sorted(sums.get(name, {})):
-            ms, b = sums[name][threads]
-            peer = peers.get(name, {}).get(threads)
-            peer_facets = f"{int(peer[1]['peer_facets']):,}" if peer else "—"
-            lines.append(f"| {label} | {int(b['pieces_A']):,} × {int(b['pieces_B']):,} | {int(b['out_pieces']):,} "
-                         f"| {int(b['out_facets']):,} / {peer_facets} | {threads} | {fmt_ms(ms)} "
-                         f"| {fmt_ms(peer[0]) if peer else '—'} | {f'{ms / peer[0]:.2f}' if peer else '—'} |")
+        if 1 not in sums.get(name, {}):
+            continue
+        ms, b = sums[name][1]
+        cells = [label, f"{int(b['pieces_A']):,} × {int(b['pieces_B']):,}", f"{int(b['out_pieces']):,}"]
+        peer = peers.get(name, {}).get(1)
+        cells.append(f"{int(b['out_facets']):,} / " + (f"{int(peer[1]['peer_facets']):,}" if peer else "—"))
+        for threads in (1, 2):
+            ours, theirs = sums[name].get(threads), peers.get(name, {}).get(threads)
+            cells += [fmt_ms(ours[0]) if ours else "—", fmt_ms(theirs[0]) if theirs else "—",
+                      f"{ours[0] / theirs[0]:.2f}" if ours and theirs else "—"]
+        lines.append("| " + " | ".join(cells) + " |")
     page.block(lines)
+    load = bench_json.context(path).get("load_avg")
+    if load and load[0] > 2:
+        page.para(f"This run shared the machine with other jobs (load average {load[0]:.1f} on 2 CPUs when it "
+                  "started): the one-thread columns are CPU time, which such sharing inflates far less, but the "
+                  "two-thread columns are wall time, and with both cores busy elsewhere they measure the sharing "
+                  "more than the threads. Compare the exact and qhull columns of one thread count, not the two "
+                  "thread counts.")
     spot = decompositions.get("spot", {}).get(1)
     ball = sums.get("spot+icosphere", {}).get(1)
     if spot and ball:
-        page.para(f"For spot the decomposition dominates the whole sum: {fmt_ms(spot[0])} ms to decompose "
+        page.para(f"On spot the decomposition dominates the whole sum: {fmt_ms(spot[0])} ms to decompose "
                   f"against {fmt_ms(ball[0])} ms for the {int(ball[1]['out_pieces']):,} pairwise sums with the "
-                  "icosphere. A solid decomposed once can be summed with many operands.")
+                  "icosphere (both on one thread); a solid decomposed once can be summed with many operands. "
+                  "Its time is spread over the auto-partition (choosing each splitting plane, cutting cells and "
+                  "boundary fragments) and the merge (exact hulls and volumes of candidate unions): exact "
+                  "rational arithmetic with its gcd normalisation, the conversions of rational coordinates to "
+                  "the predicates' floating-point filters, and the allocations of exact numbers.")
 
 
 def decimal_section(page, path):

@@ -58,20 +58,11 @@ void sum_pieces(benchmark::State& state, const cvms_bench::SumPair& pair, unsign
   state.counters["out_facets"] = total_facets(sum);
 }
 
-// The two-thread rows are timed in wall time (their CPU time would count the
-// calling thread only; the name gets "/real_time"); the others report both.
 const bool registered = [] {
   for (const char* name : cvms_bench::kDecomposedSolids)
     benchmark::RegisterBenchmark((std::string("BM_Decompose/") + name).c_str(), decompose, name)
         ->Unit(benchmark::kMillisecond);
-  for (const cvms_bench::SumPair& pair : cvms_bench::kSumPairs)
-    for (unsigned threads : {1U, 2U}) {
-      auto* row = benchmark::RegisterBenchmark(
-          (std::string("BM_SumPieces/") + pair.name + "/" + std::to_string(threads)).c_str(), sum_pieces, pair,
-          threads);
-      row->Unit(benchmark::kMillisecond);
-      if (threads > 1) row->UseRealTime();
-    }
+  cvms_bench::register_pair_rows("BM_SumPieces", sum_pieces);
   return true;
 }();
 

@@ -3,6 +3,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
@@ -61,6 +62,16 @@ const cvms::ConvexUnion& bench_pieces(std::string_view name) {
 
 void remember_pieces(std::string_view name, const cvms::ConvexUnion& pieces) {
   decompositions().insert_or_assign(std::string(name), pieces);
+}
+
+void register_pair_rows(const char* prefix, PairRow row) {
+  for (const SumPair& pair : kSumPairs)
+    for (unsigned threads : {1U, 2U}) {
+      const std::string name = std::string(prefix) + "/" + pair.name + "/" + std::to_string(threads);
+      auto* registered = benchmark::RegisterBenchmark(name.c_str(), row, pair, threads);
+      registered->Unit(benchmark::kMillisecond);
+      if (threads > 1) registered->UseRealTime();
+    }
 }
 
 }  // namespace cvms_bench

@@ -8,6 +8,8 @@
 /// process and shared) and the pairs that are summed.
 #pragma once
 
+#include <benchmark/benchmark.h>
+
 #include <array>
 #include <string_view>
 
@@ -49,5 +51,13 @@ const cvms::ConvexUnion& bench_pieces(std::string_view name);
 
 /// Stores a decomposition a row computed, so later rows reuse it.
 void remember_pieces(std::string_view name, const cvms::ConvexUnion& pieces);
+
+/// A row of a summed pair on a number of threads.
+using PairRow = void (*)(benchmark::State&, const SumPair&, unsigned threads);
+
+/// Registers "<prefix>/<pair>/<threads>" for every pair of kSumPairs on 1
+/// and 2 threads, in ms; the two-thread rows in wall time (their CPU time
+/// would count the calling thread only; the name gets "/real_time").
+void register_pair_rows(const char* prefix, PairRow row);
 
 }  // namespace cvms_bench

@@ -13,7 +13,6 @@
 #ifdef CVMS_BENCH_HAVE_QHULL
 
 #include <atomic>
-#include <string>
 #include <thread>
 #include <vector>
 
@@ -80,14 +79,7 @@ void qhull_pairs(benchmark::State& state, const cvms_bench::SumPair& pair, unsig
 }
 
 const bool registered = [] {
-  for (const cvms_bench::SumPair& pair : cvms_bench::kSumPairs)
-    for (unsigned threads : {1U, 2U}) {
-      auto* row = benchmark::RegisterBenchmark(
-          (std::string("BM_QhullPairs/") + pair.name + "/" + std::to_string(threads)).c_str(), qhull_pairs, pair,
-          threads);
-      row->Unit(benchmark::kMillisecond);
-      if (threads > 1) row->UseRealTime();  // as the exact rows
-    }
+  cvms_bench::register_pair_rows("BM_QhullPairs", qhull_pairs);
   return true;
 }();
 
