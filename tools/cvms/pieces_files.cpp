@@ -85,7 +85,8 @@ ConvexUnion read_union_operand(const std::string& path, const DecompositionOptio
 void rethrow_explaining_non_convex(const Error& convex_error, const std::string& path, std::string_view hint) {
   const bool shape_error =
       convex_error.category() == ErrorCategory::not_convex || convex_error.category() == ErrorCategory::topology;
-  if (!shape_error || is_std_stream(path)) throw convex_error;
+  const bool mesh_file = !is_std_stream(path) && check_mesh_path(path).empty() && !is_cdd_points_path(path);
+  if (!shape_error || !mesh_file) throw convex_error;
   std::string what;
   if (is_pieces_path(path)) {
     what = "a pieces file of " + std::to_string(read_pieces(std::filesystem::path(path), read_limits()).size()) +
