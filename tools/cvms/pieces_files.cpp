@@ -70,7 +70,11 @@ bool spans_space(const PolygonSoup& soup) {
 
 ConvexUnion read_union_operand(const std::string& path, const DecompositionOptions& options) {
   if (is_pieces_path(path)) return read_pieces(std::filesystem::path(path), read_limits());
-  const Solid solid = solid_from_soup(read_soup(path), input_name(path));
+  return decompose_soup(read_soup(path), path, options);
+}
+
+ConvexUnion decompose_soup(PolygonSoup soup, const std::string& path, const DecompositionOptions& options) {
+  const Solid solid = solid_from_soup(std::move(soup), input_name(path));
   try {
     return convex_decomposition(solid, options);
   } catch (const Error& e) {

@@ -40,6 +40,10 @@ bool spans_space(const PolygonSoup& soup);
 /// Errors name the file; a decomposition limit names its option.
 ConvexUnion read_union_operand(const std::string& path, const DecompositionOptions& options);
 
+/// The soup read from `path`, validated as a solid and decomposed; errors
+/// as read_union_operand.
+ConvexUnion decompose_soup(PolygonSoup soup, const std::string& path, const DecompositionOptions& options);
+
 /// For a command that takes convex sets only: when `convex_error` (from
 /// reading `path` as a convex set) is a topology or convexity error and the
 /// file is a pieces file or a valid solid, throws Error(not_convex)
