@@ -44,11 +44,13 @@ ConvexUnion read_union_operand(const std::string& path, const DecompositionOptio
 /// as read_union_operand.
 ConvexUnion decompose_soup(PolygonSoup soup, const std::string& path, const DecompositionOptions& options);
 
-/// For a command that takes convex sets only: when `convex_error` (from
-/// reading `path` as a convex set) is a topology or convexity error and the
-/// file is a pieces file or a valid solid, throws Error(not_convex)
-/// "<file>: <what it is>, not a convex set: <hint>"; otherwise rethrows
-/// `convex_error` (stdin cannot be read again).
+/// For a command that takes convex sets only, after `convex_error` (from
+/// reading `path` as a convex set): when it is a topology or convexity error
+/// and the file is a pieces file or a valid solid, throws Error(not_convex)
+/// "<file>: <what it is>, not a convex set: <hint>"; when the file spans
+/// space but is no valid solid, the solid's located defect (the more
+/// general reading); otherwise (a flat file, stdin, which cannot be read
+/// again, another error) rethrows `convex_error`.
 [[noreturn]] void rethrow_explaining_non_convex(const Error& convex_error, const std::string& path,
                                                 std::string_view hint);
 
