@@ -156,7 +156,7 @@ TEST_F(CliPieces, DecomposedPiecesAreConvexFillTheSolidAndPartitionItsVolume) {
       lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
       hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
     }
-    auto coordinate = [&](const Rational& a, const Rational& b) {
+    auto coordinate = [&](const Rational& a, const Rational& b) -> Rational {
       return a + (b - a) * Rational(static_cast<long>(rng() % 71), 70);
     };
     for (int k = 0; k < 200; ++k) {
