@@ -40,8 +40,8 @@ std::uint64_t total_facets(const ConvexUnion& u) {
 
 void add_pieces_options(CLI::App& command, PiecesOptions& pieces) {
   command.add_flag("--pieces", pieces.enabled,
-                   "operands may be solids that are not convex, or pieces files; write the pairwise sums of "
-                   "their convex pieces as one OBJ object each");
+                   "operands may be non-convex solids or pieces files: write the pairwise sums of their convex "
+                   "pieces (OBJ)");
   add_decomposition_limit_options(command, pieces.decomposition.limits);
 }
 

@@ -106,7 +106,7 @@ void register_check(CLI::App& app, Commands& commands) {
   auto input = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   CLI::App* command =
-      app.add_subcommand("check", "validate a convex set (print its dimension, V E F and facet degrees) or a solid (shells, volume, pieces)");
+      app.add_subcommand("check", "validate a convex set (dimension, V E F, facet degrees) or a solid (shells, volume, pieces)");
   command->add_option("F", *input, "the file")->required()->check(mesh_path());
   command->add_flag("--json", *json, "one JSON object: the same facts, exact numbers as strings beside their doubles");
   commands.push_back({command, [input, json] { run_check(*input, *json, std::cout); }});

@@ -79,8 +79,8 @@ void run_distance(const DistanceArgs& args, std::ostream& out) {
 
 void register_distance(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<DistanceArgs>();
-  CLI::App* command = app.add_subcommand(
-      "distance", "exact squared distance of A and B, with witness points (solids and pieces files too)");
+  CLI::App* command =
+      app.add_subcommand("distance", "exact squared distance of A and B, with witness points (also solids, pieces files)");
   add_operands(*command, args->a, args->b);
   command->add_flag("--json", args->json, "one JSON object: exact numbers as strings beside their nearest doubles");
   commands.push_back({command, [args] { run_distance(*args, std::cout); }});
