@@ -30,24 +30,13 @@
 #include "cvms/solid.hpp"
 #include "cvms/union_io.hpp"
 #include "support/cli_runner.hpp"
+#include "support/union_oracle.hpp"
 
 namespace cvms {
 namespace {
 
 std::string solid_path(const std::string& name) {
   return (std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids" / (name + ".off")).string();
-}
-
-bool lexicographic_less(const Vec3& a, const Vec3& b) {
-  if (a.x != b.x) return a.x < b.x;
-  if (a.y != b.y) return a.y < b.y;
-  return a.z < b.z;
-}
-
-std::vector<Vec3> sorted_vertices(const ConvexPolyhedron& p) {
-  std::vector<Vec3> points(p.mesh().positions().begin(), p.mesh().positions().end());
-  std::sort(points.begin(), points.end(), lexicographic_less);
-  return points;
 }
 
 // Each facet of the piece as a point on it and an outward normal from its
@@ -83,19 +72,6 @@ bool convex_by_planes(const ConvexPolyhedron& p) {
       if (dot(facet_planes[f].normal, soup.points[i] - facet_planes[f].point) != 0) return false;
   }
   return true;
-}
-
-// The divergence theorem: the signed volumes of the tetrahedra (0, a, b, c)
-// over a fan of every facet, counterclockwise from outside.
-Rational volume_by_tetrahedra(const ConvexPolyhedron& p) {
-  const PolygonSoup soup = p.to_soup();
-  Rational six_volume = 0;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    auto face = soup.face(f);
-    for (std::size_t k = 1; k + 1 < face.size(); ++k)
-      six_volume += dot(soup.points[face[0]], cross(soup.points[face[k]], soup.points[face[k + 1]]));
-  }
-  return six_volume / 6;
 }
 
 class CliPieces : public test::CliTest {
@@ -144,7 +120,7 @@ TEST_F(CliPieces, DecomposedPiecesAreConvexFillTheSolidAndPartitionItsVolume) {
     Rational total = 0;
     for (const ConvexPolyhedron& piece : pieces.pieces()) {
       EXPECT_TRUE(convex_by_planes(piece));
-      total += volume_by_tetrahedra(piece);
+      total += test::volume_by_tetrahedra(piece);
     }
     EXPECT_EQ(total, solid.volume());
     // Random exact points of the bounding box (steps of 1/7 of it).
@@ -179,7 +155,7 @@ void expect_pairwise_hulls(const ConvexUnion& a, const ConvexUnion& b, const Con
     std::vector<Vec3> sums;
     for (const Vec3& p : a.pieces()[k / b.size()].mesh().positions())
       for (const Vec3& q : b.pieces()[k % b.size()].mesh().positions()) sums.push_back(p + place(q));
-    EXPECT_EQ(sorted_vertices(sum.pieces()[k]), sorted_vertices(convex_hull(sums))) << "piece " << k;
+    EXPECT_EQ(test::vertex_set(sum.pieces()[k]), test::vertex_set(convex_hull(sums))) << "piece " << k;
     EXPECT_TRUE(convex_by_planes(sum.pieces()[k])) << "piece " << k;
   }
 }

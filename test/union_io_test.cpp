@@ -18,6 +18,7 @@
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
 #include "support/io_expect.hpp"
+#include "support/union_oracle.hpp"
 
 namespace cvms {
 namespace {
@@ -25,16 +26,6 @@ namespace {
 using test::throws_error;
 
 Vec3 v(long x, long y, long z) { return {Rational(x), Rational(y), Rational(z)}; }
-
-std::vector<Vec3> sorted_vertices(const ConvexPolyhedron& p) {
-  std::vector<Vec3> points(p.mesh().positions().begin(), p.mesh().positions().end());
-  std::sort(points.begin(), points.end(), [](const Vec3& a, const Vec3& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    return a.z < b.z;
-  });
-  return points;
-}
 
 ConvexUnion two_pieces() {
   const Rational third(1, 3);
@@ -88,7 +79,7 @@ TEST(UnionIo, ExactRoundTripGivesTheSamePieces) {
   const ConvexUnion back = read_text(written(u));
   ASSERT_EQ(back.size(), u.size());
   for (std::size_t i = 0; i < u.size(); ++i) {
-    EXPECT_EQ(sorted_vertices(back.pieces()[i]), sorted_vertices(u.pieces()[i])) << "piece " << i;
+    EXPECT_EQ(test::vertex_set(back.pieces()[i]), test::vertex_set(u.pieces()[i])) << "piece " << i;
     EXPECT_EQ(back.pieces()[i].num_facets(), u.pieces()[i].num_facets()) << "piece " << i;
   }
 }
@@ -104,7 +95,7 @@ TEST(UnionIo, FileWithoutObjectsIsOnePiece) {
   write_obj(out, shapes::cube().to_soup());
   const ConvexUnion u = read_text(out.str());
   ASSERT_EQ(u.size(), 1u);
-  EXPECT_EQ(sorted_vertices(u.pieces()[0]), sorted_vertices(shapes::cube()));
+  EXPECT_EQ(test::vertex_set(u.pieces()[0]), test::vertex_set(shapes::cube()));
 }
 
 TEST(UnionIo, FilesOnDiskRoundTripAndFailedWritesKeepTheFile) {
@@ -143,7 +134,7 @@ TEST(UnionIo, HandWrittenFileReadsAsTwoCubes) {
   const std::string text = std::string("o a\n") + cube_vertices + cube_faces(1) + "o b\n" + cube_faces(1);
   const ConvexUnion u = read_text(text);
   ASSERT_EQ(u.size(), 2u);  // the same cube twice: pieces may overlap
-  EXPECT_EQ(sorted_vertices(u.pieces()[1]), sorted_vertices(shapes::box(v(0, 0, 0), v(1, 1, 1))));
+  EXPECT_EQ(test::vertex_set(u.pieces()[1]), test::vertex_set(shapes::box(v(0, 0, 0), v(1, 1, 1))));
 }
 
 TEST(UnionIo, BadFilesGetLocatedErrors) {

@@ -2,7 +2,6 @@
 // The fuzz targets of the non-convex paths (fuzz_targets.hpp): the pieces
 // reader and the solid reader. Each accepted input is checked against what
 // the library promises, with the test's own exact arithmetic where it can.
-#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +11,7 @@
 #include "cvms/solid.hpp"
 #include "cvms/union_io.hpp"
 #include "support/fuzz_targets.hpp"
+#include "support/union_oracle.hpp"
 
 namespace cvms::fuzz {
 namespace {
@@ -20,28 +20,6 @@ namespace {
 
 std::string text_of(std::span<const std::uint8_t> data) {
   return std::string(reinterpret_cast<const char*>(data.data()), data.size());
-}
-
-std::vector<Vec3> sorted_vertices(const ConvexPolyhedron& p) {
-  std::vector<Vec3> points(p.mesh().positions().begin(), p.mesh().positions().end());
-  std::sort(points.begin(), points.end(), [](const Vec3& a, const Vec3& b) {
-    if (a.x != b.x) return a.x < b.x;
-    if (a.y != b.y) return a.y < b.y;
-    return a.z < b.z;
-  });
-  return points;
-}
-
-// Six times the volume by the divergence theorem over fans of the facets.
-Rational six_volume(const ConvexPolyhedron& p) {
-  const PolygonSoup soup = p.to_soup();
-  Rational sum = 0;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    auto face = soup.face(f);
-    for (std::size_t k = 1; k + 1 < face.size(); ++k)
-      sum += dot(soup.points[face[0]], cross(soup.points[face[k]], soup.points[face[k + 1]]));
-  }
-  return sum;
 }
 
 }  // namespace
@@ -56,7 +34,7 @@ void read_pieces_target(std::span<const std::uint8_t> data) {
   }
   if (pieces.empty()) finding("read_pieces: accepted a file without pieces");
   for (const ConvexPolyhedron& piece : pieces.pieces())
-    if (!piece.is_convex() || six_volume(piece) <= 0) finding("read_pieces: a piece is not a convex body");
+    if (!piece.is_convex() || test::volume_by_tetrahedra(piece) <= 0) finding("read_pieces: a piece is not a convex body");
   std::ostringstream out;
   write_pieces(out, pieces);
   std::istringstream back(out.str());
@@ -68,7 +46,7 @@ void read_pieces_target(std::span<const std::uint8_t> data) {
   }
   if (again.size() != pieces.size()) finding("read_pieces: write + read changed the number of pieces");
   for (std::size_t i = 0; i < pieces.size(); ++i)
-    if (sorted_vertices(again.pieces()[i]) != sorted_vertices(pieces.pieces()[i]))
+    if (test::vertex_set(again.pieces()[i]) != test::vertex_set(pieces.pieces()[i]))
       finding("read_pieces: write + read changed piece " + std::to_string(i));
 }
 
@@ -91,8 +69,8 @@ void read_solid_target(std::span<const std::uint8_t> data) {
     finding(std::string("read_solid: a valid solid does not decompose: ") + e.what());
   }
   Rational total = 0;
-  for (const ConvexPolyhedron& piece : pieces.pieces()) total += six_volume(piece);
-  if (total != 6 * solid.volume()) finding("read_solid: the pieces' volumes do not sum to the solid's");
+  for (const ConvexPolyhedron& piece : pieces.pieces()) total += test::volume_by_tetrahedra(piece);
+  if (total != solid.volume()) finding("read_solid: the pieces' volumes do not sum to the solid's");
 }
 
 }  // namespace cvms::fuzz
