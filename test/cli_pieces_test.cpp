@@ -11,7 +11,8 @@
 //    pairwise vertex sums of the operands' pieces i and j, (i, j) = (k / m,
 //    k % m), also with the operand B placed by --negate-b --translate-b;
 //  - `check` on a valid non-convex solid (hand-checked counts and volume),
-//    on an invalid one, and on a convex one (its report unchanged);
+//    on an invalid one, on a pieces file (two boxes of 8 vertices and 6
+//    facets), and on a convex one (its report unchanged);
 //  - `distance` against the minimum over pieces of the convex distance;
 //  - bad pieces files, limits and the convex-only commands' refusals.
 #include <gtest/gtest.h>
@@ -221,6 +222,9 @@ TEST_F(CliPieces, CheckReportsAValidNonConvexSolid) {
   EXPECT_NE(o.out.find("shells 2, cavities 1, genus 0\n"), std::string::npos) << o.out;
   expect_failure("check " + solid_path("open_box"), "open_box.off: open surface: edge (4, 5)");
   expect_failure("check " + solid_path("overlapping_cubes"), "intersect (self-intersecting surface)");
+  ok("decompose " + solid_path("l_block") + " -o l.obj");
+  o = ok("check l.obj");
+  EXPECT_EQ(o.out, "l.obj: pieces file\nconvex pieces 2\nV 16, F 12 (over all pieces)\n");
   o = ok("check " + solid_path("decimal_box"));
   EXPECT_NE(o.out.find(": convex polyhedron\ndimension 3\n"), std::string::npos) << o.out;
 }

@@ -5,13 +5,16 @@
 // solid instead (convex or not, several shells, cavities, holes): a valid
 // one is reported with the piece count of its convex decomposition
 // (solid_report.hpp), an invalid one fails with the solid's located defect.
+// A pieces file (pieces_files.hpp) is reported as its pieces.
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
+#include "cvms/union_io.hpp"
 #include "files.hpp"
 #include "json.hpp"
 #include "keep_until_exit.hpp"
@@ -59,12 +62,35 @@ void report_json(const std::string& name, const ConvexSet& set, std::size_t inpu
       .end();
 }
 
+// A pieces file: each piece validated as a convex polyhedron by read_pieces.
+void check_pieces(const std::string& input, bool json, std::ostream& report) {
+  const ConvexUnion pieces = read_pieces(std::filesystem::path(input), read_limits());
+  std::int64_t vertices = 0, facets = 0;
+  for (const ConvexPolyhedron& piece : pieces.pieces()) {
+    vertices += static_cast<std::int64_t>(piece.num_vertices());
+    facets += static_cast<std::int64_t>(piece.num_facets());
+  }
+  if (json) {
+    JsonObject(report)
+        .text("file", input_name(input))
+        .text("kind", "pieces")
+        .integer("pieces", static_cast<std::int64_t>(pieces.size()))
+        .integer("vertices", vertices)
+        .integer("facets", facets)
+        .end();
+    return;
+  }
+  report << printable(input_name(input)) << ": pieces file\nconvex pieces " << pieces.size() << "\nV " << vertices
+         << ", F " << facets << " (over all pieces)\n";
+}
+
 // The input as a solid, after it failed as a convex set with `convex_error`
 // (which stays the answer for a file that cannot be a solid).
 void check_solid(const std::string& input, const Error& convex_error, PolygonSoup soup, bool json,
                  std::ostream& report) {
   if (convex_error.category() != ErrorCategory::not_convex && convex_error.category() != ErrorCategory::topology)
     throw convex_error;
+  if (is_pieces_path(input)) return check_pieces(input, json, report);
   if (!is_std_stream(input)) soup = read_soup(input);
   if (!spans_space(soup)) throw convex_error;
   const Solid solid = solid_from_soup(std::move(soup), input_name(input));

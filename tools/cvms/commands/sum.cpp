@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `cvms sum A B [C ...]`: the Minkowski sum of convex sets of any dimension.
 // Two polyhedra go through minkowski_sum; flat operands, or more than two,
-// through the sum of convex sets.
+// through the sum of convex sets. With --pieces, operands that need not be
+// convex go through pieces_sum.hpp.
 #include <algorithm>
 #include <chrono>
 #include <iostream>
