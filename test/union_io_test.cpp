@@ -161,6 +161,8 @@ TEST(UnionIo, BadFilesGetLocatedErrors) {
   EXPECT_TRUE(throws_error([&] { (void)read_text(""); }, ErrorCategory::parse, {"pieces.obj: empty input"}));
   EXPECT_TRUE(throws_error([&] { (void)read_text("o only\nv 0 0 0\n"); }, ErrorCategory::parse,
                            {"pieces.obj:1: piece 1 ('only') has no faces"}));
+  EXPECT_TRUE(throws_error([&] { (void)read_text("o " + std::string(100, 'n') + "\nv 0 0 0\n"); },
+                           ErrorCategory::parse, {"piece 1 ('" + std::string(64, 'n') + "...') has no faces"}));
   ReadLimits small;
   small.max_bytes = 64;
   EXPECT_TRUE(throws_error([&] { (void)read_text(good, small); }, ErrorCategory::limit, {"pieces.obj"}));

@@ -44,9 +44,13 @@ PolygonSoup piece_soup(const PolygonSoup& file, std::size_t first, std::size_t l
   return piece;
 }
 
+// "<source>:<line>: piece N ('<name>')", a long name cut short: it may be
+// as long as a line.
 std::string piece_name(std::string_view source, const io_detail::ObjObject& object, std::size_t number) {
+  constexpr std::size_t longest = 64;
+  const std::string name = object.name.size() > longest ? object.name.substr(0, longest) + "..." : object.name;
   return std::string(source) + ":" + std::to_string(object.line) + ": piece " + std::to_string(number) + " ('" +
-         object.name + "')";
+         name + "')";
 }
 
 ConvexPolyhedron read_piece(const PolygonSoup& file, std::size_t first, std::size_t last,
