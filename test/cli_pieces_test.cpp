@@ -253,6 +253,25 @@ TEST_F(CliPieces, DistanceOfSolidsAndPiecesFilesIsTheMinimumOverPieces) {
   expect_failure("penetration cube.off " + solid_path("l_block"), "a solid with 1 reflex edge, not a convex set");
 }
 
+TEST_F(CliPieces, DecomposeToStdoutReportsOnStderrAndJson) {
+  ok("decompose " + solid_path("star_prism") + " -o star.obj");
+  test::CliOutcome o = ok("decompose " + solid_path("star_prism"));
+  EXPECT_EQ(o.out, read("star.obj"));
+  EXPECT_NE(o.err.find("convex pieces 5\ntime: "), std::string::npos) << o.err;
+  o = ok("decompose --json " + solid_path("star_prism") + " -o star2.obj");
+  for (const char* member : {"\"kind\": \"solid\"", "\"reflex_edges\": 4", "\"volume\": \"32\"", "\"pieces\": 5",
+                             "\"time_ms\": "})
+    EXPECT_NE(o.out.find(member), std::string::npos) << member << "\n" << o.out;
+  EXPECT_EQ(read("star2.obj"), read("star.obj"));
+  // Rounded coordinates (the star's are small integers, so unchanged) read back as pieces too.
+  ok("decompose --float " + solid_path("star_prism") + " -o star_float.obj");
+  ASSERT_EQ(read_pieces(at("star_float.obj")).size(), 5u);
+  // Stdin is OFF.
+  o = run("decompose - -o stdin.obj < " + solid_path("l_block"));
+  EXPECT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(read_pieces(at("stdin.obj")).size(), 2u);
+}
+
 TEST_F(CliPieces, BadPiecesFilesGetLocatedErrors) {
   const std::string cube_vertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
   const std::string cube_faces = "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
