@@ -263,7 +263,7 @@ TEST_F(CliPieces, DecomposeToStdoutReportsOnStderrAndJson) {
                              "\"time_ms\": "})
     EXPECT_NE(o.out.find(member), std::string::npos) << member << "\n" << o.out;
   EXPECT_EQ(read("star2.obj"), read("star.obj"));
-  // Rounded coordinates (the star's are small integers, so unchanged) read back as pieces too.
+  // The rounded file reads back as five convex pieces (its decimals are short).
   ok("decompose --float " + solid_path("star_prism") + " -o star_float.obj");
   ASSERT_EQ(read_pieces(at("star_float.obj")).size(), 5u);
   // Stdin is OFF.
