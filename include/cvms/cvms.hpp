@@ -41,4 +41,5 @@
 #include "cvms/shapes.hpp"
 #include "cvms/sign.hpp"
 #include "cvms/solid.hpp"
+#include "cvms/union_io.hpp"
 #include "cvms/vec.hpp"

@@ -39,6 +39,11 @@ PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, c
 
 PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limits) {
   FileFormat format = format_from_extension(path);
+  std::ifstream in = io_detail::open_input_file(path);
+  return read(in, format, path.string(), limits);
+}
+
+std::ifstream io_detail::open_input_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw Error(ErrorCategory::io, "cannot read '" + path.string() + "': it is a directory");
@@ -50,7 +55,7 @@ PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limit
                 "cannot open '" + path.string() + "'" +
                     (error != 0 ? ": " + std::generic_category().message(error) : std::string()));
   }
-  return read(in, format, path.string(), limits);
+  return in;
 }
 
 std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits) {
@@ -115,23 +120,20 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
   }
 }
 
-// The polyhedron's own points with its faces' index lists (made into
-// `faces`, which the view reads): no copy of an exact coordinate, and for
-// the text formats no Rational of a packed one (a sum's output).
-io_detail::SoupView polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces) {
+void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
+                              Coordinates coordinates) {
+  detail::FaceLists faces;
+  write_view_to_file(path, io_detail::polyhedron_view(p, format, faces), format, coordinates);
+}
+
+}  // namespace
+
+io_detail::SoupView io_detail::polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces) {
   faces = detail::face_lists(p.mesh());
   if (const detail::DyadicPoints* packed = MeshAccess::packed_positions(p.mesh()); packed != nullptr && format != FileFormat::stl)
     return {{}, faces.offsets, faces.indices, packed};
   return {p.mesh().positions(), faces.offsets, faces.indices};
 }
-
-void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                              Coordinates coordinates) {
-  detail::FaceLists faces;
-  write_view_to_file(path, polyhedron_view(p, format, faces), format, coordinates);
-}
-
-}  // namespace
 
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {
   write_view(out, io_detail::SoupView::of(soup), format, coordinates);
@@ -139,7 +141,7 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
 
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
   detail::FaceLists faces;
-  write_view(out, polyhedron_view(p, format, faces), format, coordinates);
+  write_view(out, io_detail::polyhedron_view(p, format, faces), format, coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,

@@ -54,7 +54,7 @@ std::optional<std::int64_t> parse_face_vertex(std::string_view token, std::strin
 
 }  // namespace
 
-PolygonSoup parse_obj(LineReader& reader) {
+PolygonSoup parse_obj(LineReader& reader, std::vector<ObjObject>* objects) {
   PolygonSoup soup;
   PointBuffer points;
   // Positive indices may refer to vertices defined further down; the largest
@@ -125,6 +125,8 @@ PolygonSoup parse_obj(LineReader& reader) {
         reader.fail(name() + " has " + std::to_string(face.size()) + " vertices, at least 3 are needed");
       check_face_limit(reader, f + 1, soup.face_indices.size() + face.size());
       soup.add_face(face);
+    } else if (keyword == "o" && objects != nullptr) {
+      objects->push_back({reader.line_number(), soup.num_faces(), std::string(tokens.next())});
     } else if (is_ignored_statement(keyword)) {
       continue;
     } else if (is_free_form_statement(keyword)) {

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <istream>
 #include <optional>
 #include <string>
@@ -244,10 +246,23 @@ inline std::size_t safe_reserve(std::uint64_t declared) {
 /// Parsers that continue on a LineReader (so that read_points can look at the
 /// first line before choosing one).
 PolygonSoup parse_off(LineReader& reader);
-PolygonSoup parse_obj(LineReader& reader);
+/// An OBJ object: an `o` statement, and the faces that follow it up to the
+/// next one.
+struct ObjObject {
+  std::uint64_t line = 0;        ///< of the `o` statement (1-based)
+  std::uint64_t first_face = 0;  ///< index of its first face in the soup
+  std::string name;              ///< the first token after `o`, may be empty
+};
+/// When `objects` is given, each `o` statement is appended to it (else they
+/// are ignored, as the other statements that do not change the geometry).
+PolygonSoup parse_obj(LineReader& reader, std::vector<ObjObject>* objects = nullptr);
 /// True if the token is an OFF header keyword we recognise (OFF, COFF, NOFF,
 /// STOFF, ... and the unsupported 4OFF/nOFF, which parse_off rejects).
 bool is_off_keyword(std::string_view token);
+
+/// Opens a file for reading, binary. \throw Error(io) naming it (and the
+/// system's reason) if it cannot be opened or is a directory.
+std::ifstream open_input_file(const std::filesystem::path& path);
 
 /// Validation for writers: every face has >= min_size indices, each < points.size().
 void check_soup_for_writing(const SoupView& soup, std::size_t min_size);

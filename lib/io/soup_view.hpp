@@ -13,6 +13,7 @@
 #include "cvms/io.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "dyadic_points.hpp"
+#include "face_lists.hpp"
 
 namespace cvms::io_detail {
 
@@ -37,6 +38,11 @@ struct SoupView {
     return face_indices.subspan(face_offsets[f], face_offsets[f + 1] - face_offsets[f]);
   }
 };
+
+/// The polyhedron's own points with its faces' index lists (made into
+/// `faces`, which the view reads): no copy of an exact coordinate, and for
+/// the text formats no Rational of a packed one (a sum's output).
+SoupView polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces);
 
 /// The writers behind write_off, write_obj and write_stl.
 void write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);

@@ -526,12 +526,14 @@ Target target_by_name(const std::string& name) {
   if (name == "sets") return &sets_target;
   if (name == "read_halfspaces") return &read_halfspaces_target;
   if (name == "halfspaces") return &halfspaces_target;
+  if (name == "read_pieces") return &read_pieces_target;
+  if (name == "read_solid") return &read_solid_target;
   return nullptr;
 }
 
 std::vector<std::string> target_names() {
   return {"read_off",  "read_obj", "read_stl",        "read_points", "from_soup",
-          "minkowski", "sets",     "read_halfspaces", "halfspaces"};
+          "minkowski", "sets",     "read_halfspaces", "halfspaces",  "read_pieces", "read_solid"};
 }
 
 }  // namespace cvms::fuzz

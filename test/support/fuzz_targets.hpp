@@ -78,8 +78,20 @@ void read_halfspaces_target(std::span<const std::uint8_t> data);
 /// brute-force intersection of the set's translates with (A ⊖ B) ⊕ B ⊆ A.
 void halfspaces_target(std::span<const std::uint8_t> data);
 
+/// The pieces reader (fuzz_solid_targets.cpp): OBJ text within
+/// fuzz_limits(). Every accepted piece is convex with positive volume, and
+/// write_pieces then read_pieces gives the same pieces (vertex sets).
+void read_pieces_target(std::span<const std::uint8_t> data);
+
+/// OFF text validated as a solid (Solid::from_soup). An accepted solid has
+/// positive volume and is convex exactly when it has one shell and no
+/// reflex edge; when small, its convex pieces' volumes (divergence theorem)
+/// sum to its volume.
+void read_solid_target(std::span<const std::uint8_t> data);
+
 /// A target by name ("read_off", "read_obj", "read_stl", "read_points",
-/// "from_soup", "minkowski", "sets", "read_halfspaces", "halfspaces"); nullptr for an unknown name.
+/// "from_soup", "minkowski", "sets", "read_halfspaces", "halfspaces",
+/// "read_pieces", "read_solid"); nullptr for an unknown name.
 using Target = void (*)(std::span<const std::uint8_t>);
 Target target_by_name(const std::string& name);
 /// All target names, in a fixed order.

@@ -111,4 +111,15 @@ std::vector<Vec3> vertex_set(const ConvexPolyhedron& p) {
   return out;
 }
 
+Rational volume_by_tetrahedra(const ConvexPolyhedron& p) {
+  const PolygonSoup soup = p.to_soup();
+  Rational six_volume = 0;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    auto face = soup.face(f);
+    for (std::size_t k = 1; k + 1 < face.size(); ++k)
+      six_volume += dot(soup.points[face[0]], cross(soup.points[face[k]], soup.points[face[k + 1]]));
+  }
+  return six_volume / 6;
+}
+
 }  // namespace cvms::test

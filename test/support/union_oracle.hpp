@@ -47,4 +47,9 @@ std::vector<Vec3> boundary_points(const ConvexUnion& u);
 /// The vertex set of p, sorted.
 std::vector<Vec3> vertex_set(const ConvexPolyhedron& p);
 
+/// The volume of p by the divergence theorem: the signed volumes of the
+/// tetrahedra (0, a, b, c) over a fan of each facet, counterclockwise from
+/// outside (independent of the library's volumes).
+Rational volume_by_tetrahedra(const ConvexPolyhedron& p);
+
 }  // namespace cvms::test

@@ -37,5 +37,7 @@ void register_penetration(CLI::App& app, Commands& commands);
 void register_diff(CLI::App& app, Commands& commands);
 /// The minimal half-spaces of a convex set.
 void register_halfspaces(CLI::App& app, Commands& commands);
+/// A solid cut into convex pieces, written as a pieces file.
+void register_decompose(CLI::App& app, Commands& commands);
 
 }  // namespace cvms::cli

@@ -47,6 +47,7 @@ cvms::cli::Commands register_commands(CLI::App& app) {
   register_penetration(app, commands);
   register_diff(app, commands);
   register_halfspaces(app, commands);
+  register_decompose(app, commands);
   return commands;
 }
 

@@ -8,6 +8,7 @@
 #include "cvms/error.hpp"
 #include "cvms/proximity.hpp"
 #include "files.hpp"
+#include "pieces_files.hpp"
 #include "set_files.hpp"
 #include "usage_error.hpp"
 
@@ -29,11 +30,32 @@ ConvexSet read_operand(const std::string& path) {
 
 }  // namespace
 
-Operands read_operands(const std::string& a, const std::string& b) {
+Operands read_operands(const std::string& a, const std::string& b, std::string_view non_convex_hint) {
   if (a == "-" && b == "-") throw UsageError("only one input can be read from stdin");
-  ConvexSet first = read_operand(a);
-  ConvexSet second = read_operand(b);
+  auto read = [non_convex_hint](const std::string& path) {
+    try {
+      return read_operand(path);
+    } catch (const Error& e) {
+      if (non_convex_hint.empty()) throw;
+      rethrow_explaining_non_convex(e, path, non_convex_hint);
+    }
+  };
+  ConvexSet first = read(a);
+  ConvexSet second = read(b);
   return {std::move(first), std::move(second)};
+}
+
+AnyOperand read_any_operand(const std::string& path) {
+  if (is_pieces_path(path)) return {ConvexSet(), read_union_operand(path, {})};
+  try {
+    return {read_operand(path), ConvexUnion()};
+  } catch (const Error& e) {
+    const bool shape_error = e.category() == ErrorCategory::not_convex || e.category() == ErrorCategory::topology;
+    if (!shape_error || is_std_stream(path) || !check_mesh_path(path).empty() || is_cdd_points_path(path)) throw;
+    PolygonSoup soup = read_soup(path);
+    if (!spans_space(soup)) throw;
+    return {ConvexSet(), decompose_soup(std::move(soup), path, {})};
+  }
 }
 
 void print_square_and_root(std::ostream& out, const char* name, const char* rounded_name, const Rational& square) {

@@ -6,13 +6,16 @@
 // the shortest form that reads back to it. The operands are read as convex
 // sets of any dimension (as `cvms sum` reads them), so a flat OBJ, a segment
 // or a point is a valid operand; proximity.hpp says what a flat A + (-B)
-// means for the penetration.
+// means for the penetration. `cvms distance` also takes solids that are not
+// convex and pieces files, as unions of convex pieces.
 #pragma once
 
 #include <iosfwd>
 #include <string>
+#include <string_view>
 
 #include "cvms/convex_set.hpp"
+#include "cvms/convex_union.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
 
@@ -23,7 +26,18 @@ namespace cvms::cli {
 struct Operands {
   ConvexSet a, b;
 };
-Operands read_operands(const std::string& a, const std::string& b);
+/// With a `non_convex_hint`, an operand that is a solid but not convex, or
+/// a pieces file, is refused with that hint (pieces_files.hpp).
+Operands read_operands(const std::string& a, const std::string& b, std::string_view non_convex_hint = {});
+
+/// One operand as a convex set (read_operands' check for the empty set), or
+/// when the file holds none, as the convex pieces of a pieces file or of a
+/// solid (pieces_files.hpp); `set` is then empty.
+struct AnyOperand {
+  ConvexSet set;
+  ConvexUnion pieces;
+};
+AnyOperand read_any_operand(const std::string& path);
 
 /// "<name> <exact value>" and "<rounded name> <nearest double of its square root>".
 void print_square_and_root(std::ostream& out, const char* name, const char* rounded_name, const Rational& square);

@@ -1,20 +1,28 @@
 // SPDX-License-Identifier: MIT
 // `cvms check F`: validates a convex set and prints its dimension, V E F and
 // facet degree histogram (for a polyhedron; for a flat set its kind, V and
-// plane).
+// plane). A file that is not a convex set but spans space is validated as a
+// solid instead (convex or not, several shells, cavities, holes): a valid
+// one is reported with the piece count of its convex decomposition
+// (solid_report.hpp), an invalid one fails with the solid's located defect.
+// A pieces file (pieces_files.hpp) is reported as its pieces.
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "commands.hpp"
+#include "cvms/union_io.hpp"
 #include "files.hpp"
 #include "json.hpp"
 #include "keep_until_exit.hpp"
 #include "options.hpp"
+#include "pieces_files.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
+#include "solid_report.hpp"
 
 namespace cvms::cli {
 namespace {
@@ -54,11 +62,61 @@ void report_json(const std::string& name, const ConvexSet& set, std::size_t inpu
       .end();
 }
 
+// A pieces file: each piece validated as a convex polyhedron by read_pieces.
+void check_pieces(const std::string& input, bool json, std::ostream& report) {
+  const ConvexUnion pieces = read_pieces(std::filesystem::path(input), read_limits());
+  std::int64_t vertices = 0, facets = 0;
+  for (const ConvexPolyhedron& piece : pieces.pieces()) {
+    vertices += static_cast<std::int64_t>(piece.num_vertices());
+    facets += static_cast<std::int64_t>(piece.num_facets());
+  }
+  if (json) {
+    JsonObject(report)
+        .text("file", input_name(input))
+        .text("kind", "pieces")
+        .integer("pieces", static_cast<std::int64_t>(pieces.size()))
+        .integer("vertices", vertices)
+        .integer("facets", facets)
+        .end();
+    return;
+  }
+  report << printable(input_name(input)) << ": pieces file\nconvex pieces " << pieces.size() << "\nV " << vertices
+         << ", F " << facets << " (over all pieces)\n";
+}
+
+// The input as a solid, after it failed as a convex set with `convex_error`
+// (which stays the answer for a file that cannot be a solid).
+void check_solid(const std::string& input, const Error& convex_error, PolygonSoup soup, bool json,
+                 std::ostream& report) {
+  if (convex_error.category() != ErrorCategory::not_convex && convex_error.category() != ErrorCategory::topology)
+    throw convex_error;
+  if (is_pieces_path(input)) return check_pieces(input, json, report);
+  if (!is_std_stream(input)) soup = read_soup(input);
+  if (!spans_space(soup)) throw convex_error;
+  const Solid solid = solid_from_soup(std::move(soup), input_name(input));
+  ConvexUnion pieces;
+  try {
+    pieces = convex_decomposition(solid);
+  } catch (const Error& e) {
+    rethrow_with_pieces_limit_hint(e);
+  }
+  if (!json) return report_solid(input_name(input), solid, pieces.size(), report);
+  JsonObject o(report);
+  add_solid_members(o, input_name(input), solid, pieces.size());
+  o.end();
+}
+
 void run_check(const std::string& input, bool json, std::ostream& report) {
   PolygonSoup soup = read_soup(input);
   const std::size_t input_points = soup.points.size();
   const std::size_t input_faces = soup.num_faces();
-  ConvexSet set = set_from_soup(std::move(soup), input_name(input));
+  PolygonSoup kept = is_std_stream(input) ? soup : PolygonSoup{};  // stdin cannot be read again
+  ConvexSet set;
+  try {
+    set = set_from_soup(std::move(soup), input_name(input));
+  } catch (const Error& e) {
+    return check_solid(input, e, std::move(kept), json, report);
+  }
   if (json) {
     report_json(input_name(input), set, input_points, input_faces, report);
     return keep_until_exit(std::move(set));
@@ -74,7 +132,7 @@ void register_check(CLI::App& app, Commands& commands) {
   auto input = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
   CLI::App* command =
-      app.add_subcommand("check", "validate a convex set, print its dimension, V E F and facet degrees");
+      app.add_subcommand("check", "validate a convex set (dimension, V E F, facet degrees) or a solid (shells, volume, pieces)");
   command->add_option("F", *input, "the file")->required()->check(mesh_path());
   command->add_flag("--json", *json, "one JSON object: the same facts, exact numbers as strings beside their doubles");
   commands.push_back({command, [input, json] { run_check(*input, *json, std::cout); }});

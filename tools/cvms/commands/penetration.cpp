@@ -21,7 +21,8 @@ struct PenetrationArgs {
 };
 
 void run_penetration(const PenetrationArgs& args, std::ostream& out) {
-  const Operands operands = read_operands(args.a, args.b);
+  const Operands operands =
+      read_operands(args.a, args.b, "the penetration depth is computed for convex sets only (cvms distance takes it)");
   const PenetrationResult p = penetration(operands.a, operands.b);
   if (args.json) {
     JsonObject(out)

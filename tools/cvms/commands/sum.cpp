@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // `cvms sum A B [C ...]`: the Minkowski sum of convex sets of any dimension.
 // Two polyhedra go through minkowski_sum; flat operands, or more than two,
-// through the sum of convex sets.
+// through the sum of convex sets. With --pieces, operands that need not be
+// convex go through pieces_sum.hpp.
 #include <algorithm>
 #include <chrono>
 #include <iostream>
@@ -17,6 +18,8 @@
 #include "keep_until_exit.hpp"
 #include "machine_memory.hpp"
 #include "options.hpp"
+#include "pieces_files.hpp"
+#include "pieces_sum.hpp"
 #include "placement.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
@@ -37,6 +40,7 @@ struct SumArgs {
   bool stats = false;
   SumLimits limits;  ///< --max-facets, --max-memory
   Placement place_a, place_b;  ///< --rotate-a, --translate-b, --negate-b, ...
+  PiecesOptions pieces;  ///< --pieces (pieces_sum.hpp)
 
   [[nodiscard]] Options options() const {
     Options options;
@@ -99,14 +103,25 @@ void sum_sets(const std::vector<ConvexSet>& operands, const SumArgs& args, std::
 std::vector<ConvexSet> read_operands(const SumArgs& args) {
   std::vector<ConvexSet> sets;
   sets.reserve(2 + args.more.size());
-  sets.push_back(read_set(args.a));
-  sets.push_back(read_set(args.b));
-  for (const std::string& path : args.more) sets.push_back(read_set(path));
+  auto read = [](const std::string& path) {
+    try {
+      return read_set(path);
+    } catch (const Error& e) {
+      rethrow_explaining_non_convex(e, path, "pass --pieces to sum it as a union of convex pieces");
+    }
+  };
+  sets.push_back(read(args.a));
+  sets.push_back(read(args.b));
+  for (const std::string& path : args.more) sets.push_back(read(path));
   return sets;
 }
 
 // With stats, the counts, the time and the algorithm's statistics go to report.
 void run_sum(const SumArgs& args, std::ostream& report) {
+  if (args.pieces.enabled)
+    return run_pieces_sum({args.a, args.b, args.output, args.format, !args.more.empty(), args.options(),
+                           args.pieces.decomposition, args.place_a, args.place_b, args.float_output, args.stats},
+                          report);
   if (args.a == "-" && args.b == "-") throw UsageError("only one input can be read from stdin");
   check_output(args.output, args.format);
   if (std::count(args.more.begin(), args.more.end(), "-") + (args.a == "-") + (args.b == "-") > 1)
@@ -142,6 +157,7 @@ void register_sum(CLI::App& app, Commands& commands) {
   add_sum_limit_options(*command, args->limits);
   add_placement_options(*command, args->place_a, "a");
   add_placement_options(*command, args->place_b, "b");
+  add_pieces_options(*command, args->pieces);
   commands.push_back({command, [args] { run_sum(*args, args->output == "-" ? std::cerr : std::cout); }});
 }
 
