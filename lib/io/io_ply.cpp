@@ -55,7 +55,6 @@ class RecordWalk {
     }
     values_.finish();
     soup_.points = points.take();
-    if (soup_.face_offsets.empty()) soup_.face_offsets.push_back(0);
     return std::move(soup_);
   }
 
@@ -83,8 +82,7 @@ class RecordWalk {
   }
 
   void read_faces(const PlyElement& e) {
-    soup_.face_offsets.reserve(safe_reserve(e.count) + 1);
-    soup_.face_offsets.push_back(0);
+    soup_.face_offsets.reserve(safe_reserve(e.count) + 1);  // after the leading 0 of an empty soup
     soup_.face_indices.reserve(safe_reserve(e.count) * 3);
     for (std::uint64_t f = 0; f < e.count; ++f) {
       for (const PlyProperty& q : e.properties) {
@@ -100,6 +98,10 @@ class RecordWalk {
   void read_face(const PlyProperty& q, std::uint64_t f) {
     const std::uint64_t n = values_.count(q.count_type, {"index list", "face", f});
     if (n < 3) values_.fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices, at least 3 are needed");
+    // More corners than vertices repeat one: refused before the list is read.
+    if (n > header_.vertices)
+      values_.fail("face " + std::to_string(f) + " lists " + std::to_string(n) + " vertices, more than the " +
+                   std::to_string(header_.vertices) + " vertices of the input");
     if (soup_.face_indices.size() + n > std::numeric_limits<std::uint32_t>::max())
       values_.fail("face " + std::to_string(f) + " brings the face indices beyond 2^32-1 in total",
                    ErrorCategory::limit);

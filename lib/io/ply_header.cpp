@@ -49,7 +49,10 @@ class HeaderLines {
     char c = 0;
     for (;;) {
       if (bytes_.read(&c, 1) == 0) {
-        if (line_.empty()) return false;
+        if (line_.empty()) {
+          reading_ = false;
+          return false;
+        }
         break;
       }
       if (bytes_.consumed() > limits_.max_line_bytes) fail_long();
