@@ -12,6 +12,7 @@
 #include <array>
 #include <limits>
 #include <optional>
+#include <set>
 
 namespace cvms::io_detail {
 namespace {
@@ -161,8 +162,8 @@ class HeaderParser {
     if (!tokens.at_end()) lines_.fail("unexpected " + quote(tokens.next()) + " after the element's count");
     e.count = *value;
     e.line = lines_.number();
-    for (const PlyElement& other : header_.elements)
-      if (other.name == e.name) lines_.fail("a second element " + quote(e.name));
+    if (!element_names_.insert(e.name).second) lines_.fail("a second element " + quote(e.name));
+    property_names_.clear();
     check_count(e);
     header_.elements.push_back(std::move(e));
   }
@@ -201,8 +202,8 @@ class HeaderParser {
     p.name = std::string(tokens.next());
     if (p.name.empty()) lines_.fail("'property' without a name");
     if (!tokens.at_end()) lines_.fail("unexpected " + quote(tokens.next()) + " after the property's name");
-    for (const PlyProperty& other : e.properties)
-      if (other.name == p.name) lines_.fail("element " + quote(e.name) + " has a second property " + quote(p.name));
+    if (!property_names_.insert(p.name).second)
+      lines_.fail("element " + quote(e.name) + " has a second property " + quote(p.name));
     e.properties.push_back(std::move(p));
   }
 
@@ -259,6 +260,10 @@ class HeaderParser {
   HeaderLines& lines_;
   const ReadLimits& limits_;
   PlyHeader header_;
+  // Names seen so far, in balanced trees: a header may hold millions of
+  // elements or properties, so duplicates are not searched for linearly.
+  std::set<std::string, std::less<>> element_names_;
+  std::set<std::string, std::less<>> property_names_;  // of the last element
   bool format_seen_ = false;
 };
 
