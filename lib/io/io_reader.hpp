@@ -159,6 +159,29 @@ class Tokenizer {
   bool comments_;
 };
 
+/// The tokens of a reader's lines across line breaks, without comments
+/// (ASCII STL, PLY bodies). A token stays valid until the next call.
+class TokenStream {
+ public:
+  explicit TokenStream(LineReader& reader) : reader_(reader) {}
+  /// The next token, or an empty view at the end of the input.
+  std::string_view next() {
+    for (;;) {
+      std::string_view t = tokens_.next();
+      if (!t.empty()) return t;
+      std::string_view line;
+      if (!reader_.next(line)) return {};
+      tokens_ = Tokenizer(line, false);
+    }
+  }
+  void skip_rest_of_line() noexcept { tokens_ = Tokenizer(std::string_view{}, false); }
+  [[nodiscard]] LineReader& reader() const noexcept { return reader_; }
+
+ private:
+  LineReader& reader_;
+  Tokenizer tokens_{std::string_view{}, false};
+};
+
 /// True for the spellings of NaN and infinity that C and common exporters
 /// produce ("nan", "-nan(ind)", "inf", "+Infinity", "1.#INF", "1.#IND",
 /// "1.#QNAN", ...).

@@ -62,28 +62,18 @@ std::int64_t as_integer(std::uint64_t bits, PlyType type) noexcept {
 
 // ---- ASCII ----
 
-std::string_view AsciiValues::next() {
-  for (;;) {
-    std::string_view t = tokens_.next();
-    if (!t.empty()) return t;
-    std::string_view line;
-    if (!reader_.next(line)) return {};
-    tokens_ = Tokenizer(line, false);
-  }
-}
-
 void AsciiValues::number(PlyType type, const ValueName& name, Rational& out) {
-  const std::string_view token = next();
+  const std::string_view token = tokens_.next();
   parse_number(reader_, token, name, out);
   if (!ply_is_integer(type)) return;
   const bool integral = out.get_den() == 1 && out.get_num().fits_slong_p();
   if (!integral || !in_range(out.get_num().get_si(), type)) fail(not_of_type(name.str(), token, type));
 }
 
-void AsciiValues::skip(PlyType, const ValueName& name) { check_number(reader_, next(), name, true); }
+void AsciiValues::skip(PlyType, const ValueName& name) { check_number(reader_, tokens_.next(), name, true); }
 
 std::uint64_t AsciiValues::count(PlyType type, const ValueName& name) {
-  const std::string_view token = next();
+  const std::string_view token = tokens_.next();
   if (token.empty()) fail("unexpected end of input: missing the count of " + name.str());
   const std::optional<std::uint64_t> value = parse_unsigned(token);
   if (!value) fail("the count of " + name.str() + " " + quote(token) + " is not a non-negative integer");
@@ -93,7 +83,7 @@ std::uint64_t AsciiValues::count(PlyType type, const ValueName& name) {
 }
 
 std::int64_t AsciiValues::integer(PlyType type, const ValueName& name) {
-  const std::string_view token = next();
+  const std::string_view token = tokens_.next();
   if (token.empty()) fail("unexpected end of input: missing " + name.str());
   const std::optional<std::int64_t> value = parse_signed(token);
   if (!value) fail(name.str() + " " + quote(token) + " is not an integer");
@@ -107,7 +97,7 @@ void AsciiValues::skip_list(const PlyProperty& p, const ValueName& name) {
 }
 
 void AsciiValues::finish() {
-  const std::string_view token = next();
+  const std::string_view token = tokens_.next();
   if (!token.empty()) fail("unexpected " + quote(token) + " after the last element the header declares");
 }
 

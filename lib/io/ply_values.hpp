@@ -20,7 +20,7 @@ namespace cvms::io_detail {
 
 class AsciiValues {
  public:
-  explicit AsciiValues(LineReader& reader) : reader_(reader) {}
+  explicit AsciiValues(LineReader& reader) : reader_(reader), tokens_(reader) {}
   /// The exact value of a number; one of an integer type must be an
   /// integer in that type's range.
   void number(PlyType type, const ValueName& name, Rational& out);
@@ -43,10 +43,8 @@ class AsciiValues {
   [[nodiscard]] static constexpr bool is_binary() noexcept { return false; }
 
  private:
-  std::string_view next();
-
   LineReader& reader_;
-  Tokenizer tokens_{std::string_view{}, false};
+  TokenStream tokens_;
 };
 
 class BinaryValues {
