@@ -298,7 +298,7 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   expect_usage("sum a.off a.off --algorithm fastest");
   expect_usage("sum a.off a.off --bogus");
   expect_usage("sum a.txt a.off");
-  expect_usage("sum a.off a.off -o out.ply");
+  expect_usage("sum a.off a.off -o out.wrl");
   expect_usage("sum - - -o x.off");
   expect_usage("gen pyramid");
   expect_usage("gen cube --subdivisions 3");
@@ -611,7 +611,7 @@ TEST_F(Cli, CddPointsRefuseRaysAndLines) {
   EXPECT_EQ(o.err, "cvms: parse: points.ext:1: this is a V-representation, expected a H-representation\n");
   o = run("check points.txt");
   EXPECT_EQ(o.code, 2);
-  EXPECT_NE(o.err.find("expected '-' or a file ending in .off, .obj, .stl or .ext"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("expected '-' or a file ending in .off, .obj, .stl, .ply or .ext"), std::string::npos) << o.err;
 }
 
 // gen takes --max-memory as sum does: a zonotope whose output is estimated
