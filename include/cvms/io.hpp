@@ -274,8 +274,9 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
                 Coordinates coordinates = Coordinates::exact);
 /// Writes a polyhedron's vertices and facets (p.to_soup()) to a file in the
 /// format of its extension, atomically (see write_file for soups); with
-/// Coordinates::exact and OFF or OBJ, read_polyhedron gives back the same
-/// polyhedron.
+/// Coordinates::exact and OFF, OBJ or PLY (whose exact writer refuses a
+/// coordinate without a finite decimal), read_polyhedron gives back the
+/// same polyhedron.
 /// \throw Error(invalid_argument) for an unknown extension, and (naming the
 ///   file) for a coordinate beyond the double range with Coordinates::double_
 ///   or beyond the float32 range in STL; an existing file is left untouched;
