@@ -710,6 +710,10 @@ TEST_F(Cli, PlyWritesExactOrDoublesAndRefusesNonDecimals) {
     EXPECT_EQ(check.code, 0) << check.err;
     EXPECT_NE(check.out.find("V 8 E 12 F 6"), std::string::npos) << check.out;
   }
+  // Points on stdin are told PLY by their first byte, binary ones too.
+  const Outcome from_stdin = run("hull - -o back.off", "cube_double.ply");
+  EXPECT_EQ(from_stdin.code, 0) << from_stdin.err;
+  EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), cube);
   const Outcome on_stdout = run("gen cube --format ply");
   EXPECT_EQ(on_stdout.out, slurp(file("cube.ply")));
   write_text("third.off", "OFF\n4 4 0\n1/3 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
