@@ -523,7 +523,7 @@ sums. Picklable (through its exact OFF text). a + b is the Minkowski sum,
         return cvms::read_convex_set(path);
       },
       py::arg("path"),
-      "Reads a convex set of any dimension from a file: .off, .obj or .stl as a mesh (a closed convex "
+      "Reads a convex set of any dimension from a file: .off, .obj, .stl or .ply as a mesh (a closed convex "
       "surface, a convex polygon, or points whose hull is taken); any other extension as a list of "
       "'x y z' points. Numbers are read exactly.");
   m.def(
@@ -533,7 +533,7 @@ sums. Picklable (through its exact OFF text). a + b is the Minkowski sum,
         cvms::write_file(path, s, as_float ? cvms::Coordinates::double_ : cvms::Coordinates::exact);
       },
       py::arg("set"), py::arg("path"), py::arg("float") = false,
-      "Writes the set to a file in the format of its extension (.off, .obj, .stl), exactly unless "
+      "Writes the set to a file in the format of its extension (.off, .obj, .stl, .ply), exactly unless "
       "float=True (then each coordinate as the shortest decimal of its nearest double). Atomic.");
 
   m.def(

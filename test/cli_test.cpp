@@ -298,7 +298,7 @@ TEST_F(Cli, UsageErrorsExitTwo) {
   expect_usage("sum a.off a.off --algorithm fastest");
   expect_usage("sum a.off a.off --bogus");
   expect_usage("sum a.txt a.off");
-  expect_usage("sum a.off a.off -o out.ply");
+  expect_usage("sum a.off a.off -o out.wrl");
   expect_usage("sum - - -o x.off");
   expect_usage("gen pyramid");
   expect_usage("gen cube --subdivisions 3");
@@ -536,7 +536,7 @@ TEST_F(Cli, EveryWrittenFormatReadsBackInEveryReader) {
     const std::vector<std::string> set_readers = {
         "check X",          "sum X square.off",   "sum square.off X solid.off", "diff X X",
         "distance X solid.off", "penetration X solid.off", "halfspaces X -o -"};
-    for (const std::string format : {"off", "obj", "stl"}) {
+    for (const std::string format : {"off", "obj", "stl", "ply"}) {
       if (format == "stl" && !solid) continue;  // STL holds no flat set as one
       ASSERT_EQ(run("hull " + base + ".off -o " + base + "_hull." + format).code, 0) << format;
     }
@@ -546,7 +546,7 @@ TEST_F(Cli, EveryWrittenFormatReadsBackInEveryReader) {
     const Outcome rows_on_stdout = run("halfspaces " + base + ".off -o -");
     ASSERT_EQ(rows_on_stdout.code, 0);
     write_text(base + "_stdout.ine", rows_on_stdout.out);
-    std::vector<std::string> copies = {base + "_hull.off", base + "_hull.obj", base + ".ext"};
+    std::vector<std::string> copies = {base + "_hull.off", base + "_hull.obj", base + "_hull.ply", base + ".ext"};
     if (solid) copies.push_back(base + "_hull.stl");
     for (const std::string& copy : copies) {
       SCOPED_TRACE(copy);
@@ -612,7 +612,7 @@ TEST_F(Cli, CddPointsRefuseRaysAndLines) {
   EXPECT_EQ(o.err, "cvms: parse: points.ext:1: this is a V-representation, expected a H-representation\n");
   o = run("check points.txt");
   EXPECT_EQ(o.code, 2);
-  EXPECT_NE(o.err.find("expected '-' or a file ending in .off, .obj, .stl or .ext"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("expected '-' or a file ending in .off, .obj, .stl, .ply or .ext"), std::string::npos) << o.err;
 }
 
 // gen takes --max-memory as sum does: a zonotope whose output is estimated
@@ -695,6 +695,38 @@ TEST_F(Cli, FailedWriteLeavesTheOldFileByteIdentical) {
     EXPECT_EQ(entry.path().filename().string().find(".cvms-"), std::string::npos) << entry.path();
 }
 
+// PLY: exact ASCII by default, binary doubles with --float, both read back
+// as the shape written; a coordinate without a finite decimal is refused
+// with the file left as it was.
+TEST_F(Cli, PlyWritesExactOrDoublesAndRefusesNonDecimals) {
+  ASSERT_EQ(run("gen cube -o cube.ply").code, 0);
+  EXPECT_EQ(slurp(file("cube.ply")).substr(0, 21), "ply\nformat ascii 1.0\n");
+  ASSERT_EQ(run("gen cube --float -o cube_double.ply").code, 0);
+  EXPECT_EQ(slurp(file("cube_double.ply")).substr(0, 36), "ply\nformat binary_little_endian 1.0\n");
+  ASSERT_EQ(run("gen cube -o cube.off").code, 0);
+  const test::SetShape cube = test::describe_set(read_convex_set(file("cube.off")));
+  for (const std::string name : {"cube.ply", "cube_double.ply"}) {
+    EXPECT_EQ(test::describe_set(read_convex_set(file(name))), cube) << name;
+    const Outcome check = run("check " + name);
+    EXPECT_EQ(check.code, 0) << check.err;
+    EXPECT_NE(check.out.find("V 8 E 12 F 6"), std::string::npos) << check.out;
+  }
+  // Points on stdin are told PLY by their first byte, binary ones too.
+  const Outcome from_stdin = run("hull - -o back.off", "cube_double.ply");
+  EXPECT_EQ(from_stdin.code, 0) << from_stdin.err;
+  EXPECT_EQ(test::describe_set(read_convex_set(file("back.off"))), cube);
+  const Outcome on_stdout = run("gen cube --format ply");
+  EXPECT_EQ(on_stdout.out, slurp(file("cube.ply")));
+  write_text("third.off", "OFF\n4 4 0\n1/3 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string before = slurp(file("cube.ply"));
+  expect_bad_input("hull third.off -o cube.ply", "cube.ply: vertex 3 has coordinate 1/3, which has no finite decimal");
+  EXPECT_EQ(slurp(file("cube.ply")), before);
+  EXPECT_EQ(run("hull third.off --float -o third.ply").code, 0);
+  write_text("lying.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"
+                          "property float x\nproperty float y\nproperty float z\nend_header\n");
+  expect_bad_input("check lying.ply", "lying.ply:3: 1000000000000 vertices exceed the limit");
+}
+
 // -o /dev/null needs no extension; --format names the format.
 TEST_F(Cli, OutputFormatFromFormatOptionOrDevice) {
   EXPECT_EQ(run("gen cube -o /dev/null").code, 0);
@@ -706,7 +738,7 @@ TEST_F(Cli, OutputFormatFromFormatOptionOrDevice) {
   Outcome stl = run("gen cube --format stl");
   EXPECT_EQ(stl.out.size(), 84u + 12 * 50);
   expect_usage("gen cube -o plain");
-  expect_usage("gen cube -o x.off --format ply");
+  expect_usage("gen cube -o x.off --format vrml");
 }
 
 // A failed write to stdout or /dev/full names the file and the reason.

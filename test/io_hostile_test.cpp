@@ -586,5 +586,33 @@ TEST(Hostile, HonestExtremeDoublesPassTheNumberCaps) {
   EXPECT_LT(c.seconds, 5.0 * slow_factor);
 }
 
+// PLY headers that lie: beyond the limits they are refused on their line;
+// at the limits (5e7 vertices, 1e8 faces) over a body of one vertex, ASCII
+// and binary, the reader ends at the body's end having reserved no more
+// than the input can hold.
+TEST(Hostile, LyingPlyHeadersFinishFastWithBoundedMemory) {
+  const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
+  const std::string faces = "element face 100000000\nproperty list uchar int vertex_indices\nend_header\n";
+  Cost beyond = measure([] {
+    EXPECT_TRUE(throws_error([] { read_file(test::data_path("bad/ply_lying_vertex_count.ply")); },
+                             ErrorCategory::limit, {"ply_lying_vertex_count.ply:3:"}));
+  });
+  Cost ascii = measure([&] {
+    std::istringstream in("ply\nformat ascii 1.0\nelement vertex 50000000\n" + xyz + faces + "0 0 0\n");
+    EXPECT_TRUE(throws_error([&] { read_ply(in, "lie.ply"); }, ErrorCategory::parse,
+                             {"lie.ply:10:", "missing x coordinate of vertex 1"}));
+  });
+  Cost binary = measure([&] {
+    std::istringstream in("ply\nformat binary_big_endian 1.0\nelement vertex 50000000\n" + xyz + faces +
+                          std::string(12, '\0'));
+    EXPECT_TRUE(throws_error([&] { read_ply(in, "lie.ply"); }, ErrorCategory::parse,
+                             {"lie.ply: byte ", "unexpected end of input in x coordinate of vertex 1"}));
+  });
+  for (const Cost& c : {beyond, ascii, binary}) {
+    EXPECT_LT(c.peak, 2 * MiB);
+    EXPECT_LT(c.seconds, 1.0 * slow_factor);
+  }
+}
+
 }  // namespace
 }  // namespace cvms

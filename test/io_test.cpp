@@ -543,7 +543,7 @@ TEST(WriteFilePolyhedron, ErrorsNameTheFile) {
   const ConvexPolyhedron cube = read_polyhedron(data_path("cube.off"));
   EXPECT_TRUE(throws_error([&] { write_file("/nonexistent_dir_cvms/p.off", cube); }, ErrorCategory::io,
                            {"/nonexistent_dir_cvms/p.off"}));
-  EXPECT_TRUE(throws_error([&] { write_file("p.ply", cube); }, ErrorCategory::invalid_argument, {"p.ply"}));
+  EXPECT_TRUE(throws_error([&] { write_file("p.wrl", cube); }, ErrorCategory::invalid_argument, {"p.wrl"}));
   TempDir dir;
   const std::filesystem::path off = dir.path / "huge.off";
   const std::filesystem::path stl = dir.path / "huge.stl";

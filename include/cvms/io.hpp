@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// \file
-/// Exact readers and writers for OFF, OBJ and STL. Readers never trust a count
+/// Exact readers and writers for OFF, OBJ, STL and PLY. Readers never trust a count
 /// in a header for allocation beyond what the input can hold, and report every
 /// malformation as Error(parse) naming the source and line (text) or byte
 /// offset (binary). Writers write exact coordinates unless asked otherwise.
@@ -69,6 +69,25 @@
 ///    the extra bytes start). Non-finite float32 coordinates are rejected; the
 ///    normals and attribute bytes are ignored. ASCII keywords are matched
 ///    case-insensitively; several solids in one file are concatenated.
+///  - PLY: a header ("ply", "format ascii|binary_little_endian|binary_big_endian
+///    1.0", comment, obj_info, element and property lines, "end_header"),
+///    then the body. Element "vertex" must have scalar properties x, y
+///    and z of any PLY type (char uchar short ushort int uint float double,
+///    or int8 ... float64); element "face", if present, a list property
+///    vertex_indices or vertex_index of an integer count and index type.
+///    Other properties (normals, colors, lists) and other elements are
+///    skipped: by size in binary, checked to be numbers in ASCII (NaN and
+///    infinity allowed there, since only coordinates are refused for
+///    them). ASCII values are tokens across lines, parsed exactly as the
+///    other readers do; an ASCII value of an integer type must be an
+///    integer in its range. A binary float or double is its exact dyadic
+///    value, NaN and infinity refused. The vertex and face counts are
+///    checked against ReadLimits on their header line; the header as a
+///    whole is bounded by ReadLimits::max_line_bytes. A list count below 3
+///    or an index outside the vertices is Error(parse); nothing may follow
+///    the last element. Messages name "<source>:<line>: ..." for the header
+///    and ASCII bodies, "<source>: byte <offset>: ..." for binary bodies,
+///    with vertices and faces 0-based.
 ///  - Memory stays within a small multiple of the input size and of
 ///    max_line_bytes: a line is buffered whole, so a single 100 MB line costs
 ///    about 100-300 MB (set max_line_bytes lower to refuse such inputs early).
@@ -130,10 +149,11 @@ struct ReadLimits {
 enum class FileFormat {
   off,  ///< Object File Format (.off), the exact format of choice
   obj,  ///< Wavefront OBJ (.obj), vertices and faces only
-  stl   ///< STL (.stl): ASCII or binary on input, binary float32 on output
+  stl,  ///< STL (.stl): ASCII or binary on input, binary float32 on output
+  ply   ///< PLY (.ply): ASCII or binary on input; ASCII exact or binary doubles on output (write_ply)
 };
 
-/// The format named by a path's extension (.off .obj .stl, any case).
+/// The format named by a path's extension (.off .obj .stl .ply, any case).
 /// \throw Error(invalid_argument) for anything else.
 FileFormat format_from_extension(const std::filesystem::path& path);
 
@@ -153,17 +173,27 @@ PolygonSoup read_obj(std::istream& in, std::string_view source, const ReadLimits
 /// Complexity: O(n log n) in the input size whatever the values (vertices
 /// merged by sorting: binary by float bits, ASCII in a balanced tree).
 PolygonSoup read_stl(std::istream& in, std::string_view source, const ReadLimits& limits = {});
-/// Dispatches to read_off, read_obj or read_stl; their errors.
+/// Reads a PLY mesh, ASCII or binary of either byte order (see the file
+/// comment); points without a face element give a soup without faces.
+/// \throw Error(parse) naming the line (header, ASCII body) or byte offset
+///   (binary body);
+/// \throw Error(limit) for a vertex or face count beyond `limits` (on its
+///   header line, before anything is allocated for it), a header longer
+///   than max_line_bytes, an input beyond max_bytes, and as read_off for
+///   ASCII numbers.
+/// Complexity: linear in the input size.
+PolygonSoup read_ply(std::istream& in, std::string_view source, const ReadLimits& limits = {});
+/// Dispatches to read_off, read_obj, read_stl or read_ply; their errors.
 PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits = {});
 /// Reads a file in the format of its extension, naming it in error messages.
 /// \throw Error(invalid_argument) for an unknown extension (format_from_extension);
 /// \throw Error(io) if it cannot be opened; the reader's errors otherwise.
 PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limits = {});
 
-/// Points only, for hulls: OFF/OBJ vertices or one "x y z" per line
+/// Points only, for hulls: OFF/OBJ/PLY vertices or one "x y z" per line
 /// ('#' comments and blank lines allowed). The format is chosen by the first
 /// token: an OFF keyword, an OBJ statement (v, vt, vn, f, o, g, s, mtllib,
-/// usemtl), or else a point list. An OFF or OBJ input is read whole (faces
+/// usemtl), a first byte 'p' (PLY, read with read_ply), or else a point list. An OFF or OBJ input is read whole (faces
 /// are checked like read_off/read_obj do, then dropped).
 /// \throw Error(parse), Error(limit) as the readers.
 std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits = {});
@@ -194,8 +224,21 @@ void write_obj(std::ostream& out, const PolygonSoup& soup, Coordinates coordinat
 /// \throw Error(invalid_argument) as write_off, and for a coordinate beyond
 ///   the float32 range; \throw Error(io) if the stream fails.
 void write_stl(std::ostream& out, const PolygonSoup& soup);
-/// Dispatches to write_off, write_obj or write_stl (which ignores
-/// `coordinates`); their errors.
+/// Writes a PLY file with element "vertex" (double x, y, z) and element
+/// "face" (a list of uchar counts, uint beyond 255 vertices, and int
+/// indices). With Coordinates::exact: ASCII, every coordinate as its exact
+/// decimal, so that read_ply gives back the same soup exactly (readers that
+/// parse to doubles get the nearest doubles); a coordinate without a finite
+/// decimal expansion (1/3: PLY has no p/q) is refused. With any other
+/// Coordinates: binary little-endian, each coordinate rounded to the
+/// nearest double, so that read_ply gives back exactly those doubles.
+/// \throw Error(invalid_argument) as write_off, and for a coordinate
+///   without a finite decimal expansion with Coordinates::exact;
+/// \throw Error(io) if the stream fails.
+/// Complexity: linear in the size of the output.
+void write_ply(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
+/// Dispatches to write_off, write_obj, write_stl (which ignores
+/// `coordinates`) or write_ply; their errors.
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a polyhedron's vertices and facets (those of p.to_soup()) to a
@@ -231,8 +274,9 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
                 Coordinates coordinates = Coordinates::exact);
 /// Writes a polyhedron's vertices and facets (p.to_soup()) to a file in the
 /// format of its extension, atomically (see write_file for soups); with
-/// Coordinates::exact and OFF or OBJ, read_polyhedron gives back the same
-/// polyhedron.
+/// Coordinates::exact and OFF, OBJ or PLY (whose exact writer refuses a
+/// coordinate without a finite decimal), read_polyhedron gives back the
+/// same polyhedron.
 /// \throw Error(invalid_argument) for an unknown extension, and (naming the
 ///   file) for a coordinate beyond the double range with Coordinates::double_
 ///   or beyond the float32 range in STL; an existing file is left untouched;

@@ -9,7 +9,10 @@
 /// with only `v` lines); the empty set as an OFF with no points (OBJ cannot
 /// hold it: an OBJ without statements is not read back). STL holds
 /// only triangles: a polygon is written fan-triangulated, a lower-dimensional
-/// set not at all. Every file written this way reads back as the same set.
+/// set not at all. PLY holds what OFF holds, as write_ply writes it (exact
+/// ASCII decimals, refused for a coordinate without a finite decimal
+/// expansion; binary doubles when rounded). Every file written this way
+/// reads back as the same set.
 #pragma once
 
 #include <filesystem>
@@ -19,7 +22,7 @@
 
 namespace cvms {
 
-/// Reads the convex set a file describes. .off, .obj and .stl (any case) are
+/// Reads the convex set a file describes. .off, .obj, .stl and .ply (any case) are
 /// read as meshes (read_file) and taken as convex_set_from_soup takes them: a
 /// closed convex surface is a polyhedron; one face, or coplanar faces tiling
 /// a convex polygon, is that polygon; points without faces go through the

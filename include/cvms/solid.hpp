@@ -125,7 +125,7 @@ class Solid {
   std::shared_ptr<const Impl> impl_;
 };
 
-/// Reads a mesh file (OFF, OBJ, STL) and validates it as a solid; every
+/// Reads a mesh file (OFF, OBJ, STL, PLY) and validates it as a solid; every
 /// error is prefixed by "<path>: ".
 /// \throw Error as read_file and Solid::from_soup.
 Solid read_solid(const std::filesystem::path& path, const ReadLimits& limits = {});

@@ -21,8 +21,9 @@ FileFormat format_from_extension(const std::filesystem::path& path) {
   if (ext == ".off") return FileFormat::off;
   if (ext == ".obj") return FileFormat::obj;
   if (ext == ".stl") return FileFormat::stl;
+  if (ext == ".ply") return FileFormat::ply;
   throw Error(ErrorCategory::invalid_argument, "cannot tell the format of '" + path.string() +
-                                                   "' from its extension (expected .off, .obj or .stl)");
+                                                   "' from its extension (expected .off, .obj, .stl or .ply)");
 }
 
 PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, const ReadLimits& limits) {
@@ -33,6 +34,8 @@ PolygonSoup read(std::istream& in, FileFormat format, std::string_view source, c
       return read_obj(in, source, limits);
     case FileFormat::stl:
       return read_stl(in, source, limits);
+    case FileFormat::ply:
+      return read_ply(in, source, limits);
   }
   throw Error(ErrorCategory::invalid_argument, "unknown file format");
 }
@@ -60,6 +63,10 @@ std::ifstream io_detail::open_input_file(const std::filesystem::path& path) {
 
 std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits) {
   using namespace io_detail;
+  // A PLY body may be binary, which the line reader refuses: a PLY is told
+  // by its first byte (no other input read here starts with 'p').
+  if (std::streambuf* buffer = in.rdbuf(); buffer != nullptr && in.good() && buffer->sgetc() == 'p')
+    return read_ply(in, source, limits).points;
   LineReader reader(in, source, limits);
   std::string_view line;
   std::string_view first;
@@ -104,6 +111,8 @@ void write_view(std::ostream& out, const io_detail::SoupView& soup, FileFormat f
       return io_detail::write_obj_view(out, soup, coordinates);
     case FileFormat::stl:
       return io_detail::write_stl_view(out, soup);
+    case FileFormat::ply:
+      return io_detail::write_ply_view(out, soup, coordinates);
   }
   throw Error(ErrorCategory::invalid_argument, "unknown file format");
 }

@@ -110,6 +110,9 @@ std::optional<std::uint64_t> ByteSource::bytes_left(std::istream& in) {
   if (buffer == nullptr || !in.good()) return std::nullopt;
   const std::streampos here = buffer->pubseekoff(0, std::ios::cur, std::ios::in);
   if (here == failed) return std::nullopt;  // a pipe or a terminal
+  // A device that seeks nowhere (/dev/zero) reports 0, from which the
+  // stream subtracts what it has buffered (a peeked byte): no size to tell.
+  if (static_cast<std::streamoff>(here) < 0) return std::nullopt;
   const std::streampos end = buffer->pubseekoff(0, std::ios::end, std::ios::in);
   if (buffer->pubseekpos(here, std::ios::in) != here) {
     in.setstate(std::ios::badbit);  // reading on from elsewhere would be wrong

@@ -38,8 +38,10 @@ std::string quote(std::string_view token);
 /// Error(limit)); a stream failure other than end of input raises Error(io).
 class ByteSource {
  public:
-  ByteSource(std::istream& in, std::string_view source, std::uint64_t max_bytes)
-      : in_(in), source_(source), max_bytes_(max_bytes) {}
+  /// `consumed` bytes of the input were read before (a PLY header): they
+  /// count towards max_bytes and the offsets.
+  ByteSource(std::istream& in, std::string_view source, std::uint64_t max_bytes, std::uint64_t consumed = 0)
+      : in_(in), source_(source), max_bytes_(max_bytes), consumed_(consumed) {}
   /// Reads up to n bytes into dst; returns how many were read (0 only at the end).
   std::size_t read(char* dst, std::size_t n);
   /// Reads everything that is left (bounded by max_bytes).
@@ -70,6 +72,19 @@ class LineReader {
  public:
   LineReader(std::istream& in, std::string_view source, const ReadLimits& limits)
       : bytes_(std::in_place, in, source, limits.max_bytes), source_(source), limits_(limits) {}
+  /// Where a reader continues a stream whose first lines were read by
+  /// another (a PLY header): line numbers and byte offsets go on from there.
+  struct Continuation {
+    std::uint64_t lines;
+    std::uint64_t bytes;
+  };
+  LineReader(std::istream& in, std::string_view source, const ReadLimits& limits, Continuation at)
+      : bytes_(std::in_place, in, source, limits.max_bytes, at.bytes),
+        source_(source),
+        limits_(limits),
+        buffer_offset_(at.bytes),
+        line_end_(at.bytes),
+        line_number_(at.lines) {}
   /// Lines of data already in memory (read through a ByteSource, so bounded).
   LineReader(std::string data, std::string_view source, const ReadLimits& limits)
       : source_(source), limits_(limits), buffer_(std::move(data)), end_(buffer_.size()), eof_(true) {}
@@ -144,6 +159,29 @@ class Tokenizer {
   void skip_space();
   std::string_view rest_;
   bool comments_;
+};
+
+/// The tokens of a reader's lines across line breaks, without comments
+/// (ASCII STL, PLY bodies). A token stays valid until the next call.
+class TokenStream {
+ public:
+  explicit TokenStream(LineReader& reader) : reader_(reader) {}
+  /// The next token, or an empty view at the end of the input.
+  std::string_view next() {
+    for (;;) {
+      std::string_view t = tokens_.next();
+      if (!t.empty()) return t;
+      std::string_view line;
+      if (!reader_.next(line)) return {};
+      tokens_ = Tokenizer(line, false);
+    }
+  }
+  void skip_rest_of_line() noexcept { tokens_ = Tokenizer(std::string_view{}, false); }
+  [[nodiscard]] LineReader& reader() const noexcept { return reader_; }
+
+ private:
+  LineReader& reader_;
+  Tokenizer tokens_{std::string_view{}, false};
 };
 
 /// True for the spellings of NaN and infinity that C and common exporters

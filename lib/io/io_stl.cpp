@@ -160,37 +160,23 @@ PolygonSoup parse_binary(const std::string& data, std::uint32_t count, std::stri
   return soup;
 }
 
-// Tokens of an ASCII STL across line breaks; a token stays valid until the next call.
-class TokenStream {
+// Tokens of an ASCII STL across line breaks, with its keywords.
+class StlTokens : public TokenStream {
  public:
-  explicit TokenStream(LineReader& reader) : reader_(reader) {}
-  std::string_view next() {
-    for (;;) {
-      std::string_view t = tokens_.next();
-      if (!t.empty()) return t;
-      std::string_view line;
-      if (!reader_.next(line)) return {};
-      tokens_ = Tokenizer(line, false);
-    }
-  }
-  void skip_rest_of_line() { tokens_ = Tokenizer(std::string_view{}, false); }
+  using TokenStream::TokenStream;
   /// Consumes `keyword`; `context` makes the rest of the message, only on failure.
   template <class Context>
   void expect(std::string_view keyword, Context&& context) {
     std::string_view t = next();
     if (!t.empty() && iequals(t, keyword)) return;
     const std::string expected = "expected '" + std::string(keyword) + "' " + context();
-    if (t.empty()) reader_.fail("unexpected end of input, " + expected);
-    reader_.fail(expected + ", found " + quote(t));
+    if (t.empty()) reader().fail("unexpected end of input, " + expected);
+    reader().fail(expected + ", found " + quote(t));
   }
-
- private:
-  LineReader& reader_;
-  Tokenizer tokens_{std::string_view{}, false};
 };
 
 PolygonSoup parse_ascii(LineReader& reader) {
-  TokenStream tokens(reader);
+  StlTokens tokens(reader);
   PolygonSoup soup;
   // A balanced tree of the distinct points (which never move in the
   // PointBuffer) in an exact order: O(log n) per vertex whatever the values,

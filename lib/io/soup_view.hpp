@@ -44,9 +44,10 @@ struct SoupView {
 /// the text formats no Rational of a packed one (a sum's output).
 SoupView polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces);
 
-/// The writers behind write_off, write_obj and write_stl.
+/// The writers behind write_off, write_obj, write_stl and write_ply.
 void write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);
 void write_obj_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);
 void write_stl_view(std::ostream& out, const SoupView& soup);
+void write_ply_view(std::ostream& out, const SoupView& soup, Coordinates coordinates);
 
 }  // namespace cvms::io_detail

@@ -128,7 +128,7 @@ class PenetrationResult:
         """The correctly rounded depth."""
 
 def read(path: Path) -> ConvexSet:
-    """Reads a convex set of any dimension (.off, .obj, .stl, or a list of points)."""
+    """Reads a convex set of any dimension (.off, .obj, .stl, .ply, or a list of points)."""
 def write(set: ConvexSet, path: Path, float: bool = False) -> None:
     """Writes the set in the format of the path's extension, exactly unless float=True."""
 def from_off(text: str) -> ConvexSet:

@@ -30,6 +30,19 @@ def test_write_and_read_back_exactly(tmp_path):
     assert cvms.read(str(tmp_path / "points.xyz")).volume() == Fraction(1, 12)
 
 
+def test_ply_is_exact_decimals_or_binary_doubles(tmp_path):
+    third = cvms.hull([(0, 0, 0), (Fraction(1, 3), 0, 0), (0, 1, 0), (0, 0, 1)])
+    with pytest.raises(cvms.Error) as info:  # 1/3 has no decimal, and PLY no p/q
+        cvms.write(third, str(tmp_path / "third.ply"))
+    assert info.value.category == "invalid_argument"
+    cvms.write(third, str(tmp_path / "third.ply"), float=True)  # binary doubles, read back as such
+    assert sorted(cvms.read(str(tmp_path / "third.ply")).exact_vertices()) == sorted(
+        tuple(Fraction(float(c)) for c in v) for v in third.exact_vertices())
+    decimal = cvms.hull([(0, 0, 0), (Fraction(1, 10), 0, 0), (0, 2, 0), (0, 0, Fraction(-5, 4))])
+    cvms.write(decimal, str(tmp_path / "decimal.ply"))
+    assert cvms.read(str(tmp_path / "decimal.ply")) == decimal
+
+
 def test_errors_carry_category_and_message(tmp_path):
     with pytest.raises(cvms.Error) as info:
         cvms.read(str(tmp_path / "missing.off"))

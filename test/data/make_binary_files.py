@@ -46,6 +46,26 @@ files = {
     "bad/solid_header_count_mismatch.stl": stl(b"solid but binary", 7, tetra),
 }
 
+
+
+def ply_le(points, faces):
+    header = (b"ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+              b"property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+              % (len(points), len(faces)))
+    body = b"".join(struct.pack("<3f", *p) for p in points)
+    body += b"".join(struct.pack("<B%di" % len(f), len(f), *f) for f in faces)
+    return header + body
+
+
+ply_tetra_points = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)]
+ply_tetra_faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+ply_tetra = ply_le(ply_tetra_points, ply_tetra_faces)
+ply_header_size = ply_tetra.index(b"end_header\n") + len(b"end_header\n")
+# bad: cut in the middle of the z coordinate of vertex 2
+files["bad/ply_binary_truncated.ply"] = ply_tetra[:ply_header_size + 2 * 12 + 10]
+# bad: a NaN x coordinate in vertex 1
+files["bad/ply_binary_nan.ply"] = ply_le([ply_tetra_points[0], (nan, 0.0, 0.0)] + ply_tetra_points[2:], ply_tetra_faces)
+
 rng = random.Random(20240611)
 junk = bytes(rng.randrange(256) for _ in range(1000))
 for ext in ("off", "obj", "stl"):

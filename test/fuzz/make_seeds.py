@@ -41,8 +41,24 @@ def binary_stl(triangles, header=b"binary seed"):
     return out
 
 
+def binary_ply(order, points, faces, coordinate="d"):
+    fmt = "binary_little_endian" if order == "<" else "binary_big_endian"
+    kind = "double" if coordinate == "d" else "float"
+    header = ("ply\nformat %s 1.0\nelement vertex %d\nproperty %s x\nproperty %s y\nproperty %s z\n"
+              "element face %d\nproperty list uchar int vertex_indices\nend_header\n"
+              % (fmt, len(points), kind, kind, kind, len(faces))).encode()
+    body = b"".join(struct.pack(order + "3" + coordinate, *p) for p in points)
+    body += b"".join(struct.pack(order + "B%di" % len(f), len(f), *f) for f in faces)
+    return header + body
+
+
 def main():
     rng = random.Random(6)
+    # read_ply: binary tetrahedra in both byte orders, doubles and floats
+    # (the ASCII seeds are plain files).
+    tetra_faces = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+    write("read_ply", "tetra_le_double.ply", binary_ply("<", [(0.1, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1e-300)], tetra_faces))
+    write("read_ply", "tetra_be_float.ply", binary_ply(">", TETRA, tetra_faces, "f"))
     # read_stl: a binary tetrahedron, a binary cube (12 triangles), a binary
     # file with a degenerate (repeated vertex) triangle and a tiny float.
     t = TETRA

@@ -366,6 +366,31 @@ void read_stl_target(std::span<const std::uint8_t> data) {
   check_round_trip(soup, &read_stl, &write_stl, "read_stl");
 }
 
+void write_ply_exact(std::ostream& out, const PolygonSoup& soup) { write_ply(out, soup); }
+void write_ply_doubles(std::ostream& out, const PolygonSoup& soup) { write_ply(out, soup, Coordinates::double_); }
+
+void read_ply_target(std::span<const std::uint8_t> data) {
+  const ReadLimits limits = fuzz_limits();
+  PolygonSoup soup;
+  if (!read_bytes(data, &read_ply, limits, soup)) return;
+  check_soup(soup, limits, "read_ply");
+  if (exact_text_size(soup) >= (std::size_t{1} << 20)) return;
+  // Binary PLY stores doubles: a soup of doubles survives it exactly.
+  bool doubles = true;
+  for (const Vec3& p : soup.points)
+    for (int i = 0; i < 3; ++i) doubles = doubles && is_double_exact(p[i]);
+  if (doubles) check_round_trip(soup, &read_ply, &write_ply_doubles, "read_ply (binary doubles)");
+  // ASCII PLY is exact for coordinates with finite decimals, and refuses the others.
+  try {
+    std::ostringstream probe;
+    write_ply(probe, soup);
+  } catch (const Error& e) {
+    if (e.category() != ErrorCategory::invalid_argument) throw;
+    return;
+  }
+  check_round_trip(soup, &read_ply, &write_ply_exact, "read_ply (ASCII exact)");
+}
+
 void read_points_target(std::span<const std::uint8_t> data) {
   const ReadLimits limits = fuzz_limits();
   std::istringstream in(std::string(reinterpret_cast<const char*>(data.data()), data.size()));
@@ -520,6 +545,7 @@ Target target_by_name(const std::string& name) {
   if (name == "read_off") return &read_off_target;
   if (name == "read_obj") return &read_obj_target;
   if (name == "read_stl") return &read_stl_target;
+  if (name == "read_ply") return &read_ply_target;
   if (name == "read_points") return &read_points_target;
   if (name == "from_soup") return &from_soup_target;
   if (name == "minkowski") return &minkowski_target;
@@ -532,8 +558,8 @@ Target target_by_name(const std::string& name) {
 }
 
 std::vector<std::string> target_names() {
-  return {"read_off",  "read_obj", "read_stl",        "read_points", "from_soup",
-          "minkowski", "sets",     "read_halfspaces", "halfspaces",  "read_pieces", "read_solid"};
+  return {"read_off",  "read_obj",  "read_stl",        "read_ply",   "read_points", "from_soup",
+          "minkowski", "sets",      "read_halfspaces", "halfspaces", "read_pieces", "read_solid"};
 }
 
 }  // namespace cvms::fuzz

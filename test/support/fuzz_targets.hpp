@@ -37,6 +37,9 @@ ReadLimits fuzz_limits();
 void read_off_target(std::span<const std::uint8_t> data);
 void read_obj_target(std::span<const std::uint8_t> data);
 void read_stl_target(std::span<const std::uint8_t> data);
+/// PLY: the binary round trip (doubles) when every coordinate is a double,
+/// the ASCII one when the exact writer accepts the soup.
+void read_ply_target(std::span<const std::uint8_t> data);
 void read_points_target(std::span<const std::uint8_t> data);
 
 /// ConvexPolyhedron::from_soup on a soup decoded from the bytes (either raw
@@ -89,9 +92,9 @@ void read_pieces_target(std::span<const std::uint8_t> data);
 /// sum to its volume.
 void read_solid_target(std::span<const std::uint8_t> data);
 
-/// A target by name ("read_off", "read_obj", "read_stl", "read_points",
-/// "from_soup", "minkowski", "sets", "read_halfspaces", "halfspaces",
-/// "read_pieces", "read_solid"); nullptr for an unknown name.
+/// A target by name ("read_off", "read_obj", "read_stl", "read_ply",
+/// "read_points", "from_soup", "minkowski", "sets", "read_halfspaces",
+/// "halfspaces", "read_pieces", "read_solid"); nullptr for an unknown name.
 using Target = void (*)(std::span<const std::uint8_t>);
 Target target_by_name(const std::string& name);
 /// All target names, in a fixed order.

@@ -111,13 +111,14 @@ FileFormat output_format(const std::string& path, const std::string& format) {
   if (format == "off") return FileFormat::off;
   if (format == "obj") return FileFormat::obj;
   if (format == "stl") return FileFormat::stl;
-  if (!format.empty()) throw UsageError("--format must be off, obj or stl, not '" + format + "'");
+  if (format == "ply") return FileFormat::ply;
+  if (!format.empty()) throw UsageError("--format must be off, obj, stl or ply, not '" + format + "'");
   if (is_std_stream(path) || is_device_path(path)) return FileFormat::off;
   try {
     return format_from_extension(path);
   } catch (const Error&) {
     throw UsageError("cannot tell the format of '" + path +
-                     "' from its extension (.off, .obj or .stl): give --format off|obj|stl");
+                     "' from its extension (.off, .obj, .stl or .ply): give --format off|obj|stl|ply");
   }
 }
 
@@ -153,6 +154,7 @@ std::vector<Vec3> read_point_cloud(const std::string& path) {
   if (is_cdd_points_path(path)) return read_cdd_points_file(path);
   std::ifstream in = open_input(path);
   if (lower_extension(path) == ".stl") return read_stl(in, path, read_limits()).points;
+  if (lower_extension(path) == ".ply") return read_ply(in, path, read_limits()).points;
   return read_points(in, path, read_limits());
 }
 
@@ -215,7 +217,7 @@ std::string check_mesh_path(const std::string& path) {
     (void)format_from_extension(path);
     return {};
   } catch (const Error&) {
-    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj, .stl or .ext";
+    return "'" + printable(path) + "': expected '-' or a file ending in .off, .obj, .stl, .ply or .ext";
   }
 }
 

@@ -78,7 +78,7 @@ int run_selected(const cvms::cli::Commands& commands) {
 
 int main(int argc, char** argv) {
   cvms::cli::prefer_huge_heap_pages();
-  CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL; '-' is OFF on stdin/stdout)"};
+  CLI::App app{"cvms: exact Minkowski sums of convex polyhedra (OFF/OBJ/STL/PLY; '-' is OFF on stdin/stdout)"};
   app.set_version_flag("--version", version_text(), "print the versions of cvms and GMP and the build type");
   app.require_subcommand(1);  // exactly one
   app.fallthrough();          // the read limits may follow the command name too

@@ -29,7 +29,7 @@ constexpr Algorithm algorithms[] = {Algorithm::cvms, Algorithm::essdms, Algorith
 }  // namespace
 
 const CLI::Validator& mesh_path() {
-  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|.ext|-)", "mesh path"};
+  static const CLI::Validator validator{check_mesh_path, "FILE(.off|.obj|.stl|.ply|.ext|-)", "mesh path"};
   return validator;
 }
 
@@ -57,8 +57,8 @@ void add_output_options(CLI::App& command, std::string& output, std::string& for
   command.add_option("-o,--output", output, "result file (default -, OFF on stdout)")->default_str("-");
   command
       .add_option("--format", format,
-                  "off, obj or stl (default: the output's extension; OFF for - and /dev/null, /dev/stdout, ...)")
-      ->check(CLI::IsMember({"off", "obj", "stl"}, CLI::ignore_case));
+                  "off, obj, stl or ply (default: the output's extension; OFF for - and /dev/null, /dev/stdout, ...)")
+      ->check(CLI::IsMember({"off", "obj", "stl", "ply"}, CLI::ignore_case));
   command.add_flag("--float", float_output, "round output coordinates to the nearest double");
 }
 

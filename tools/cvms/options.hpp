@@ -11,7 +11,7 @@
 
 namespace cvms::cli {
 
-/// Accepts "-" or a path ending in .off, .obj or .stl (files.hpp's check_mesh_path).
+/// Accepts "-" or a path ending in .off, .obj, .stl or .ply (files.hpp's check_mesh_path).
 const CLI::Validator& mesh_path();
 
 /// Accepts a decimal integer from 0 to 2^64-1, digits only.

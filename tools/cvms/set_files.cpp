@@ -16,7 +16,7 @@ namespace cvms::cli {
 namespace {
 
 constexpr const char* set_extensions =
-    ".off, .obj, .stl (meshes), .ext (cdd vertices), .ine (cdd rows), .rows or .hrep (rows a b c d, or a b c in "
+    ".off, .obj, .stl, .ply (meshes), .ext (cdd vertices), .ine (cdd rows), .rows or .hrep (rows a b c d, or a b c in "
     "the plane), .xyz or .pts (points x y z, or x y)";
 
 std::string check_set_path(const std::string& path) {
@@ -54,7 +54,7 @@ SetFile read_points_file(const std::string& path, SetForm form) {
 SetForm set_form(const std::string& path) {
   if (is_std_stream(path)) return SetForm::mesh;
   const std::string ext = lower_extension(path);
-  if (ext == ".off" || ext == ".obj" || ext == ".stl") return SetForm::mesh;
+  if (ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply") return SetForm::mesh;
   if (ext == ".ext") return SetForm::cdd_points;
   if (ext == ".ine") return SetForm::cdd_rows;
   if (ext == ".rows" || ext == ".hrep") return SetForm::plain_rows;
@@ -67,7 +67,7 @@ SetForm set_form(const std::string& path) {
 }
 
 const CLI::Validator& set_path() {
-  static const CLI::Validator validator{check_set_path, "FILE(.off|.obj|.stl|.ext|.ine|.rows|.hrep|.xyz|.pts|-)",
+  static const CLI::Validator validator{check_set_path, "FILE(.off|.obj|.stl|.ply|.ext|.ine|.rows|.hrep|.xyz|.pts|-)",
                                        "set path"};
   return validator;
 }

@@ -7,7 +7,7 @@
 // rows (a b c) or 3-D points (x y z), so a content-based guess could give
 // a wrong set without a word. Each form has its own extensions, and `.txt`,
 // which either could be, is refused with a message naming them:
-//   mesh          .off .obj .stl, or "-" (OFF on stdin/stdout)
+//   mesh          .off .obj .stl .ply, or "-" (OFF on stdin/stdout)
 //   cdd vertices  .ext             (cdd V-representation)
 //   cdd rows      .ine             (cdd H-representation)
 //   plain rows    .rows .hrep      (a b c d: a*x + b*y + c*z <= d)

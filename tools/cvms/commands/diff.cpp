@@ -56,7 +56,7 @@ void register_diff(CLI::App& app, Commands& commands) {
   command->add_option("-o,--output", args->output,
                       "output file, its form by extension as for A and B (.ine, .rows: the tightened rows); "
                       "'-' for OFF on stdout; 2-D when A and B are files of the plane");
-  command->add_option("--format", args->format, "output format off|obj|stl (default: from the extension)");
+  command->add_option("--format", args->format, "output format off|obj|stl|ply (default: from the extension)");
   command->add_flag("--float", args->float_output, "write nearest doubles instead of exact rationals");
   commands.push_back({command, [args] { run_diff(*args); }});
 }

@@ -65,7 +65,7 @@ void run_hull(const HullArgs& args) {
 void register_hull(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<HullArgs>();
   CLI::App* command = app.add_subcommand("hull", "exact convex hull of points");
-  CLI::Option* points = command->add_option("POINTS", args->input, "OFF/OBJ/STL vertices, cdd .ext vertices or one 'x y z' per line");
+  CLI::Option* points = command->add_option("POINTS", args->input, "OFF/OBJ/STL/PLY vertices, cdd .ext vertices or one 'x y z' per line");
   add_output_options(*command, args->output, args->format, args->float_output);
   command
       ->add_option("--from-halfspaces", args->rows_input,
