@@ -88,6 +88,7 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/float_mesh.hpp"
 #include "cvms/polygon_soup.hpp"
 
 namespace cvms {
@@ -169,11 +170,22 @@ PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limit
 std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 
 /// How writers print coordinates.
+///
+/// The two double modes differ from rounding each vertex, which may leave a
+/// polyhedron that is no longer convex: a convex polyhedron or set is first
+/// rounded as a whole by round_to_doubles (cvms/float_mesh.hpp), whose
+/// exact hull of double points has maximal, exactly planar facets in those
+/// doubles. The doubles are printed as the shortest decimals that read back
+/// to them (std::to_chars), so a reader that parses the text as doubles gets
+/// exactly that valid set. Read back by cvms, the text is that decimal
+/// exactly ("0.1" is 1/10), not the double itself. A soup, which need not be
+/// convex, is rounded vertex by vertex with double_ and refused with
+/// double_outer. Binary STL holds float32 and rounds each vertex to float32
+/// whatever is asked, except that double_outer is refused there.
 enum class Coordinates {
-  exact,   ///< exact decimals or p/q, see to_string(const Rational&)
-  double_  ///< the nearest double, printed as the shortest decimal that parses
-           ///< back to that double (std::to_chars). Read back by cvms, the text
-           ///< is that decimal exactly ("0.1" is 1/10), not the double itself.
+  exact,    ///< exact decimals or p/q, see to_string(const Rational&)
+  double_,  ///< FloatMode::nearest: the hull of the nearest doubles (a soup: each vertex's nearest double)
+  double_outer  ///< FloatMode::outer: a double polyhedron that contains the exact set (convex sets only)
 };
 
 /// Writes an OFF file: the header, one "x y z" line per point, one

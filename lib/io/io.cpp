@@ -10,6 +10,7 @@
 #include "face_lists.hpp"
 #include "mesh_access.hpp"
 #include "file_output.hpp"
+#include "float_coordinates.hpp"
 #include "io_reader.hpp"
 
 namespace cvms {
@@ -92,6 +93,7 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
 namespace {
 
 void write_view(std::ostream& out, const io_detail::SoupView& soup, FileFormat format, Coordinates coordinates) {
+  io_detail::check_soup_coordinates(coordinates);
   switch (format) {
     case FileFormat::off:
       return io_detail::write_off_view(out, soup, coordinates);
@@ -127,6 +129,9 @@ io_detail::SoupView polyhedron_view(const ConvexPolyhedron& p, FileFormat format
 
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                               Coordinates coordinates) {
+  const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
+  if (const auto rounded = io_detail::rounded_soup(format, coordinates, path.string(), round))
+    return write_view_to_file(path, io_detail::SoupView::of(*rounded), format, Coordinates::double_);
   detail::FaceLists faces;
   write_view_to_file(path, polyhedron_view(p, format, faces), format, coordinates);
 }
@@ -138,6 +143,9 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
 }
 
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
+  const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
+  if (const auto rounded = io_detail::rounded_soup(format, coordinates, {}, round))
+    return write_view(out, io_detail::SoupView::of(*rounded), format, Coordinates::double_);
   detail::FaceLists faces;
   write_view(out, polyhedron_view(p, format, faces), format, coordinates);
 }
