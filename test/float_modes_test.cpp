@@ -22,11 +22,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -40,98 +37,22 @@
 #include "cvms/io.hpp"
 #include "cvms/set_io.hpp"
 #include "cvms/shapes.hpp"
+#include "support/read_as_doubles.hpp"
 
 namespace cvms {
 namespace {
+
+using test::inside;
+using test::read_off_as_doubles;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 Vec3 v3(const Rational& x, const Rational& y, const Rational& z) { return {x, y, z}; }
 
-// A coordinate token read as floating-point pipelines read it; it must be
-// the shortest text of its double (printing the double again gives it back).
-double parse_double(const std::string& token) {
-  char* end = nullptr;
-  const double d = std::strtod(token.c_str(), &end);
-  EXPECT_EQ(*end, '\0') << token;
-  char shortest[32];
-  const auto printed = std::to_chars(shortest, shortest + sizeof shortest, d);
-  EXPECT_EQ(std::string(shortest, printed.ptr), token) << "not the shortest text of its double";
-  return d;
-}
-
-// An OFF text read with its coordinates as doubles, taken exactly.
-PolygonSoup read_off_as_doubles(const std::string& text) {
-  std::istringstream in(text);
-  std::string keyword;
-  std::size_t points = 0, faces = 0, edges = 0;
-  in >> keyword >> points >> faces >> edges;
-  EXPECT_EQ(keyword, "OFF");
-  PolygonSoup soup;
-  for (std::size_t i = 0; i < points; ++i) {
-    std::string x, y, z;
-    in >> x >> y >> z;
-    soup.points.push_back(v3(rational_from_double(parse_double(x)), rational_from_double(parse_double(y)),
-                             rational_from_double(parse_double(z))));
-  }
-  for (std::size_t f = 0; f < faces; ++f) {
-    std::size_t n = 0;
-    in >> n;
-    std::vector<std::uint32_t> face(n);
-    for (std::uint32_t& i : face) in >> i;
-    soup.add_face(face);
-  }
-  EXPECT_FALSE(in.fail());
-  return soup;
-}
-
 std::string written(const ConvexSet& set, Coordinates coordinates) {
   std::ostringstream out;
   write(out, set, FileFormat::off, "<test>", coordinates);
   return out.str();
-}
-
-// The written set read back as doubles must be a valid convex set with
-// exactly the written vertices; a polyhedron with exactly the written facets.
-void expect_valid(const PolygonSoup& soup, const std::string& label) {
-  try {
-    const ConvexSet back = convex_set_from_soup(soup);
-    EXPECT_EQ(back.num_vertices(), soup.points.size()) << label << ": a written vertex is not a corner";
-    if (back.dimension() == 3) {
-      EXPECT_EQ(back.polyhedron().num_facets(), soup.num_faces()) << label << ": facets merged on reading (not maximal)";
-    }
-  } catch (const Error& e) {
-    ADD_FAILURE() << label << ": the doubles written are not a convex set: " << e.what();
-  }
-}
-
-bool lexicographic_less(const Vec3& a, const Vec3& b) {
-  if (a.x != b.x) return a.x < b.x;
-  if (a.y != b.y) return a.y < b.y;
-  return a.z < b.z;
-}
-
-std::vector<Vec3> sorted(std::vector<Vec3> points) {
-  std::sort(points.begin(), points.end(), lexicographic_less);
-  return points;
-}
-
-// p in the set the soup describes, exactly. A polyhedron: on the inner side
-// of the plane of every face (its first three corners span it, since written
-// faces have corners only). A flat set: p adds no vertex to its hull.
-bool inside(const PolygonSoup& soup, const Vec3& p) {
-  if (soup.num_faces() <= 1) {
-    std::vector<Vec3> with_p = soup.points;
-    with_p.push_back(p);
-    return sorted(convex_hull_set(with_p).vertices()) == sorted(soup.points);
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const auto face = soup.face(f);
-    const Vec3& a = soup.points[face[0]];
-    const Vec3 normal = cross(soup.points[face[1]] - a, soup.points[face[2]] - a);
-    if (sgn(dot(normal, p - a)) > 0) return false;
-  }
-  return true;
 }
 
 double nearest_of(const Rational& c) { return to_double_nearest(c); }
@@ -208,7 +129,7 @@ void check_both_modes(const ConvexSet& set, const std::string& label) {
     const std::string text = written(set, coordinates);
     EXPECT_EQ(written(set, coordinates), text) << what << ": bytes differ between two writes";
     const PolygonSoup soup = read_off_as_doubles(text);
-    expect_valid(soup, what);
+    test::expect_valid_convex_set(soup, what);
     if (outer)
       expect_outer(set, soup, what);
     else
