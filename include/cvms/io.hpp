@@ -194,8 +194,9 @@ enum class Coordinates {
 /// so the bytes depend only on the soup; with Coordinates::exact, reading the
 /// output back gives the same soup exactly.
 /// \throw Error(invalid_argument) for a face with fewer than 3 indices or an
-///   index out of range, and for a coordinate beyond the double range with
-///   Coordinates::double_;
+///   index out of range, for a coordinate beyond the double range with
+///   Coordinates::double_, and for Coordinates::double_outer (a soup need
+///   not be convex: write the convex set instead);
 /// \throw Error(io) if the stream fails.
 /// Complexity: linear in the size of the output.
 void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
@@ -212,8 +213,12 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a polyhedron's vertices and facets (those of p.to_soup()) to a
 /// stream, read straight from the polyhedron (no copy of its coordinates);
-/// as write(out, p.to_soup(), format, coordinates) otherwise.
-/// \throw Error(invalid_argument), Error(io) as write_off.
+/// as write(out, p.to_soup(), format, coordinates) otherwise. In doubles
+/// (OFF, OBJ), those of round_to_doubles(p, mode): the exact hull of double
+/// points, written as write(out, rounded.to_soup(), format,
+/// Coordinates::double_) writes it.
+/// \throw Error(invalid_argument) as write_off and round_to_doubles, and
+///   for Coordinates::double_outer in STL; \throw Error(io) as write_off.
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a file in the format of its extension (format_from_extension).
@@ -247,7 +252,8 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
 /// polyhedron.
 /// \throw Error(invalid_argument) for an unknown extension, and (naming the
 ///   file) for a coordinate beyond the double range with Coordinates::double_
-///   or beyond the float32 range in STL; an existing file is left untouched;
+///   or double_outer, for double_outer in STL, or for a coordinate beyond the
+///   float32 range in STL; an existing file is left untouched;
 /// \throw Error(io) naming the file and the reason if it cannot be written.
 /// Complexity: linear in the size of the output.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p,

@@ -9,7 +9,10 @@
 /// with only `v` lines); the empty set as an OFF with no points (OBJ cannot
 /// hold it: an OBJ without statements is not read back). STL holds
 /// only triangles: a polygon is written fan-triangulated, a lower-dimensional
-/// set not at all. Every file written this way reads back as the same set.
+/// set not at all. Every file written exactly reads back as the same set.
+/// In doubles (Coordinates::double_, double_outer; OFF and OBJ), the set
+/// rounded as a whole by round_to_doubles is written, which may have another
+/// dimension (a flat set's outer rounding is solid).
 #pragma once
 
 #include <filesystem>
