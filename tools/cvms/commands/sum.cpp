@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "canonical_order.hpp"
 #include "commands.hpp"
 #include "cvms/error.hpp"
 #include "cvms/set_sum.hpp"
