@@ -310,6 +310,22 @@ std::string repr(const ConvexSet& s) {
   return text + ">";
 }
 
+// The float modes by their Python names.
+cvms::FloatMode float_mode_of(const std::string& mode) {
+  if (mode == "nearest") return cvms::FloatMode::nearest;
+  if (mode == "outer") return cvms::FloatMode::outer;
+  throw py::value_error("float mode must be 'nearest' or 'outer', not '" + mode + "'");
+}
+
+// write()'s float argument: False (exact), True or "nearest", or "outer".
+cvms::Coordinates coordinates_of(const py::object& as_float) {
+  if (py::isinstance<py::bool_>(as_float))
+    return as_float.cast<bool>() ? cvms::Coordinates::double_ : cvms::Coordinates::exact;
+  if (!py::isinstance<py::str>(as_float)) throw py::type_error("float must be a bool, 'nearest' or 'outer'");
+  return float_mode_of(as_float.cast<std::string>()) == cvms::FloatMode::outer ? cvms::Coordinates::double_outer
+                                                                                : cvms::Coordinates::double_;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_cvms, m) {
@@ -528,13 +544,36 @@ sums. Picklable (through its exact OFF text). a + b is the Minkowski sum,
       "'x y z' points. Numbers are read exactly.");
   m.def(
       "write",
-      [](const ConvexSet& s, const std::string& path, bool as_float) {
+      [](const ConvexSet& s, const std::string& path, const py::object& as_float) {
+        const cvms::Coordinates coordinates = coordinates_of(as_float);
         py::gil_scoped_release release;
-        cvms::write_file(path, s, as_float ? cvms::Coordinates::double_ : cvms::Coordinates::exact);
+        cvms::write_file(path, s, coordinates);
       },
       py::arg("set"), py::arg("path"), py::arg("float") = false,
       "Writes the set to a file in the format of its extension (.off, .obj, .stl, .ply), exactly unless "
-      "float=True (then each coordinate as the shortest decimal of its nearest double). Atomic.");
+      "float is True or 'nearest' (the exact hull of the vertices' nearest doubles: a valid convex "
+      "set in doubles) or 'outer' (a double polyhedron that contains the set), each coordinate as "
+      "the shortest decimal of its double. Atomic.");
+  m.def(
+      "to_float_mesh",
+      [](const ConvexSet& s, const std::string& mode) {
+        const cvms::FloatMode float_mode = float_mode_of(mode);
+        cvms::FloatMesh mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = cvms::to_float_mesh(s, float_mode);
+        }
+        py::array_t<double> positions({static_cast<py::ssize_t>(mesh.num_vertices()), py::ssize_t{3}});
+        std::copy(mesh.positions.begin(), mesh.positions.end(), positions.mutable_data());
+        py::array_t<std::uint32_t> triangles({static_cast<py::ssize_t>(mesh.num_triangles()), py::ssize_t{3}});
+        std::copy(mesh.triangles.begin(), mesh.triangles.end(), triangles.mutable_data());
+        return py::make_tuple(positions, triangles);
+      },
+      py::arg("set"), py::arg("mode") = "nearest",
+      "The set in doubles for engines: (positions, triangles), an (n, 3) float64 array and an (m, 3) "
+      "uint32 array of its faces fanned, counter-clockwise from outside. mode 'nearest': the exact "
+      "hull of the vertices' nearest doubles, a valid convex set; 'outer': a double polyhedron that "
+      "contains the set. The same vertices and faces, in the same order, as write(set, path, mode).");
 
   m.def(
       "hull",

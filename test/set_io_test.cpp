@@ -97,7 +97,9 @@ TEST(SetIo, SolidsAreWrittenAsTheirSoup) {
         const auto direct = dir.path / (std::string("direct") + ext);
         const auto via_soup = dir.path / (std::string("soup") + ext);
         write_file(direct, solid, c);
-        write_file(via_soup, solid.polyhedron().to_soup(), c);
+        // In doubles, a text format holds the set rounded as a whole.
+        const bool rounded = c != Coordinates::exact && std::string(ext) != ".stl";
+        write_file(via_soup, (rounded ? round_to_doubles(solid, FloatMode::nearest) : solid).to_soup(), c);
         const std::string bytes = file_bytes(via_soup);
         EXPECT_GT(bytes.size(), 100u);
         EXPECT_EQ(file_bytes(direct), bytes);

@@ -26,6 +26,7 @@
 #include "cvms/decomposition.hpp"
 #include "cvms/diagnostics.hpp"
 #include "cvms/error.hpp"
+#include "cvms/float_mesh.hpp"
 #include "cvms/halfspace_io.hpp"
 #include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"

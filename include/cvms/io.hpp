@@ -107,6 +107,7 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/float_mesh.hpp"
 #include "cvms/polygon_soup.hpp"
 
 namespace cvms {
@@ -199,11 +200,22 @@ PolygonSoup read_file(const std::filesystem::path& path, const ReadLimits& limit
 std::vector<Vec3> read_points(std::istream& in, std::string_view source, const ReadLimits& limits = {});
 
 /// How writers print coordinates.
+///
+/// The two double modes differ from rounding each vertex, which may leave a
+/// polyhedron that is no longer convex: a convex polyhedron or set is first
+/// rounded as a whole by round_to_doubles (cvms/float_mesh.hpp), whose
+/// exact hull of double points has maximal, exactly planar facets in those
+/// doubles. The doubles are printed as the shortest decimals that read back
+/// to them (std::to_chars), so a reader that parses the text as doubles gets
+/// exactly that valid set. Read back by cvms, the text is that decimal
+/// exactly ("0.1" is 1/10), not the double itself. A soup, which need not be
+/// convex, is rounded vertex by vertex with double_ and refused with
+/// double_outer. Binary STL holds float32 and rounds each vertex to float32
+/// whatever is asked, except that double_outer is refused there.
 enum class Coordinates {
-  exact,   ///< exact decimals or p/q, see to_string(const Rational&)
-  double_  ///< the nearest double, printed as the shortest decimal that parses
-           ///< back to that double (std::to_chars). Read back by cvms, the text
-           ///< is that decimal exactly ("0.1" is 1/10), not the double itself.
+  exact,    ///< exact decimals or p/q, see to_string(const Rational&)
+  double_,  ///< FloatMode::nearest: the hull of the nearest doubles (a soup: each vertex's nearest double)
+  double_outer  ///< FloatMode::outer: a double polyhedron that contains the exact set (convex sets only)
 };
 
 /// Writes an OFF file: the header, one "x y z" line per point, one
@@ -212,8 +224,9 @@ enum class Coordinates {
 /// so the bytes depend only on the soup; with Coordinates::exact, reading the
 /// output back gives the same soup exactly.
 /// \throw Error(invalid_argument) for a face with fewer than 3 indices or an
-///   index out of range, and for a coordinate beyond the double range with
-///   Coordinates::double_;
+///   index out of range, for a coordinate beyond the double range with
+///   Coordinates::double_, and for Coordinates::double_outer (a soup need
+///   not be convex: write the convex set instead);
 /// \throw Error(io) if the stream fails.
 /// Complexity: linear in the size of the output.
 void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinates = Coordinates::exact);
@@ -243,8 +256,12 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a polyhedron's vertices and facets (those of p.to_soup()) to a
 /// stream, read straight from the polyhedron (no copy of its coordinates);
-/// as write(out, p.to_soup(), format, coordinates) otherwise.
-/// \throw Error(invalid_argument), Error(io) as write_off.
+/// as write(out, p.to_soup(), format, coordinates) otherwise. In doubles
+/// (OFF, OBJ), those of round_to_doubles(p, mode): the exact hull of double
+/// points, written as write(out, rounded.to_soup(), format,
+/// Coordinates::double_) writes it.
+/// \throw Error(invalid_argument) as write_off and round_to_doubles, and
+///   for Coordinates::double_outer in STL; \throw Error(io) as write_off.
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format,
            Coordinates coordinates = Coordinates::exact);
 /// Writes a file in the format of its extension (format_from_extension).
@@ -279,7 +296,8 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
 /// same polyhedron.
 /// \throw Error(invalid_argument) for an unknown extension, and (naming the
 ///   file) for a coordinate beyond the double range with Coordinates::double_
-///   or beyond the float32 range in STL; an existing file is left untouched;
+///   or double_outer, for double_outer in STL, or for a coordinate beyond the
+///   float32 range in STL; an existing file is left untouched;
 /// \throw Error(io) naming the file and the reason if it cannot be written.
 /// Complexity: linear in the size of the output.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p,

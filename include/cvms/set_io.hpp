@@ -11,8 +11,10 @@
 /// only triangles: a polygon is written fan-triangulated, a lower-dimensional
 /// set not at all. PLY holds what OFF holds, as write_ply writes it (exact
 /// ASCII decimals, refused for a coordinate without a finite decimal
-/// expansion; binary doubles when rounded). Every file written this way
-/// reads back as the same set.
+/// expansion; binary doubles when rounded). Every file written exactly reads
+/// back as the same set. In doubles (Coordinates::double_, double_outer; OFF,
+/// OBJ and PLY), the set rounded as a whole by round_to_doubles is written,
+/// which may have another dimension (a flat set's outer rounding is solid).
 #pragma once
 
 #include <filesystem>

@@ -10,6 +10,7 @@
 #include "face_lists.hpp"
 #include "mesh_access.hpp"
 #include "file_output.hpp"
+#include "float_coordinates.hpp"
 #include "io_reader.hpp"
 
 namespace cvms {
@@ -104,6 +105,7 @@ std::vector<Vec3> read_points(std::istream& in, std::string_view source, const R
 namespace {
 
 void write_view(std::ostream& out, const io_detail::SoupView& soup, FileFormat format, Coordinates coordinates) {
+  io_detail::check_soup_coordinates(coordinates);
   switch (format) {
     case FileFormat::off:
       return io_detail::write_off_view(out, soup, coordinates);
@@ -131,6 +133,9 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
 
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
                               Coordinates coordinates) {
+  const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
+  if (const auto rounded = io_detail::rounded_soup(format, coordinates, path.string(), round))
+    return write_view_to_file(path, io_detail::SoupView::of(*rounded), format, Coordinates::double_);
   detail::FaceLists faces;
   write_view_to_file(path, io_detail::polyhedron_view(p, format, faces), format, coordinates);
 }
@@ -149,6 +154,9 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordi
 }
 
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
+  const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
+  if (const auto rounded = io_detail::rounded_soup(format, coordinates, {}, round))
+    return write_view(out, io_detail::SoupView::of(*rounded), format, Coordinates::double_);
   detail::FaceLists faces;
   write_view(out, io_detail::polyhedron_view(p, format, faces), format, coordinates);
 }

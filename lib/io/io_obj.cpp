@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "float_coordinates.hpp"
 #include "io_reader.hpp"
 #include "io_writer.hpp"
 
@@ -162,6 +163,7 @@ void write_obj(std::ostream& out, const PolygonSoup& soup, Coordinates coordinat
 }
 
 void io_detail::write_obj_view(std::ostream& out, const SoupView& soup, Coordinates coordinates) {
+  io_detail::check_soup_coordinates(coordinates);
   io_detail::check_soup_for_writing(soup, 3);
   io_detail::TextWriter w(out);
   for (std::size_t j = 0; j < soup.num_points(); ++j) w.text("v ").point(soup, j, coordinates).byte('\n');

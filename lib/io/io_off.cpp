@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "float_coordinates.hpp"
 #include "io_reader.hpp"
 #include "io_writer.hpp"
 
@@ -222,6 +223,7 @@ void write_off(std::ostream& out, const PolygonSoup& soup, Coordinates coordinat
 }
 
 void io_detail::write_off_view(std::ostream& out, const SoupView& soup, Coordinates coordinates) {
+  io_detail::check_soup_coordinates(coordinates);
   io_detail::check_soup_for_writing(soup, 3);
   io_detail::TextWriter w(out);
   w.text("OFF\n").integer(soup.num_points()).byte(' ').integer(soup.num_faces()).text(" 0\n");

@@ -8,6 +8,8 @@
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
+#include "cvms/float_mesh.hpp"
+#include "float_coordinates.hpp"
 
 namespace cvms {
 
@@ -58,6 +60,9 @@ void write_file(const std::filesystem::path& path, const ConvexSet& set, Coordin
 
 void write_file(const std::filesystem::path& path, const ConvexSet& set, FileFormat format, Coordinates coordinates) {
   check_format_holds(set, format, path.string());
+  const auto round = [&set](FloatMode mode) { return round_to_doubles(set, mode); };
+  if (const auto rounded = io_detail::rounded_soup(format, coordinates, path.string(), round))
+    return write_file(path, *rounded, format, Coordinates::double_);
   // A solid straight from its polyhedron: to_soup would copy every exact
   // coordinate first.
   if (set.dimension() == 3) return write_file(path, set.polyhedron(), format, coordinates);
@@ -67,6 +72,9 @@ void write_file(const std::filesystem::path& path, const ConvexSet& set, FileFor
 void write(std::ostream& out, const ConvexSet& set, FileFormat format, const std::string& name,
            Coordinates coordinates) {
   check_format_holds(set, format, name);
+  const auto round = [&set](FloatMode mode) { return round_to_doubles(set, mode); };
+  if (const auto rounded = io_detail::rounded_soup(format, coordinates, name, round))
+    return write(out, *rounded, format, Coordinates::double_);
   if (set.dimension() == 3) return write(out, set.polyhedron(), format, coordinates);
   write(out, set.to_soup(), format, coordinates);
 }

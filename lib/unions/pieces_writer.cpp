@@ -3,14 +3,18 @@
 // object written from its own mesh as write_file writes a polyhedron (the io
 // layer's polyhedron view: its points, packed or not, and its faces'
 // index lists), with the indices moved past the vertices of the pieces
-// before it, since OBJ numbers the vertices of the whole file.
+// before it, since OBJ numbers the vertices of the whole file. In doubles,
+// each piece is rounded as a convex set first.
 #include <cstdint>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "cvms/error.hpp"
 #include "cvms/union_io.hpp"
+#include "cvms/float_mesh.hpp"
 #include "file_output.hpp"
+#include "float_coordinates.hpp"
 #include "io_writer.hpp"
 #include "soup_view.hpp"
 
@@ -22,7 +26,22 @@ namespace {
 std::size_t write_piece(io_detail::TextWriter& w, const ConvexPolyhedron& piece, std::size_t number,
                         std::uint64_t first_vertex, Coordinates coordinates) {
   detail::FaceLists faces;
-  const io_detail::SoupView view = io_detail::polyhedron_view(piece, FileFormat::obj, faces);
+  io_detail::SoupView view = io_detail::polyhedron_view(piece, FileFormat::obj, faces);
+  // In doubles each piece is rounded as the convex set it is (float_mesh.hpp):
+  // nearest keeps every piece a valid convex polyhedron in the doubles
+  // written, outer keeps it containing the exact piece, so that the union
+  // of the written pieces contains the exact union.
+  std::optional<PolygonSoup> rounded;
+  try {
+    const auto round = [&piece](FloatMode mode) { return round_to_doubles(piece, mode); };
+    rounded = io_detail::rounded_soup(FileFormat::obj, coordinates, {}, round);
+  } catch (const Error& e) {
+    throw Error(e.category(), "piece " + std::to_string(number) + ": " + e.message());
+  }
+  if (rounded) {
+    view = io_detail::SoupView::of(*rounded);
+    coordinates = Coordinates::double_;
+  }
   w.text("o piece_").integer(number).byte('\n');
   try {
     for (std::size_t j = 0; j < view.num_points(); ++j) w.text("v ").point(view, j, coordinates).byte('\n');

@@ -27,7 +27,8 @@ __all__ = [
     "ConvexSet", "DistanceResult", "Error", "PenetrationResult", "__version__",
     "box", "cube", "distance", "from_halfspaces", "from_off", "geodesic_sphere", "hull",
     "intersects", "minkowski_difference", "minkowski_sum", "octahedron", "penetration",
-    "pontryagin_difference", "read", "squared_distance", "tetrahedron", "write", "zonotope",
+    "pontryagin_difference", "read", "squared_distance", "tetrahedron", "to_float_mesh", "write",
+    "zonotope",
 ]
 
 
@@ -37,6 +38,10 @@ def read(path):
 
 def write(set, path, float=False):  # noqa: A002 (the names of the documented API)
     _cvms.write(set, str(path), float)
+
+
+def to_float_mesh(set, mode="nearest"):  # noqa: A002 (the names of the documented API)
+    return _cvms.to_float_mesh(set, mode)
 
 
 def from_off(text):

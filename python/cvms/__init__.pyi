@@ -129,8 +129,13 @@ class PenetrationResult:
 
 def read(path: Path) -> ConvexSet:
     """Reads a convex set of any dimension (.off, .obj, .stl, .ply, or a list of points)."""
-def write(set: ConvexSet, path: Path, float: bool = False) -> None:
-    """Writes the set in the format of the path's extension, exactly unless float=True."""
+def write(set: ConvexSet, path: Path, float: Union[bool, Literal["nearest", "outer"]] = False) -> None:
+    """Writes the set in the format of the path's extension, exactly unless float is True,
+    'nearest' (a valid convex set in doubles) or 'outer' (doubles that contain the set)."""
+def to_float_mesh(
+    set: ConvexSet, mode: Literal["nearest", "outer"] = "nearest"
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.uint32]]:
+    """The set in doubles as (positions (n, 3) float64, triangles (m, 3) uint32), as write() writes it."""
 def from_off(text: str) -> ConvexSet:
     """The convex set an OFF text describes."""
 def hull(points: Points) -> ConvexSet:

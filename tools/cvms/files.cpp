@@ -209,7 +209,10 @@ void check_output(const std::string& path, const std::string& format) {
   check_output_directory(path);
 }
 
-Coordinates coordinates_of(bool float_output) { return float_output ? Coordinates::double_ : Coordinates::exact; }
+Coordinates coordinates_of(const std::string& float_output) {
+  if (float_output.empty()) return Coordinates::exact;
+  return float_output == "outer" ? Coordinates::double_outer : Coordinates::double_;
+}
 
 std::string check_mesh_path(const std::string& path) {
   if (is_std_stream(path) || is_cdd_points_path(path)) return {};

@@ -93,8 +93,10 @@ void check_output_directory(const std::string& path);
 /// (a UsageError), a missing directory, a directory.
 void check_output(const std::string& path, const std::string& format);
 
-/// The coordinates --float asks for: nearest doubles, else exact rationals.
-Coordinates coordinates_of(bool float_output);
+/// The coordinates --float asks for: exact rationals when it is not given
+/// (empty), Coordinates::double_ for "nearest", Coordinates::double_outer
+/// for "outer".
+Coordinates coordinates_of(const std::string& float_output);
 
 /// Empty if path is "-" or ends in .off/.obj/.stl/.ext (any case), else a message;
 /// used as a CLI11 validator so a wrong extension is a usage error.

@@ -53,13 +53,24 @@ void add_operands(CLI::App& command, std::string& a, std::string& b) {
   command.add_option("B", b, "second operand")->required()->check(set_path());
 }
 
-void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output) {
+void add_float_option(CLI::App& command, std::string& float_output) {
+  // A flag, not an option with an optional value: `--float A.off` must not
+  // take A.off for the mode. The mode goes after '=': --float=outer.
+  command
+      .add_flag("--float{nearest}", float_output,
+                "write doubles: --float or --float=nearest, a valid convex set near the exact one; "
+                "--float=outer, one that contains it")
+      ->check(CLI::IsMember({"nearest", "outer"}))
+      ->option_text("[=nearest|outer]");
+}
+
+void add_output_options(CLI::App& command, std::string& output, std::string& format, std::string& float_output) {
   command.add_option("-o,--output", output, "result file (default -, OFF on stdout)")->default_str("-");
   command
       .add_option("--format", format,
                   "off, obj, stl or ply (default: the output's extension; OFF for - and /dev/null, /dev/stdout, ...)")
       ->check(CLI::IsMember({"off", "obj", "stl", "ply"}, CLI::ignore_case));
-  command.add_flag("--float", float_output, "round output coordinates to the nearest double");
+  add_float_option(command, float_output);
 }
 
 void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::string& what) {

@@ -25,10 +25,14 @@ void add_read_limit_options(CLI::App& app);
 /// The operands A and B, both required paths of a set in any form (set_files.hpp).
 void add_operands(CLI::App& command, std::string& a, std::string& b);
 
+/// --float[=nearest|outer] into `float_output` (empty when not given; see
+/// coordinates_of in files.hpp).
+void add_float_option(CLI::App& command, std::string& float_output);
+
 /// -o, --format and --float of a command that writes a polyhedron. The
 /// output is checked when the command runs (its format may come from
 /// --format), before any work.
-void add_output_options(CLI::App& command, std::string& output, std::string& format, bool& float_output);
+void add_output_options(CLI::App& command, std::string& output, std::string& format, std::string& float_output);
 
 /// --max-memory SIZE into `bytes` (whose value is the default shown): the
 /// memory the output of `what` ("a sum") may be estimated to need.

@@ -32,7 +32,7 @@ struct PiecesSum {
   Options options;             ///< algorithm, threads, limits of the pairwise sums
   DecompositionOptions decomposition;
   Placement place_a, place_b;
-  bool float_output = false;
+  std::string float_output;  ///< --float: empty, "nearest" or "outer"
   bool stats = false;
 };
 

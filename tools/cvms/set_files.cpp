@@ -8,7 +8,9 @@
 #include "cvms/error.hpp"
 #include "cvms/halfspace_io.hpp"
 #include "cvms/halfspaces.hpp"
+#include "cvms/float_mesh.hpp"
 #include "cvms/set_io.hpp"
+#include "canonical_order.hpp"
 #include "files.hpp"
 #include "usage_error.hpp"
 
@@ -33,7 +35,7 @@ ConvexSet set_from_rows(const HalfspaceSystem& rows, const std::string& path) {
   try {
     return from_halfspaces(rows);
   } catch (const Error& e) {
-    throw Error(e.category(), input_name(path) + ": " + e.message());
+    throw Error(e.category(), (is_std_stream(path) ? std::string("standard output") : printable(path)) + ": " + e.message());
   }
 }
 
@@ -103,10 +105,37 @@ void write_set(const std::string& path, const ConvexSet& set, Coordinates coordi
   write_stdout([&](std::ostream& out) { write(out, set, chosen, "standard output", coordinates); });
 }
 
-void check_set_output(const std::string& path, const std::string& format, bool float_output) {
+namespace {
+
+// The set a text format holds in doubles: rounded as a whole, its doubles
+// then printed unchanged (Coordinates::double_ of a soup or set of doubles).
+ConvexSet rounded_for_output(const std::string& path, const ConvexSet& set, Coordinates coordinates) {
+  try {
+    return round_to_doubles(set, coordinates == Coordinates::double_outer ? FloatMode::outer : FloatMode::nearest);
+  } catch (const Error& e) {
+    throw Error(e.category(), (is_std_stream(path) ? std::string("standard output") : printable(path)) + ": " + e.message());
+  }
+}
+
+}  // namespace
+
+void write_canonical_set(const std::string& path, const ConvexSet& set, Coordinates coordinates,
+                         const std::string& format) {
+  const FileFormat chosen = output_format(path, format);
+  if (chosen == FileFormat::stl && coordinates == Coordinates::double_outer)
+    return write_set(path, set, coordinates, format);  // refused there, with the reason
+  const bool rounds = coordinates != Coordinates::exact && chosen != FileFormat::stl;
+  const ConvexSet rounded = rounds ? rounded_for_output(path, set, coordinates) : ConvexSet();
+  const ConvexSet& out = rounds ? rounded : set;
+  const Coordinates printed = rounds ? Coordinates::double_ : coordinates;
+  if (out.dimension() == 3) return write_soup(path, canonical_soup(out.polyhedron()), printed, format);
+  write_set(path, out, printed, format);
+}
+
+void check_set_output(const std::string& path, const std::string& format, const std::string& float_output) {
   if (!format.empty() || is_std_stream(path) || path.rfind("/dev/", 0) == 0) return check_output(path, format);
   if (set_form(path) == SetForm::mesh) return check_output(path, format);
-  if (float_output)
+  if (!float_output.empty())
     throw UsageError("--float rounds mesh coordinates: '" + printable(path) + "' is written exactly");
   check_output_directory(path);
 }

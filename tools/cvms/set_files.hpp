@@ -59,11 +59,17 @@ ConvexSet set_from_soup(PolygonSoup soup, const std::string& source);
 /// write_file(path, set), or OFF on stdout for "-".
 void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates, const std::string& format = {});
 
+/// As write_set, a polyhedron in the numbering of canonical_soup (flat sets
+/// are canonical already), so that the bytes depend on the set alone; in
+/// doubles, the set rounded as a whole (round_to_doubles) is numbered so.
+void write_canonical_set(const std::string& path, const ConvexSet& set, Coordinates coordinates,
+                         const std::string& format = {});
+
 /// Fails before any work if a set cannot be written to `path` as
 /// write_set_file would: checks of check_output for a mesh; for the other
 /// forms, no --format and no --float (rows and points are written exactly),
 /// and the output's directory.
-void check_set_output(const std::string& path, const std::string& format, bool float_output);
+void check_set_output(const std::string& path, const std::string& format, const std::string& float_output);
 
 /// Writes the set in the form of the path's extension (a mesh: write_set),
 /// a file of the plane when dimension is 2; atomically, as write_file.

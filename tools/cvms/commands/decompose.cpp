@@ -24,7 +24,7 @@ namespace {
 
 struct DecomposeArgs {
   std::string input, output = "-";
-  bool float_output = false;
+  std::string float_output;  ///< --float: empty, "nearest" or "outer"
   bool json = false;
   DecompositionOptions options;
 };
@@ -59,7 +59,7 @@ void register_decompose(CLI::App& app, Commands& commands) {
       app.add_subcommand("decompose", "cut a solid into convex pieces, written as one OBJ object per piece");
   command->add_option("A", args->input, "the solid (convex or not)")->required()->check(mesh_path());
   command->add_option("-o,--output", args->output, "pieces file, .obj (default -, OBJ on stdout)")->default_str("-");
-  command->add_flag("--float", args->float_output, "round output coordinates to the nearest double");
+  add_float_option(*command, args->float_output);
   command->add_flag("--json", args->json, "report as one JSON object: exact numbers as strings beside their doubles");
   add_decomposition_limit_options(*command, args->options.limits);
   commands.push_back(

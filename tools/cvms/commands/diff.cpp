@@ -24,7 +24,7 @@ namespace {
 
 struct DiffArgs {
   std::string a, b, output = "-", format;
-  bool float_output = false;
+  std::string float_output;  ///< --float: empty, "nearest" or "outer"
 };
 
 // The report goes to stderr when the difference goes to stdout.
@@ -57,7 +57,7 @@ void register_diff(CLI::App& app, Commands& commands) {
                       "output file, its form by extension as for A and B (.ine, .rows: the tightened rows); "
                       "'-' for OFF on stdout; 2-D when A and B are files of the plane");
   command->add_option("--format", args->format, "output format off|obj|stl|ply (default: from the extension)");
-  command->add_flag("--float", args->float_output, "write nearest doubles instead of exact rationals");
+  add_float_option(*command, args->float_output);
   commands.push_back({command, [args] { run_diff(*args); }});
 }
 

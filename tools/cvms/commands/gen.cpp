@@ -29,7 +29,7 @@ struct GenArgs {
   bool seed_given = false;
   int points = 0;      ///< 0: the shape's default
   int generators = 0;  ///< zonotope; 0: the default (10)
-  bool float_output = false;
+  std::string float_output;  ///< --float: empty, "nearest" or "outer"
   SumLimits limits;  ///< --max-memory (zonotope)
 };
 

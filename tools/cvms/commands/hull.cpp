@@ -23,7 +23,7 @@ namespace {
 struct HullArgs {
   std::string input, output = "-";
   std::string format;  ///< --format, empty: from the output path
-  bool float_output = false;
+  std::string float_output;  ///< --float: empty, "nearest" or "outer"
   std::string rows_input;  ///< --from-halfspaces
 };
 

@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "canonical_order.hpp"
 #include "commands.hpp"
 #include "cvms/error.hpp"
 #include "cvms/set_sum.hpp"
@@ -36,7 +35,7 @@ struct SumArgs {
   std::string format;  ///< --format, empty: from the output path
   Algorithm algorithm = Options{}.algorithm;
   unsigned threads = 1;  ///< --threads: Options::threads
-  bool float_output = false;
+  std::string float_output;  ///< --float: empty, "nearest" or "outer"
   bool stats = false;
   SumLimits limits;  ///< --max-facets, --max-memory
   Placement place_a, place_b;  ///< --rotate-a, --translate-b, --negate-b, ...
@@ -85,12 +84,8 @@ void sum_sets(const std::vector<ConvexSet>& operands, const SumArgs& args, std::
   const ConvexSet sum = with_limit_hint([&] { return minkowski_sum(operands, args.options()); });
   const auto time = std::chrono::steady_clock::now() - start;
   // The order of the operands decides which partial sums are made, and so
-  // the numbering of a polyhedron: written in an order of the set alone
-  // (flat sets are canonical already).
-  if (sum.dimension() == 3)
-    write_soup(args.output, canonical_soup(sum.polyhedron()), coordinates_of(args.float_output), args.format);
-  else
-    write_set(args.output, sum, coordinates_of(args.float_output), args.format);
+  // the numbering of a polyhedron: written in an order of the set alone.
+  write_canonical_set(args.output, sum, coordinates_of(args.float_output), args.format);
   if (!args.stats) return;
   for (std::size_t i = 0; i < operands.size(); ++i)
     report << "operand " << i + 1 << ": " << kind(operands[i]) << ", " << size_text(operands[i]) << "\n";
