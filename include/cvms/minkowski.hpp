@@ -7,6 +7,7 @@
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/diagnostics.hpp"
+#include "cvms/progress.hpp"
 
 namespace cvms {
 
@@ -89,6 +90,12 @@ struct Options {
   /// (cvms/diagnostics.hpp); null (the default) skips nothing and costs
   /// nothing: the counters are kept either way.
   SumDiagnostics* diagnostics = nullptr;
+  /// When not empty, hears the sum's progress and may stop it
+  /// (cvms/progress.hpp): CVMS reports the stages "sum: facets" (edges of A
+  /// searched) and "sum: output" (facet planes made), ESSDMS "sum: pairs"
+  /// (facets of A tested against B), CHMS "hull" (points settled). The
+  /// result does not depend on it. Empty (the default) costs nothing.
+  ProgressCallback progress;
 };
 
 /// What an algorithm did: the output's facets by kind. For CVMS and
