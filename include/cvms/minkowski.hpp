@@ -144,6 +144,7 @@ struct MinkowskiResult {
 ///   or an unknown option value.
 /// \throw Error(limit) if the sum is beyond options.limits (SumLimits),
 ///   before the exact output is built.
+/// \throw Error(cancelled) if options.progress returns false.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});
 

@@ -53,6 +53,11 @@ class ProgressReporter {
   /// Reports done = total, ending the stage. \throw Error(cancelled) as begin.
   void end();
 
+  /// True once the callback has asked to stop: for work that runs under a
+  /// callback of its own (the pairs of a union's sum, on several threads)
+  /// and stops when this one does.
+  [[nodiscard]] bool stopped() const noexcept { return stopped_.load(std::memory_order_relaxed); }
+
  private:
   void count(std::uint64_t n);
   void count_to(std::uint64_t done);
