@@ -18,6 +18,7 @@
 #include "machine_memory.hpp"
 #include "options.hpp"
 #include "placement.hpp"
+#include "progress_line.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
 #include "sizes.hpp"
@@ -35,6 +36,7 @@ struct SumArgs {
   unsigned threads = 1;  ///< --threads: Options::threads
   bool float_output = false;
   bool stats = false;
+  bool progress = false;  ///< --progress
   SumLimits limits;  ///< --max-facets, --max-memory
   Placement place_a, place_b;  ///< --rotate-a, --translate-b, --negate-b, ...
 
@@ -43,6 +45,7 @@ struct SumArgs {
     options.algorithm = algorithm;
     options.threads = threads;
     options.limits = limits;
+    options.progress = progress_callback(progress);
     return options;
   }
 };
@@ -139,6 +142,7 @@ void register_sum(CLI::App& app, Commands& commands) {
       ->check(CLI::Range(1u, 1024u))
       ->default_val(1u);
   command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");
+  add_progress_option(*command, args->progress);
   add_sum_limit_options(*command, args->limits);
   add_placement_options(*command, args->place_a, "a");
   add_placement_options(*command, args->place_b, "b");
