@@ -4,8 +4,8 @@
 // shown when stderr is no terminal and --progress is absent, and SIGINT in
 // the middle of a long sum ends it with exit code 130 and one line, the
 // existing output file byte for byte as it was and no temporary file left.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -49,7 +49,8 @@ class CliInterrupt : public cvms::test::CliTest {
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     const std::string err = (dir_.path() / "err.txt").string();
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     std::vector<std::string> words = {CVMS_CLI_PATH};
     words.insert(words.end(), args.begin(), args.end());
@@ -77,7 +78,8 @@ class CliInterrupt : public cvms::test::CliTest {
   // Whether pid has ended (without reaping it).
   static bool ended(pid_t pid) {
     siginfo_t info = {};
-    return waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT | WNOHANG) == 0 && info.si_pid == pid;
+    return waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT | WNOHANG) == 0 &&
+           info.si_pid == pid;
   }
 
   // The exit code of pid, -1 if a signal ended it, -2 if it did not end
@@ -121,8 +123,8 @@ TEST_F(CliInterrupt, CtrlCEndsALongSumWithTheOutputUntouched) {
   const std::string before = "an existing file the interrupted sum must leave as it is\n";
   dir_.write("out.off", before);
   const auto path = [&](const char* name) { return (dir_.path() / name).string(); };
-  const pid_t pid =
-      start({"sum", path("a.off"), path("b.off"), "--algorithm", "essdms", "--progress", "-o", path("out.off")});
+  const pid_t pid = start(
+      {"sum", path("a.off"), path("b.off"), "--algorithm", "essdms", "--progress", "-o", path("out.off")});
   ASSERT_GT(pid, 0);
   // The first progress line means the sum runs, with Ctrl-C caught.
   const bool running = wait_for_stderr(pid, "cvms: sum: pairs", std::chrono::seconds(120));

@@ -7,6 +7,8 @@
 // call returns within a bound), and leaves nothing behind (the suite runs
 // under AddressSanitizer's leak check and, label threads, under
 // ThreadSanitizer for the threaded sums).
+#include "cvms/progress.hpp"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -26,7 +28,6 @@
 #include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"
 #include "cvms/minkowski.hpp"
-#include "cvms/progress.hpp"
 #include "cvms/set_sum.hpp"
 #include "cvms/shapes.hpp"
 
@@ -93,7 +94,8 @@ void expect_well_formed(const std::vector<Progress>& reports) {
     else
       it->second = p;
   }
-  for (const auto& [stage, last] : open) ADD_FAILURE() << "stage " << stage << " ended at " << last.done << "/" << last.total;
+  for (const auto& [stage, last] : open)
+    ADD_FAILURE() << "stage " << stage << " ended at " << last.done << "/" << last.total;
 }
 
 std::string off_text(const ConvexPolyhedron& p) {
@@ -105,7 +107,8 @@ std::string off_text(const ConvexPolyhedron& p) {
 std::string off_text(const ConvexSet& s) {
   if (s.dimension() == 3) return off_text(s.polyhedron());
   std::ostringstream out;
-  for (const cvms::Vec3& v : s.vertices()) out << cvms::to_string(v.x) << ' ' << cvms::to_string(v.y) << ' ' << cvms::to_string(v.z) << '\n';
+  for (const cvms::Vec3& v : s.vertices())
+    out << cvms::to_string(v.x) << ' ' << cvms::to_string(v.y) << ' ' << cvms::to_string(v.z) << '\n';
   return out.str();
 }
 
@@ -147,7 +150,8 @@ void expect_reports_and_cancellation(const Operation& run, const std::string& na
   }
 }
 
-Operation sum_of(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm algorithm, unsigned threads) {
+Operation sum_of(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm algorithm,
+                 unsigned threads) {
   return [a, b, algorithm, threads](const ProgressCallback& progress) {
     Options options;
     options.algorithm = algorithm;
@@ -159,7 +163,8 @@ Operation sum_of(const ConvexPolyhedron& a, const ConvexPolyhedron& b, Algorithm
 
 TEST(Progress, CvmsSumOnOneThread) {
   expect_reports_and_cancellation(
-      sum_of(shapes::geodesic_sphere(4), shapes::rotated_geodesic_sphere(4), Algorithm::cvms, 1), "sphere4 + rotated");
+      sum_of(shapes::geodesic_sphere(4), shapes::rotated_geodesic_sphere(4), Algorithm::cvms, 1),
+      "sphere4 + rotated");
 }
 
 TEST(Progress, CvmsSumOnSeveralThreads) {
@@ -179,10 +184,9 @@ TEST(Progress, EssdmsAndChmsSums) {
 }
 
 TEST(Progress, SumOfManyReportsEachSumOfTwo) {
-  const std::vector<ConvexSet> operands = {ConvexSet(shapes::geodesic_sphere(3)),
-                                           ConvexSet::segment({0, 0, 0}, {1, 2, 3}),
-                                           ConvexSet(shapes::rotated_geodesic_sphere(3)),
-                                           ConvexSet::point({1, 1, 1})};
+  const std::vector<ConvexSet> operands = {
+      ConvexSet(shapes::geodesic_sphere(3)), ConvexSet::segment({0, 0, 0}, {1, 2, 3}),
+      ConvexSet(shapes::rotated_geodesic_sphere(3)), ConvexSet::point({1, 1, 1})};
   const Operation run = [&](const ProgressCallback& progress) {
     Options options;
     options.progress = progress;
@@ -199,7 +203,8 @@ TEST(Progress, SumOfManyReportsEachSumOfTwo) {
 TEST(Progress, ConvexHull) {
   const std::vector<cvms::Vec3> points = shapes::random_points(7, 20000);
   expect_reports_and_cancellation(
-      [&](const ProgressCallback& progress) { return off_text(cvms::convex_hull(points, progress)); }, "hull");
+      [&](const ProgressCallback& progress) { return off_text(cvms::convex_hull(points, progress)); },
+      "hull");
   expect_reports_and_cancellation(
       [&](const ProgressCallback& progress) { return off_text(cvms::convex_hull_set(points, progress)); },
       "hull set");
@@ -208,7 +213,8 @@ TEST(Progress, ConvexHull) {
 TEST(Progress, FromHalfspacesAndDifference) {
   const ConvexSet a(shapes::geodesic_sphere(4));
   // A short segment: the difference is a polyhedron, made from its rows.
-  const ConvexSet b = ConvexSet::segment({cvms::Rational(-1, 10), 0, 0}, {cvms::Rational(1, 10), cvms::Rational(1, 10), 0});
+  const ConvexSet b =
+      ConvexSet::segment({cvms::Rational(-1, 10), 0, 0}, {cvms::Rational(1, 10), cvms::Rational(1, 10), 0});
   const cvms::HalfspaceSystem rows = cvms::to_halfspaces(a);
   expect_reports_and_cancellation(
       [&](const ProgressCallback& progress) { return off_text(cvms::from_halfspaces(rows, progress)); },
@@ -256,8 +262,9 @@ TEST(Progress, ExceptionOfTheCallbackPropagates) {
       if (++calls == 3) throw std::runtime_error("from the callback");
       return true;
     };
-    EXPECT_THROW((void)cvms::minkowski_sum(shapes::geodesic_sphere(4), shapes::rotated_geodesic_sphere(4), options),
-                 std::runtime_error);
+    EXPECT_THROW(
+        (void)cvms::minkowski_sum(shapes::geodesic_sphere(4), shapes::rotated_geodesic_sphere(4), options),
+        std::runtime_error);
   }
 }
 

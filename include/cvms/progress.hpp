@@ -29,15 +29,16 @@ struct Progress {
   std::uint64_t total = 0;
 };
 
-/// Called by a long operation at coarse intervals (a chunk of work of at
-/// most about a millisecond on a current machine between two calls, and at
-/// the start and the end of each stage); returning false asks the operation
-/// to stop, which it does at its next check, throwing Error(cancelled) and
-/// leaving nothing behind (no partial result, every worker thread joined,
-/// every allocation freed). With Options::threads > 1 the callback may be
-/// called from any thread of the call, but never by two threads at once.
-/// An empty callback (the default) costs nothing. A std::stop_token becomes
-/// a callback as `[token](const Progress&) { return !token.stop_requested(); }`.
+/// Called by a long operation at coarse intervals (chunks of work of about a
+/// millisecond on a current machine, a few milliseconds at most, between
+/// two calls, and at the start and the end of each stage); returning false
+/// asks the operation to stop, which it does at its next check, throwing
+/// Error(cancelled) and leaving nothing behind (no partial result, every
+/// worker thread joined, every allocation freed). With Options::threads > 1
+/// the callback may be called from any thread of the call, but never by two
+/// threads at once. An empty callback (the default) costs nothing. A
+/// std::stop_token becomes a callback as
+/// `[token](const Progress&) { return !token.stop_requested(); }`.
 /// An exception the callback throws propagates out of the operation, which
 /// leaves nothing behind then either.
 using ProgressCallback = std::function<bool(const Progress&)>;

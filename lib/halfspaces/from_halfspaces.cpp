@@ -137,8 +137,8 @@ struct DualAnswer {
 
 // The vertices of {u : rows} around the strict interior point u0, in a chart
 // of dimension 2 or 3 (2: everything in the plane z == 0).
-DualAnswer dual_vertices(const std::vector<detail::LpRow>& rows, const std::vector<Rational>& u0, std::size_t dimension,
-                         const ProgressCallback& progress) {
+DualAnswer dual_vertices(const std::vector<detail::LpRow>& rows, const std::vector<Rational>& u0,
+                         std::size_t dimension, const ProgressCallback& progress) {
   std::vector<Vec3> q;
   q.reserve(rows.size());
   for (const detail::LpRow& row : rows) {
@@ -254,7 +254,8 @@ HalfspaceIntersection intersect_inequalities(std::span<const HalfspaceRow> inequ
               detail::bounded_vertices(rows, detail::short_interior_point(rows, lp.point), &reporter))
         return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};
     }
-    const DualAnswer dual = dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension, progress);
+    const DualAnswer dual =
+        dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension, progress);
     if (dual.unbounded) return {ConvexSet(), direction_to_space(chart, chart_vector(*dual.unbounded, dimension))};
     std::vector<Vec3> points;
     points.reserve(dual.vertices.size());

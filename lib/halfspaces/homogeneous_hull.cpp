@@ -151,9 +151,9 @@ void pole_from(const Cofactors<E>& c, HomogeneousPoint& y) {
 // the pole of each face's plane triple by pole_of(i, j, k, y), written into
 // one scratch point whose limbs are reused and stored from there.
 template <class PoleOf>
-PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& orient, const ExactCompareOrient& compare,
-                            std::vector<std::uint32_t>& source_index, FacePoles* face_poles, const PoleOf& pole_of,
-                            ProgressReporter* progress) {
+PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& orient,
+                            const ExactCompareOrient& compare, std::vector<std::uint32_t>& source_index,
+                            FacePoles* face_poles, const PoleOf& pole_of, ProgressReporter* progress) {
   if (!face_poles) return hull_soup(approx, orient, compare, source_index, nullptr, progress);
   std::vector<std::array<std::uint32_t, 3>> planes;
   PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes, progress);

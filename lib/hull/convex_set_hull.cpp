@@ -94,7 +94,9 @@ detail::AffineSpan detail::affine_span(std::span<const Vec3> points) {
   return span;
 }
 
-ConvexSet convex_hull_set(std::span<const Vec3> points) { return convex_hull_set(points, ProgressCallback()); }
+ConvexSet convex_hull_set(std::span<const Vec3> points) {
+  return convex_hull_set(points, ProgressCallback());
+}
 
 ConvexSet convex_hull_set(std::span<const Vec3> points, const ProgressCallback& progress) {
   const detail::AffineSpan span = detail::affine_span(points);

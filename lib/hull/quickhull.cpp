@@ -171,7 +171,9 @@ class Quickhull {
 
   // The stage "hull" (cvms/progress.hpp), in input points settled: on or
   // inside the hull so far, or outside the conflict lists. \pre before run().
-  void report_to(detail::ProgressReporter* progress) noexcept { progress_ = progress != nullptr ? progress : &silent_; }
+  void report_to(detail::ProgressReporter* progress) noexcept {
+    progress_ = progress != nullptr ? progress : &silent_;
+  }
 
   PolygonSoup run(std::vector<std::uint32_t>* source_index, std::vector<FacePlane>* face_planes = nullptr) {
     progress_->begin("hull", n_);

@@ -393,9 +393,9 @@ void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv
   }
 }
 
-SumFacetBuilder cvms_facets_reported(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                                     const ResearchOptions& research, SumCounters& stats,
-                                     ProgressReporter& progress) {
+SumFacetBuilder cvms_facets_reported(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                                     const Options& options, const ResearchOptions& research,
+                                     SumCounters& stats, ProgressReporter& progress) {
   check_search_modes(research);
   const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
   SumFacetBuilder out(a, b);

@@ -101,15 +101,21 @@ struct EdgeArcs {
 
 // Progress through the quadratic loops (cvms/progress.hpp): one stage whose
 // units are the outer loops' iterations, case after case; `base` is where a
-// case's iterations start. Each iteration scans the other polyhedron, so a
-// report every few of them is a report every millisecond or so.
+// case's iterations start. Each iteration scans `inner` features of the
+// other polyhedron (a few nanoseconds each), so a report every
+// pairs_per_report / inner iterations is a report every millisecond or so.
 struct PairProgress {
+  PairProgress(ProgressReporter& r, std::uint64_t b, std::uint64_t inner)
+      : reporter(r),
+        base(b),
+        every(std::max<std::uint64_t>(1, pairs_per_report / std::max<std::uint64_t>(inner, 1))) {}
+  void at(std::uint64_t i) const {
+    if (i % every == 0) reporter.reach(base + i);
+  }
+  static constexpr std::uint64_t pairs_per_report = 1 << 16;
   ProgressReporter& reporter;
   std::uint64_t base;
-  static constexpr std::uint64_t iterations_per_report = 16;
-  void at(std::uint64_t i) const {
-    if (i % iterations_per_report == 0) reporter.reach(base + i);
-  }
+  std::uint64_t every;
 };
 
 // Case 1 (Eqs. 6-7).
@@ -299,12 +305,14 @@ ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   ProgressReporter reporter(callback_of(callback));
   const std::uint64_t fa = a.num_facets(), fb = b.num_facets();
   reporter.begin("sum: pairs", 3 * fa + 2 * fb + arcs_a.size());
-  auto from = [&](std::uint64_t base) { return PairProgress{reporter, base}; };
-  coincident_facet_points(a, b, loc_a, loc_b, out, stats, from(0));                      // case 1
-  facet_points_on_arcs(Operand::a, a, loc_a, b, arcs_b, out, stats, from(fa));           // case 2, f_A + e_B
-  facet_points_on_arcs(Operand::b, b, loc_b, a, arcs_a, out, stats, from(2 * fa));       // case 2, f_B + e_A
-  facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats, from(2 * fa + fb));  // case 4, f_A + v_B
-  facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats, from(3 * fa + fb));  // case 4, f_B + v_A
+  // Case 4 walks to one maximiser: a few dozen steps an iteration.
+  constexpr std::uint64_t walk = 64;
+  // Case 1; case 2, f_A + e_B and f_B + e_A; case 4, f_A + v_B and f_B + v_A.
+  coincident_facet_points(a, b, loc_a, loc_b, out, stats, {reporter, 0, fb});
+  facet_points_on_arcs(Operand::a, a, loc_a, b, arcs_b, out, stats, {reporter, fa, arcs_b.size()});
+  facet_points_on_arcs(Operand::b, b, loc_b, a, arcs_a, out, stats, {reporter, 2 * fa, arcs_a.size()});
+  facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats, {reporter, 2 * fa + fb, walk});
+  facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats, {reporter, 3 * fa + fb, walk});
 
   // Every facet of A and every unmatched facet of B is a facet of the sum:
   // counted before case 3, whose pairs are counted before it starts.
@@ -314,7 +322,8 @@ ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const std::vector<std::uint32_t> ia = arcs_passing_precheck(a, arcs_a, cv_a);
   const std::vector<std::uint32_t> ib = arcs_passing_precheck(b, arcs_b, cv_b);
   work.add(saturating_product(ia.size(), ib.size()), "the arc pairs that pass the pre-check (e_A' e_B')");
-  crossing_edge_arcs(a, b, arcs_a, arcs_b, ia, ib, budget, out, stats, from(3 * fa + 2 * fb));  // case 3
+  crossing_edge_arcs(a, b, arcs_a, arcs_b, ia, ib, budget, out, stats,
+                     {reporter, 3 * fa + 2 * fb, ib.size()});  // case 3
   reporter.end();
   return out.build(1, &reporter);
 }

@@ -36,7 +36,8 @@ class ProgressLine {
  public:
   // Off a terminal, the first line comes after a second, or at a stage's end.
   explicit ProgressLine(bool terminal)
-      : terminal_(terminal), shown_(terminal ? std::chrono::steady_clock::time_point{} : std::chrono::steady_clock::now()) {}
+      : terminal_(terminal),
+        shown_(terminal ? std::chrono::steady_clock::time_point{} : std::chrono::steady_clock::now()) {}
 
   void show(const Progress& p) {
     const auto now = std::chrono::steady_clock::now();
