@@ -9,6 +9,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/convex_set.hpp"
 #include "cvms/polygon_soup.hpp"
+#include "cvms/progress.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms {
@@ -21,6 +22,12 @@ namespace cvms {
 ///   (convex_hull_set takes such input).
 /// Complexity: O(n log n) expected for points in general position.
 ConvexPolyhedron convex_hull(std::span<const Vec3> points);
+
+/// convex_hull(points), reporting the stage "hull" (input points settled:
+/// on or inside the hull built so far) to `progress`, which may stop it
+/// (cvms/progress.hpp). Same result.
+/// \throw Error(cancelled) if `progress` returns false; else as above.
+ConvexPolyhedron convex_hull(std::span<const Vec3> points, const ProgressCallback& progress);
 
 /// The convex hull of points given as doubles, each coordinate taken as the
 /// exact binary number it is (no rounding anywhere; the vertices of the
@@ -39,6 +46,12 @@ ConvexPolyhedron convex_hull(std::span<const std::array<double, 3>> points);
 /// the polyhedron convex_hull computes. Never throws degenerate.
 /// Complexity: O(n) predicates to find the dimension, then O(n log n).
 ConvexSet convex_hull_set(std::span<const Vec3> points);
+
+/// convex_hull_set(points), reporting the hull of points that span 3D to
+/// `progress` as convex_hull does (the flat cases take linear time and
+/// report nothing). Same result.
+/// \throw Error(cancelled) if `progress` returns false.
+ConvexSet convex_hull_set(std::span<const Vec3> points, const ProgressCallback& progress);
 
 /// The same for points given as doubles, each coordinate taken as the exact
 /// binary number it is.

@@ -114,8 +114,12 @@ class ConvexUnion {
 /// counters summed over all pairs. An error from a pair stops the threads
 /// from taking more pairs and is rethrown, naming the pair; the pair named
 /// (and the result) is the same for every thread count: the first failing
-/// pair in (i, j) order.
+/// pair in (i, j) order. options.progress (cvms/progress.hpp) hears the
+/// stage "union: pairs", in pairs summed; the pairs' own stages are not
+/// reported (they run on several threads at once), but each pair stops
+/// soon after the callback asks to.
 /// \throw Error(invalid_argument) if either union is empty;
+/// \throw Error(cancelled) if options.progress returns false, naming a pair;
 /// \throw Error(limit) as minkowski_sum, for the first pair or the total,
 ///   naming the pair; also before any sum when n m pieces of at least 4
 ///   facets each could not fit the limits.

@@ -35,6 +35,7 @@
 #include "cvms/planar_sum.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/predicates.hpp"
+#include "cvms/progress.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/set_io.hpp"

@@ -18,6 +18,7 @@ enum class ErrorCategory {
   limit,             ///< a configured size limit was exceeded
   io,                ///< a file could not be opened, read or written
   invalid_argument,  ///< an API precondition was violated by the caller
+  cancelled,         ///< a progress callback asked a long operation to stop
 };
 
 /// Name of a category as used in messages ("parse", "topology", ...).

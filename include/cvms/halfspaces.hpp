@@ -79,6 +79,18 @@ HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequal
 /// The same for a system with equalities (each taken as two inequalities).
 HalfspaceIntersection intersect_halfspaces(const HalfspaceSystem& system);
 
+/// intersect_halfspaces(inequalities), reporting the stage "hull" of its
+/// exact dual hull (in rows settled) to `progress`, which may stop it
+/// (cvms/progress.hpp); the stage may run more than once (a hull that finds
+/// the set unbounded or flat, then the hull in fewer dimensions). Same
+/// result. \throw Error(cancelled) if `progress` returns false.
+HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities,
+                                           const ProgressCallback& progress);
+
+/// The same for a system with equalities, with a progress callback.
+/// \throw Error(cancelled) if `progress` returns false.
+HalfspaceIntersection intersect_halfspaces(const HalfspaceSystem& system, const ProgressCallback& progress);
+
 /// The exact intersection of the half-spaces dot(normal, x) <= offset: a
 /// polyhedron, polygon, segment, point or the empty set (see
 /// intersect_halfspaces).
@@ -96,6 +108,16 @@ ConvexSet from_halfspaces(std::span<const HalfspaceRow> inequalities);
 /// \throw Error(invalid_argument) if the intersection is unbounded, naming
 ///   a direction.
 ConvexSet from_halfspaces(const HalfspaceSystem& system);
+
+/// from_halfspaces(inequalities), reporting to `progress` as
+/// intersect_halfspaces does. Same result.
+/// \throw Error(cancelled) if `progress` returns false; else as above.
+ConvexSet from_halfspaces(std::span<const HalfspaceRow> inequalities, const ProgressCallback& progress);
+
+/// from_halfspaces(system), reporting to `progress` as intersect_halfspaces
+/// does. Same result.
+/// \throw Error(cancelled) if `progress` returns false; else as above.
+ConvexSet from_halfspaces(const HalfspaceSystem& system, const ProgressCallback& progress);
 
 /// The same for rows {a_x, a_y, a_z, b} given as doubles, each taken as the
 /// exact binary number it is.
@@ -139,6 +161,12 @@ HalfspaceRow primitive_row(const HalfspaceRow& row);
 ///   of space).
 /// Complexity: O(facets of A × walk length) plus from_halfspaces.
 ConvexSet pontryagin_difference(const ConvexSet& a, const ConvexSet& b);
+
+/// pontryagin_difference(a, b), reporting the stage "difference: rows"
+/// (rows of A shifted by h_B) and then the stages of from_halfspaces to
+/// `progress`, which may stop it (cvms/progress.hpp). Same result.
+/// \throw Error(cancelled) if `progress` returns false; else as above.
+ConvexSet pontryagin_difference(const ConvexSet& a, const ConvexSet& b, const ProgressCallback& progress);
 
 /// A ⊕ (−B), the set of differences a − b (what collision detection calls
 /// the "Minkowski difference"; see the file comment): minkowski_sum(a,

@@ -7,6 +7,7 @@
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/diagnostics.hpp"
+#include "cvms/progress.hpp"
 
 namespace cvms {
 
@@ -89,6 +90,12 @@ struct Options {
   /// (cvms/diagnostics.hpp); null (the default) skips nothing and costs
   /// nothing: the counters are kept either way.
   SumDiagnostics* diagnostics = nullptr;
+  /// When not empty, hears the sum's progress and may stop it
+  /// (cvms/progress.hpp): CVMS reports the stages "sum: facets" (edges of A
+  /// searched) and "sum: output" (facet planes made), ESSDMS "sum: pairs"
+  /// (facets of A tested against B), CHMS "hull" (points settled). The
+  /// result does not depend on it. Empty (the default) costs nothing.
+  ProgressCallback progress;
 };
 
 /// What an algorithm did: the output's facets by kind. For CVMS and
@@ -137,6 +144,7 @@ struct MinkowskiResult {
 ///   or an unknown option value.
 /// \throw Error(limit) if the sum is beyond options.limits (SumLimits),
 ///   before the exact output is built.
+/// \throw Error(cancelled) if options.progress returns false.
 MinkowskiResult minkowski_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                               const Options& options = {});
 

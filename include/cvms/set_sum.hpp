@@ -25,7 +25,9 @@ namespace cvms {
 /// non-parallel planes as polygon + (the other's prism), whose sweep is then
 /// undone exactly.
 /// \throw Error(invalid_argument) for an unknown option value when both are
-///   polyhedra (the other cases read only options.limits).
+///   polyhedra (the other cases read only options.limits and take time
+///   linear in the output, so they report no progress).
+/// \throw Error(cancelled) if options.progress returns false (polyhedra).
 /// \throw Error(limit) if the sum is beyond options.limits (SumLimits:
 ///   max_output_facets, max_memory_bytes), decided before the output is
 ///   built: the direct constructions count their output facets first
@@ -43,7 +45,10 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
 /// depend on the order. Points are added as one translation; the others are
 /// summed two at a time, always the two with the fewest vertices, which
 /// keeps intermediate sums small (for n segments: a balanced tree of zonotopes).
+/// options.progress (cvms/progress.hpp) hears the stage "sums", in sums of
+/// two made, and between its reports the stages of each sum of two.
 /// \throw Error(invalid_argument) as the sum of two (when two polyhedra meet).
+/// \throw Error(cancelled) if options.progress returns false.
 /// \throw Error(limit) if a sum of two on the way is beyond options.limits
 ///   (then so is the whole: a sum has at least the facets of a partial
 ///   sum); when all operands are segments and points, also if the bound of

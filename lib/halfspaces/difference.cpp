@@ -9,6 +9,7 @@
 #include "cvms/halfspaces.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/set_sum.hpp"
+#include "progress_reporter.hpp"
 #include "support_operand.hpp"
 
 namespace cvms {
@@ -36,9 +37,16 @@ class SupportFunction {
   VertexId start_ = VertexId(0);
 };
 
+// Rows shifted between two progress reports: each costs a short climb on B.
+constexpr std::size_t rows_per_report = 1024;
+
 }  // namespace
 
 ConvexSet pontryagin_difference(const ConvexSet& a, const ConvexSet& b) {
+  return pontryagin_difference(a, b, ProgressCallback());
+}
+
+ConvexSet pontryagin_difference(const ConvexSet& a, const ConvexSet& b, const ProgressCallback& progress) {
   if (b.empty()) {
     throw Error(ErrorCategory::invalid_argument,
                 "pontryagin_difference: B is empty (the difference would be all of space)");
@@ -48,13 +56,19 @@ ConvexSet pontryagin_difference(const ConvexSet& a, const ConvexSet& b) {
   std::vector<HalfspaceRow> shifted;
   shifted.reserve(rows.inequalities.size() + 2 * rows.equalities.size());
   SupportFunction h(b);
-  const auto shift = [&](const Vec3& n, const Rational& d) { shifted.push_back({n, d - h(n)}); };
+  detail::ProgressReporter reporter(detail::callback_of(progress));
+  reporter.begin("difference: rows", rows.inequalities.size() + 2 * rows.equalities.size());
+  const auto shift = [&](const Vec3& n, const Rational& d) {
+    shifted.push_back({n, d - h(n)});
+    if (shifted.size() % rows_per_report == 0) reporter.advance(rows_per_report);
+  };
   for (const HalfspaceRow& r : rows.inequalities) shift(r.normal, r.offset);
   for (const HalfspaceRow& r : rows.equalities) {
     shift(r.normal, r.offset);
     shift(-r.normal, -r.offset);
   }
-  return from_halfspaces(shifted);
+  reporter.end();
+  return from_halfspaces(shifted, progress);
 }
 
 ConvexSet minkowski_difference(const ConvexSet& a, const ConvexSet& b, const Options& options) {

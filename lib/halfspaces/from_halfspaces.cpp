@@ -38,6 +38,7 @@
 #include "homogeneous_dual.hpp"
 #include "intersection_polyhedron.hpp"
 #include "max_slack_lp.hpp"
+#include "progress_reporter.hpp"
 #include "short_interior_point.hpp"
 
 namespace cvms {
@@ -136,7 +137,8 @@ struct DualAnswer {
 
 // The vertices of {u : rows} around the strict interior point u0, in a chart
 // of dimension 2 or 3 (2: everything in the plane z == 0).
-DualAnswer dual_vertices(const std::vector<detail::LpRow>& rows, const std::vector<Rational>& u0, std::size_t dimension) {
+DualAnswer dual_vertices(const std::vector<detail::LpRow>& rows, const std::vector<Rational>& u0,
+                         std::size_t dimension, const ProgressCallback& progress) {
   std::vector<Vec3> q;
   q.reserve(rows.size());
   for (const detail::LpRow& row : rows) {
@@ -148,7 +150,7 @@ DualAnswer dual_vertices(const std::vector<detail::LpRow>& rows, const std::vect
     }
     q.push_back((1 / room) * a);
   }
-  const ConvexSet hull = convex_hull_set(q);
+  const ConvexSet hull = convex_hull_set(q, progress);
   DualAnswer answer;
   Vec3 center{0, 0, 0};
   for (std::size_t k = 0; k < dimension; ++k) center[static_cast<int>(k)] = u0[k];
@@ -217,7 +219,10 @@ Vec3 primitive(const Vec3& d) {
   return out;
 }
 
-HalfspaceIntersection intersect_inequalities(std::span<const HalfspaceRow> inequalities) {
+// The hulls report their stage "hull" to `progress`, each run afresh.
+HalfspaceIntersection intersect_inequalities(std::span<const HalfspaceRow> inequalities,
+                                             const ProgressCallback& progress) {
+  detail::ProgressReporter reporter(detail::callback_of(progress));
   // Any strict interior point gives the same bounded set, in the documented
   // order (halfspaces.hpp), so when the origin is one the LP is skipped and
   // the rows are dualised as given; an unbounded set still names its
@@ -225,7 +230,8 @@ HalfspaceIntersection intersect_inequalities(std::span<const HalfspaceRow> inequ
   bool known_unbounded = false;
   if (!inequalities.empty() && origin_strictly_inside(inequalities)) {
     const std::vector<Rational> origin{Rational(0), Rational(0), Rational(0)};
-    if (std::optional<detail::DualVertices> v = detail::bounded_vertices(detail::homogeneous_dual(inequalities, origin)))
+    if (std::optional<detail::DualVertices> v =
+            detail::bounded_vertices(detail::homogeneous_dual(inequalities, origin), &reporter))
       return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};
     known_unbounded = true;  // whatever the interior point: no second integer hull below
   }
@@ -245,37 +251,48 @@ HalfspaceIntersection intersect_inequalities(std::span<const HalfspaceRow> inequ
     // A chart of dimension 3 is all of space (restrict_chart drops an axis).
     if (dimension == 3 && !known_unbounded) {
       if (std::optional<detail::DualVertices> v =
-              detail::bounded_vertices(rows, detail::short_interior_point(rows, lp.point)))
+              detail::bounded_vertices(rows, detail::short_interior_point(rows, lp.point), &reporter))
         return {ConvexSet(detail::intersection_polyhedron(std::move(*v))), std::nullopt};
     }
-    const DualAnswer dual = dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension);
+    const DualAnswer dual =
+        dimension == 1 ? interval(rows) : dual_vertices(rows, lp.point, dimension, progress);
     if (dual.unbounded) return {ConvexSet(), direction_to_space(chart, chart_vector(*dual.unbounded, dimension))};
     std::vector<Vec3> points;
     points.reserve(dual.vertices.size());
     for (const Vec3& v : dual.vertices) points.push_back(to_space(chart, chart_vector(v, dimension)));
-    return {convex_hull_set(points), std::nullopt};
+    return {convex_hull_set(points, progress), std::nullopt};
   }
 }
 
 }  // namespace
 
 HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities) {
-  HalfspaceIntersection answer = intersect_inequalities(inequalities);
+  return intersect_halfspaces(inequalities, ProgressCallback());
+}
+
+HalfspaceIntersection intersect_halfspaces(std::span<const HalfspaceRow> inequalities,
+                                           const ProgressCallback& progress) {
+  HalfspaceIntersection answer = intersect_inequalities(inequalities, progress);
   if (answer.unbounded_direction) answer.unbounded_direction = primitive(*answer.unbounded_direction);
   return answer;
 }
 
 HalfspaceIntersection intersect_halfspaces(const HalfspaceSystem& system) {
+  return intersect_halfspaces(system, ProgressCallback());
+}
+
+HalfspaceIntersection intersect_halfspaces(const HalfspaceSystem& system, const ProgressCallback& progress) {
   // The equalities come after the inequalities, so without them the rows
   // are the inequalities as given: no copy (on Sphere5's rows the copy
   // cost a tenth of the intersection).
-  if (system.equalities.empty()) return intersect_halfspaces(std::span<const HalfspaceRow>(system.inequalities));
+  if (system.equalities.empty())
+    return intersect_halfspaces(std::span<const HalfspaceRow>(system.inequalities), progress);
   std::vector<HalfspaceRow> rows = system.inequalities;
   for (const HalfspaceRow& e : system.equalities) {
     rows.push_back(e);
     rows.push_back({-e.normal, -e.offset});
   }
-  return intersect_halfspaces(rows);
+  return intersect_halfspaces(rows, progress);
 }
 
 namespace {
@@ -295,7 +312,15 @@ ConvexSet from_halfspaces(std::span<const HalfspaceRow> inequalities) {
   return bounded_or_throw(intersect_halfspaces(inequalities));
 }
 
+ConvexSet from_halfspaces(std::span<const HalfspaceRow> inequalities, const ProgressCallback& progress) {
+  return bounded_or_throw(intersect_halfspaces(inequalities, progress));
+}
+
 ConvexSet from_halfspaces(const HalfspaceSystem& system) { return bounded_or_throw(intersect_halfspaces(system)); }
+
+ConvexSet from_halfspaces(const HalfspaceSystem& system, const ProgressCallback& progress) {
+  return bounded_or_throw(intersect_halfspaces(system, progress));
+}
 
 ConvexSet from_halfspaces(std::span<const std::array<double, 4>> inequalities) {
   std::vector<HalfspaceRow> rows;

@@ -151,11 +151,12 @@ void pole_from(const Cofactors<E>& c, HomogeneousPoint& y) {
 // the pole of each face's plane triple by pole_of(i, j, k, y), written into
 // one scratch point whose limbs are reused and stored from there.
 template <class PoleOf>
-PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& orient, const ExactCompareOrient& compare,
-                            std::vector<std::uint32_t>& source_index, FacePoles* face_poles, const PoleOf& pole_of) {
-  if (!face_poles) return hull_soup(approx, orient, compare, source_index);
+PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& orient,
+                            const ExactCompareOrient& compare, std::vector<std::uint32_t>& source_index,
+                            FacePoles* face_poles, const PoleOf& pole_of, ProgressReporter* progress) {
+  if (!face_poles) return hull_soup(approx, orient, compare, source_index, nullptr, progress);
   std::vector<std::array<std::uint32_t, 3>> planes;
-  PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes);
+  PolygonSoup soup = hull_soup(approx, orient, compare, source_index, &planes, progress);
   *face_poles = FacePoles();
   face_poles->poles.reserve(planes.size());
   HomogeneousPoint y;
@@ -176,7 +177,8 @@ PolygonSoup hull_with_poles(const ApproximatePoints& approx, const ExactOrient& 
 // cofactors cached, from which the poles come too.
 template <int E>
 PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const ApproximatePoints& approx,
-                          std::vector<std::uint32_t>& source_index, FacePoles* face_poles) {
+                          std::vector<std::uint32_t>& source_index, FacePoles* face_poles,
+                          ProgressReporter* progress) {
   ScratchVector<FixedRow<E>> rows;
   rows.reserve(points.size());
   for (const HomogeneousPoint& p : points)
@@ -196,7 +198,8 @@ PolygonSoup hull_in_width(const std::vector<HomogeneousPoint>& points, const App
   return hull_with_poles(approx, orient, compare, source_index, face_poles,
                          [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, HomogeneousPoint& y) {
                            pole_from<E>(cache.cofactors(i, j, k, rows), y);
-                         });
+                         },
+                         progress);
 }
 
 mpz_class dot(const std::array<mpz_class, 3>& u, const HomogeneousPoint& p) { return u[0] * p.x + u[1] * p.y + u[2] * p.z; }
@@ -219,14 +222,15 @@ void mpz_pole(const std::vector<HomogeneousPoint>& points, std::uint32_t i, std:
 }  // namespace
 
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>& source_index, FacePoles* face_poles) {
+                             std::vector<std::uint32_t>& source_index, FacePoles* face_poles,
+                             ProgressReporter* progress) {
   const Approximation approx = approximate(points);
   const ApproximatePoints approximate_points{approx.coords, approx.max_error, exact};
   switch (width(points)) {
-    case 1: return hull_in_width<1>(points, approximate_points, source_index, face_poles);
-    case 2: return hull_in_width<2>(points, approximate_points, source_index, face_poles);
-    case 3: return hull_in_width<3>(points, approximate_points, source_index, face_poles);
-    case 4: return hull_in_width<4>(points, approximate_points, source_index, face_poles);
+    case 1: return hull_in_width<1>(points, approximate_points, source_index, face_poles, progress);
+    case 2: return hull_in_width<2>(points, approximate_points, source_index, face_poles, progress);
+    case 3: return hull_in_width<3>(points, approximate_points, source_index, face_poles, progress);
+    case 4: return hull_in_width<4>(points, approximate_points, source_index, face_poles, progress);
     default: break;
   }
   const ExactOrient orient = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
@@ -239,7 +243,8 @@ PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const 
   return hull_with_poles(approximate_points, orient, compare, source_index, face_poles,
                          [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, HomogeneousPoint& y) {
                            mpz_pole(points, i, j, k, y);
-                         });
+                         },
+                         progress);
 }
 
 }  // namespace cvms::detail

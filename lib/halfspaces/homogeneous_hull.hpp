@@ -13,6 +13,7 @@
 #include "cvms/polygon_soup.hpp"
 #include "homogeneous_orient.hpp"
 #include "limb_arena.hpp"
+#include "progress_reporter.hpp"
 
 namespace cvms::detail {
 
@@ -44,8 +45,10 @@ struct FacePoles {
 /// triple's 4×4 determinant, y = (−C_0, −C_1, −C_2, C_3), which the exact
 /// predicates have mostly computed for that plane already.
 /// \pre exact(i) == standing_for(points[i]).
-/// \throw Error(degenerate) as hull_soup.
+/// Reports the hull's stage to `progress` (hull_soup).
+/// \throw Error(degenerate) as hull_soup; Error(cancelled) if progress asks.
 PolygonSoup homogeneous_hull(const std::vector<HomogeneousPoint>& points, const std::function<Vec3(std::uint32_t)>& exact,
-                             std::vector<std::uint32_t>& source_index, FacePoles* face_poles = nullptr);
+                             std::vector<std::uint32_t>& source_index, FacePoles* face_poles = nullptr,
+                             ProgressReporter* progress = nullptr);
 
 }  // namespace cvms::detail

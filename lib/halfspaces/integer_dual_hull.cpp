@@ -80,11 +80,11 @@ void vertex_from_pole(const HomogeneousPoint& origin, const HomogeneousPoint& y,
 }  // namespace
 
 std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows,
-                                             const std::vector<Rational>& x0) {
-  return bounded_vertices(homogeneous_dual(rows, x0));
+                                             const std::vector<Rational>& x0, ProgressReporter* progress) {
+  return bounded_vertices(homogeneous_dual(rows, x0), progress);
 }
 
-std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
+std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous, ProgressReporter* progress) {
   DualVertices out;
   out.dual = std::move(homogeneous);
   const HomogeneousDual& dual = out.dual;
@@ -93,7 +93,7 @@ std::optional<DualVertices> bounded_vertices(HomogeneousDual homogeneous) {
   FacePoles poles;
   try {
     soup = homogeneous_hull(
-        dual.points, [&](std::uint32_t i) { return standing_for(dual.points[i]); }, row_of, &poles);
+        dual.points, [&](std::uint32_t i) { return standing_for(dual.points[i]); }, row_of, &poles, progress);
   } catch (const Error& e) {
     // Dual points that do not span 3D: the origin is not interior to their
     // hull, so the set is unbounded.

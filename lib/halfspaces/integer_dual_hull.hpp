@@ -29,6 +29,7 @@
 #include "cvms/vec.hpp"
 #include "homogeneous_dual.hpp"
 #include "max_slack_lp.hpp"
+#include "progress_reporter.hpp"
 
 namespace cvms::detail {
 
@@ -46,9 +47,11 @@ struct DualVertices {
 /// around the same x0 gives them; nothing if the set is unbounded (the
 /// caller names a direction from the rational dual hull).
 /// \pre a_i·x0 < b_i for every row.
-std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, const std::vector<Rational>& x0);
+/// The dual hull reports its stage to `progress` (hull_soup).
+std::optional<DualVertices> bounded_vertices(const std::vector<LpRow>& rows, const std::vector<Rational>& x0,
+                                             ProgressReporter* progress = nullptr);
 
 /// The same from the rows' dual (homogeneous_dual.hpp), taken over.
-std::optional<DualVertices> bounded_vertices(HomogeneousDual dual);
+std::optional<DualVertices> bounded_vertices(HomogeneousDual dual, ProgressReporter* progress = nullptr);
 
 }  // namespace cvms::detail

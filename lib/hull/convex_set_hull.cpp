@@ -95,6 +95,10 @@ detail::AffineSpan detail::affine_span(std::span<const Vec3> points) {
 }
 
 ConvexSet convex_hull_set(std::span<const Vec3> points) {
+  return convex_hull_set(points, ProgressCallback());
+}
+
+ConvexSet convex_hull_set(std::span<const Vec3> points, const ProgressCallback& progress) {
   const detail::AffineSpan span = detail::affine_span(points);
   const auto& w = span.witness;
   switch (span.dimension) {
@@ -107,7 +111,7 @@ ConvexSet convex_hull_set(std::span<const Vec3> points) {
     case 2:
       return coplanar_hull(points, cross(points[w[1]] - points[0], points[w[2]] - points[0]));
     default:
-      return ConvexSet(convex_hull(points));
+      return ConvexSet(convex_hull(points, progress));
   }
 }
 

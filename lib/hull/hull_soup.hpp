@@ -12,6 +12,7 @@
 #include "cvms/polygon_soup.hpp"
 #include "cvms/sign.hpp"
 #include "cvms/vec.hpp"
+#include "progress_reporter.hpp"
 
 namespace cvms {
 
@@ -25,8 +26,11 @@ namespace cvms {
 /// \throw Error(degenerate) if the points do not span 3D, saying whether there
 ///   are none, or they are all equal, all collinear or all coplanar.
 /// \throw Error(limit) for 2^32 - 1 or more points.
+/// Reports the stage "hull" (points settled) to `progress` if given, and
+/// stops by its Error(cancelled).
 /// Complexity: O(n log n) expected for random input, O(n) extra memory.
-PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* source_index = nullptr);
+PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* source_index = nullptr,
+                      detail::ProgressReporter* progress = nullptr);
 
 /// The same for points given as doubles, each taken exactly: only the points
 /// that an undecided predicate or the output needs become rationals.
@@ -46,7 +50,8 @@ struct ApproximatePoints {
   std::function<Vec3(std::uint32_t)> exact;       ///< the exact point i
 };
 /// The same for points known by approximations.
-PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index = nullptr);
+PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index = nullptr,
+                      detail::ProgressReporter* progress = nullptr);
 
 /// The sign of orient3d (predicates.hpp) of the exact input points with the
 /// given indices.
@@ -74,6 +79,7 @@ using ExactCompareOrient =
 /// lie on the face's plane but need not be corners of the face.
 PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, ExactCompareOrient compare,
                       std::vector<std::uint32_t>& source_index,
-                      std::vector<std::array<std::uint32_t, 3>>* face_planes = nullptr);
+                      std::vector<std::array<std::uint32_t, 3>>* face_planes = nullptr,
+                      detail::ProgressReporter* progress = nullptr);
 
 }  // namespace cvms

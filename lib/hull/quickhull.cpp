@@ -169,13 +169,21 @@ class Quickhull {
     lazy_.assign(n_, none);
   }
 
+  // The stage "hull" (cvms/progress.hpp), in input points settled: on or
+  // inside the hull so far, or outside the conflict lists. \pre before run().
+  void report_to(detail::ProgressReporter* progress) noexcept {
+    progress_ = progress != nullptr ? progress : &silent_;
+  }
+
   PolygonSoup run(std::vector<std::uint32_t>* source_index, std::vector<FacePlane>* face_planes = nullptr) {
+    progress_->begin("hull", n_);
     std::uint32_t simplex[4];
     initial_simplex(simplex);
     reserve_for_points();
     build_simplex(simplex);
     expand();
     PolygonSoup soup = extract(source_index, face_planes);
+    progress_->end();
     predicate_counters().filtered += plane_decisions_;
     return soup;
   }
@@ -647,6 +655,8 @@ class Quickhull {
     // dropped early (half the predicate calls of last-in-first-out on
     // random balls).
     for (std::size_t next_pending = 0; next_pending < pending_.size(); ++next_pending) {
+      // Each point added settles the points it sees: n - live_ grows.
+      if (next_pending % eyes_per_report == 0) progress_->reach(n_ - live_);
       std::uint32_t start = pending_[next_pending];
       if (!tris_[start].alive || tris_[start].begin == tris_[start].end) continue;
       const std::uint32_t eye = pool_[tris_[start].begin + tris_[start].farthest].point;
@@ -812,6 +822,10 @@ class Quickhull {
   std::span<const Vec3> points_;  // exact input (empty for double input)
   bool exact_input_ = false;      // points_ holds the input, else make_exact_ makes it
   std::uint32_t n_ = 0;
+  // Hull steps between two progress reports: a millisecond or less.
+  static constexpr std::size_t eyes_per_report = 512;
+  detail::ProgressReporter silent_{nullptr};
+  detail::ProgressReporter* progress_ = &silent_;
   std::span<const Coords> coords_;  // the double approximations
   ScratchVector<Coords> own_coords_;
   double error_ = 0;  // bounds |coords_ - exact| for every coordinate
@@ -851,8 +865,10 @@ class Quickhull {
 
 }  // namespace
 
-PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* source_index) {
+PolygonSoup hull_soup(std::span<const Vec3> points, std::vector<std::uint32_t>* source_index,
+                      detail::ProgressReporter* progress) {
   Quickhull qh(points);
+  qh.report_to(progress);
   return qh.run(source_index);
 }
 
@@ -872,14 +888,18 @@ PolygonSoup hull_soup(std::span<const std::array<double, 3>> points,
   return qh.run(source_index);
 }
 
-PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index) {
+PolygonSoup hull_soup(const ApproximatePoints& points, std::vector<std::uint32_t>* source_index,
+                      detail::ProgressReporter* progress) {
   Quickhull qh(points);
+  qh.report_to(progress);
   return qh.run(source_index);
 }
 
 PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, ExactCompareOrient compare,
-                      std::vector<std::uint32_t>& source_index, std::vector<FacePlane>* face_planes) {
+                      std::vector<std::uint32_t>& source_index, std::vector<FacePlane>* face_planes,
+                      detail::ProgressReporter* progress) {
   Quickhull qh(points, std::move(orient), std::move(compare));
+  qh.report_to(progress);
   if (face_planes) face_planes->clear();
   return qh.run(&source_index, face_planes);
 }
@@ -887,6 +907,11 @@ PolygonSoup hull_soup(const ApproximatePoints& points, ExactOrient orient, Exact
 ConvexPolyhedron convex_hull(std::span<const Vec3> points) {
   // The soup already has maximal convex facets and only extreme vertices.
   return detail::trusted_polyhedron(hull_soup(points));
+}
+
+ConvexPolyhedron convex_hull(std::span<const Vec3> points, const ProgressCallback& progress) {
+  detail::ProgressReporter reporter(detail::callback_of(progress));
+  return detail::trusted_polyhedron(hull_soup(points, nullptr, &reporter));
 }
 
 ConvexPolyhedron convex_hull(std::span<const std::array<double, 3>> points) {

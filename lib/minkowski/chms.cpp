@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "chms.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
 #include "filtered_arithmetic.hpp"
@@ -43,6 +44,11 @@ void check_pair_count(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
 }  // namespace
 
 ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits) {
+  return detail::chms(a, b, limits, {});
+}
+
+ConvexPolyhedron detail::chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
+                              const ProgressCallback& progress) {
   check_pair_count(a, b, limits);
   const std::uint64_t count = std::uint64_t{a.num_vertices()} * b.num_vertices();
   const std::uint32_t nb = b.num_vertices();
@@ -66,7 +72,8 @@ ConvexPolyhedron chms(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
                                  return a.vertex(VertexId(k / nb)) + b.vertex(VertexId(k % nb));
                                }};
   // The soup already has maximal convex facets and only extreme vertices.
-  return detail::trusted_polyhedron(hull_soup(sums));
+  detail::ProgressReporter reporter(detail::callback_of(progress));
+  return detail::trusted_polyhedron(hull_soup(sums, nullptr, &reporter));
 }
 
 }  // namespace cvms

@@ -73,6 +73,11 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
   return out;
 }
 
+// Edges of A whose edge facets are searched between two progress reports:
+// the walk costs a few microseconds an edge, the paper's search a scan of B.
+constexpr std::size_t walk_edges_per_report = 256;
+constexpr std::size_t paper_edges_per_report = 8;
+
 // Step 3 with the paper's search (Section 4.3, Eqs. 4 and 5), decided exactly.
 //
 // Conventions (lib/minkowski/arc_crossing.hpp). For a halfedge h with
@@ -107,13 +112,17 @@ std::vector<HalfedgeId> edges_passing_property1(const ConvexPolyhedron& p, const
 // horizon edge and the is_parallel test is implied.)
 void edge_facets_paper(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                        const std::vector<HalfedgeId>& edges_a, const std::vector<HalfedgeId>& edges_b,
-                       const EdgeFacetBudget& budget, SumFacetBuilder& out, SumCounters& stats) {
+                       const EdgeFacetBudget& budget, SumFacetBuilder& out, SumCounters& stats,
+                       ProgressReporter& progress) {
   const Mesh& ma = a.mesh();
   const Mesh& mb = b.mesh();
   std::vector<Sign> visibility(b.num_facets());  // sign of <d_A, n(f_B)>: positive = invisible
   std::uint64_t found = 0;
+  std::size_t searched = 0;
   for (HalfedgeId ha : edges_a) {
     budget.check(found);
+    // Each edge scans all of B: a few of them are a report's worth.
+    if (++searched % paper_edges_per_report == 0) progress.reach(Mesh::edge(ha).index());
     const Vec3 da = a.edge_vector(ha);
     const ApproxVec3 da_approx = ApproxVec3::of(da);
     const Vec3Ref da_ref{da, da_approx};
@@ -169,11 +178,14 @@ std::size_t add_traced_facets(const ConvexPolyhedron& a, const ConvexPolyhedron&
 
 // Step 3 with the arc walk, for the edges of A that pass Property 1.
 void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
-                      const EdgeFacetBudget& budget, SumFacetBuilder& out, SumCounters& stats) {
+                      const EdgeFacetBudget& budget, SumFacetBuilder& out, SumCounters& stats,
+                      ProgressReporter& progress) {
   ArcTraceScratch scratch;
   std::uint64_t found = 0;
+  std::size_t traced = 0;
   for (HalfedgeId ha : edges_passing_property1(a, cv_a)) {
     budget.check(found);
+    if (++traced % walk_edges_per_report == 0) progress.reach(Mesh::edge(ha).index());
     found += add_traced_facets(a, b, cv_a, ha, scratch, out, stats.edge_candidates);
   }
   stats.edge_facets += found;
@@ -196,11 +208,12 @@ void edge_facets_walk(const ConvexPolyhedron& a, const ConvexPolyhedron& b, cons
 class ThreadedTrace {
  public:
   ThreadedTrace(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const ContributingVertices& cv_a,
-                const EdgeFacetBudget& budget, unsigned threads)
+                const EdgeFacetBudget& budget, unsigned threads, ProgressReporter& progress)
       : a_(a),
         b_(b),
         cv_a_(cv_a),
         budget_(budget),
+        progress_(progress),
         facets_of_edge_(a.num_edges()),
         chunk_ends_((facets_of_edge_.size() + chunk_size - 1) / chunk_size) {
     // One thread per chunk at most, the caller included.
@@ -218,6 +231,7 @@ class ThreadedTrace {
       if (!budget_.allows(found_.load(std::memory_order_relaxed))) return;
       const std::size_t c = next_chunk_.fetch_add(1, std::memory_order_relaxed);
       if (c >= chunk_ends_.size()) return;
+      if (c % chunks_per_report == 0) progress_.reach(c * chunk_size);
       std::uint64_t found = 0;
       for (std::size_t e = c * chunk_size; e < std::min((c + 1) * chunk_size, facets_of_edge_.size()); ++e) {
         const HalfedgeId ha = Mesh::halfedge(EdgeId(static_cast<std::uint32_t>(e)));
@@ -250,6 +264,7 @@ class ThreadedTrace {
 
  private:
   static constexpr std::size_t chunk_size = 64;
+  static constexpr std::size_t chunks_per_report = walk_edges_per_report / chunk_size;
   struct Lane {
     Lane(const ConvexPolyhedron& a, const ConvexPolyhedron& b) : out(a, b) {}
     SumFacetBuilder out;
@@ -267,6 +282,7 @@ class ThreadedTrace {
   const ConvexPolyhedron& b_;
   const ContributingVertices& cv_a_;
   const EdgeFacetBudget& budget_;
+  ProgressReporter& progress_;
   std::vector<std::size_t> facets_of_edge_;  // by edge of A, each written by the thread tracing it
   std::vector<ChunkEnd> chunk_ends_;         // each written by the thread tracing the chunk
   std::vector<Lane> lanes_;
@@ -377,17 +393,9 @@ void add_corner_facets(const ConvexPolyhedron& b, const ContributingVertices& cv
   }
 }
 
-}  // namespace
-
-ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                          const ResearchOptions& research, SumCounters& stats) {
-  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats);
-  const bool large = facets.num_facets() >= research.worker_minimums.output_facets;
-  return facets.build(large ? usable_threads(options, research) : 1);
-}
-
-SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
-                            const ResearchOptions& research, SumCounters& stats) {
+SumFacetBuilder cvms_facets_reported(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
+                                     const Options& options, const ResearchOptions& research,
+                                     SumCounters& stats, ProgressReporter& progress) {
   check_search_modes(research);
   const bool walk_vertices = research.contributing_vertex_search == ContributingVertexSearch::walk;
   SumFacetBuilder out(a, b);
@@ -432,13 +440,13 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
       Worker tracer;  // after what it writes: destroyed (joined) first
       bool refused = false;
       try {
-        tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats); });
+        tracer.start([&] { edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats, progress); });
       } catch (const std::system_error&) {
         refused = true;  // no thread to be had now: this one traces after step 2, the same facets
       }
       corner_facets();
       if (refused) {
-        edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats);
+        edge_facets_walk(a, b, cv_a, budget, tracer_out, tracer_stats, progress);
       } else {
         tracer.join();  // its predicates count as this thread's
       }
@@ -447,7 +455,7 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
       stats.edge_facets += tracer_stats.edge_facets;
       return out;
     }
-    ThreadedTrace trace(a, b, cv_a, budget, threads);
+    ThreadedTrace trace(a, b, cv_a, budget, threads, progress);
     run_on_threads(trace.threads(), [&](unsigned thread) {
       if (thread == 0) corner_facets();
       trace.run(thread);
@@ -459,10 +467,30 @@ SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   if (research.edge_facet_search == EdgeFacetSearch::paper) {
     const std::vector<HalfedgeId> edges_a = edges_passing_property1(a, cv_a);
     const std::vector<HalfedgeId> edges_b = edges_passing_property1(b, cv_b);
-    edge_facets_paper(a, b, edges_a, edges_b, budget, out, stats);
+    edge_facets_paper(a, b, edges_a, edges_b, budget, out, stats, progress);
   } else {
-    edge_facets_walk(a, b, cv_a, budget, out, stats);
+    edge_facets_walk(a, b, cv_a, budget, out, stats, progress);
   }
+  return out;
+}
+
+}  // namespace
+
+ConvexPolyhedron cvms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                          const ResearchOptions& research, SumCounters& stats) {
+  ProgressReporter progress(callback_of(options.progress));
+  const SumFacetBuilder facets = cvms_facets(a, b, options, research, stats, &progress);
+  const bool large = facets.num_facets() >= research.worker_minimums.output_facets;
+  return facets.build(large ? usable_threads(options, research) : 1, &progress);
+}
+
+SumFacetBuilder cvms_facets(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const Options& options,
+                            const ResearchOptions& research, SumCounters& stats, ProgressReporter* reporter) {
+  ProgressReporter silent(nullptr);
+  ProgressReporter& progress = reporter != nullptr ? *reporter : silent;
+  progress.begin("sum: facets", a.num_edges());
+  SumFacetBuilder out = cvms_facets_reported(a, b, options, research, stats, progress);
+  progress.end();
   return out;
 }
 

@@ -99,11 +99,31 @@ struct EdgeArcs {
   [[nodiscard]] Vec3Ref pole(std::size_t i) const noexcept { return {poles[i], pole_approx[i]}; }
 };
 
+// Progress through the quadratic loops (cvms/progress.hpp): one stage whose
+// units are the outer loops' iterations, case after case; `base` is where a
+// case's iterations start. Each iteration scans `inner` features of the
+// other polyhedron (a few nanoseconds each), so a report every
+// pairs_per_report / inner iterations is a report every millisecond or so.
+struct PairProgress {
+  PairProgress(ProgressReporter& r, std::uint64_t b, std::uint64_t inner)
+      : reporter(r),
+        base(b),
+        every(std::max<std::uint64_t>(1, pairs_per_report / std::max<std::uint64_t>(inner, 1))) {}
+  void at(std::uint64_t i) const {
+    if (i % every == 0) reporter.reach(base + i);
+  }
+  static constexpr std::uint64_t pairs_per_report = 1 << 16;
+  ProgressReporter& reporter;
+  std::uint64_t base;
+  std::uint64_t every;
+};
+
 // Case 1 (Eqs. 6-7).
 void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& b,
                              std::vector<FacetPointLocation>& loc_a, std::vector<FacetPointLocation>& loc_b,
-                             SumFacetBuilder& out, SumCounters& stats) {
+                             SumFacetBuilder& out, SumCounters& stats, PairProgress progress) {
   for (FaceId fa : a.mesh().faces()) {
+    progress.at(fa.index());
     const Vec3Ref na = detail::normal_ref(a, fa);
     for (FaceId fb : b.mesh().faces()) {
       // The facet normals of one polyhedron are pairwise distinct, so a
@@ -124,9 +144,10 @@ void coincident_facet_points(const ConvexPolyhedron& a, const ConvexPolyhedron& 
 // Case 2 (Eqs. 8-11) for the facet points of p against the arcs of q.
 void facet_points_on_arcs(Operand which, const ConvexPolyhedron& p, std::vector<FacetPointLocation>& loc,
                           const ConvexPolyhedron& q, const EdgeArcs& arcs_q, SumFacetBuilder& out,
-                          SumCounters& stats) {
+                          SumCounters& stats, PairProgress progress) {
   const Mesh& mq = q.mesh();
   for (FaceId f : p.mesh().faces()) {
+    progress.at(f.index());
     if (loc[f.index()].where != Location::unknown) continue;
     const Vec3Ref n = detail::normal_ref(p, f);
     for (std::size_t i = 0; i < arcs_q.size(); ++i) {
@@ -149,9 +170,10 @@ void facet_points_on_arcs(Operand which, const ConvexPolyhedron& p, std::vector<
 // Case 4: the facet points of p left over lie inside vertex regions of q.
 void facet_points_in_vertex_regions(Operand which, const ConvexPolyhedron& p,
                                     std::vector<FacetPointLocation>& loc, const ConvexPolyhedron& q,
-                                    SumFacetBuilder& out, SumCounters& stats) {
+                                    SumFacetBuilder& out, SumCounters& stats, PairProgress progress) {
   std::vector<VertexId> cv;
   for (FaceId f : p.mesh().faces()) {
+    progress.at(f.index());
     if (loc[f.index()].where != Location::unknown) continue;
     // One maximiser: two or more would put the facet point on an arc or a
     // facet point of q (the directions maximised by an edge of q are its
@@ -243,13 +265,14 @@ std::uint64_t location_pair_tests(const ConvexPolyhedron& a, const ConvexPolyhed
 void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const EdgeArcs& arcs_a,
                         const EdgeArcs& arcs_b, const std::vector<std::uint32_t>& ia,
                         const std::vector<std::uint32_t>& ib, const OutputBudget& budget, SumFacetBuilder& out,
-                        SumCounters& stats) {
+                        SumCounters& stats, PairProgress progress) {
   const Mesh& ma = a.mesh();
   const std::uint64_t translated = stats.translated_facets, corner = stats.corner_facets;
   std::uint64_t found = 0;
   auto check = [&] { budget.check(translated, corner, found); };
   for (std::uint32_t i : ia) {
     check();
+    progress.at(i);
     const HalfedgeId ha = arcs_a.halfedges[i];
     const ArcRef arc_a{detail::normal_ref(a, ma.face(ha)), detail::normal_ref(a, ma.face(Mesh::twin(ha))),
                        arcs_a.pole(i)};
@@ -269,7 +292,7 @@ void crossing_edge_arcs(const ConvexPolyhedron& a, const ConvexPolyhedron& b, co
 }  // namespace
 
 ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
-                            SumCounters& stats) {
+                            SumCounters& stats, const ProgressCallback& callback) {
   PairWork work(limits);
   work.add(location_pair_tests(a, b), "the facet point locations (f_A f_B + f_A e_B + f_B e_A + f_A v_B + f_B v_A)");
   const OutputBudget budget(limits, "essdms");
@@ -279,11 +302,17 @@ ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const EdgeArcs arcs_a(a);
   const EdgeArcs arcs_b(b);
 
-  coincident_facet_points(a, b, loc_a, loc_b, out, stats);              // case 1
-  facet_points_on_arcs(Operand::a, a, loc_a, b, arcs_b, out, stats);    // case 2, f_A + e_B
-  facet_points_on_arcs(Operand::b, b, loc_b, a, arcs_a, out, stats);    // case 2, f_B + e_A
-  facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats);  // case 4, f_A + v_B
-  facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats);  // case 4, f_B + v_A
+  ProgressReporter reporter(callback_of(callback));
+  const std::uint64_t fa = a.num_facets(), fb = b.num_facets();
+  reporter.begin("sum: pairs", 3 * fa + 2 * fb + arcs_a.size());
+  // Case 4 walks to one maximiser: a few dozen steps an iteration.
+  constexpr std::uint64_t walk = 64;
+  // Case 1; case 2, f_A + e_B and f_B + e_A; case 4, f_A + v_B and f_B + v_A.
+  coincident_facet_points(a, b, loc_a, loc_b, out, stats, {reporter, 0, fb});
+  facet_points_on_arcs(Operand::a, a, loc_a, b, arcs_b, out, stats, {reporter, fa, arcs_b.size()});
+  facet_points_on_arcs(Operand::b, b, loc_b, a, arcs_a, out, stats, {reporter, 2 * fa, arcs_a.size()});
+  facet_points_in_vertex_regions(Operand::a, a, loc_a, b, out, stats, {reporter, 2 * fa + fb, walk});
+  facet_points_in_vertex_regions(Operand::b, b, loc_b, a, out, stats, {reporter, 3 * fa + fb, walk});
 
   // Every facet of A and every unmatched facet of B is a facet of the sum:
   // counted before case 3, whose pairs are counted before it starts.
@@ -293,9 +322,10 @@ ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b
   const std::vector<std::uint32_t> ia = arcs_passing_precheck(a, arcs_a, cv_a);
   const std::vector<std::uint32_t> ib = arcs_passing_precheck(b, arcs_b, cv_b);
   work.add(saturating_product(ia.size(), ib.size()), "the arc pairs that pass the pre-check (e_A' e_B')");
-  crossing_edge_arcs(a, b, arcs_a, arcs_b, ia, ib, budget, out, stats);  // case 3
-
-  return out.build();
+  crossing_edge_arcs(a, b, arcs_a, arcs_b, ia, ib, budget, out, stats,
+                     {reporter, 3 * fa + 2 * fb, ib.size()});  // case 3
+  reporter.end();
+  return out.build(1, &reporter);
 }
 
 }  // namespace cvms::detail

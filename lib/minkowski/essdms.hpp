@@ -14,7 +14,8 @@ namespace cvms::detail {
 /// non-empty, and `stats` starts at zero (its facet counts feed the budget).
 /// \throw Error(limit) beyond `limits`, before the loop or the output that
 ///   would pass them (output_budget.hpp).
+/// \throw Error(cancelled) when `progress` (cvms/progress.hpp) asks to stop.
 ConvexPolyhedron essdms_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumLimits& limits,
-                            SumCounters& stats);
+                            SumCounters& stats, const ProgressCallback& progress = {});
 
 }  // namespace cvms::detail

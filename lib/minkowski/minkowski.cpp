@@ -4,6 +4,7 @@
 // diagnostics; the algorithms' names.
 #include "cvms/minkowski.hpp"
 
+#include "chms.hpp"
 #include "cvms_algorithm.hpp"
 #include "cvms/error.hpp"
 #include "filtered_predicates.hpp"
@@ -43,10 +44,10 @@ MinkowskiResult detail::minkowski_sum(const ConvexPolyhedron& a, const ConvexPol
       result.polyhedron = cvms_sum(a, b, options, research, counters);
       break;
     case Algorithm::chms:
-      result.polyhedron = cvms::chms(a, b, options.limits);
+      result.polyhedron = detail::chms(a, b, options.limits, options.progress);
       break;
     case Algorithm::essdms:
-      result.polyhedron = essdms_sum(a, b, options.limits, counters);
+      result.polyhedron = essdms_sum(a, b, options.limits, counters, options.progress);
       break;
     default:
       throw Error(ErrorCategory::invalid_argument,

@@ -530,8 +530,16 @@ void SumFacetBuilder::write_normal(FacetPlanes& planes, std::size_t i, NormalScr
   scratch.pack(i, scratch.normal);
 }
 
-ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
-  if (threads > 1) return build_on_two_threads();
+ConvexPolyhedron SumFacetBuilder::build(unsigned threads, ProgressReporter* progress) const {
+  ProgressReporter silent(nullptr);
+  ProgressReporter& reporter = progress != nullptr ? *progress : silent;
+  reporter.begin("sum: output", num_facets());
+  ConvexPolyhedron result = threads > 1 ? build_on_two_threads(reporter) : build_on_one_thread(reporter);
+  reporter.end();
+  return result;
+}
+
+ConvexPolyhedron SumFacetBuilder::build_on_one_thread(ProgressReporter& progress) const {
   // The vertices and normals are packed, each keeping its long numerators'
   // limbs; only Vec3 vertices (the fallback) keep theirs in an arena the
   // result keeps.
@@ -540,7 +548,13 @@ ConvexPolyhedron SumFacetBuilder::build(unsigned threads) const {
   FacetPlanes planes;
   DyadicPoints& normals = size_packed_planes(planes, num_facets())->packed_for_writing();
   NormalScratch scratch(*this, normals, normals.limbs());
-  write_normals(planes, 0, num_facets(), scratch);
+  // In chunks only to report between them: the normals are independent.
+  const std::size_t chunk = progress.active() ? progress_chunk : num_facets();
+  for (std::size_t begin = 0; begin < num_facets(); begin += chunk) {
+    const std::size_t end = std::min(begin + chunk, num_facets());
+    write_normals(planes, begin, end, scratch);
+    progress.advance(end - begin);
+  }
   return assemble(std::move(output.mesh), std::move(output.approx), std::move(planes), std::move(limbs));
 }
 
@@ -604,7 +618,7 @@ class ChunkCounter {
 
 }  // namespace
 
-ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
+ConvexPolyhedron SumFacetBuilder::build_on_two_threads(ProgressReporter& progress) const {
   // Three parts: the numbering of the vertices with the mesh's topology
   // (this thread; it reads no coordinate), the facet normals (a worker
   // starts on them at once, into planes it sizes), and the vertices'
@@ -634,7 +648,12 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
   auto take_normals = [&](LimbArena& arena) {
     if (packed_normals == nullptr) return;  // the worker failed to size them
     NormalScratch scratch(*this, packed_normals->packed_for_writing(), arena);
-    normals.take([&](std::size_t begin, std::size_t end) { write_normals(planes, begin, end, scratch); });
+    std::size_t unreported = 0;
+    normals.take([&](std::size_t begin, std::size_t end) {
+      write_normals(planes, begin, end, scratch);
+      unreported += end - begin;
+      if (unreported >= progress_chunk) progress.advance(std::exchange(unreported, 0));
+    });
   };
   auto take_vertices = [&](LimbArena& arena) {
     if (positions == nullptr) return;  // the calling thread failed before sizing them
@@ -666,7 +685,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads() const {
         }
       });
     } catch (const std::system_error&) {
-      return build(1);  // no thread to be had now: one thread builds the same polyhedron
+      return build_on_one_thread(progress);  // no thread to be had now: one thread builds the same polyhedron
     }
     CountDownOnce meshed_done(meshed);
     try {

@@ -20,6 +20,7 @@
 #include "dyadic_points.hpp"
 #include "filtered_predicates.hpp"
 #include "polyhedron_builder.hpp"
+#include "progress_reporter.hpp"
 #include "realloc_vector.hpp"
 
 namespace cvms::detail {
@@ -73,7 +74,9 @@ class SumFacetBuilder {
   /// one numbers the vertices and builds the mesh's topology; then both
   /// share what is left of the normals and the vertices' coordinates (same
   /// result).
-  [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1) const;
+  /// When `progress` is given, the build reports the stage "sum: output" to
+  /// it, in facet normals done, and stops by its Error(cancelled).
+  [[nodiscard]] ConvexPolyhedron build(unsigned threads = 1, ProgressReporter* progress = nullptr) const;
   /// The mesh build() makes, with its points, but no facet planes: what
   /// every representation of the output needs (the benchmarks' `limit mesh`).
   [[nodiscard]] Mesh build_mesh() const;
@@ -91,7 +94,10 @@ class SumFacetBuilder {
   void write_normals(FacetPlanes& planes, std::size_t begin, std::size_t end, NormalScratch& scratch) const;
   // Facet i's normal and its approximation into planes.
   void write_normal(FacetPlanes& planes, std::size_t i, NormalScratch& scratch) const;
-  [[nodiscard]] ConvexPolyhedron build_on_two_threads() const;
+  [[nodiscard]] ConvexPolyhedron build_on_one_thread(ProgressReporter& progress) const;
+  [[nodiscard]] ConvexPolyhedron build_on_two_threads(ProgressReporter& progress) const;
+  // Facet normals written between two progress reports: a few milliseconds.
+  static constexpr std::size_t progress_chunk = 4096;
   // build()'s mesh with its points, and the points' approximations. Points
   // that are not dyadic keep their limbs in *limbs, or their own if null.
   struct MeshWithApprox {

@@ -14,6 +14,7 @@ const char* to_string(ErrorCategory category) noexcept {
     case ErrorCategory::limit: return "limit";
     case ErrorCategory::io: return "io";
     case ErrorCategory::invalid_argument: return "invalid_argument";
+    case ErrorCategory::cancelled: return "cancelled";
   }
   return "unknown";
 }

@@ -19,6 +19,7 @@
 
 #include "cvms/predicates.hpp"
 #include "output_budget.hpp"
+#include "progress_reporter.hpp"
 #include "representation_order.hpp"
 #include "set_sum_parts.hpp"
 
@@ -112,6 +113,10 @@ ConvexSet fold_smallest_first(std::span<const ConvexSet> operands, const Vec3& o
   for (const ConvexSet& s : operands)
     if (s.dimension() > 0) queue.push({{s.num_vertices(), position++}, s});
   if (queue.empty()) return ConvexSet::point(offset);
+  // The stage "sums", in sums of two done; each sum of two reports its own
+  // stages in between, to the same callback.
+  detail::ProgressReporter progress(detail::callback_of(options.progress));
+  progress.begin("sums", queue.size() - 1);
   while (queue.size() > 1) {
     ConvexSet x = queue.top().second;
     queue.pop();
@@ -119,7 +124,9 @@ ConvexSet fold_smallest_first(std::span<const ConvexSet> operands, const Vec3& o
     queue.pop();
     ConvexSet sum = minkowski_sum(x, y, options);
     queue.push({{sum.num_vertices(), position++}, std::move(sum)});
+    progress.advance(1);
   }
+  progress.end();
   return queue.top().second.translated(offset);
 }
 

@@ -27,6 +27,7 @@
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
 #include "cvms/minkowski.hpp"
+#include "progress_reporter.hpp"
 #include "worker.hpp"
 
 namespace cvms {
@@ -77,10 +78,12 @@ void check_pair_count(std::size_t n, std::size_t m, const SumLimits& limits) {
 
 class PairSums {
  public:
-  PairSums(std::span<const ConvexPolyhedron> a, std::span<const ConvexPolyhedron> b, const Options& options)
+  PairSums(std::span<const ConvexPolyhedron> a, std::span<const ConvexPolyhedron> b, const Options& options,
+           detail::ProgressReporter& progress)
       : a_(a),
         b_(b),
         options_(options),
+        progress_(progress),
         budget_(facet_budget(options.limits)),
         outcomes_(a.size() * b.size()) {}
 
@@ -126,8 +129,12 @@ class PairSums {
     Options pair_options = options_;
     pair_options.threads = 1;
     pair_options.diagnostics = &outcome.diagnostics;
+    // The pairs run on several threads at once: they only hear whether the
+    // union's callback has asked to stop, which it hears once per pair.
+    if (progress_.active()) pair_options.progress = [this](const Progress&) { return !progress_.stopped(); };
     try {
       outcome.sum = minkowski_sum(a_[k / b_.size()], b_[k % b_.size()], pair_options).polyhedron;
+      progress_.advance(1);
     } catch (...) {
       outcome.error = std::current_exception();
       return false;
@@ -157,6 +164,7 @@ class PairSums {
 
   std::span<const ConvexPolyhedron> a_, b_;
   const Options& options_;
+  detail::ProgressReporter& progress_;
   std::uint64_t budget_;
   std::vector<PairOutcome> outcomes_;
   std::atomic<std::size_t> next_{0};
@@ -172,9 +180,13 @@ ConvexUnion minkowski_sum(const ConvexUnion& a, const ConvexUnion& b, const Opti
   if (b.empty())
     throw Error(ErrorCategory::invalid_argument, "minkowski_sum of unions: operand B has no pieces");
   check_pair_count(a.size(), b.size(), options.limits);
-  PairSums sums(a.pieces(), b.pieces(), options);
+  detail::ProgressReporter progress(detail::callback_of(options.progress));
+  progress.begin("union: pairs", a.size() * b.size());
+  PairSums sums(a.pieces(), b.pieces(), options, progress);
   sums.run();
-  return ConvexUnion(sums.take());
+  ConvexUnion sum(sums.take());
+  progress.end();
+  return sum;
 }
 
 }  // namespace cvms

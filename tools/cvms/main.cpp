@@ -2,7 +2,8 @@
 // Entry point of the `cvms` command-line tool: registers the commands
 // (commands.hpp), parses the command line with CLI11, runs the command it
 // selects and maps outcomes to exit codes: 0 success, 1 bad input (one line
-// on stderr, from the library's Error), 2 usage.
+// on stderr, from the library's Error), 2 usage, 130 interrupted by Ctrl-C
+// (interrupt.hpp).
 #include <gmp.h>
 
 #include <CLI/CLI.hpp>
@@ -15,7 +16,9 @@
 #include "cvms/error.hpp"
 #include "files.hpp"
 #include "heap_pages.hpp"
+#include "interrupt.hpp"
 #include "options.hpp"
+#include "progress_line.hpp"
 #include "usage_error.hpp"
 
 namespace {
@@ -51,13 +54,34 @@ cvms::cli::Commands register_commands(CLI::App& app) {
   return commands;
 }
 
-int run_selected(const cvms::cli::Commands& commands) {
+// Runs the selected command; a Ctrl-C that stopped it (Error(cancelled)
+// from the progress callback) is exit 130, other errors propagate.
+int run_interruptible(const cvms::cli::Commands& commands) {
   try {
     for (const cvms::cli::Command& command : commands)
       if (*command.app) command.run();
     // Every command may write to stdout (results, reports): output lost on
     // the way (a full disk, a closed pipe) is an error, never a success.
     cvms::cli::finish_stdout();
+  } catch (const cvms::Error& e) {
+    cvms::cli::finish_progress_line();
+    if (e.category() != cvms::ErrorCategory::cancelled) throw;
+    std::cerr << "cvms: interrupted; nothing was written\n";  // the callback stops only on Ctrl-C
+    return cvms::cli::exit_interrupted;
+  } catch (...) {
+    cvms::cli::finish_progress_line();
+    throw;
+  }
+  if (cvms::cli::interrupted()) {  // Ctrl-C after the last report: the write was atomic and is complete
+    std::cerr << "cvms: interrupted after the output was written\n";
+    return cvms::cli::exit_interrupted;
+  }
+  return 0;
+}
+
+int run_selected(const cvms::cli::Commands& commands) {
+  try {
+    return run_interruptible(commands);
   } catch (const cvms::cli::UsageError& e) {
     std::cerr << "cvms: " << one_line(e.what()) << "\nRun with --help for more information.\n";
     return exit_usage;
@@ -71,7 +95,6 @@ int run_selected(const cvms::cli::Commands& commands) {
     std::cerr << "cvms: internal error: " << one_line(e.what()) << "\n";
     return exit_bad_input;
   }
-  return 0;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "files.hpp"
 #include "keep_until_exit.hpp"
 #include "options.hpp"
+#include "progress_line.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
 #include "usage_error.hpp"
@@ -25,6 +26,7 @@ namespace {
 struct DiffArgs {
   std::string a, b, output = "-", format;
   std::string float_output;  ///< --float: empty, "nearest" or "outer"
+  bool progress = false;  ///< --progress
 };
 
 // The report goes to stderr when the difference goes to stdout.
@@ -36,7 +38,7 @@ void run_diff(const DiffArgs& args) {
   if (b.empty())
     throw Error(ErrorCategory::invalid_argument,
                 input_name(args.b) + ": B is empty (the difference A - B would be all of space)");
-  ConvexSet d = pontryagin_difference(a, b);
+  ConvexSet d = pontryagin_difference(a, b, progress_callback(args.progress));
   const int dimension = a_file.dimension == 2 && b_file.dimension == 2 ? 2 : 3;
   write_set_file(args.output, d, dimension, coordinates_of(args.float_output), args.format);
   report_set("difference", d, args.output == "-" ? std::cerr : std::cout);
@@ -58,6 +60,7 @@ void register_diff(CLI::App& app, Commands& commands) {
                       "'-' for OFF on stdout; 2-D when A and B are files of the plane");
   command->add_option("--format", args->format, "output format off|obj|stl|ply (default: from the extension)");
   add_float_option(*command, args->float_output);
+  add_progress_option(*command, args->progress);
   commands.push_back({command, [args] { run_diff(*args); }});
 }
 

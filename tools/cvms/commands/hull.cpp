@@ -14,6 +14,7 @@
 #include "files.hpp"
 #include "keep_until_exit.hpp"
 #include "options.hpp"
+#include "progress_line.hpp"
 #include "set_files.hpp"
 #include "usage_error.hpp"
 
@@ -25,13 +26,14 @@ struct HullArgs {
   std::string format;  ///< --format, empty: from the output path
   std::string float_output;  ///< --float: empty, "nearest" or "outer"
   std::string rows_input;  ///< --from-halfspaces
+  bool progress = false;   ///< --progress
 };
 
 // The readers name the file in their errors; from_halfspaces does not.
-ConvexSet set_from_rows(const std::string& path) {
+ConvexSet set_from_rows(const std::string& path, bool progress) {
   HalfspaceSystem rows = read_halfspace_rows(path);
   try {
-    return from_halfspaces(rows);
+    return from_halfspaces(rows, progress_callback(progress));
   } catch (const Error& e) {
     throw Error(e.category(), input_name(path) + ": " + e.message());
   }
@@ -41,7 +43,7 @@ ConvexSet set_from_rows(const std::string& path) {
 void hull_of_points(const HullArgs& args) {
   check_output(args.output, args.format);
   std::vector<Vec3> points = read_point_cloud(args.input);
-  ConvexSet hull = convex_hull_set(points);
+  ConvexSet hull = convex_hull_set(points, progress_callback(args.progress));
   write_set(args.output, hull, coordinates_of(args.float_output), args.format);
   keep_until_exit(std::move(hull));
   keep_until_exit(std::move(points));
@@ -49,7 +51,7 @@ void hull_of_points(const HullArgs& args) {
 
 void hull_from_halfspaces(const HullArgs& args) {
   check_output(args.output, args.format);
-  ConvexSet set = set_from_rows(args.rows_input);
+  ConvexSet set = set_from_rows(args.rows_input, args.progress);
   write_set(args.output, set, coordinates_of(args.float_output), args.format);
   keep_until_exit(std::move(set));
 }
@@ -71,6 +73,7 @@ void register_hull(CLI::App& app, Commands& commands) {
       ->add_option("--from-halfspaces", args->rows_input,
                    "the set bounded by the rows of this file (.ine cdd, other: 'a b c d' rows) instead of POINTS")
       ->excludes(points);
+  add_progress_option(*command, args->progress);
   commands.push_back({command, [args] { run_hull(*args); }});
 }
 

@@ -20,6 +20,7 @@
 #include "pieces_files.hpp"
 #include "pieces_sum.hpp"
 #include "placement.hpp"
+#include "progress_line.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
 #include "sizes.hpp"
@@ -37,6 +38,7 @@ struct SumArgs {
   unsigned threads = 1;  ///< --threads: Options::threads
   std::string float_output;  ///< --float: empty, "nearest" or "outer"
   bool stats = false;
+  bool progress = false;  ///< --progress
   SumLimits limits;  ///< --max-facets, --max-memory
   Placement place_a, place_b;  ///< --rotate-a, --translate-b, --negate-b, ...
   PiecesOptions pieces;  ///< --pieces (pieces_sum.hpp)
@@ -46,6 +48,7 @@ struct SumArgs {
     options.algorithm = algorithm;
     options.threads = threads;
     options.limits = limits;
+    options.progress = progress_callback(progress);
     return options;
   }
 };
@@ -149,6 +152,7 @@ void register_sum(CLI::App& app, Commands& commands) {
       ->check(CLI::Range(1u, 1024u))
       ->default_val(1u);
   command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");
+  add_progress_option(*command, args->progress);
   add_sum_limit_options(*command, args->limits);
   add_placement_options(*command, args->place_a, "a");
   add_placement_options(*command, args->place_b, "b");
