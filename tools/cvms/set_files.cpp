@@ -38,14 +38,17 @@ ConvexSet set_from_rows(const HalfspaceSystem& rows, const std::string& path) {
 }
 
 SetFile read_rows(const std::string& path) {
-  HalfspaceFile rows = read_halfspace_file_of_any_dimension(path, read_limits());
+  HalfspaceFile rows = read_within_budget(
+      path, [&](const ReadLimits& limits) { return read_halfspace_file_of_any_dimension(path, limits); });
   return {set_from_rows(rows.system, path), rows.dimension};
 }
 
 SetFile read_points_file(const std::string& path, SetForm form) {
-  std::ifstream in = open_input(path);
-  PointFile points = form == SetForm::cdd_points ? read_cdd_points_of_any_dimension(in, path, read_limits())
-                                                 : read_plain_points(in, path, read_limits());
+  PointFile points = read_within_budget(path, [&](const ReadLimits& limits) {
+    std::ifstream in = open_input(path);
+    return form == SetForm::cdd_points ? read_cdd_points_of_any_dimension(in, path, limits)
+                                       : read_plain_points(in, path, limits);
+  });
   return {convex_hull_set(points.points), points.dimension};
 }
 
@@ -84,7 +87,7 @@ SetFile read_set_file(const std::string& path) {
   switch (set_form(path)) {
     case SetForm::mesh:
       if (is_std_stream(path)) return {set_from_soup(read_soup(path), input_name(path))};
-      return {read_convex_set(path, read_limits())};
+      return {read_within_budget(path, [&](const ReadLimits& limits) { return read_convex_set(path, limits); })};
     case SetForm::cdd_rows:
     case SetForm::plain_rows:
       return read_rows(path);

@@ -58,6 +58,7 @@ void register_diff(CLI::App& app, Commands& commands) {
                       "'-' for OFF on stdout; 2-D when A and B are files of the plane");
   command->add_option("--format", args->format, "output format off|obj|stl (default: from the extension)");
   command->add_flag("--float", args->float_output, "write nearest doubles instead of exact rationals");
+  add_input_memory_option(*command);
   commands.push_back({command, [args] { run_diff(*args); }});
 }
 
