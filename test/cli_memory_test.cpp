@@ -29,7 +29,8 @@ namespace {
 
 // The tool's constants (input_memory.hpp, machine_memory.hpp), restated: the
 // tests check the behaviour they promise, not the code that computes it.
-constexpr std::uint64_t memory_per_input_byte = 144;
+constexpr std::uint64_t memory_per_mesh_byte = 144;
+constexpr std::uint64_t memory_per_row_byte = 256;  // rows and point lists
 constexpr std::uint64_t program_address_space = std::uint64_t{64} << 20;
 
 // The six faces of the cube [-1, 1]^3 as rows a b c d (a x + b y + c z <= d),
@@ -60,7 +61,8 @@ std::string duplicate_points(int count) {
   std::string text;
   for (int i = 0; i < count; ++i) {
     const int corner = i % 8;
-    text += std::to_string(corner & 1) + ' ' + std::to_string((corner >> 1) & 1) + ' ' + std::to_string(corner >> 2) + '\n';
+    text += std::to_string(corner & 1) + ' ' + std::to_string((corner >> 1) & 1) + ' ' +
+            std::to_string(corner >> 2) + '\n';
   }
   return text;
 }
@@ -76,7 +78,9 @@ std::string duplicate_cdd_points(int count) {
   return s.str();
 }
 
-std::string duplicate_off_vertices(int count) { return "OFF\n" + std::to_string(count) + " 0 0\n" + duplicate_points(count); }
+std::string duplicate_off_vertices(int count) {
+  return "OFF\n" + std::to_string(count) + " 0 0\n" + duplicate_points(count);
+}
 
 class CliMemory : public cvms::test::CliTest {
  protected:
@@ -93,8 +97,9 @@ class CliMemory : public cvms::test::CliTest {
   // signal ends the run itself (code -1), not a shell that reports it.
   [[nodiscard]] cvms::test::CliOutcome run_within(std::uint64_t kib, const std::string& args) const {
 #ifdef CVMS_CLI_PATH
-    return cvms::test::run_cli(dir_.path(), "/bin/sh",
-                               "-c \"ulimit -v " + std::to_string(kib) + " && exec '" CVMS_CLI_PATH "' " + args + "\"");
+    return cvms::test::run_cli(
+        dir_.path(), "/bin/sh",
+        "-c \"ulimit -v " + std::to_string(kib) + " && exec '" CVMS_CLI_PATH "' " + args + "\"");
 #else
     (void)kib;
     (void)args;
@@ -105,13 +110,14 @@ class CliMemory : public cvms::test::CliTest {
 
 TEST_F(CliMemory, AFileBeyondTheBudgetIsRefusedBeforeItIsRead) {
   dir_.write("dup.rows", duplicate_plain_rows(60'000));
-  const std::uint64_t estimate = size_of("dup.rows") * memory_per_input_byte;
-  cvms::test::CliOutcome o = run("hull --from-halfspaces dup.rows -o cube.off --max-memory " + std::to_string(estimate - 1));
+  const std::uint64_t estimate = size_of("dup.rows") * memory_per_row_byte;
+  cvms::test::CliOutcome o =
+      run("hull --from-halfspaces dup.rows -o cube.off --max-memory " + std::to_string(estimate - 1));
   EXPECT_EQ(o.code, 1) << o.err;
   EXPECT_EQ(o.err, "cvms: limit: dup.rows: an input of " + std::to_string(size_of("dup.rows")) +
                        " bytes is estimated to need up to " + std::to_string(estimate) +
-                       " bytes of memory (144 per byte), beyond the memory limit of " + std::to_string(estimate - 1) +
-                       " bytes; raise it with --max-memory\n");
+                       " bytes of memory (256 per byte), beyond the memory limit of " +
+                       std::to_string(estimate - 1) + " bytes; raise it with --max-memory\n");
   EXPECT_FALSE(std::filesystem::exists(dir_.path() / "cube.off"));
   o = run("hull --from-halfspaces dup.rows -o cube.off --max-memory " + std::to_string(estimate));
   ASSERT_EQ(o.code, 0) << o.err;
@@ -123,7 +129,7 @@ TEST_F(CliMemory, AFileBeyondTheBudgetIsRefusedBeforeItIsRead) {
 TEST_F(CliMemory, TheInputsOfACommandShareTheBudget) {
   dir_.write("a.xyz", duplicate_points(10'000));
   dir_.write("b.rows", duplicate_plain_rows(10'000));
-  const std::uint64_t a = size_of("a.xyz") * memory_per_input_byte, b = size_of("b.rows") * memory_per_input_byte;
+  const std::uint64_t a = size_of("a.xyz") * memory_per_row_byte, b = size_of("b.rows") * memory_per_row_byte;
   cvms::test::CliOutcome o = run("sum a.xyz b.rows -o s.off --max-memory " + std::to_string(a + b));
   ASSERT_EQ(o.code, 0) << o.err;
   o = run("sum a.xyz b.rows -o s.off --max-memory " + std::to_string(a + b - 1));
@@ -137,8 +143,9 @@ TEST_F(CliMemory, TheInputsOfACommandShareTheBudget) {
 
 TEST_F(CliMemory, EveryCommandTakesTheOption) {
   dir_.write("p.ext", duplicate_cdd_points(1'000));
-  dir_.write("cube.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
-                         "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
+  dir_.write("cube.off",
+             "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+             "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
   for (const std::string command :
        {"hull p.ext -o h.off", "check p.ext", "halfspaces p.ext -o h.ine", "diff p.ext cube.off -o d.off",
         "distance p.ext cube.off", "penetration p.ext cube.off", "sum p.ext cube.off -o s.off"}) {
@@ -158,8 +165,8 @@ TEST_F(CliMemory, AStreamStopsAtTheBudget) {
   const cvms::test::CliOutcome o = run("hull --from-halfspaces - -o cube.off --max-memory 1M < dup.ine");
   EXPECT_EQ(o.code, 1) << o.err;
   EXPECT_EQ(o.err, "cvms: limit: <stdin>: input is larger than the limit of " +
-                       std::to_string(budget / memory_per_input_byte) +
-                       " bytes (144 bytes of memory per byte of input, beyond the memory limit of " +
+                       std::to_string(budget / memory_per_row_byte) +
+                       " bytes (256 bytes of memory per byte of input, beyond the memory limit of " +
                        std::to_string(budget) + " bytes; raise it with --max-memory)\n");
 }
 
@@ -176,7 +183,8 @@ TEST_F(CliMemory, UnderAnAddressSpaceLimitTheDefaultBudgetRefusesInsteadOfAborti
     cvms::test::CliOutcome o = run_within(kib, "hull --from-halfspaces " + name + " -o cube.off");
     EXPECT_EQ(o.code, 1) << name << ": " << o.err;
     EXPECT_EQ(o.err.rfind("cvms: limit: " + name + ": an input of ", 0), 0u) << o.err;
-    EXPECT_NE(o.err.find("beyond the memory limit of 42991616 bytes; raise it with --max-memory"), std::string::npos)
+    EXPECT_NE(o.err.find("beyond the memory limit of 42991616 bytes; raise it with --max-memory"),
+              std::string::npos)
         << o.err;
     o = run_within(kib, "hull --from-halfspaces - -o cube.off < " + name);
     EXPECT_EQ(o.code, 1) << name << " on stdin: " << o.err;
@@ -197,14 +205,35 @@ TEST_F(CliMemory, TheEstimateBoundsWhatEachReaderTakes) {
   dir_.write("dup.xyz", duplicate_points(count));
   dir_.write("dup.ext", duplicate_cdd_points(count));
   dir_.write("dup.off", duplicate_off_vertices(count));
-  for (const auto& [command, file] :
-       {std::pair<std::string, std::string>{"hull --from-halfspaces", "dup.rows"},
-        {"hull --from-halfspaces", "dup.ine"}, {"hull", "dup.xyz"}, {"hull", "dup.ext"}, {"hull", "dup.off"},
-        {"check", "dup.ext"}, {"halfspaces -o h.ine", "dup.off"}}) {
-    const std::uint64_t estimate = size_of(file) * memory_per_input_byte;
+  // Files of the plane: the square [-1, 1]^2 as rows a b c, the unit square as corners x y.
+  constexpr const char* square[] = {"1 0 1\n", "-1 0 1\n", "0 1 1\n", "0 -1 1\n"};
+  std::string square_rows, square_corners;
+  for (int i = 0; i < count; ++i) {
+    square_rows += square[i % 4];
+    square_corners += std::to_string(i & 1) + ' ' + std::to_string((i >> 1) & 1) + '\n';
+  }
+  dir_.write("square.rows", square_rows);
+  dir_.write("square.xyz", square_corners);
+  dir_.write("origin.xyz", "0 0\n");
+  struct Case {
+    std::string args, file;
+    std::uint64_t per_byte;
+  };
+  for (const Case& c : {Case{"hull --from-halfspaces {} -o h.off", "dup.rows", memory_per_row_byte},
+                        Case{"hull --from-halfspaces {} -o h.off", "dup.ine", memory_per_row_byte},
+                        Case{"hull {} -o h.off", "dup.xyz", memory_per_row_byte},
+                        Case{"hull {} -o h.off", "dup.ext", memory_per_row_byte},
+                        Case{"hull {} -o h.off", "dup.off", memory_per_mesh_byte},
+                        Case{"check {}", "dup.ext", memory_per_row_byte},
+                        Case{"halfspaces {} -o h.ine", "dup.off", memory_per_mesh_byte},
+                        Case{"diff {} origin.xyz -o d.rows", "square.rows", memory_per_row_byte},
+                        Case{"diff {} origin.xyz -o d.xyz", "square.xyz", memory_per_row_byte}}) {
+    // origin.xyz, 4 bytes, is within the rounding of the budget.
+    const std::uint64_t estimate = size_of(c.file) * c.per_byte + 4 * memory_per_row_byte;
     const std::uint64_t kib = (estimate + program_address_space) / 1024;
-    const std::string args = command + " " + file + " --max-memory " + std::to_string(estimate) +
-                             (command.rfind("hull", 0) == 0 ? " -o h.off" : "");
+    std::string args = c.args;
+    args.replace(args.find("{}"), 2, c.file);
+    args += " --max-memory " + std::to_string(estimate);
     const cvms::test::CliOutcome o = run_within(kib, args);
     EXPECT_EQ(o.code, 0) << args << " within " << kib << " KiB: " << o.err;
   }

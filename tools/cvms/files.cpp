@@ -123,7 +123,8 @@ FileFormat output_format(const std::string& path, const std::string& format) {
 }
 
 PolygonSoup read_soup(const std::string& path) {
-  return read_within_budget(path, [&](const ReadLimits& limits) {
+  const InputCost cost = is_cdd_points_path(path) ? InputCost::rows_or_points : InputCost::mesh;
+  return read_within_budget(path, cost, [&](const ReadLimits& limits) {
     if (is_std_stream(path)) return read_stdin([&] { return read_off(std::cin, input_name(path), limits); });
     if (is_cdd_points_path(path)) {
       PolygonSoup soup;
@@ -136,13 +137,15 @@ PolygonSoup read_soup(const std::string& path) {
 
 ConvexPolyhedron read_polyhedron(const std::string& path) {
   if (is_std_stream(path)) return to_polyhedron(read_soup(path), input_name(path));
-  return read_within_budget(path, [&](const ReadLimits& limits) { return cvms::read_polyhedron(path, limits); });
+  return read_within_budget(path, InputCost::mesh,
+                            [&](const ReadLimits& limits) { return cvms::read_polyhedron(path, limits); });
 }
 
 HalfspaceSystem read_halfspace_rows(const std::string& path) {
-  return read_within_budget(path, [&](const ReadLimits& limits) {
+  return read_within_budget(path, InputCost::rows_or_points, [&](const ReadLimits& limits) {
     if (is_std_stream(path))
-      return read_stdin([&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), limits); });
+      return read_stdin(
+          [&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), limits); });
     if (is_cdd_points_path(path)) {
       // Read as cdd, so that its V-representation line is named, not a row error.
       std::ifstream in = open_input(path);
@@ -153,13 +156,17 @@ HalfspaceSystem read_halfspace_rows(const std::string& path) {
 }
 
 std::vector<Vec3> read_point_cloud(const std::string& path) {
-  return read_within_budget(path, [&](const ReadLimits& limits) {
-    if (is_std_stream(path)) return read_stdin([&] { return read_points(std::cin, input_name(path), limits); });
-    if (is_cdd_points_path(path)) return read_cdd_points_file(path, limits);
-    std::ifstream in = open_input(path);
-    if (lower_extension(path) == ".stl") return read_stl(in, path, limits).points;
-    return read_points(in, path, limits);
-  });
+  const std::string ext = lower_extension(path);
+  const bool mesh = !is_std_stream(path) && (ext == ".off" || ext == ".obj" || ext == ".stl");
+  return read_within_budget(
+      path, mesh ? InputCost::mesh : InputCost::rows_or_points, [&](const ReadLimits& limits) {
+        if (is_std_stream(path))
+          return read_stdin([&] { return read_points(std::cin, input_name(path), limits); });
+        if (is_cdd_points_path(path)) return read_cdd_points_file(path, limits);
+        std::ifstream in = open_input(path);
+        if (lower_extension(path) == ".stl") return read_stl(in, path, limits).points;
+        return read_points(in, path, limits);
+      });
 }
 
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,

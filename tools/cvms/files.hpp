@@ -35,19 +35,21 @@ std::string printable(std::string_view text);
 
 /// The format an output path is written in: `format` ("off", "obj", "stl")
 /// if given, else OFF for "-" and for devices without an extension
-/// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them tells.
+/// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them
+/// tells.
 FileFormat output_format(const std::string& path, const std::string& format);
 
-/// Runs `read` with the limits of input_read_limits(path) (input_memory.hpp:
-/// the memory a file is estimated to need is taken from --max-memory first);
-/// a stream stopped by the budget is reported with the option that raises it.
+/// Runs `read` with the limits of input_read_limits(path, cost)
+/// (input_memory.hpp: the memory a file is estimated to need is taken from
+/// --max-memory first); a stream stopped by the budget is reported with the
+/// option that raises it.
 template <class Read>
-auto read_within_budget(const std::string& path, Read&& read) {
-  const ReadLimits limits = input_read_limits(path);
+auto read_within_budget(const std::string& path, InputCost cost, Read&& read) {
+  const ReadLimits limits = input_read_limits(path, cost);
   try {
     return read(limits);
   } catch (const Error& e) {
-    rethrow_with_memory_hint(e, limits);
+    rethrow_with_memory_hint(e, limits, cost);
   }
 }
 

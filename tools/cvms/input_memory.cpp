@@ -32,9 +32,12 @@ std::string beyond_budget(std::uint64_t left) {
 
 }  // namespace
 
-std::uint64_t estimated_input_memory(std::uint64_t input_bytes) {
+std::uint64_t memory_per_input_byte(InputCost cost) { return cost == InputCost::mesh ? 144 : 256; }
+
+std::uint64_t estimated_input_memory(std::uint64_t input_bytes, InputCost cost) {
   constexpr std::uint64_t max = std::numeric_limits<std::uint64_t>::max();
-  return input_bytes > max / memory_per_input_byte ? max : input_bytes * memory_per_input_byte;
+  const std::uint64_t per_byte = memory_per_input_byte(cost);
+  return input_bytes > max / per_byte ? max : input_bytes * per_byte;
 }
 
 std::uint64_t& memory_budget() {
@@ -42,7 +45,7 @@ std::uint64_t& memory_budget() {
   return bytes;
 }
 
-ReadLimits input_read_limits(const std::string& path) {
+ReadLimits input_read_limits(const std::string& path, InputCost cost) {
   ReadLimits limits = read_limits();
   const std::uint64_t left = left_of_budget();
   struct stat info {};
@@ -50,26 +53,27 @@ ReadLimits input_read_limits(const std::string& path) {
   const auto size = regular ? static_cast<std::uint64_t>(info.st_size) : 0;
   // A file beyond --max-bytes gets the reader's own message, which names that option.
   if (regular && size > limits.max_bytes) return limits;
-  limits.max_bytes = std::min(limits.max_bytes, left / memory_per_input_byte);
+  limits.max_bytes = std::min(limits.max_bytes, left / memory_per_input_byte(cost));
   if (!regular) return limits;
-  const std::uint64_t estimate = estimated_input_memory(size);
+  const std::uint64_t estimate = estimated_input_memory(size, cost);
   if (estimate > left)
     throw Error(ErrorCategory::limit, path + ": an input of " + std::to_string(size) +
                                           " bytes is estimated to need up to " + std::to_string(estimate) +
-                                          " bytes of memory (" + std::to_string(memory_per_input_byte) +
+                                          " bytes of memory (" + std::to_string(memory_per_input_byte(cost)) +
                                           " per byte), " + beyond_budget(left));
   taken() += estimate;
   return limits;
 }
 
-void rethrow_with_memory_hint(const Error& e, const ReadLimits& limits) {
+void rethrow_with_memory_hint(const Error& e, const ReadLimits& limits, InputCost cost) {
   const std::string_view message = e.message();
   if (e.category() != ErrorCategory::limit || limits.max_bytes >= read_limits().max_bytes ||
       message.find("input is larger than the limit of " + std::to_string(limits.max_bytes) + " bytes") ==
           std::string_view::npos)
     throw e;
-  throw Error(e.category(), std::string(message) + " (" + std::to_string(memory_per_input_byte) +
-                                " bytes of memory per byte of input, " + beyond_budget(left_of_budget()) + ")");
+  throw Error(e.category(), std::string(message) + " (" + std::to_string(memory_per_input_byte(cost)) +
+                                " bytes of memory per byte of input, " + beyond_budget(left_of_budget()) +
+                                ")");
 }
 
 }  // namespace cvms::cli

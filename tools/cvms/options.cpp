@@ -71,8 +71,9 @@ void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::s
             bytes = parse_byte_size(text);
             memory_budget() = bytes;
           },
-          "refuse " + what + " is estimated to need more memory (bytes, or 512M, 4G, ...; by default half of "
-          "this machine's memory or of the address-space limit, ulimit -v, at most 4G)")
+          "refuse " + what +
+              " is estimated to need more memory (bytes, or 512M, 4G, ...; by default half of "
+              "this machine's memory or of the address-space limit, ulimit -v, at most 4G)")
       ->check([](const std::string& text) {
         try {
           parse_byte_size(text);
