@@ -16,14 +16,7 @@
 #include <string>
 
 #include "support/cli_runner.hpp"
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define CVMS_TEST_UNDER_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define CVMS_TEST_UNDER_SANITIZER 1
-#endif
-#endif
+#include "support/under_sanitizer.hpp"
 
 namespace {
 
