@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Machine-fitted sum limits for the tool (see machine_memory.hpp).
+// The tool's machine- and process-fitted memory budget (see machine_memory.hpp).
 #include "machine_memory.hpp"
 
 #include <algorithm>
