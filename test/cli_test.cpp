@@ -4,6 +4,7 @@
 // read back with the library and compared exactly with independent results
 // (hand-counted shapes, brute-force hulls of pairwise sums, CHMS).
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -349,7 +350,8 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
 
 // The CLI's default --max-memory as --help spells it, computed here from the
 // machine: the library's 4G, or half of the physical memory (or of a smaller
-// cgroup v2 limit) rounded down to MiB where that is less.
+// cgroup v2 limit, or of the address-space limit less 64 MiB) rounded down
+// to MiB where that is less.
 std::string expected_default_max_memory() {
   std::uint64_t usable = 0;
 #if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
@@ -360,6 +362,12 @@ std::string expected_default_max_memory() {
   if (cgroup >> limit && !limit.empty() && limit.find_first_not_of("0123456789") == std::string::npos &&
       limit.size() < 20 && (usable == 0 || std::stoull(limit) < usable))
     usable = std::stoull(limit);
+  struct rlimit address_space {};
+  constexpr std::uint64_t program = std::uint64_t{64} << 20;
+  if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY) {
+    const std::uint64_t left = std::max<std::uint64_t>(address_space.rlim_cur, program + (4 << 20)) - program;
+    if (usable == 0 || left < usable) usable = left;
+  }
   if (usable < (std::uint64_t{4} << 20) || usable / 2 >= (std::uint64_t{4} << 30)) return "4G";
   const std::uint64_t mib = usable / 2 >> 20;
   return mib % 1024 == 0 ? std::to_string(mib / 1024) + "G" : std::to_string(mib) + "M";
@@ -385,12 +393,13 @@ TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
   EXPECT_NE(o.err.find("beyond the limit of 5000 facets (SumLimits::max_output_facets)"), std::string::npos)
       << o.err;
   EXPECT_FALSE(fs::exists(file("s.off")));
-  expect_bad_input("sum a.off b.off --max-memory 1M -o s.off", "--max-memory");
-  o = run("sum a.off b.off --max-memory 1M -o s.off");
-  EXPECT_NE(o.err.find("beyond the limit of 1048576 bytes (SumLimits::max_memory_bytes)"), std::string::npos)
+  // 4M holds the inputs (12 KB each, 144 bytes of memory per byte), not the output.
+  expect_bad_input("sum a.off b.off --max-memory 4M -o s.off", "--max-memory");
+  o = run("sum a.off b.off --max-memory 4M -o s.off");
+  EXPECT_NE(o.err.find("beyond the limit of 4194304 bytes (SumLimits::max_memory_bytes)"), std::string::npos)
       << o.err;
   expect_bad_input("sum a.off b.off --algorithm essdms --max-facets 5000 -o s.off", "--max-facets");
-  expect_bad_input("sum a.off b.off --algorithm chms --max-memory 1M -o s.off", "--max-memory");
+  expect_bad_input("sum a.off b.off --algorithm chms --max-memory 4M -o s.off", "--max-memory");
   EXPECT_FALSE(fs::exists(file("s.off")));
 
   // At the exact count (and with room to spare) the sum is the CHMS oracle's.
@@ -404,7 +413,7 @@ TEST_F(Cli, SumLimitsRefuseThePrismAttack) {
   EXPECT_EQ(o.code, 1) << o.err;
 
   // Sizes: digits, then K, M, G or T (binary), optionally B or iB.
-  for (const char* size : {"1048576", "1024K", "64M", "4G", "1T", "64MB", "64MiB", "64m"})
+  for (const char* size : {"4194304", "4096K", "64M", "4G", "1T", "64MB", "64MiB", "64m"})
     EXPECT_EQ(run(std::string("sum a.off a.off -o t.off --max-memory ") + size).code, 0) << size;
   for (const char* bad : {"12X", "-5", "M", "1.5G", "99999999999999999999", "20000000000000000G", "4 G"})
     expect_usage(std::string("sum a.off a.off -o t.off --max-memory '") + bad + "'");
@@ -660,7 +669,9 @@ TEST_F(Cli, SetSumLimitsRefuseBigSums) {
             std::string::npos)
       << o.err;
   EXPECT_NE(o.err.find("; raise it with --max-facets"), std::string::npos) << o.err;
-  expect_bad_input("sum parabola.off prism.off prism.off --max-memory 64K -o s.off", "--max-memory");
+  // 1000K holds the inputs (7 KB, 144 bytes of memory per byte), not the first sum.
+  expect_bad_input("sum parabola.off prism.off prism.off --max-memory 1000K -o s.off",
+                   "(SumLimits::max_memory_bytes); raise it with --max-memory");
   EXPECT_FALSE(fs::exists(file("s.off")));
   EXPECT_EQ(run("sum parabola.off prism.off --max-facets " + std::to_string(facets) + " -o s.off").code, 0);
   // The CLI's largest zonotope: 10^10 facets, refused, nothing written.

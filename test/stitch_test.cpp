@@ -19,6 +19,7 @@
 #include "polyhedron_builder.hpp"
 #include "research_options.hpp"
 #include "support/oracle.hpp"
+#include "support/under_sanitizer.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -122,14 +123,6 @@ TEST(Stitch, ThreadsBuildTheSamePolyhedron) {
       {shapes::truncated_cube(), shapes::tetrahedron()}};
   for (const auto& [a, b] : cases) expect_threads_build_the_same(a, b);
 }
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define CVMS_TEST_UNDER_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define CVMS_TEST_UNDER_SANITIZER 1
-#endif
-#endif
 
 #ifndef CVMS_TEST_UNDER_SANITIZER
 // Caps this process's address space a little above what it maps now: too

@@ -15,6 +15,7 @@
 
 #include "cvms/error.hpp"
 #include "cvms/halfspace_io.hpp"
+#include "input_memory.hpp"
 #include "usage_error.hpp"
 
 namespace cvms::cli {
@@ -53,9 +54,9 @@ bool is_device_path(const std::string& path) {
   return path.rfind("/dev/", 0) == 0 && std::filesystem::path(path).extension().empty();
 }
 
-std::vector<Vec3> read_cdd_points_file(const std::string& path) {
+std::vector<Vec3> read_cdd_points_file(const std::string& path, const ReadLimits& limits) {
   std::ifstream in = open_input(path);
-  return read_cdd_points(in, path, read_limits());
+  return read_cdd_points(in, path, limits);
 }
 
 }  // namespace
@@ -123,39 +124,51 @@ FileFormat output_format(const std::string& path, const std::string& format) {
 }
 
 PolygonSoup read_soup(const std::string& path) {
-  if (is_std_stream(path)) return read_stdin([&] { return read_off(std::cin, input_name(path), read_limits()); });
-  if (is_cdd_points_path(path)) {
-    PolygonSoup soup;
-    soup.points = read_cdd_points_file(path);
-    return soup;
-  }
-  return read_file(path, read_limits());
+  const InputCost cost = is_cdd_points_path(path) ? InputCost::rows_or_points : InputCost::mesh;
+  return read_within_budget(path, cost, [&](const ReadLimits& limits) {
+    if (is_std_stream(path)) return read_stdin([&] { return read_off(std::cin, input_name(path), limits); });
+    if (is_cdd_points_path(path)) {
+      PolygonSoup soup;
+      soup.points = read_cdd_points_file(path, limits);
+      return soup;
+    }
+    return read_file(path, limits);
+  });
 }
 
 ConvexPolyhedron read_polyhedron(const std::string& path) {
   if (is_std_stream(path)) return to_polyhedron(read_soup(path), input_name(path));
-  return cvms::read_polyhedron(path, read_limits());
+  return read_within_budget(path, InputCost::mesh,
+                            [&](const ReadLimits& limits) { return cvms::read_polyhedron(path, limits); });
 }
 
 HalfspaceSystem read_halfspace_rows(const std::string& path) {
-  if (is_std_stream(path))
-    return read_stdin([&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), read_limits()); });
-  if (is_cdd_points_path(path)) {
-    // Read as cdd, so that its V-representation line is named, not a row error.
-    std::ifstream in = open_input(path);
-    return read_halfspaces(in, HalfspaceFormat::cdd, path, read_limits());
-  }
-  return read_halfspace_file(path, read_limits());
+  return read_within_budget(path, InputCost::rows_or_points, [&](const ReadLimits& limits) {
+    if (is_std_stream(path))
+      return read_stdin(
+          [&] { return read_halfspaces(std::cin, HalfspaceFormat::cdd, input_name(path), limits); });
+    if (is_cdd_points_path(path)) {
+      // Read as cdd, so that its V-representation line is named, not a row error.
+      std::ifstream in = open_input(path);
+      return read_halfspaces(in, HalfspaceFormat::cdd, path, limits);
+    }
+    return read_halfspace_file(path, limits);
+  });
 }
 
 std::vector<Vec3> read_point_cloud(const std::string& path) {
-  if (is_std_stream(path))
-    return read_stdin([&] { return read_points(std::cin, input_name(path), read_limits()); });
-  if (is_cdd_points_path(path)) return read_cdd_points_file(path);
-  std::ifstream in = open_input(path);
-  if (lower_extension(path) == ".stl") return read_stl(in, path, read_limits()).points;
-  if (lower_extension(path) == ".ply") return read_ply(in, path, read_limits()).points;
-  return read_points(in, path, read_limits());
+  const std::string ext = lower_extension(path);
+  const bool mesh = !is_std_stream(path) && (ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply");
+  return read_within_budget(
+      path, mesh ? InputCost::mesh : InputCost::rows_or_points, [&](const ReadLimits& limits) {
+        if (is_std_stream(path))
+          return read_stdin([&] { return read_points(std::cin, input_name(path), limits); });
+        if (is_cdd_points_path(path)) return read_cdd_points_file(path, limits);
+        std::ifstream in = open_input(path);
+        if (ext == ".stl") return read_stl(in, path, limits).points;
+        if (ext == ".ply") return read_ply(in, path, limits).points;
+        return read_points(in, path, limits);
+      });
 }
 
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,

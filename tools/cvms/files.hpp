@@ -11,10 +11,12 @@
 #include <vector>
 
 #include "cvms/convex_polyhedron.hpp"
+#include "cvms/error.hpp"
 #include "cvms/halfspaces.hpp"
 #include "cvms/io.hpp"
 #include "cvms/polygon_soup.hpp"
 #include "cvms/vec.hpp"
+#include "input_memory.hpp"
 
 namespace cvms::cli {
 
@@ -22,7 +24,8 @@ namespace cvms::cli {
 std::string input_name(const std::string& path);
 
 /// The limits every input is read with; --max-bytes and --max-line-bytes
-/// change them before a command runs.
+/// change them before a command runs, and read_within_budget lowers
+/// max_bytes to the memory budget's share.
 ReadLimits& read_limits();
 
 /// `text` with every control byte (escape sequences of a terminal, '\n',
@@ -32,8 +35,23 @@ std::string printable(std::string_view text);
 
 /// The format an output path is written in: `format` ("off", "obj", "stl")
 /// if given, else OFF for "-" and for devices without an extension
-/// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them tells.
+/// (/dev/null, /dev/stdout, /dev/full, ...), else the path's extension. \throw UsageError when none of them
+/// tells.
 FileFormat output_format(const std::string& path, const std::string& format);
+
+/// Runs `read` with the limits of input_read_limits(path, cost)
+/// (input_memory.hpp: the memory a file is estimated to need is taken from
+/// --max-memory first); a stream stopped by the budget is reported with the
+/// option that raises it.
+template <class Read>
+auto read_within_budget(const std::string& path, InputCost cost, Read&& read) {
+  const ReadLimits limits = input_read_limits(path, cost);
+  try {
+    return read(limits);
+  } catch (const Error& e) {
+    rethrow_with_memory_hint(e, limits, cost);
+  }
+}
 
 /// Reads a polygon mesh; a cdd V-representation (.ext) is its points without
 /// faces, as a points-only OFF. \throw Error naming the file.

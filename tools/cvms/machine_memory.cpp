@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Machine-fitted sum limits for the tool (see machine_memory.hpp).
+// The tool's machine- and process-fitted memory budget (see machine_memory.hpp).
 #include "machine_memory.hpp"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <string>
 
 #if defined(__unix__) || defined(__APPLE__)
+#include <sys/resource.h>
 #include <unistd.h>
 #endif
 
@@ -34,10 +35,31 @@ std::optional<std::uint64_t> cgroup_memory_limit() {
 
 }  // namespace
 
-std::optional<std::uint64_t> usable_memory_bytes() {
-  std::optional<std::uint64_t> usable = physical_memory_bytes();
-  if (const auto cgroup = cgroup_memory_limit(); cgroup && (!usable || *cgroup < *usable)) usable = cgroup;
+std::optional<std::uint64_t> usable_memory_bytes(std::optional<std::uint64_t> physical,
+                                                 std::optional<std::uint64_t> cgroup,
+                                                 std::optional<std::uint64_t> address_space) {
+  constexpr std::uint64_t least = std::uint64_t{4} << 20;
+  std::optional<std::uint64_t> usable = physical;
+  const auto lower_to = [&usable](std::uint64_t bytes) {
+    if (!usable || bytes < *usable) usable = bytes;
+  };
+  if (cgroup) lower_to(*cgroup);
+  if (address_space)
+    lower_to(*address_space > program_address_space + least ? *address_space - program_address_space : least);
   return usable;
+}
+
+std::optional<std::uint64_t> address_space_limit() {
+#if defined(RLIMIT_AS)
+  struct rlimit limit {};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    return static_cast<std::uint64_t>(limit.rlim_cur);
+#endif
+  return std::nullopt;
+}
+
+std::optional<std::uint64_t> usable_memory_bytes() {
+  return usable_memory_bytes(physical_memory_bytes(), cgroup_memory_limit(), address_space_limit());
 }
 
 SumLimits sum_limits_for_memory(std::optional<std::uint64_t> usable) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "files.hpp"
+#include "input_memory.hpp"
 #include "set_files.hpp"
 #include "sizes.hpp"
 
@@ -76,9 +77,14 @@ void add_output_options(CLI::App& command, std::string& output, std::string& for
 void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::string& what) {
   command
       .add_option_function<std::string>(
-          "--max-memory", [&bytes](const std::string& text) { bytes = parse_byte_size(text); },
-          "refuse " + what + " whose output is estimated to need more memory (bytes, or 512M, 4G, ...; "
-          "at most half of this machine's memory by default)")
+          "--max-memory",
+          [&bytes](const std::string& text) {
+            bytes = parse_byte_size(text);
+            memory_budget() = bytes;
+          },
+          "refuse " + what +
+              " is estimated to need more memory (bytes, or 512M, 4G, ...; by default half of "
+              "this machine's memory or of the address-space limit, ulimit -v, at most 4G)")
       ->check([](const std::string& text) {
         try {
           parse_byte_size(text);
@@ -88,6 +94,10 @@ void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::s
         }
       })
       ->default_str(format_byte_size(bytes));
+}
+
+void add_input_memory_option(CLI::App& command) {
+  add_max_memory_option(command, memory_budget(), "an input that");
 }
 
 void add_algorithm_option(CLI::App& command, Algorithm& algorithm) {

@@ -34,9 +34,15 @@ void add_float_option(CLI::App& command, std::string& float_output);
 /// --format), before any work.
 void add_output_options(CLI::App& command, std::string& output, std::string& format, std::string& float_output);
 
-/// --max-memory SIZE into `bytes` (whose value is the default shown): the
-/// memory the output of `what` ("a sum") may be estimated to need.
+/// --max-memory SIZE into `bytes` (whose value is the default shown) and
+/// into memory_budget() (input_memory.hpp), which the inputs are read
+/// within: the memory the inputs or the output of `what` ("an input or a
+/// sum whose output") may be estimated to need.
 void add_max_memory_option(CLI::App& command, std::uint64_t& bytes, const std::string& what);
+
+/// --max-memory SIZE into memory_budget(), for a command whose only estimate
+/// is that of its inputs.
+void add_input_memory_option(CLI::App& command);
 
 /// --algorithm: cvms, essdms or chms; the default is the library's.
 void add_algorithm_option(CLI::App& command, Algorithm& algorithm);

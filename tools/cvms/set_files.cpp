@@ -40,14 +40,18 @@ ConvexSet set_from_rows(const HalfspaceSystem& rows, const std::string& path) {
 }
 
 SetFile read_rows(const std::string& path) {
-  HalfspaceFile rows = read_halfspace_file_of_any_dimension(path, read_limits());
+  HalfspaceFile rows = read_within_budget(path, InputCost::rows_or_points, [&](const ReadLimits& limits) {
+    return read_halfspace_file_of_any_dimension(path, limits);
+  });
   return {set_from_rows(rows.system, path), rows.dimension};
 }
 
 SetFile read_points_file(const std::string& path, SetForm form) {
-  std::ifstream in = open_input(path);
-  PointFile points = form == SetForm::cdd_points ? read_cdd_points_of_any_dimension(in, path, read_limits())
-                                                 : read_plain_points(in, path, read_limits());
+  PointFile points = read_within_budget(path, InputCost::rows_or_points, [&](const ReadLimits& limits) {
+    std::ifstream in = open_input(path);
+    return form == SetForm::cdd_points ? read_cdd_points_of_any_dimension(in, path, limits)
+                                       : read_plain_points(in, path, limits);
+  });
   return {convex_hull_set(points.points), points.dimension};
 }
 
@@ -62,9 +66,10 @@ SetForm set_form(const std::string& path) {
   if (ext == ".rows" || ext == ".hrep") return SetForm::plain_rows;
   if (ext == ".xyz" || ext == ".pts") return SetForm::plain_points;
   if (ext == ".txt")
-    throw UsageError("'" + printable(path) +
-                     "': a .txt of numbers could be rows or points (three numbers: 2-D rows a b c, or 3-D points "
-                     "x y z); name it .rows or .hrep for rows, .xyz or .pts for points");
+    throw UsageError(
+        "'" + printable(path) +
+        "': a .txt of numbers could be rows or points (three numbers: 2-D rows a b c, or 3-D points "
+        "x y z); name it .rows or .hrep for rows, .xyz or .pts for points");
   throw UsageError("'" + printable(path) + "': expected '-' or a file ending in " + set_extensions);
 }
 
@@ -86,7 +91,8 @@ SetFile read_set_file(const std::string& path) {
   switch (set_form(path)) {
     case SetForm::mesh:
       if (is_std_stream(path)) return {set_from_soup(read_soup(path), input_name(path))};
-      return {read_convex_set(path, read_limits())};
+      return {read_within_budget(path, InputCost::mesh,
+                                 [&](const ReadLimits& limits) { return read_convex_set(path, limits); })};
     case SetForm::cdd_rows:
     case SetForm::plain_rows:
       return read_rows(path);
@@ -99,7 +105,8 @@ SetFile read_set_file(const std::string& path) {
 
 ConvexSet read_set(const std::string& path) { return read_set_file(path).set; }
 
-void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates, const std::string& format) {
+void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates,
+               const std::string& format) {
   const FileFormat chosen = output_format(path, format);
   if (!is_std_stream(path)) return write_file(path, set, chosen, coordinates);
   write_stdout([&](std::ostream& out) { write(out, set, chosen, "standard output", coordinates); });
@@ -133,7 +140,8 @@ void write_canonical_set(const std::string& path, const ConvexSet& set, Coordina
 }
 
 void check_set_output(const std::string& path, const std::string& format, const std::string& float_output) {
-  if (!format.empty() || is_std_stream(path) || path.rfind("/dev/", 0) == 0) return check_output(path, format);
+  if (!format.empty() || is_std_stream(path) || path.rfind("/dev/", 0) == 0)
+    return check_output(path, format);
   if (set_form(path) == SetForm::mesh) return check_output(path, format);
   if (!float_output.empty())
     throw UsageError("--float rounds mesh coordinates: '" + printable(path) + "' is written exactly");

@@ -135,6 +135,7 @@ void register_check(CLI::App& app, Commands& commands) {
       app.add_subcommand("check", "validate a convex set (dimension, V E F, facet degrees) or a solid (shells, volume, pieces)");
   command->add_option("F", *input, "the file")->required()->check(mesh_path());
   command->add_flag("--json", *json, "one JSON object: the same facts, exact numbers as strings beside their doubles");
+  add_input_memory_option(*command);
   commands.push_back({command, [input, json] { run_check(*input, *json, std::cout); }});
 }
 

@@ -61,6 +61,7 @@ void register_diff(CLI::App& app, Commands& commands) {
   command->add_option("--format", args->format, "output format off|obj|stl|ply (default: from the extension)");
   add_float_option(*command, args->float_output);
   add_progress_option(*command, args->progress);
+  add_input_memory_option(*command);
   commands.push_back({command, [args] { run_diff(*args); }});
 }
 

@@ -83,6 +83,7 @@ void register_distance(CLI::App& app, Commands& commands) {
       app.add_subcommand("distance", "exact squared distance of A and B, with witness points (also solids, pieces files)");
   add_operands(*command, args->a, args->b);
   command->add_flag("--json", args->json, "one JSON object: exact numbers as strings beside their nearest doubles");
+  add_input_memory_option(*command);
   commands.push_back({command, [args] { run_distance(*args, std::cout); }});
 }
 

@@ -125,7 +125,7 @@ void register_gen(CLI::App& app, Commands& commands) {
       ->check(CLI::Range(1, 100'000));
   add_output_options(*command, args->output, args->format, args->float_output);
   args->limits = sum_limits_for_memory(usable_memory_bytes());
-  add_max_memory_option(*command, args->limits.max_memory_bytes, "a zonotope");
+  add_max_memory_option(*command, args->limits.max_memory_bytes, "a zonotope whose output");
   commands.push_back({command, [args, subdivisions, seed] {
                         args->subdivisions_given = subdivisions->count() > 0;
                         args->seed_given = seed->count() > 0;

@@ -56,6 +56,7 @@ void register_halfspaces(CLI::App& app, Commands& commands) {
   command->add_option("-o,--output", args->output,
                       ".ine (cdd H-representation), .ext (cdd V-representation), other: 'a b c d' rows "
                       "(a*x + b*y + c*z <= d); '-': cdd on stdout");
+  add_input_memory_option(*command);
   commands.push_back({command, [args] { run_halfspaces(*args); }});
 }
 

@@ -74,6 +74,7 @@ void register_hull(CLI::App& app, Commands& commands) {
                    "the set bounded by the rows of this file (.ine cdd, other: 'a b c d' rows) instead of POINTS")
       ->excludes(points);
   add_progress_option(*command, args->progress);
+  add_input_memory_option(*command);
   commands.push_back({command, [args] { run_hull(*args); }});
 }
 

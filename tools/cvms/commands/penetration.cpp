@@ -50,6 +50,7 @@ void register_penetration(CLI::App& app, Commands& commands) {
       app.add_subcommand("penetration", "exact squared penetration depth of A and B, direction and witnesses");
   add_operands(*command, args->a, args->b);
   command->add_flag("--json", args->json, "one JSON object: exact numbers as strings beside their nearest doubles");
+  add_input_memory_option(*command);
   commands.push_back({command, [args] { run_penetration(*args, std::cout); }});
 }
 

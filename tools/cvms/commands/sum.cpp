@@ -58,7 +58,7 @@ void add_sum_limit_options(CLI::App& command, SumLimits& limits) {
   command.add_option("--max-facets", limits.max_output_facets, "refuse a sum with more output facets")
       ->default_val(limits.max_output_facets)
       ->check(CLI::PositiveNumber);
-  add_max_memory_option(command, limits.max_memory_bytes, "a sum");
+  add_max_memory_option(command, limits.max_memory_bytes, "an input or a sum whose output");
 }
 
 // A limit error names the option that raises it (sizes.hpp).
