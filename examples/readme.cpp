@@ -7,7 +7,7 @@
 
 int main() {
   auto a = cvms::read_polyhedron("a.off");  // read and check: cvms::Error if not a convex polyhedron
-  auto b = cvms::read_polyhedron("b.obj");  // the format is the extension's: .off, .obj or .stl
+  auto b = cvms::read_polyhedron("b.obj");  // the format is the extension's: .off, .obj, .stl, .ply
   cvms::write_file("sum.off", cvms::minkowski_sum(a, b).polyhedron);  // exact coordinates
 
   // A robot b translated by t overlaps the obstacle a iff t lies in a ⊕ (−b).
