@@ -8,8 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,12 +38,7 @@ class CliCanonical : public cvms::test::CliTest {
     // The cube turned by the quaternion (1, 2, 3, 4): denominators 15.
     ok("sum cube.off zero.xyz --quaternion-a 1 2 3 4 -o turned.off");
   }
-  [[nodiscard]] std::string read(const std::string& name) const {
-    std::ifstream in(dir_.path() / name, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
+  [[nodiscard]] std::string read(const std::string& name) const { return cvms::test::slurp(dir_.path() / name); }
   void ok(const std::string& args) const {
     const cvms::test::CliOutcome o = run(args);
     ASSERT_EQ(o.code, 0) << "cvms " << args << "\n" << o.err;
