@@ -38,7 +38,9 @@ class CliCanonical : public cvms::test::CliTest {
     // The cube turned by the quaternion (1, 2, 3, 4): denominators 15.
     ok("sum cube.off zero.xyz --quaternion-a 1 2 3 4 -o turned.off");
   }
-  [[nodiscard]] std::string read(const std::string& name) const { return cvms::test::slurp(dir_.path() / name); }
+  [[nodiscard]] std::string read(const std::string& name) const {
+    return cvms::test::slurp(dir_.path() / name);
+  }
   void ok(const std::string& args) const {
     const cvms::test::CliOutcome o = run(args);
     ASSERT_EQ(o.code, 0) << "cvms " << args << "\n" << o.err;
@@ -61,8 +63,8 @@ class CliCanonical : public cvms::test::CliTest {
 
 TEST_F(CliCanonical, SumAndSwappedSumWriteTheSameBytes) {
   const std::vector<std::pair<std::string, std::string>> pairs = {
-      {"cube.off", "sphere.off"},     {"sphere.off", "rotated.off"}, {"random11.off", "random12.off"},
-      {"prism.off", "random11.off"},  {"turned.off", "prism.off"},   {"turned.off", "rotated.off"},
+      {"cube.off", "sphere.off"},    {"sphere.off", "rotated.off"}, {"random11.off", "random12.off"},
+      {"prism.off", "random11.off"}, {"turned.off", "prism.off"},   {"turned.off", "rotated.off"},
   };
   for (const auto& [a, b] : pairs) {
     // Exact PLY holds finite decimals only: not the prism's nor the turned cube's.
@@ -81,7 +83,8 @@ TEST_F(CliCanonical, SumAndSwappedSumWriteTheSameBytes) {
         const std::vector<cvms::Vec3> expected = oracle(a, b);
         ASSERT_EQ(back.points.size(), expected.size());
         for (std::size_t i = 0; i < expected.size(); ++i)
-          ASSERT_TRUE(back.points[i] == expected[i]) << "vertex " << i << ": " << text(back.points[i]) << " against " << text(expected[i]);
+          ASSERT_TRUE(back.points[i] == expected[i])
+              << "vertex " << i << ": " << text(back.points[i]) << " against " << text(expected[i]);
         EXPECT_NO_THROW((void)cvms::ConvexPolyhedron::from_soup(back));
       }
   }

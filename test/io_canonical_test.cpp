@@ -27,7 +27,8 @@ using shapes::cube;
 using shapes::geodesic_sphere;
 using shapes::rotated_geodesic_sphere;
 
-std::string written(const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates = Coordinates::exact) {
+std::string written(const ConvexPolyhedron& p, FileFormat format,
+                    Coordinates coordinates = Coordinates::exact) {
   std::ostringstream out;
   write(out, p, format, coordinates, VertexOrder::canonical);
   return out.str();
@@ -70,8 +71,10 @@ void expect_canonical(const ConvexPolyhedron& p, const std::string& what) {
     const ConvexPolyhedron q = renumbered(p, seed);
     for (FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::stl})
       EXPECT_EQ(written(p, format), written(q, format));
-    EXPECT_EQ(written(p, FileFormat::off, Coordinates::double_), written(q, FileFormat::off, Coordinates::double_));
-    EXPECT_EQ(written(p, FileFormat::ply, Coordinates::double_), written(q, FileFormat::ply, Coordinates::double_));
+    EXPECT_EQ(written(p, FileFormat::off, Coordinates::double_),
+              written(q, FileFormat::off, Coordinates::double_));
+    EXPECT_EQ(written(p, FileFormat::ply, Coordinates::double_),
+              written(q, FileFormat::ply, Coordinates::double_));
   }
   std::istringstream in(written(p, FileFormat::off));
   const PolygonSoup back = read_off(in, "canonical");

@@ -57,8 +57,9 @@ std::vector<Key> keys_of(const SoupView& soup) {
   for (std::uint32_t j = 0; j < keys.size(); ++j) {
     keys[j].index = j;
     for (int k = 0; k < 3; ++k)
-      keys[j].approx[static_cast<std::size_t>(k)] =
-          soup.packed != nullptr ? approximation(soup.packed->coordinate(j, k)) : mpq_get_d(soup.points[j][k].get_mpq_t());
+      keys[j].approx[static_cast<std::size_t>(k)] = soup.packed != nullptr
+                                                        ? approximation(soup.packed->coordinate(j, k))
+                                                        : mpq_get_d(soup.points[j][k].get_mpq_t());
   }
   return keys;
 }
@@ -69,7 +70,8 @@ std::vector<std::uint32_t> point_order(const SoupView& soup) {
   Rational ra;
   Rational rb;
   const auto exact = [&](std::uint32_t a, std::uint32_t b, int k) {
-    if (soup.packed != nullptr) return compare_exact(soup.packed->coordinate(a, k), soup.packed->coordinate(b, k), ra, rb);
+    if (soup.packed != nullptr)
+      return compare_exact(soup.packed->coordinate(a, k), soup.packed->coordinate(b, k), ra, rb);
     return cmp(soup.points[a][k], soup.points[b][k]);
   };
   std::sort(keys.begin(), keys.end(), [&](const Key& a, const Key& b) {
@@ -120,8 +122,11 @@ SoupView canonical_view(const SoupView& soup, CanonicalNumbering& numbering) {
   };
   for (std::size_t begin = 0; begin < faces;) {
     std::size_t end = begin + 1;
-    while (end < faces && renumbered[soup.face_offsets[face_order[end]]] == renumbered[soup.face_offsets[face_order[begin]]]) ++end;
-    std::sort(face_order.begin() + static_cast<std::ptrdiff_t>(begin), face_order.begin() + static_cast<std::ptrdiff_t>(end), less);
+    while (end < faces &&
+           renumbered[soup.face_offsets[face_order[end]]] == renumbered[soup.face_offsets[face_order[begin]]])
+      ++end;
+    std::sort(face_order.begin() + static_cast<std::ptrdiff_t>(begin),
+              face_order.begin() + static_cast<std::ptrdiff_t>(end), less);
     begin = end;
   }
   numbering.face_offsets.assign(1, 0);
