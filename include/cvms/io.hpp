@@ -218,6 +218,20 @@ enum class Coordinates {
   double_outer  ///< FloatMode::outer: a double polyhedron that contains the exact set (convex sets only)
 };
 
+/// How the polyhedron writers number vertices and facets.
+enum class VertexOrder {
+  as_is,  ///< the polyhedron's own numbering, that of p.to_soup() (no extra work)
+  /// One that depends on the set alone, not on how it was computed: the
+  /// vertices in lexicographic order of their exact coordinates (x, then y,
+  /// then z), each facet starting at its smallest vertex number
+  /// (orientation kept), the facets sorted by their vertex numbers. Equal
+  /// polyhedra are written as equal bytes (a sum A + B as B + A). In
+  /// doubles, the same order of the rounded vertices. Costs a sort of the
+  /// vertices (compared by their doubles, exactly on ties) and of the facets,
+  /// without copying a coordinate.
+  canonical
+};
+
 /// Writes an OFF file: the header, one "x y z" line per point, one
 /// "n i_1 .. i_n" line per face. Writers take any soup whose faces have >= 3
 /// indices, all in range. Numbers are formatted without the stream's locale,
@@ -259,11 +273,12 @@ void write(std::ostream& out, const PolygonSoup& soup, FileFormat format,
 /// as write(out, p.to_soup(), format, coordinates) otherwise. In doubles
 /// (OFF, OBJ), those of round_to_doubles(p, mode): the exact hull of double
 /// points, written as write(out, rounded.to_soup(), format,
-/// Coordinates::double_) writes it.
+/// Coordinates::double_) writes it. `order` numbers the vertices and facets
+/// written (VertexOrder::canonical: the same bytes for equal polyhedra).
 /// \throw Error(invalid_argument) as write_off and round_to_doubles, and
 ///   for Coordinates::double_outer in STL; \throw Error(io) as write_off.
 void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format,
-           Coordinates coordinates = Coordinates::exact);
+           Coordinates coordinates = Coordinates::exact, VertexOrder order = VertexOrder::as_is);
 /// Writes a file in the format of its extension (format_from_extension).
 /// The write is atomic: the bytes go to a new temporary file in the target's
 /// directory (".<name>.cvms-<random>.tmp"), which is renamed over the target
@@ -293,7 +308,8 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
 /// format of its extension, atomically (see write_file for soups); with
 /// Coordinates::exact and OFF, OBJ or PLY (whose exact writer refuses a
 /// coordinate without a finite decimal), read_polyhedron gives back the
-/// same polyhedron.
+/// same polyhedron. `order` numbers the vertices and facets written
+/// (VertexOrder::canonical: the same bytes for equal polyhedra).
 /// \throw Error(invalid_argument) for an unknown extension, and (naming the
 ///   file) for a coordinate beyond the double range with Coordinates::double_
 ///   or double_outer, for double_outer in STL, or for a coordinate beyond the
@@ -301,12 +317,12 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
 /// \throw Error(io) naming the file and the reason if it cannot be written.
 /// Complexity: linear in the size of the output.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p,
-                Coordinates coordinates = Coordinates::exact);
-/// As write_file(path, p, coordinates), in the given format whatever the
-/// path's extension.
+                Coordinates coordinates = Coordinates::exact, VertexOrder order = VertexOrder::as_is);
+/// As write_file(path, p, coordinates, order), in the given format whatever
+/// the path's extension.
 /// \throw Error(invalid_argument), Error(io) as write_file.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                Coordinates coordinates = Coordinates::exact);
+                Coordinates coordinates = Coordinates::exact, VertexOrder order = VertexOrder::as_is);
 
 /// Reads a file in the format of its extension (read_file) and validates it
 /// as a convex polyhedron (ConvexPolyhedron::from_soup, which also merges

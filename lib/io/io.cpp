@@ -7,6 +7,7 @@
 #include <system_error>
 #include <utility>
 
+#include "canonical_view.hpp"
 #include "face_lists.hpp"
 #include "mesh_access.hpp"
 #include "file_output.hpp"
@@ -131,13 +132,22 @@ void write_view_to_file(const std::filesystem::path& path, const io_detail::Soup
   }
 }
 
+// view in the numbering asked for, the canonical one read from numbering.
+io_detail::SoupView numbered(const io_detail::SoupView& view, VertexOrder order,
+                             io_detail::CanonicalNumbering& numbering) {
+  return order == VertexOrder::canonical ? io_detail::canonical_view(view, numbering) : view;
+}
+
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                              Coordinates coordinates) {
+                              Coordinates coordinates, VertexOrder order) {
   const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
+  io_detail::CanonicalNumbering numbering;
   if (const auto rounded = io_detail::rounded_soup(format, coordinates, path.string(), round))
-    return write_view_to_file(path, io_detail::SoupView::of(*rounded), format, Coordinates::double_);
+    return write_view_to_file(path, numbered(io_detail::SoupView::of(*rounded), order, numbering), format,
+                              Coordinates::double_);
   detail::FaceLists faces;
-  write_view_to_file(path, io_detail::polyhedron_view(p, format, faces), format, coordinates);
+  write_view_to_file(path, numbered(io_detail::polyhedron_view(p, format, faces), order, numbering), format,
+                     coordinates);
 }
 
 }  // namespace
@@ -145,20 +155,23 @@ void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPol
 io_detail::SoupView io_detail::polyhedron_view(const ConvexPolyhedron& p, FileFormat format, detail::FaceLists& faces) {
   faces = detail::face_lists(p.mesh());
   if (const detail::DyadicPoints* packed = MeshAccess::packed_positions(p.mesh()); packed != nullptr && format != FileFormat::stl)
-    return {{}, faces.offsets, faces.indices, packed};
-  return {p.mesh().positions(), faces.offsets, faces.indices};
+    return {{}, faces.offsets, faces.indices, packed, {}};
+  return {p.mesh().positions(), faces.offsets, faces.indices, nullptr, {}};
 }
 
 void write(std::ostream& out, const PolygonSoup& soup, FileFormat format, Coordinates coordinates) {
   write_view(out, io_detail::SoupView::of(soup), format, coordinates);
 }
 
-void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates) {
+void write(std::ostream& out, const ConvexPolyhedron& p, FileFormat format, Coordinates coordinates,
+           VertexOrder order) {
   const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
+  io_detail::CanonicalNumbering numbering;
   if (const auto rounded = io_detail::rounded_soup(format, coordinates, {}, round))
-    return write_view(out, io_detail::SoupView::of(*rounded), format, Coordinates::double_);
+    return write_view(out, numbered(io_detail::SoupView::of(*rounded), order, numbering), format,
+                      Coordinates::double_);
   detail::FaceLists faces;
-  write_view(out, io_detail::polyhedron_view(p, format, faces), format, coordinates);
+  write_view(out, numbered(io_detail::polyhedron_view(p, format, faces), order, numbering), format, coordinates);
 }
 
 void write_file(const std::filesystem::path& path, const PolygonSoup& soup, FileFormat format,
@@ -170,13 +183,14 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, Coor
   write_file(path, soup, format_from_extension(path), coordinates);
 }
 
-void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, Coordinates coordinates) {
-  write_polyhedron_to_file(path, p, format_from_extension(path), coordinates);
+void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, Coordinates coordinates,
+                VertexOrder order) {
+  write_polyhedron_to_file(path, p, format_from_extension(path), coordinates, order);
 }
 
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                Coordinates coordinates) {
-  write_polyhedron_to_file(path, p, format, coordinates);
+                Coordinates coordinates, VertexOrder order) {
+  write_polyhedron_to_file(path, p, format, coordinates, order);
 }
 
 ConvexPolyhedron to_polyhedron(PolygonSoup soup, std::string_view source) {

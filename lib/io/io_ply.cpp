@@ -176,9 +176,9 @@ void check_decimal(const SoupView& soup) {
   if (soup.packed != nullptr) return;  // dyadic: finite decimals
   for (std::size_t j = 0; j < soup.points.size(); ++j)
     for (int k = 0; k < 3; ++k)
-      if (!has_finite_decimal(soup.points[j][k]))
+      if (!has_finite_decimal(soup.point(j)[k]))
         throw Error(ErrorCategory::invalid_argument,
-                    "vertex " + std::to_string(j) + " has coordinate " + to_string(soup.points[j][k]).substr(0, 40) +
+                    "vertex " + std::to_string(j) + " has coordinate " + to_string(soup.point(j)[k]).substr(0, 40) +
                         ", which has no finite decimal expansion: PLY holds numbers only (write it rounded to "
                         "doubles, or exactly as OFF or OBJ)");
 }
@@ -251,10 +251,10 @@ std::vector<double> rounded_coordinates(const SoupView& soup) {
   for (std::size_t j = 0; j < soup.num_points(); ++j) {
     for (int k = 0; k < 3; ++k) {
       if (soup.packed == nullptr) {
-        xyz.push_back(rounded(soup.points[j][k]));
+        xyz.push_back(rounded(soup.point(j)[k]));
         continue;
       }
-      detail::unpack_dyadic(soup.packed->coordinate(j, k), scratch);
+      detail::unpack_dyadic(soup.packed_coordinate(j, k), scratch);
       xyz.push_back(rounded(scratch));
     }
   }

@@ -403,8 +403,10 @@ void io_detail::write_stl_view(std::ostream& out, const SoupView& soup) {
                 std::to_string(triangles) + " triangles do not fit a binary STL");
   std::vector<std::array<float, 3>> rounded;
   rounded.reserve(soup.points.size());
-  for (const Vec3& p : soup.points)
+  for (std::size_t j = 0; j < soup.points.size(); ++j) {
+    const Vec3& p = soup.point(j);
     rounded.push_back({to_float_nearest(p.x), to_float_nearest(p.y), to_float_nearest(p.z)});
+  }
 
   TextWriter w(out);
   char header[80] = "binary STL written by cvms";  // never starts with "solid"
@@ -415,7 +417,7 @@ void io_detail::write_stl_view(std::ostream& out, const SoupView& soup) {
     auto face = soup.face(f);
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {
       const std::uint32_t corners[3] = {face[0], face[k], face[k + 1]};
-      for (float c : unit_normal(soup.points[corners[0]], soup.points[corners[1]], soup.points[corners[2]]))
+      for (float c : unit_normal(soup.point(corners[0]), soup.point(corners[1]), soup.point(corners[2])))
         put(c);
       for (std::uint32_t v : corners)
         for (float c : rounded[v]) put(c);

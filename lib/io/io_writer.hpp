@@ -76,13 +76,13 @@ class TextWriter {
     if (buffer_.size() >= flush_at) flush();
     return *this;
   }
-  /// Point j of soup, its coordinates separated by spaces.
+  /// The point at position j of soup, its coordinates separated by spaces.
   TextWriter& point(const SoupView& soup, std::size_t j, Coordinates mode) {
     if (soup.packed != nullptr) {
-      coordinate(soup.packed->coordinate(j, 0), mode).byte(' ').coordinate(soup.packed->coordinate(j, 1), mode);
-      return byte(' ').coordinate(soup.packed->coordinate(j, 2), mode);
+      coordinate(soup.packed_coordinate(j, 0), mode).byte(' ').coordinate(soup.packed_coordinate(j, 1), mode);
+      return byte(' ').coordinate(soup.packed_coordinate(j, 2), mode);
     }
-    const Vec3& p = soup.points[j];
+    const Vec3& p = soup.point(j);
     return coordinate(p.x, mode).byte(' ').coordinate(p.y, mode).byte(' ').coordinate(p.z, mode);
   }
   /// Flushes what is buffered and checks the stream. \throw Error(io) on failure.

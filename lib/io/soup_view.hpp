@@ -25,11 +25,23 @@ struct SoupView {
   /// making a Rational of them), else null. The text writers read these;
   /// the STL writer takes points only.
   const detail::DyadicPoints* packed = nullptr;
+  /// Empty, or the point written at position j is order[j] of `points` (or
+  /// `packed`): a numbering without moving a coordinate. The faces are in
+  /// the written numbering (canonical_view.hpp).
+  std::span<const std::uint32_t> order;
 
   [[nodiscard]] std::size_t num_points() const noexcept { return packed != nullptr ? packed->size() : points.size(); }
+  /// The index in `points` (or `packed`) of the point written at position j.
+  [[nodiscard]] std::size_t source(std::size_t j) const noexcept { return order.empty() ? j : order[j]; }
+  /// The point written at position j. \pre not packed.
+  [[nodiscard]] const Vec3& point(std::size_t j) const noexcept { return points[source(j)]; }
+  /// Coordinate `axis` of the point written at position j. \pre packed.
+  [[nodiscard]] const detail::PackedDyadic& packed_coordinate(std::size_t j, int axis) const noexcept {
+    return packed->coordinate(source(j), axis);
+  }
 
   static SoupView of(const PolygonSoup& soup) noexcept {
-    return {soup.points, soup.face_offsets, soup.face_indices};
+    return {soup.points, soup.face_offsets, soup.face_indices, nullptr, {}};
   }
   /// \pre face_offsets is not empty (check_soup_for_writing checks it).
   [[nodiscard]] std::size_t num_faces() const noexcept { return face_offsets.size() - 1; }

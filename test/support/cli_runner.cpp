@@ -10,7 +10,6 @@
 #include <sstream>
 
 namespace cvms::test {
-namespace {
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -18,8 +17,6 @@ std::string slurp(const std::filesystem::path& p) {
   s << in.rdbuf();
   return s.str();
 }
-
-}  // namespace
 
 ScratchDirectory::ScratchDirectory(const std::string& tag)
     : dir_(std::filesystem::temp_directory_path() / ("cvms_" + tag + "_" + std::to_string(::getpid()))) {

@@ -38,6 +38,9 @@ class ScratchDirectory {
   bool keep_ = false;
 };
 
+/// The bytes of a file (empty if it cannot be read).
+std::string slurp(const std::filesystem::path& p);
+
 /// Runs `program args` with the directory as working directory.
 CliOutcome run_cli(const std::filesystem::path& dir, const std::string& program, const std::string& args);
 

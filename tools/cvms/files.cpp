@@ -172,10 +172,10 @@ std::vector<Vec3> read_point_cloud(const std::string& path) {
 }
 
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
-                      const std::string& format) {
+                      const std::string& format, VertexOrder order) {
   const FileFormat chosen = output_format(path, format);
-  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates);
-  write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates); });
+  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates, order);
+  write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates, order); });
 }
 
 void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,

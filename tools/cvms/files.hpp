@@ -73,7 +73,7 @@ std::vector<Vec3> read_point_cloud(const std::string& path);
 /// was), or stdout for "-", in output_format(path, format).
 /// \throw Error naming the file ("standard output" for "-") and the reason.
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
-                      const std::string& format = {});
+                      const std::string& format = {}, VertexOrder order = VertexOrder::as_is);
 
 /// write_file of a soup (atomic), or stdout for "-", in output_format(path,
 /// format). \throw Error naming the file ("standard output" for "-").

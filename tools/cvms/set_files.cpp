@@ -10,7 +10,6 @@
 #include "cvms/halfspaces.hpp"
 #include "cvms/float_mesh.hpp"
 #include "cvms/set_io.hpp"
-#include "canonical_order.hpp"
 #include "files.hpp"
 #include "usage_error.hpp"
 
@@ -135,7 +134,7 @@ void write_canonical_set(const std::string& path, const ConvexSet& set, Coordina
   const ConvexSet rounded = rounds ? rounded_for_output(path, set, coordinates) : ConvexSet();
   const ConvexSet& out = rounds ? rounded : set;
   const Coordinates printed = rounds ? Coordinates::double_ : coordinates;
-  if (out.dimension() == 3) return write_soup(path, canonical_soup(out.polyhedron()), printed, format);
+  if (out.dimension() == 3) return write_polyhedron(path, out.polyhedron(), printed, format, VertexOrder::canonical);
   write_set(path, out, printed, format);
 }
 

@@ -59,7 +59,7 @@ ConvexSet set_from_soup(PolygonSoup soup, const std::string& source);
 /// write_file(path, set), or OFF on stdout for "-".
 void write_set(const std::string& path, const ConvexSet& set, Coordinates coordinates, const std::string& format = {});
 
-/// As write_set, a polyhedron in the numbering of canonical_soup (flat sets
+/// As write_set, a polyhedron in VertexOrder::canonical (flat sets
 /// are canonical already), so that the bytes depend on the set alone; in
 /// doubles, the set rounded as a whole (round_to_doubles) is numbered so.
 void write_canonical_set(const std::string& path, const ConvexSet& set, Coordinates coordinates,

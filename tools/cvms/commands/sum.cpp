@@ -73,7 +73,10 @@ auto with_limit_hint(Sum&& sum) {
 
 void sum_polyhedra(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args, std::ostream& report) {
   Timed sum = with_limit_hint([&] { return timed_sum(a, b, args.options()); });
-  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format);
+  // Written in an order of the set alone, so that A + B and B + A give the
+  // same bytes.
+  write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format,
+                   VertexOrder::canonical);
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
