@@ -71,7 +71,8 @@ std::string duplicate_cdd_points(int count) {
   return s.str();
 }
 
-std::string duplicate_off_vertices(int count) {
+// Only the address-space tests use it, and sanitizer builds skip them.
+[[maybe_unused]] std::string duplicate_off_vertices(int count) {
   return "OFF\n" + std::to_string(count) + " 0 0\n" + duplicate_points(count);
 }
 
