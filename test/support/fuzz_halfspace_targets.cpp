@@ -189,6 +189,22 @@ void add_box(std::vector<HalfspaceRow>& rows, ByteStream& in) {
   }
 }
 
+// The rows of a file of the plane: each with a zero z coefficient, except
+// the equality z == 0 that the reader adds.
+bool in_the_plane(const HalfspaceSystem& system) {
+  const HalfspaceRow z_is_zero{Vec3{0, 0, 1}, Rational(0)};
+  bool has_z_is_zero = false;
+  for (const HalfspaceRow& row : system.equalities) {
+    if (row == z_is_zero)
+      has_z_is_zero = true;
+    else if (row.normal.z != 0)
+      return false;
+  }
+  for (const HalfspaceRow& row : system.inequalities)
+    if (row.normal.z != 0) return false;
+  return has_z_is_zero;
+}
+
 }  // namespace
 
 void read_halfspaces_target(std::span<const std::uint8_t> data) {
@@ -202,29 +218,36 @@ void read_halfspaces_target(std::span<const std::uint8_t> data) {
   const HalfspaceFormat format = mode % 3 == 0 ? HalfspaceFormat::cdd : HalfspaceFormat::plain;
   const char* who = format == HalfspaceFormat::cdd ? "read_halfspaces (cdd)" : "read_halfspaces (plain)";
   const ReadLimits limits = fuzz_limits();
-  HalfspaceSystem system;
+  HalfspaceFile file;
   try {
     std::istringstream stream(text);
-    system = read_halfspaces(stream, format, "<fuzz>", limits);
+    file = read_halfspaces_of_any_dimension(stream, format, "<fuzz>", limits);
   } catch (const Error&) {
     return;
   }
-  if (system.equalities.size() + system.inequalities.size() > limits.max_faces)
+  const HalfspaceSystem& system = file.system;
+  if (system.equalities.size() + system.inequalities.size() >
+      limits.max_faces + (file.dimension == 2 ? 1 : 0))
     finding(std::string(who) + ": more rows than max_faces");
   if (!canonical_rows(system.equalities) || !canonical_rows(system.inequalities))
     finding(std::string(who) + ": non-canonical rational entry");
-  if (format == HalfspaceFormat::plain && !system.equalities.empty())
+  // A plain file of space has inequalities only; a file of the plane (either
+  // form) is its rows with a zero z coefficient plus the equality z == 0.
+  if (file.dimension == 3 && format == HalfspaceFormat::plain && !system.equalities.empty())
     finding(std::string(who) + ": equalities from the plain form");
+  if (file.dimension == 2 && !in_the_plane(system))
+    finding(std::string(who) + ": a file of the plane gave rows outside the plane z = 0");
   std::ostringstream out;
-  write_halfspaces(out, system, format);
+  write_halfspaces(out, system, format, file.dimension);
   std::istringstream back(out.str());
-  HalfspaceSystem again;
+  HalfspaceFile again;
   try {
-    again = read_halfspaces(back, format, "<round trip>", ReadLimits{});
+    again = read_halfspaces_of_any_dimension(back, format, "<round trip>", ReadLimits{});
   } catch (const Error& e) {
     finding(std::string(who) + ": refused write_halfspaces' output: " + e.what());
   }
-  if (again.equalities != system.equalities || again.inequalities != system.inequalities)
+  if (again.dimension != file.dimension || again.system.equalities != system.equalities ||
+      again.system.inequalities != system.inequalities)
     finding(std::string(who) + ": write_halfspaces then read_halfspaces changed the rows");
   if (small_system(system)) check_intersection(system, who, nullptr);
 }
