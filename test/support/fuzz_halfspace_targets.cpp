@@ -205,6 +205,38 @@ bool in_the_plane(const HalfspaceSystem& system) {
   return has_z_is_zero;
 }
 
+// Every row holds on the whole plane z = 0 (0 <= b with b >= 0, 0 == 0).
+bool whole_plane(const HalfspaceSystem& system) {
+  const auto flat = [](const HalfspaceRow& r) { return sgn(r.normal.x) == 0 && sgn(r.normal.y) == 0; };
+  for (const HalfspaceRow& r : system.equalities)
+    if (!flat(r) || sgn(r.offset) != 0) return false;
+  for (const HalfspaceRow& r : system.inequalities)
+    if (!flat(r) || sgn(r.offset) < 0) return false;
+  return true;
+}
+
+// A file of the plane is written as its rows restricted to the plane, made
+// primitive, without repeats and without the rows that hold on the whole
+// plane (halfspace_io.hpp), so the rows read back need not be the rows
+// given: the written text must read back, and be written again unchanged.
+// Only a system of rows that all hold on the whole plane writes no row, and
+// a file of no row is refused.
+void check_plane_round_trip(const std::string& text, const HalfspaceSystem& system, HalfspaceFormat format,
+                            const char* who) {
+  std::istringstream back(text);
+  HalfspaceFile again;
+  try {
+    again = read_halfspaces_of_any_dimension(back, format, "<round trip>", ReadLimits{});
+  } catch (const Error& e) {
+    if (!whole_plane(system)) finding(std::string(who) + ": refused write_halfspaces' output: " + e.what());
+    return;
+  }
+  std::ostringstream out;
+  write_halfspaces(out, again.system, format, 2);
+  if (again.dimension != 2 || out.str() != text)
+    finding(std::string(who) + ": rows of the plane read back were written differently");
+}
+
 }  // namespace
 
 void read_halfspaces_target(std::span<const std::uint8_t> data) {
@@ -239,16 +271,20 @@ void read_halfspaces_target(std::span<const std::uint8_t> data) {
     finding(std::string(who) + ": a file of the plane gave rows outside the plane z = 0");
   std::ostringstream out;
   write_halfspaces(out, system, format, file.dimension);
-  std::istringstream back(out.str());
-  HalfspaceFile again;
-  try {
-    again = read_halfspaces_of_any_dimension(back, format, "<round trip>", ReadLimits{});
-  } catch (const Error& e) {
-    finding(std::string(who) + ": refused write_halfspaces' output: " + e.what());
+  if (file.dimension == 2) {
+    check_plane_round_trip(out.str(), system, format, who);
+  } else {
+    std::istringstream back(out.str());
+    HalfspaceFile again;
+    try {
+      again = read_halfspaces_of_any_dimension(back, format, "<round trip>", ReadLimits{});
+    } catch (const Error& e) {
+      finding(std::string(who) + ": refused write_halfspaces' output: " + e.what());
+    }
+    if (again.dimension != 3 || again.system.equalities != system.equalities ||
+        again.system.inequalities != system.inequalities)
+      finding(std::string(who) + ": write_halfspaces then read_halfspaces changed the rows");
   }
-  if (again.dimension != file.dimension || again.system.equalities != system.equalities ||
-      again.system.inequalities != system.inequalities)
-    finding(std::string(who) + ": write_halfspaces then read_halfspaces changed the rows");
   if (small_system(system)) check_intersection(system, who, nullptr);
 }
 
