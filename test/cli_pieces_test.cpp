@@ -209,6 +209,19 @@ TEST_F(CliPieces, LimitsNameTheirOptionAndLeaveTheOutputAlone) {
   EXPECT_EQ(read("s.obj"), "untouched");
 }
 
+// A pieces file is an input like any other: its estimated memory is taken
+// from --max-memory before it is read, by every command that reads one.
+TEST_F(CliPieces, PiecesFilesAreReadWithinTheMemoryBudget) {
+  ok("decompose " + solid_path("star_prism") + " -o p.obj");
+  const std::string refused = "an input of ";
+  expect_failure("check p.obj --max-memory 1K", refused);
+  expect_failure("distance p.obj " + solid_path("l_block") + " --max-memory 1K", refused);
+  dir_.write("s.obj", "untouched");
+  expect_failure("sum p.obj " + solid_path("l_block") + " --pieces --max-memory 1K -o s.obj", refused);
+  EXPECT_EQ(read("s.obj"), "untouched");
+  ok("check p.obj --max-memory 1M");
+}
+
 TEST_F(CliPieces, CheckReportsAValidNonConvexSolid) {
   test::CliOutcome o = ok("check " + solid_path("l_block"));
   EXPECT_EQ(o.out, solid_path("l_block") +

@@ -48,6 +48,11 @@ bool is_pieces_path(const std::string& path) {
   return false;
 }
 
+ConvexUnion read_pieces_file(const std::string& path) {
+  return read_within_budget(path, InputCost::mesh,
+                            [&](const ReadLimits& limits) { return read_pieces(std::filesystem::path(path), limits); });
+}
+
 Solid solid_from_soup(PolygonSoup soup, const std::string& source) {
   try {
     return Solid::from_soup(std::move(soup));
@@ -69,7 +74,7 @@ bool spans_space(const PolygonSoup& soup) {
 }
 
 ConvexUnion read_union_operand(const std::string& path, const DecompositionOptions& options) {
-  if (is_pieces_path(path)) return read_pieces(std::filesystem::path(path), read_limits());
+  if (is_pieces_path(path)) return read_pieces_file(path);
   return decompose_soup(read_soup(path), path, options);
 }
 
@@ -93,7 +98,7 @@ void rethrow_explaining_non_convex(const Error& convex_error, const std::string&
   if (!shape_error || !mesh_file) throw convex_error;
   std::string what;
   if (is_pieces_path(path)) {
-    what = "a pieces file of " + std::to_string(read_pieces(std::filesystem::path(path), read_limits()).size()) +
+    what = "a pieces file of " + std::to_string(read_pieces_file(path).size()) +
            " convex pieces";
   } else {
     PolygonSoup soup = read_soup(path);

@@ -27,6 +27,10 @@ namespace cvms::cli {
 /// then names the problem).
 bool is_pieces_path(const std::string& path);
 
+/// The pieces file at `path`, read exactly (read_pieces) within the
+/// inputs' memory budget, as every other input is (files.hpp).
+ConvexUnion read_pieces_file(const std::string& path);
+
 /// Solid::from_soup with "<source>: " in front of every error message.
 Solid solid_from_soup(PolygonSoup soup, const std::string& source);
 

@@ -64,7 +64,7 @@ void report_json(const std::string& name, const ConvexSet& set, std::size_t inpu
 
 // A pieces file: each piece validated as a convex polyhedron by read_pieces.
 void check_pieces(const std::string& input, bool json, std::ostream& report) {
-  const ConvexUnion pieces = read_pieces(std::filesystem::path(input), read_limits());
+  const ConvexUnion pieces = read_pieces_file(input);
   std::int64_t vertices = 0, facets = 0;
   for (const ConvexPolyhedron& piece : pieces.pieces()) {
     vertices += static_cast<std::int64_t>(piece.num_vertices());
