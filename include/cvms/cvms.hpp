@@ -43,5 +43,6 @@
 #include "cvms/shapes.hpp"
 #include "cvms/sign.hpp"
 #include "cvms/solid.hpp"
+#include "cvms/solid_sum.hpp"
 #include "cvms/union_io.hpp"
 #include "cvms/vec.hpp"
