@@ -351,6 +351,13 @@ TEST(BoundaryAssembly, RegionTouchingItselfAndSeveralHoles) {
   for (const Voxel& v : box(3, 3, 1))
     if (v != Voxel{1, 1, 0} && v != Voxel{2, 2, 0}) c_shape.push_back(v);
   check_voxels(c_shape, {20, 12, 1, 0, 0, 7}, false);
+  // 4 x 4 minus two holes touching along the edge x = y = 2: traced as one
+  // hole through (2, 2) twice; after the split, one tunnel (genus 1), 12
+  // corners per face, 2 + 4 + 8 facets.
+  std::vector<Voxel> touching_holes;
+  for (const Voxel& v : box(4, 4, 1))
+    if (v != Voxel{1, 1, 0} && v != Voxel{2, 2, 0}) touching_holes.push_back(v);
+  check_voxels(touching_holes, {24, 14, 1, 0, 1, 14}, false);
   // 5 x 5 with four holes: the bridges of later holes must avoid the others.
   std::vector<Voxel> four_holes;
   for (const Voxel& v : box(5, 5, 1))
