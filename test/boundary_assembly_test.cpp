@@ -365,6 +365,33 @@ TEST(BoundaryAssembly, RegionTouchingItselfAndSeveralHoles) {
   check_voxels(four_holes, {40, 22, 1, 0, 4, 21}, true);
 }
 
+// Random sets of voxels in a 4 x 4 x 4 grid, half full: touching edges and
+// points, pinched regions, holes and cavities in every combination. Oracles:
+// the voxel count (volume) and membership of every voxel's centre.
+TEST(BoundaryAssembly, RandomVoxelSets) {
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    std::vector<Voxel> voxels;
+    std::set<Voxel> set;
+    for (const Voxel& v : box(4, 4, 4))
+      if (std::bernoulli_distribution(0.5)(rng)) {
+        voxels.push_back(v);
+        set.insert(v);
+      }
+    const BoundaryFragments fragments = voxel_fragments(voxels, rng);
+    const Solid s = assemble_boundary(fragments, with_threads(1));
+    EXPECT_EQ(s.volume(), static_cast<int>(voxels.size()));
+    check_mesh(s);
+    for (const Voxel& v : box(4, 4, 4)) {
+      const Vec3 centre{Rational(2 * v[0] + 1, 2), Rational(2 * v[1] + 1, 2), Rational(2 * v[2] + 1, 2)};
+      EXPECT_EQ(s.locate(centre), set.count(v) != 0 ? cvms::Location::inside : cvms::Location::outside);
+    }
+    const Solid t = assemble_boundary(fragments, with_threads(2));
+    EXPECT_TRUE(std::equal(s.triangles().begin(), s.triangles().end(), t.triangles().begin(), t.triangles().end()));
+  }
+}
+
 TEST(BoundaryAssembly, ReportsItsStageAndStopsWhenAsked) {
   std::mt19937 rng(1);
   const BoundaryFragments fragments = voxel_fragments(box(2, 2, 2), rng);

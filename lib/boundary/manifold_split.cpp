@@ -122,35 +122,76 @@ class Classes {
   std::vector<std::uint32_t> parent_;
 };
 
-}  // namespace
-
-void split_non_manifold(std::vector<Vec3>& vertices, Triangles& triangles) {
-  const std::vector<std::uint32_t> partner = pair_half_edges(vertices, triangles);
+// The corners joined across the partner pairs, except at the start of the
+// half-edges `cut` marks; each class after the first at a vertex gets a new
+// index (a copy of the point).
+void renumber(std::vector<Vec3>& vertices, Triangles& triangles, const std::vector<std::uint32_t>& partner,
+              const std::vector<bool>& cut) {
   const auto n = static_cast<std::uint32_t>(triangles.size() * 3);
   // Corner c = 3 t + i is corner i of triangle t; half-edge h starts at corner h.
   Classes fans(n);
   const auto next_corner = [](std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; };
-  for (std::uint32_t h = 0; h < n; ++h) {
-    const std::uint32_t g = partner[h];
-    fans.join(h, next_corner(g));  // both at the start of h
-  }
+  for (std::uint32_t h = 0; h < n; ++h)
+    if (!cut[h]) fans.join(h, next_corner(partner[h]));  // both at the start of h
   std::vector<std::uint32_t> index_of_class(n, UINT32_MAX);
   std::vector<bool> vertex_claimed(vertices.size(), false);
   for (std::uint32_t c = 0; c < n; ++c) {
-    const std::uint32_t root = fans.find(c);
-    std::uint32_t& index = index_of_class[root];
+    std::uint32_t& index = index_of_class[fans.find(c)];
     const std::uint32_t v = triangles[c / 3][c % 3];
-    if (index == UINT32_MAX) {
-      if (!vertex_claimed[v]) {
-        vertex_claimed[v] = true;
-        index = v;
-      } else {
-        index = static_cast<std::uint32_t>(vertices.size());
-        vertices.push_back(vertices[v]);
-      }
+    if (index != UINT32_MAX) continue;
+    if (!vertex_claimed[v]) {
+      vertex_claimed[v] = true;
+      index = v;
+    } else {
+      index = static_cast<std::uint32_t>(vertices.size());
+      vertices.push_back(vertices[v]);
     }
   }
   for (std::uint32_t c = 0; c < n; ++c) triangles[c / 3][c % 3] = index_of_class[fans.find(c)];
+}
+
+// The half-edges whose edge (by index) still has more than two triangles,
+// marked at those that start at the edge's smaller index.
+std::vector<bool> crowded_edge_starts(const Triangles& tris) {
+  const auto n = static_cast<std::uint32_t>(tris.size() * 3);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  for (std::uint32_t h = 0; h < n; ++h) {
+    const std::uint64_t a = from_of(tris, h);
+    const std::uint64_t b = to_of(tris, h);
+    keyed[h] = {(std::min(a, b) << 32) | std::max(a, b), h};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<bool> cut(n, false);
+  for (std::size_t k = 0; k < n;) {
+    std::size_t e = k;
+    while (e < n && keyed[e].first == keyed[k].first) ++e;
+    if (e - k > 2)
+      for (std::size_t j = k; j < e; ++j) {
+        const std::uint32_t h = keyed[j].second;
+        cut[h] = from_of(tris, h) < to_of(tris, h);
+      }
+    k = e;
+  }
+  return cut;
+}
+
+}  // namespace
+
+// Two passes: the first gives each fan its own index. A fan that runs
+// through the same crowded edge (u, v) more than once (the parts touching
+// along it are joined around u and around v as well) is still one class; the
+// second pass cuts such fans at u where they cross that edge: each arc
+// between two crossings closes on the edge from the copy of u to v, its
+// first triangle leaving along it and its last arriving along it, so every
+// edge then has two triangles in opposite directions.
+void split_non_manifold(std::vector<Vec3>& vertices, Triangles& triangles) {
+  const std::vector<std::uint32_t> partner = pair_half_edges(vertices, triangles);
+  renumber(vertices, triangles, partner, std::vector<bool>(triangles.size() * 3, false));
+  const std::vector<bool> cut = crowded_edge_starts(triangles);
+  if (std::find(cut.begin(), cut.end(), true) == cut.end()) return;
+  renumber(vertices, triangles, partner, cut);
+  const std::vector<bool> left = crowded_edge_starts(triangles);
+  if (std::find(left.begin(), left.end(), true) != left.end()) not_solid();
 }
 
 }  // namespace cvms::detail
