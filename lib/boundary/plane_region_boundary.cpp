@@ -32,47 +32,64 @@ namespace cvms::detail {
 
 namespace {
 
-// One end of a fragment edge on its line: key (dx, dy, offset), parameter,
-// the count it adds to the intervals after it, and the 3D point.
-struct LineEvent {
+// A fragment edge on its line: the line's key (dx, dy, offset), the
+// parameters of its lower and upper ends, whether it runs up (+1) or down
+// (-1), and its ends in 3D, lower first.
+struct LineEdge {
   Vec3 line;
-  Rational t;
-  int step = 0;
-  const Vec3* point = nullptr;
+  Rational t_low, t_high;
+  int along = 0;
+  const Vec3* low = nullptr;
+  const Vec3* high = nullptr;
 };
 
-bool event_before(const LineEvent& a, const LineEvent& b) {
-  if (a.line != b.line) return a.line < b.line;
-  return a.t < b.t;
+// One end of an edge: its parameter, the count it adds to the intervals
+// after it, and its point.
+struct LineEvent {
+  const Rational* t;
+  int step;
+  const Vec3* point;
+};
+
+int compare_lines(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (int c = cmp(a[k], b[k]); c != 0) return c;
+  return 0;
 }
 
-void add_edge(const PlaneChart& chart, const Vec3& a, const Vec3& b, std::vector<LineEvent>& events) {
+LineEdge line_edge(const PlaneChart& chart, const Vec3& a, const Vec3& b) {
   const Vec2 pa = chart(a);
   const Vec2 pb = chart(b);
   const Vec2 d = pb - pa;
   const Vec3 dir3 = canonical_normal(Vec3{d.x, d.y, 0});
   const Vec2 dir{dir3.x, dir3.y};
-  const Vec3 line{dir.x, dir.y, cross(dir, pa)};
+  LineEdge e;
+  e.line = Vec3{dir.x, dir.y, cross(dir, pa)};
   Rational ta = dot(dir, pa);
   Rational tb = dot(dir, pb);
-  const int along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
-  if (along > 0) {
-    events.push_back({line, std::move(ta), along, &a});
-    events.push_back({line, std::move(tb), -along, &b});
+  e.along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
+  if (e.along > 0) {
+    e.t_low = std::move(ta);
+    e.t_high = std::move(tb);
+    e.low = &a;
+    e.high = &b;
   } else {
-    events.push_back({line, std::move(tb), along, &b});
-    events.push_back({line, std::move(ta), -along, &a});
+    e.t_low = std::move(tb);
+    e.t_high = std::move(ta);
+    e.low = &b;
+    e.high = &a;
   }
+  return e;
 }
 
-// The runs of one line's events [first, last), sorted by parameter.
+// The runs of the events of one line, sorted by parameter.
 void line_runs(std::span<const LineEvent> events, std::vector<DirectedSegment>& out) {
   int value = 0;
   const Vec3* run_start = nullptr;
   for (std::size_t k = 0; k < events.size();) {
     const int before = value;
     std::size_t e = k;
-    for (; e < events.size() && events[e].t == events[k].t; ++e) value += events[e].step;
+    for (; e < events.size() && cmp(*events[e].t, *events[k].t) == 0; ++e) value += events[e].step;
     if (value < -1 || value > 1)
       throw Error(ErrorCategory::invalid_argument,
                   "assemble_boundary: two fragments on one side of a line overlap (their interiors are not disjoint)");
@@ -90,19 +107,33 @@ void line_runs(std::span<const LineEvent> events, std::vector<DirectedSegment>& 
 
 std::vector<DirectedSegment> plane_region_boundary(const BoundaryFragments& fragments,
                                                    std::span<const std::uint32_t> on_plane, const Vec3& normal) {
+  std::vector<DirectedSegment> out;
+  if (on_plane.size() == 1) {
+    // One convex fragment with no three consecutive corners collinear: its
+    // edges are the region's boundary.
+    const auto& corners = fragments.fragments[on_plane[0]].corners;
+    for (std::size_t i = 0; i < corners.size(); ++i) out.push_back({corners[i], corners[(i + 1) % corners.size()]});
+    return out;
+  }
   const PlaneChart chart(normal);
-  std::vector<LineEvent> events;
+  std::vector<LineEdge> edges;
   for (std::uint32_t f : on_plane) {
     const auto& corners = fragments.fragments[f].corners;
     for (std::size_t i = 0; i < corners.size(); ++i)
-      add_edge(chart, corners[i], corners[(i + 1) % corners.size()], events);
+      edges.push_back(line_edge(chart, corners[i], corners[(i + 1) % corners.size()]));
   }
-  std::sort(events.begin(), events.end(), event_before);
-  std::vector<DirectedSegment> out;
-  for (std::size_t k = 0; k < events.size();) {
+  std::sort(edges.begin(), edges.end(),
+            [](const LineEdge& a, const LineEdge& b) { return compare_lines(a.line, b.line) < 0; });
+  std::vector<LineEvent> events;
+  for (std::size_t k = 0; k < edges.size();) {
     std::size_t e = k;
-    while (e < events.size() && events[e].line == events[k].line) ++e;
-    line_runs(std::span<const LineEvent>(events).subspan(k, e - k), out);
+    events.clear();
+    for (; e < edges.size() && compare_lines(edges[e].line, edges[k].line) == 0; ++e) {
+      events.push_back({&edges[e].t_low, edges[e].along, edges[e].low});
+      events.push_back({&edges[e].t_high, -edges[e].along, edges[e].high});
+    }
+    std::sort(events.begin(), events.end(), [](const LineEvent& a, const LineEvent& b) { return cmp(*a.t, *b.t) < 0; });
+    line_runs(events, out);
     k = e;
   }
   return out;

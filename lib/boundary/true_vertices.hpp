@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "cvms/vec.hpp"
@@ -31,8 +32,10 @@ class SegmentSplitter {
 
  private:
   [[nodiscard]] std::uint32_t id(const Vec3& p) const;
+  // The vertices of order k that may lie on the segment [a, b].
+  [[nodiscard]] std::span<const std::uint32_t> candidates(int k, const Vec3& a, const Vec3& b) const;
   const std::vector<Vec3>& vertices_;
-  std::array<std::vector<std::uint32_t>, 3> by_axis_;  // vertex ids sorted by coordinate k
+  std::array<std::vector<std::uint32_t>, 3> by_axis_;  // vertex ids by coordinates (k, k + 1, k + 2)
 };
 
 }  // namespace cvms::detail
