@@ -21,10 +21,10 @@
 #include "manifold_split.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "union_find.hpp"
 
 namespace cvms::detail {
 
@@ -39,6 +39,20 @@ using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 std::uint32_t from_of(const Triangles& t, std::uint32_t h) { return t[h / 3][h % 3]; }
 std::uint32_t to_of(const Triangles& t, std::uint32_t h) { return t[h / 3][(h % 3 + 1) % 3]; }
 std::uint32_t far_of(const Triangles& t, std::uint32_t h) { return t[h / 3][(h % 3 + 2) % 3]; }
+
+// Every half-edge h = 3 t + i (corner i to corner i + 1 of t) with the key
+// of its edge (its two indices, smaller first), sorted by key.
+std::vector<std::pair<std::uint64_t, std::uint32_t>> edge_keys(const Triangles& tris) {
+  const auto n = static_cast<std::uint32_t>(tris.size() * 3);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  for (std::uint32_t h = 0; h < n; ++h) {
+    const std::uint64_t a = from_of(tris, h);
+    const std::uint64_t b = to_of(tris, h);
+    keyed[h] = {(std::min(a, b) << 32) | std::max(a, b), h};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  return keyed;
+}
 
 class EdgeAngles {
  public:
@@ -71,13 +85,7 @@ class EdgeAngles {
 // partner[h] for every half-edge h = 3 t + i (corner i to corner i + 1 of t).
 std::vector<std::uint32_t> pair_half_edges(const std::vector<Vec3>& vertices, const Triangles& tris) {
   const auto n = static_cast<std::uint32_t>(tris.size() * 3);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-  for (std::uint32_t h = 0; h < n; ++h) {
-    const std::uint64_t a = from_of(tris, h);
-    const std::uint64_t b = to_of(tris, h);
-    keyed[h] = {(std::min(a, b) << 32) | std::max(a, b), h};
-  }
-  std::sort(keyed.begin(), keyed.end());
+  const auto keyed = edge_keys(tris);
   std::vector<std::uint32_t> partner(n);
   std::vector<std::uint32_t> group;
   for (std::size_t k = 0; k < n;) {
@@ -105,23 +113,6 @@ std::vector<std::uint32_t> pair_half_edges(const std::vector<Vec3>& vertices, co
   return partner;
 }
 
-class Classes {
- public:
-  explicit Classes(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::uint32_t{0}); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
-
 // The corners joined across the partner pairs, except at the start of the
 // half-edges `cut` marks; each class after the first at a vertex gets a new
 // index (a copy of the point).
@@ -129,7 +120,7 @@ void renumber(std::vector<Vec3>& vertices, Triangles& triangles, const std::vect
               const std::vector<bool>& cut) {
   const auto n = static_cast<std::uint32_t>(triangles.size() * 3);
   // Corner c = 3 t + i is corner i of triangle t; half-edge h starts at corner h.
-  Classes fans(n);
+  UnionFind fans(n);
   const auto next_corner = [](std::uint32_t c) { return c - c % 3 + (c % 3 + 1) % 3; };
   for (std::uint32_t h = 0; h < n; ++h)
     if (!cut[h]) fans.join(h, next_corner(partner[h]));  // both at the start of h
@@ -154,13 +145,7 @@ void renumber(std::vector<Vec3>& vertices, Triangles& triangles, const std::vect
 // marked at those that start at the edge's smaller index.
 std::vector<bool> crowded_edge_starts(const Triangles& tris) {
   const auto n = static_cast<std::uint32_t>(tris.size() * 3);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-  for (std::uint32_t h = 0; h < n; ++h) {
-    const std::uint64_t a = from_of(tris, h);
-    const std::uint64_t b = to_of(tris, h);
-    keyed[h] = {(std::min(a, b) << 32) | std::max(a, b), h};
-  }
-  std::sort(keyed.begin(), keyed.end());
+  const auto keyed = edge_keys(tris);
   std::vector<bool> cut(n, false);
   for (std::size_t k = 0; k < n;) {
     std::size_t e = k;

@@ -1,128 +1,20 @@
 // SPDX-License-Identifier: MIT
-// Ear clipping of a weakly simple polygon (hole_bridges.hpp makes one of a
-// region with holes; a region that touches itself at a point is one too):
-// a polygon that may pass through a point more than once, each passage
-// bounding its own wedge of the inside, the passages' wedges disjoint.
-//
-// A corner i with neighbours a and b is an ear when it turns left strictly
-// (so the triangle has positive area), no other corner lies in the closed
-// triangle (a, i, b) unless it is another passage through a, i or b, and no
-// such passage has an edge that leaves its point strictly into the
-// triangle's angle there. An edge that meets the triangle's inside enters
-// it either at a corner strictly inside (excluded) or through the side
-// (a, b) from outside, and then it must leave through a point of the
-// triangle (it cannot cross the polygon's edges (a, i) and (i, b)), i.e.
-// end at a corner in it or run to a, i or b, which the passages' test
-// excludes. So the triangle lies in the polygon, and clipping it leaves a
-// weakly simple polygon of the same kind (the same argument as for simple
-// polygons, face_triangulation.cpp). Only the ear's neighbours change
-// status; all are re-examined once before giving up.
+// The triangulation of region_triangulation.hpp: the holes bridged to the
+// outer loop (hole_bridges.hpp) make one weakly simple polygon, counterclockwise,
+// and so does a region that touches itself at a point (its loop passes
+// there twice, each passage bounding its own wedge); ear clipping
+// (ear_clipping.hpp) cuts it without new vertices.
 #include "region_triangulation.hpp"
 
-#include <optional>
-
 #include "cvms/error.hpp"
+#include "ear_clipping.hpp"
 #include "hole_bridges.hpp"
-#include "planar_tests.hpp"
 
 namespace cvms::detail {
 
-namespace {
-
-class WeakEarClipper {
- public:
-  WeakEarClipper(std::span<const Vec2> points, std::vector<std::uint32_t> corners)
-      : points_(points), corners_(std::move(corners)), prev_(corners_.size()), next_(corners_.size()),
-        ear_(corners_.size()) {
-    const std::size_t k = corners_.size();
-    for (std::size_t i = 0; i < k; ++i) {
-      prev_[i] = (i + k - 1) % k;
-      next_[i] = (i + 1) % k;
-    }
-    for (std::size_t i = 0; i < k; ++i) ear_[i] = is_ear(i);
-  }
-
-  bool run(std::vector<std::array<std::uint32_t, 3>>& out) {
-    std::size_t remaining = corners_.size();
-    std::size_t cur = 0;
-    while (remaining > 3) {
-      const auto ear = find_ear(cur, remaining);
-      if (!ear) return false;
-      const std::size_t i = *ear;
-      const std::size_t a = prev_[i];
-      const std::size_t b = next_[i];
-      out.push_back({corners_[a], corners_[i], corners_[b]});
-      next_[a] = b;
-      prev_[b] = a;
-      --remaining;
-      ear_[a] = is_ear(a);
-      ear_[b] = is_ear(b);
-      cur = b;
-    }
-    if (orient2(at(prev_[cur]), at(cur), at(next_[cur])) <= 0) return false;
-    out.push_back({corners_[prev_[cur]], corners_[cur], corners_[next_[cur]]});
-    return true;
-  }
-
- private:
-  [[nodiscard]] const Vec2& at(std::size_t i) const { return points_[corners_[i]]; }
-
-  std::optional<std::size_t> find_ear(std::size_t cur, std::size_t remaining) {
-    for (int pass = 0; pass < 2; ++pass) {
-      std::size_t i = cur;
-      for (std::size_t step = 0; step < remaining; ++step, i = next_[i]) {
-        if (pass == 1) ear_[i] = is_ear(i);
-        if (ear_[i]) return i;
-      }
-    }
-    return std::nullopt;
-  }
-
-  // Does an edge of corner j (a passage through c, whose triangle angle is
-  // spanned by the rays to x and y) leave c strictly into that angle?
-  bool passage_enters(std::size_t j, const Vec2& c, const Vec2& x, const Vec2& y) const {
-    const int side_x = orient2(c, x, y);
-    const int side_y = orient2(c, y, x);
-    for (std::size_t n : {prev_[j], next_[j]}) {
-      const Vec2& q = at(n);
-      if (orient2(c, x, q) == side_x && orient2(c, y, q) == side_y) return true;
-    }
-    return false;
-  }
-
-  bool is_ear(std::size_t i) const {
-    const std::size_t a = prev_[i];
-    const std::size_t b = next_[i];
-    const Vec2& pa = at(a);
-    const Vec2& pi = at(i);
-    const Vec2& pb = at(b);
-    if (orient2(pa, pi, pb) <= 0) return false;
-    for (std::size_t j = next_[b]; j != a; j = next_[j]) {
-      const std::uint32_t c = corners_[j];
-      if (c == corners_[a]) {
-        if (passage_enters(j, pa, pi, pb)) return false;
-      } else if (c == corners_[i]) {
-        if (passage_enters(j, pi, pa, pb)) return false;
-      } else if (c == corners_[b]) {
-        if (passage_enters(j, pb, pa, pi)) return false;
-      } else if (point_in_triangle(at(j), pa, pi, pb)) {
-        return false;
-      }
-    }
-    return true;
-  }
-
-  std::span<const Vec2> points_;
-  std::vector<std::uint32_t> corners_;
-  std::vector<std::size_t> prev_, next_;
-  std::vector<bool> ear_;
-};
-
-}  // namespace
-
 void triangulate_region(std::span<const Vec2> points, const RegionLoops& region,
                         std::vector<std::array<std::uint32_t, 3>>& out) {
-  WeakEarClipper clipper(points, bridge_holes(points, region));
+  EarClipper clipper(points, bridge_holes(points, region), 1);
   if (!clipper.run(out))
     throw Error(ErrorCategory::invalid_argument, "assemble_boundary: a plane region could not be triangulated");
 }
