@@ -343,6 +343,50 @@ TEST(BoundaryAssembly, CubesTouchingAlongAnEdgeOrAtAPointMakeTwoShells) {
   }
 }
 
+// Adds the convex polygon `corners` with its normal pointing away from `inside`.
+void add_facing_away(FragmentBuilder& b, const Vec3& inside, std::vector<Vec3> corners) {
+  Vec3 area{0, 0, 0};
+  for (std::size_t i = 0; i < corners.size(); ++i) area += cross(corners[i], corners[(i + 1) % corners.size()]);
+  Vec3 normal = cvms::primitive_direction(area);
+  if (sgn(dot(normal, corners[0] - inside)) < 0) normal = -normal;
+  b.add(normal, std::move(corners));
+}
+
+TEST(BoundaryAssembly, VertexTouchingTheMiddleOfAnEdgeSplitsIt) {
+  // The unit cube and a tetrahedron whose apex (1/2, 0, 1) touches the
+  // middle of the cube's edge from (0, 0, 1) to (1, 0, 1) from outside
+  // (its base is the triangle (0, -1, 2), (1, -1, 2), (1/2, -2, 2)). The
+  // edge is split there and the point is duplicated: the cube keeps 9
+  // vertices (8 + the split point), the tetrahedron 4; volumes 1 and 1/6.
+  FragmentBuilder b;
+  const Vec3 centre{Rational(1, 2), Rational(1, 2), Rational(1, 2)};
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) {
+      std::vector<Vec3> corners;
+      for (const auto& [u, v] : std::vector<std::pair<int, int>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        Vec3 p;
+        p[a] = side;
+        p[(a + 1) % 3] = u;
+        p[(a + 2) % 3] = v;
+        corners.push_back(p);
+      }
+      add_facing_away(b, centre, corners);
+    }
+  const Vec3 apex{Rational(1, 2), 0, 1};
+  const std::vector<Vec3> base = {{0, -1, 2}, {1, -1, 2}, {Rational(1, 2), -2, 2}};
+  const Vec3 inside{Rational(1, 2), Rational(-5, 4), Rational(7, 4)};
+  add_facing_away(b, inside, base);
+  for (int i = 0; i < 3; ++i) add_facing_away(b, inside, {apex, base[i], base[(i + 1) % 3]});
+  const Solid s = assemble_boundary(b.fragments(), with_threads(1));
+  expect_counts(s, {13, 10, 2, 0, 0, Rational(7, 6)});
+  EXPECT_EQ(distinct_points(s), 12U);
+  check_mesh(s);
+  std::vector<Rational> volumes;
+  for (const auto& soup : shell_soups(s)) volumes.push_back(Solid::from_soup(soup).volume());
+  std::sort(volumes.begin(), volumes.end());
+  EXPECT_EQ(volumes, (std::vector<Rational>{Rational(1, 6), 1}));
+}
+
 TEST(BoundaryAssembly, RegionTouchingItselfAndSeveralHoles) {
   // 3 x 3 minus the centre and a corner: a C whose tips touch along the edge
   // x = y = 2. The top and bottom regions pass through (2, 2) twice; the
@@ -404,11 +448,14 @@ TEST(BoundaryAssembly, ReportsItsStageAndStopsWhenAsked) {
   (void)assemble_boundary(fragments, options);
   EXPECT_EQ(stages, std::set<std::string>{"union: assembly"});
   options.progress = [](const cvms::Progress&) { return false; };
-  try {
-    (void)assemble_boundary(fragments, options);
-    FAIL() << "not cancelled";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.category(), ErrorCategory::cancelled);
+  for (unsigned threads : {1U, 2U}) {
+    options.threads = threads;
+    try {
+      (void)assemble_boundary(fragments, options);
+      FAIL() << "not cancelled";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::cancelled);
+    }
   }
 }
 
@@ -429,6 +476,15 @@ TEST(BoundaryAssembly, RejectsFragmentsThatDoNotBoundASolid) {
   } catch (const Error& e) {
     EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
     EXPECT_NE(std::string(e.what()).find("fragment 0"), std::string::npos);
+  }
+  open.fragments[0].plane = 0;
+  open.planes[0].normal = Vec3{0, 0, 0};
+  try {
+    (void)assemble_boundary(open, with_threads(1));
+    FAIL() << "a zero normal was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+    EXPECT_NE(std::string(e.what()).find("plane 0"), std::string::npos);
   }
   EXPECT_EQ(assemble_boundary(BoundaryFragments{}, with_threads(1)).num_shells(), 0U);
 }

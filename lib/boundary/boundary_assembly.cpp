@@ -38,6 +38,9 @@ using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
 std::vector<std::vector<std::uint32_t>> fragments_by_plane(const BoundaryFragments& fragments) {
   std::vector<std::vector<std::uint32_t>> by_plane(fragments.planes.size());
+  for (std::size_t p = 0; p < fragments.planes.size(); ++p)
+    if (is_zero(fragments.planes[p].normal))
+      throw Error(ErrorCategory::invalid_argument, "assemble_boundary: plane " + std::to_string(p) + " has a zero normal");
   for (std::uint32_t f = 0; f < fragments.fragments.size(); ++f) {
     const BoundaryFragment& fragment = fragments.fragments[f];
     if (fragment.plane >= fragments.planes.size() || fragment.corners.size() < 3)
