@@ -51,10 +51,10 @@ bool edge_clear(const Vec2& a, const Vec2& b, const Vec2& h, const Vec2& p) {
 class Bridger {
  public:
   Bridger(std::span<const Vec2> points, const RegionLoops& region) : points_(points), polygon_(region.outer) {
-    for (const Loop& hole : region.holes) pending_.push_back(&hole);
-    std::sort(pending_.begin(), pending_.end(), [&](const Loop* x, const Loop* y) {
-      return points_[(*y)[greatest_corner(points_, *y)]] < points_[(*x)[greatest_corner(points_, *x)]];
-    });
+    std::vector<std::pair<const Vec2*, const Loop*>> keyed;
+    for (const Loop& hole : region.holes) keyed.emplace_back(&points_[hole[greatest_corner(points_, hole)]], &hole);
+    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return *y.first < *x.first; });
+    for (const auto& [corner, hole] : keyed) pending_.push_back(hole);
   }
 
   Loop run() {

@@ -14,7 +14,8 @@
 // nested and the smallest one (least area) is the one it belongs to. Whether
 // a hole lies inside an outer loop is decided at the midpoint of one of its
 // edges that is not on that loop (a hole's edge never lies along an outer
-// loop's edge: they would have cancelled), by exact ray crossing.
+// loop's edge: they would have cancelled), by exact ray crossing, after the
+// loops' bounding boxes (an outer loop around a hole contains its box).
 #include "region_loops.hpp"
 
 #include <algorithm>
@@ -111,6 +112,27 @@ int locate_in_loop(std::span<const Vec2> points, const std::vector<std::uint32_t
   return inside ? 1 : -1;
 }
 
+struct Box {
+  Vec2 low, high;
+};
+
+Box box_of(std::span<const Vec2> points, const std::vector<std::uint32_t>& loop) {
+  Box b{points[loop[0]], points[loop[0]]};
+  for (std::uint32_t i : loop) {
+    const Vec2& p = points[i];
+    if (p.x < b.low.x) b.low.x = p.x;
+    if (p.y < b.low.y) b.low.y = p.y;
+    if (b.high.x < p.x) b.high.x = p.x;
+    if (b.high.y < p.y) b.high.y = p.y;
+  }
+  return b;
+}
+
+bool box_contains(const Box& outer, const Box& inner) {
+  return outer.low.x <= inner.low.x && outer.low.y <= inner.low.y && inner.high.x <= outer.high.x &&
+         inner.high.y <= outer.high.y;
+}
+
 bool hole_inside(std::span<const Vec2> points, const std::vector<std::uint32_t>& hole,
                  const std::vector<std::uint32_t>& outer) {
   for (std::size_t i = 0; i < hole.size(); ++i) {
@@ -126,11 +148,13 @@ bool hole_inside(std::span<const Vec2> points, const std::vector<std::uint32_t>&
 std::vector<RegionLoops> region_loops(std::span<const Vec2> points, std::span<const std::array<std::uint32_t, 2>> edges) {
   auto loops = LoopTracer(points, edges).trace();
   std::vector<Rational> areas;
+  std::vector<Box> boxes;
   std::vector<RegionLoops> regions;
   std::vector<std::size_t> region_of_loop(loops.size(), 0);
   std::vector<std::size_t> holes;
   for (std::size_t l = 0; l < loops.size(); ++l) {
     areas.push_back(twice_area(points, loops[l]));
+    boxes.push_back(box_of(points, loops[l]));
     if (sgn(areas[l]) > 0) {
       region_of_loop[l] = regions.size();
       regions.push_back({std::move(loops[l]), {}});
@@ -142,7 +166,7 @@ std::vector<RegionLoops> region_loops(std::span<const Vec2> points, std::span<co
     std::optional<std::size_t> best;
     for (std::size_t l = 0; l < loops.size(); ++l) {
       if (sgn(areas[l]) <= 0) continue;
-      if (best && areas[l] >= areas[*best]) continue;
+      if ((best && areas[l] >= areas[*best]) || !box_contains(boxes[l], boxes[h])) continue;
       if (hole_inside(points, loops[h], regions[region_of_loop[l]].outer)) best = l;
     }
     if (!best) throw Error(ErrorCategory::invalid_argument, "assemble_boundary: a hole of a plane region lies in no outer loop");
