@@ -387,6 +387,29 @@ TEST(BoundaryAssembly, VertexTouchingTheMiddleOfAnEdgeSplitsIt) {
   EXPECT_EQ(volumes, (std::vector<Rational>{Rational(1, 6), 1}));
 }
 
+TEST(BoundaryAssembly, CornerWhereALoneFragmentDoesNotTurnIsNoVertex) {
+  // The unit cube, its bottom given as one fragment with a fifth corner
+  // (1/2, 0, 0) on a straight side: still 8 vertices and 6 facets.
+  FragmentBuilder b;
+  const Vec3 centre{Rational(1, 2), Rational(1, 2), Rational(1, 2)};
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) {
+      std::vector<Vec3> corners;
+      for (const auto& [u, v] : std::vector<std::pair<int, int>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        Vec3 p;
+        p[a] = side;
+        p[(a + 1) % 3] = u;
+        p[(a + 2) % 3] = v;
+        corners.push_back(p);
+      }
+      if (a == 2 && side == 0) corners.insert(corners.begin() + 1, Vec3{Rational(1, 2), 0, 0});
+      add_facing_away(b, centre, corners);
+    }
+  const Solid s = assemble_boundary(b.fragments(), with_threads(1));
+  expect_counts(s, {8, 6, 1, 0, 0, 1});
+  check_mesh(s);
+}
+
 TEST(BoundaryAssembly, RegionTouchingItselfAndSeveralHoles) {
   // 3 x 3 minus the centre and a corner: a C whose tips touch along the edge
   // x = y = 2. The top and bottom regions pass through (2, 2) twice; the

@@ -103,19 +103,29 @@ void line_runs(std::span<const LineEvent> events, std::vector<DirectedSegment>& 
   }
 }
 
+// One convex fragment is its own region: its edges, joined across corners
+// where it does not turn (none, when it keeps the contract).
+std::vector<DirectedSegment> single_fragment_boundary(const PlaneChart& chart, const std::vector<Vec3>& corners) {
+  const std::size_t k = corners.size();
+  std::vector<Vec2> p;
+  p.reserve(k);
+  for (const Vec3& c : corners) p.push_back(chart(c));
+  std::vector<std::size_t> turning;
+  for (std::size_t i = 0; i < k; ++i)
+    if (orient2d(p[(i + k - 1) % k], p[i], p[(i + 1) % k]) != Sign::zero) turning.push_back(i);
+  std::vector<DirectedSegment> out;
+  for (std::size_t j = 0; j < turning.size(); ++j)
+    out.push_back({corners[turning[j]], corners[turning[(j + 1) % turning.size()]]});
+  return out;
+}
+
 }  // namespace
 
 std::vector<DirectedSegment> plane_region_boundary(const BoundaryFragments& fragments,
                                                    std::span<const std::uint32_t> on_plane, const Vec3& normal) {
   std::vector<DirectedSegment> out;
-  if (on_plane.size() == 1) {
-    // One convex fragment with no three consecutive corners collinear: its
-    // edges are the region's boundary.
-    const auto& corners = fragments.fragments[on_plane[0]].corners;
-    for (std::size_t i = 0; i < corners.size(); ++i) out.push_back({corners[i], corners[(i + 1) % corners.size()]});
-    return out;
-  }
   const PlaneChart chart(normal);
+  if (on_plane.size() == 1) return single_fragment_boundary(chart, fragments.fragments[on_plane[0]].corners);
   std::vector<LineEdge> edges;
   for (std::uint32_t f : on_plane) {
     const auto& corners = fragments.fragments[f].corners;
