@@ -13,9 +13,14 @@
 // So the triangle lies in the polygon, and clipping it leaves a weakly
 // simple polygon of the same turning (for a simple polygon: no edge can
 // enter the triangle without a corner inside it, since its other two sides
-// are edges of the polygon). Only the two neighbours of a clipped ear change
-// status; the others are re-examined before giving up, so a polygon is never
-// rejected for a stale status. Quadratic in the polygon's size.
+// are edges of the polygon). Only corners that do not turn strictly as the
+// polygon does need the triangle test: a chain of edges that enters the
+// triangle through (a, b) and leaves through it again has a corner farthest
+// from (a, b) inside it, where the chain turns back with the triangle's part
+// of the inside around it, so that corner is reflex or straight. Only the
+// two neighbours of a clipped ear change status (convexity and ear); the
+// others are re-examined before giving up, so a polygon is never rejected
+// for a stale status. Quadratic in the polygon's size.
 #include "ear_clipping.hpp"
 
 #include "planar_tests.hpp"
@@ -24,14 +29,17 @@ namespace cvms::detail {
 
 EarClipper::EarClipper(std::span<const Vec2> points, std::vector<std::uint32_t> corners, int turn)
     : points_(points), corners_(std::move(corners)), turn_(turn), prev_(corners_.size()), next_(corners_.size()),
-      ear_(corners_.size()) {
+      convex_(corners_.size()), ear_(corners_.size()) {
   const std::size_t k = corners_.size();
   for (std::size_t i = 0; i < k; ++i) {
     prev_[i] = (i + k - 1) % k;
     next_[i] = (i + 1) % k;
   }
+  for (std::size_t i = 0; i < k; ++i) convex_[i] = is_convex(i);
   for (std::size_t i = 0; i < k; ++i) ear_[i] = is_ear(i);
 }
+
+bool EarClipper::is_convex(std::size_t i) const { return orient2(at(prev_[i]), at(i), at(next_[i])) == turn_; }
 
 bool EarClipper::run(std::vector<std::array<std::uint32_t, 3>>& out) {
   std::size_t remaining = corners_.size();
@@ -46,6 +54,8 @@ bool EarClipper::run(std::vector<std::array<std::uint32_t, 3>>& out) {
     next_[a] = b;
     prev_[b] = a;
     --remaining;
+    convex_[a] = is_convex(a);
+    convex_[b] = is_convex(b);
     ear_[a] = is_ear(a);
     ear_[b] = is_ear(b);
     cur = b;
@@ -84,7 +94,7 @@ bool EarClipper::is_ear(std::size_t i) const {
   const Vec2& pa = at(a);
   const Vec2& pi = at(i);
   const Vec2& pb = at(b);
-  if (orient2(pa, pi, pb) != turn_) return false;
+  if (!convex_[i]) return false;
   for (std::size_t j = next_[b]; j != a; j = next_[j]) {
     const std::uint32_t c = corners_[j];
     if (c == corners_[a]) {
@@ -93,7 +103,7 @@ bool EarClipper::is_ear(std::size_t i) const {
       if (passage_enters(j, pi, pa, pb)) return false;
     } else if (c == corners_[b]) {
       if (passage_enters(j, pb, pa, pi)) return false;
-    } else if (point_in_triangle(at(j), pa, pi, pb)) {
+    } else if (!convex_[j] && point_in_triangle(at(j), pa, pi, pb)) {
       return false;
     }
   }

@@ -34,12 +34,14 @@ class EarClipper {
   [[nodiscard]] const Vec2& at(std::size_t i) const { return points_[corners_[i]]; }
   std::optional<std::size_t> find_ear(std::size_t cur, std::size_t remaining);
   [[nodiscard]] bool passage_enters(std::size_t j, const Vec2& c, const Vec2& x, const Vec2& y) const;
+  [[nodiscard]] bool is_convex(std::size_t i) const;
   [[nodiscard]] bool is_ear(std::size_t i) const;
 
   std::span<const Vec2> points_;
   std::vector<std::uint32_t> corners_;
   int turn_;
   std::vector<std::size_t> prev_, next_;
+  std::vector<bool> convex_;  // turns strictly as the polygon does
   std::vector<bool> ear_;
 };
 
