@@ -352,14 +352,10 @@ void add_facing_away(FragmentBuilder& b, const Vec3& inside, std::vector<Vec3> c
   b.add(normal, std::move(corners));
 }
 
-TEST(BoundaryAssembly, VertexTouchingTheMiddleOfAnEdgeSplitsIt) {
-  // The unit cube and a tetrahedron whose apex (1/2, 0, 1) touches the
-  // middle of the cube's edge from (0, 0, 1) to (1, 0, 1) from outside
-  // (its base is the triangle (0, -1, 2), (1, -1, 2), (1/2, -2, 2)). The
-  // edge is split there and the point is duplicated: the cube keeps 9
-  // vertices (8 + the split point), the tetrahedron 4; volumes 1 and 1/6.
-  FragmentBuilder b;
-  const Vec3 centre{Rational(1, 2), Rational(1, 2), Rational(1, 2)};
+// The six faces of the unit cube [0, 1]^3, each as (0, 0), (1, 0), (1, 1),
+// (0, 1) in the coordinates after its normal's axis.
+std::vector<std::vector<Vec3>> unit_cube_faces() {
+  std::vector<std::vector<Vec3>> faces;
   for (int a = 0; a < 3; ++a)
     for (int side = 0; side < 2; ++side) {
       std::vector<Vec3> corners;
@@ -370,8 +366,20 @@ TEST(BoundaryAssembly, VertexTouchingTheMiddleOfAnEdgeSplitsIt) {
         p[(a + 2) % 3] = v;
         corners.push_back(p);
       }
-      add_facing_away(b, centre, corners);
+      faces.push_back(std::move(corners));
     }
+  return faces;
+}
+
+TEST(BoundaryAssembly, VertexTouchingTheMiddleOfAnEdgeSplitsIt) {
+  // The unit cube and a tetrahedron whose apex (1/2, 0, 1) touches the
+  // middle of the cube's edge from (0, 0, 1) to (1, 0, 1) from outside
+  // (its base is the triangle (0, -1, 2), (1, -1, 2), (1/2, -2, 2)). The
+  // edge is split there and the point is duplicated: the cube keeps 9
+  // vertices (8 + the split point), the tetrahedron 4; volumes 1 and 1/6.
+  FragmentBuilder b;
+  const Vec3 centre{Rational(1, 2), Rational(1, 2), Rational(1, 2)};
+  for (const auto& face : unit_cube_faces()) add_facing_away(b, centre, face);
   const Vec3 apex{Rational(1, 2), 0, 1};
   const std::vector<Vec3> base = {{0, -1, 2}, {1, -1, 2}, {Rational(1, 2), -2, 2}};
   const Vec3 inside{Rational(1, 2), Rational(-5, 4), Rational(7, 4)};
@@ -392,19 +400,10 @@ TEST(BoundaryAssembly, CornerWhereALoneFragmentDoesNotTurnIsNoVertex) {
   // (1/2, 0, 0) on a straight side: still 8 vertices and 6 facets.
   FragmentBuilder b;
   const Vec3 centre{Rational(1, 2), Rational(1, 2), Rational(1, 2)};
-  for (int a = 0; a < 3; ++a)
-    for (int side = 0; side < 2; ++side) {
-      std::vector<Vec3> corners;
-      for (const auto& [u, v] : std::vector<std::pair<int, int>>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-        Vec3 p;
-        p[a] = side;
-        p[(a + 1) % 3] = u;
-        p[(a + 2) % 3] = v;
-        corners.push_back(p);
-      }
-      if (a == 2 && side == 0) corners.insert(corners.begin() + 1, Vec3{Rational(1, 2), 0, 0});
-      add_facing_away(b, centre, corners);
-    }
+  for (auto face : unit_cube_faces()) {
+    if (face[0].z == 0 && face[1].z == 0 && face[2].z == 0) face.insert(face.begin() + 1, Vec3{Rational(1, 2), 0, 0});
+    add_facing_away(b, centre, face);
+  }
   const Solid s = assemble_boundary(b.fragments(), with_threads(1));
   expect_counts(s, {8, 6, 1, 0, 0, 1});
   check_mesh(s);
