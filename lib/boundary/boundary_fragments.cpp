@@ -1,13 +1,168 @@
 // SPDX-License-Identifier: MIT
-// See boundary_fragments.hpp.
+// The union's boundary as fragments (boundary_fragments.hpp): each facet f
+// of each piece P, minus the region C_Q that each other piece Q takes away
+// from it (covering_region.hpp), each subtraction a split of convex
+// polygons by Q's planes (plane_clip.hpp). Only pieces whose boxes meet
+// f's box can take anything away, and the box hierarchy of the unions layer
+// finds them.
+//
+// Threads: workers take pieces from one atomic counter and write each
+// piece's fragments to its own slot; the candidates of a facet are visited
+// in index order. The slots are then read in piece order, and the planes
+// numbered in order of first use there, so the result is the same for
+// every thread count.
 #include "boundary_fragments.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include "box_hierarchy.hpp"
+#include "covering_region.hpp"
 #include "cvms/error.hpp"
+#include "piece_geometry.hpp"
+#include "plane_clip.hpp"
+#include "progress_reporter.hpp"
+#include "worker.hpp"
 
 namespace cvms::detail {
+namespace {
 
-BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron>, const Options&) {
-  throw Error(ErrorCategory::invalid_argument, "union_boundary_fragments: not built yet");
+// One facet's fragments.
+struct FacetFragments {
+  std::uint32_t facet = 0;
+  std::vector<ClipPolygon> polygons;
+};
+
+class FragmentWork {
+ public:
+  FragmentWork(std::span<const ConvexPolyhedron> pieces, ProgressReporter& progress)
+      : progress_(progress), slots_(pieces.size()) {
+    geometry_.reserve(pieces.size());
+    std::vector<unions::OutwardBox> boxes;
+    boxes.reserve(pieces.size());
+    for (const ConvexPolyhedron& piece : pieces) {
+      geometry_.push_back(piece_geometry(piece));
+      boxes.push_back(geometry_.back().box);
+    }
+    hierarchy_ = std::make_unique<unions::BoxHierarchy>(boxes);
+  }
+
+  void run(unsigned threads) {
+    run_on_threads(threads, [this](unsigned) { work(); });
+  }
+
+  // The fragments of piece p, facet by facet.
+  [[nodiscard]] std::vector<FacetFragments>& slot(std::size_t p) { return slots_[p]; }
+  [[nodiscard]] const PieceGeometry& geometry(std::size_t p) const { return geometry_[p]; }
+
+ private:
+  void work() {
+    while (!stop_.load(std::memory_order_relaxed)) {
+      const std::size_t p = next_.fetch_add(1);
+      if (p >= slots_.size()) return;
+      try {
+        piece_fragments(p);
+        progress_.advance(1);
+      } catch (...) {
+        stop_.store(true);
+        throw;
+      }
+    }
+  }
+
+  void piece_fragments(std::size_t p) {
+    const PieceGeometry& g = geometry_[p];
+    std::vector<std::uint32_t> candidates;
+    std::vector<Sign> sides;
+    std::vector<ClipPlane> region;
+    for (std::uint32_t f = 0; f < g.planes.size(); ++f) {
+      candidates.clear();
+      hierarchy_->for_each_overlapping(g.facet_boxes[f], [&](std::size_t q) {
+        if (q != p) candidates.push_back(static_cast<std::uint32_t>(q));
+        return false;
+      });
+      std::sort(candidates.begin(), candidates.end());
+      std::vector<ClipPolygon> polygons(1);
+      for (std::uint32_t k = g.corner_start[f]; k < g.corner_start[f + 1]; ++k)
+        polygons[0].push_back(clip_point(*g.piece, g.corners[k]));
+      for (const std::uint32_t q : candidates) {
+        if (polygons.empty()) break;
+        if (covering_region(geometry_[q], q < p, g.planes[f], sides, region)) subtract_region(polygons, region);
+      }
+      if (!polygons.empty()) slots_[p].push_back({f, std::move(polygons)});
+    }
+  }
+
+  ProgressReporter& progress_;
+  std::vector<PieceGeometry> geometry_;
+  std::unique_ptr<unions::BoxHierarchy> hierarchy_;
+  std::vector<std::vector<FacetFragments>> slots_;
+  std::atomic<std::size_t> next_{0};
+  std::atomic<bool> stop_{false};
+};
+
+// Orders oriented planes by normal, then offset.
+struct PlaneLess {
+  bool operator()(const OrientedPlane& a, const OrientedPlane& b) const {
+    if (a.normal != b.normal) return a.normal < b.normal;
+    return a.offset < b.offset;
+  }
+};
+
+// The slots, in piece order, as fragments on numbered planes.
+BoundaryFragments collect(FragmentWork& work, std::size_t pieces) {
+  BoundaryFragments out;
+  std::map<OrientedPlane, std::uint32_t, PlaneLess> numbers;
+  for (std::size_t p = 0; p < pieces; ++p) {
+    const PieceGeometry& g = work.geometry(p);
+    for (FacetFragments& facet : work.slot(p)) {
+      const ClipPlane& plane = g.planes[facet.facet];
+      OrientedPlane key{*plane.normal, *plane.offset};
+      const auto [it, inserted] = numbers.try_emplace(key, static_cast<std::uint32_t>(out.planes.size()));
+      if (inserted) out.planes.push_back(std::move(key));
+      for (ClipPolygon& polygon : facet.polygons) {
+        BoundaryFragment fragment;
+        fragment.plane = it->second;
+        fragment.corners.reserve(polygon.size());
+        for (ClipPoint& corner : polygon) fragment.corners.push_back(std::move(corner.exact));
+        out.fragments.push_back(std::move(fragment));
+      }
+      facet.polygons.clear();
+      facet.polygons.shrink_to_fit();
+    }
+  }
+  return out;
+}
+
+unsigned thread_count(unsigned requested, std::size_t pieces) {
+  const unsigned cores = std::thread::hardware_concurrency();
+  unsigned threads = std::max(1U, requested);
+  if (cores != 0) threads = std::min(threads, cores);
+  if (threads > pieces) threads = static_cast<unsigned>(std::max<std::size_t>(pieces, 1));
+  return threads;
+}
+
+}  // namespace
+
+BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options) {
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    if (pieces[p].num_vertices() == 0)
+      throw Error(ErrorCategory::invalid_argument,
+                  "union_boundary_fragments: piece " + std::to_string(p) + " is empty");
+  }
+  ProgressReporter progress(callback_of(options.progress));
+  progress.begin("union: boundary", pieces.size());
+  FragmentWork work(pieces, progress);
+  work.run(thread_count(options.threads, pieces.size()));
+  BoundaryFragments out = collect(work, pieces.size());
+  progress.end();
+  return out;
 }
 
 }  // namespace cvms::detail

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// See plane_clip.hpp.
+#include "plane_clip.hpp"
+
+#include <cstddef>
+#include <utility>
+
+#include "filtered_predicates.hpp"
+
+namespace cvms::detail {
+namespace {
+
+// The point where the segment [a, b] crosses the plane, for a and b
+// strictly on opposite sides: a + t (b - a) with t = s_a / (s_a - s_b),
+// s = dot(normal, x) - offset.
+ClipPoint crossing(const ClipPoint& a, const ClipPoint& b, const ClipPlane& plane) {
+  const Vec3& n = *plane.normal;
+  const Rational sa = dot(n, a.exact) - *plane.offset;
+  const Rational sb = dot(n, b.exact) - *plane.offset;
+  const Rational t = sa / (sa - sb);
+  Vec3 x = a.exact + t * (b.exact - a.exact);
+  ApproxVec3 approx = ApproxVec3::of(x);
+  return {std::move(x), approx};
+}
+
+}  // namespace
+
+Sign side(Vec3Ref p, const ClipPlane& plane) {
+  return side_of_plane(p, Vec3Ref{*plane.normal, *plane.normal_approx}, *plane.offset,
+                       plane.offset_approx);
+}
+
+namespace {
+
+// split() with the corners' sides known.
+SplitPolygon split_by_sides(const ClipPolygon& polygon, const ClipPlane& plane, const std::vector<Sign>& sides) {
+  const std::size_t m = polygon.size();
+  SplitPolygon out;
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t j = (i + 1) % m;
+    if (sides[i] != Sign::positive) out.inside.push_back(polygon[i]);
+    if (sides[i] != Sign::negative) out.outside.push_back(polygon[i]);
+    if ((sides[i] == Sign::negative && sides[j] == Sign::positive) ||
+        (sides[i] == Sign::positive && sides[j] == Sign::negative)) {
+      ClipPoint x = crossing(polygon[i], polygon[j], plane);
+      out.inside.push_back(x);
+      out.outside.push_back(std::move(x));
+    }
+  }
+  if (out.inside.size() < 3) out.inside.clear();
+  if (out.outside.size() < 3) out.outside.clear();
+  return out;
+}
+
+}  // namespace
+
+SplitPolygon split(const ClipPolygon& polygon, const ClipPlane& plane) {
+  std::vector<Sign> sides(polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i) sides[i] = side(polygon[i], plane);
+  return split_by_sides(polygon, plane, sides);
+}
+
+namespace {
+
+// Appends to `out` the parts of `piece` outside the region, or the piece
+// itself if it meets the region in zero area.
+void subtract_from(ClipPolygon piece, const std::vector<ClipPlane>& region, std::vector<ClipPolygon>& out) {
+  const std::size_t first = out.size();
+  ClipPolygon left = piece;  // the part inside the planes seen so far
+  std::vector<Sign> sides;
+  for (const ClipPlane& plane : region) {
+    bool any_outside = false;
+    bool any_inside = false;
+    sides.resize(left.size());
+    for (std::size_t i = 0; i < left.size(); ++i) {
+      sides[i] = side(left[i], plane);
+      any_outside = any_outside || sides[i] == Sign::positive;
+      any_inside = any_inside || sides[i] == Sign::negative;
+    }
+    if (!any_outside) continue;  // the plane does not cut what is left
+    if (!any_inside) {           // the region meets the piece in zero area
+      out.resize(first);
+      out.push_back(std::move(piece));
+      return;
+    }
+    SplitPolygon parts = split_by_sides(left, plane, sides);
+    out.push_back(std::move(parts.outside));
+    left = std::move(parts.inside);
+  }
+}
+
+}  // namespace
+
+void subtract_region(std::vector<ClipPolygon>& pieces, const std::vector<ClipPlane>& region) {
+  std::vector<ClipPolygon> out;
+  out.reserve(pieces.size());
+  for (ClipPolygon& piece : pieces) subtract_from(std::move(piece), region, out);
+  pieces = std::move(out);
+}
+
+}  // namespace cvms::detail
