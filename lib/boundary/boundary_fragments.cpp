@@ -33,9 +33,10 @@
 namespace cvms::detail {
 namespace {
 
-// One facet's fragments.
+// One facet's fragments, as corners and polygons of indices into them.
 struct FacetFragments {
   std::uint32_t facet = 0;
+  ClipPoints points;
   std::vector<ClipPolygon> polygons;
 };
 
@@ -88,14 +89,17 @@ class FragmentWork {
         return false;
       });
       std::sort(candidates.begin(), candidates.end());
-      std::vector<ClipPolygon> polygons(1);
-      for (std::uint32_t k = g.corner_start[f]; k < g.corner_start[f + 1]; ++k)
-        polygons[0].push_back(clip_point(*g.piece, g.corners[k]));
-      for (const std::uint32_t q : candidates) {
-        if (polygons.empty()) break;
-        if (covering_region(geometry_[q], q < p, g.planes[f], sides, region)) subtract_region(polygons, region);
+      FacetFragments facet{f, {}, std::vector<ClipPolygon>(1)};
+      for (std::uint32_t k = g.corner_start[f]; k < g.corner_start[f + 1]; ++k) {
+        facet.polygons[0].push_back(static_cast<std::uint32_t>(facet.points.size()));
+        facet.points.push_back(clip_point(*g.piece, g.corners[k]));
       }
-      if (!polygons.empty()) slots_[p].push_back({f, std::move(polygons)});
+      for (const std::uint32_t q : candidates) {
+        if (facet.polygons.empty()) break;
+        if (covering_region(geometry_[q], q < p, g.planes[f], sides, region))
+          subtract_region(facet.points, facet.polygons, region);
+      }
+      if (!facet.polygons.empty()) slots_[p].push_back(std::move(facet));
     }
   }
 
@@ -130,11 +134,10 @@ BoundaryFragments collect(FragmentWork& work, std::size_t pieces) {
         BoundaryFragment fragment;
         fragment.plane = it->second;
         fragment.corners.reserve(polygon.size());
-        for (ClipPoint& corner : polygon) fragment.corners.push_back(std::move(corner.exact));
+        for (const std::uint32_t corner : polygon) fragment.corners.push_back(facet.points[corner].exact);
         out.fragments.push_back(std::move(fragment));
       }
-      facet.polygons.clear();
-      facet.polygons.shrink_to_fit();
+      facet = FacetFragments{};
     }
   }
   return out;

@@ -19,21 +19,20 @@ ClipPoint crossing(const ClipPoint& a, const ClipPoint& b, const ClipPlane& plan
   const Rational sb = dot(n, b.exact) - *plane.offset;
   const Rational t = sa / (sa - sb);
   Vec3 x = a.exact + t * (b.exact - a.exact);
-  ApproxVec3 approx = ApproxVec3::of(x);
+  const ApproxVec3 approx = ApproxVec3::of(x);
   return {std::move(x), approx};
 }
 
-}  // namespace
-
-Sign side(Vec3Ref p, const ClipPlane& plane) {
-  return side_of_plane(p, Vec3Ref{*plane.normal, *plane.normal_approx}, *plane.offset,
-                       plane.offset_approx);
+// Appends the crossing point of corners i and j and returns its index.
+std::uint32_t add_crossing(ClipPoints& points, std::uint32_t i, std::uint32_t j, const ClipPlane& plane) {
+  ClipPoint x = crossing(points[i], points[j], plane);
+  points.push_back(std::move(x));
+  return static_cast<std::uint32_t>(points.size() - 1);
 }
 
-namespace {
-
 // split() with the corners' sides known.
-SplitPolygon split_by_sides(const ClipPolygon& polygon, const ClipPlane& plane, const std::vector<Sign>& sides) {
+SplitPolygon split_by_sides(ClipPoints& points, const ClipPolygon& polygon, const ClipPlane& plane,
+                            const std::vector<Sign>& sides) {
   const std::size_t m = polygon.size();
   SplitPolygon out;
   for (std::size_t i = 0; i < m; ++i) {
@@ -42,9 +41,9 @@ SplitPolygon split_by_sides(const ClipPolygon& polygon, const ClipPlane& plane, 
     if (sides[i] != Sign::negative) out.outside.push_back(polygon[i]);
     if ((sides[i] == Sign::negative && sides[j] == Sign::positive) ||
         (sides[i] == Sign::positive && sides[j] == Sign::negative)) {
-      ClipPoint x = crossing(polygon[i], polygon[j], plane);
+      const std::uint32_t x = add_crossing(points, polygon[i], polygon[j], plane);
       out.inside.push_back(x);
-      out.outside.push_back(std::move(x));
+      out.outside.push_back(x);
     }
   }
   if (out.inside.size() < 3) out.inside.clear();
@@ -54,26 +53,32 @@ SplitPolygon split_by_sides(const ClipPolygon& polygon, const ClipPlane& plane, 
 
 }  // namespace
 
-SplitPolygon split(const ClipPolygon& polygon, const ClipPlane& plane) {
+Sign side(Vec3Ref p, const ClipPlane& plane) {
+  return side_of_plane(p, Vec3Ref{*plane.normal, *plane.normal_approx}, *plane.offset, plane.offset_approx);
+}
+
+SplitPolygon split(ClipPoints& points, const ClipPolygon& polygon, const ClipPlane& plane) {
   std::vector<Sign> sides(polygon.size());
-  for (std::size_t i = 0; i < polygon.size(); ++i) sides[i] = side(polygon[i], plane);
-  return split_by_sides(polygon, plane, sides);
+  for (std::size_t i = 0; i < polygon.size(); ++i) sides[i] = side(points[polygon[i]], plane);
+  return split_by_sides(points, polygon, plane, sides);
 }
 
 namespace {
 
 // Appends to `out` the parts of `piece` outside the region, or the piece
-// itself if it meets the region in zero area.
-void subtract_from(ClipPolygon piece, const std::vector<ClipPlane>& region, std::vector<ClipPolygon>& out) {
+// itself if it meets the region in zero area. `sides` is scratch space.
+void subtract_from(ClipPoints& points, ClipPolygon&& piece, const std::vector<ClipPlane>& region,
+                   std::vector<ClipPolygon>& out, std::vector<Sign>& sides) {
   const std::size_t first = out.size();
-  ClipPolygon left = piece;  // the part inside the planes seen so far
-  std::vector<Sign> sides;
+  ClipPolygon left;  // the part inside the planes seen so far, once cut
+  bool cut = false;
   for (const ClipPlane& plane : region) {
+    const ClipPolygon& current = cut ? left : piece;
     bool any_outside = false;
     bool any_inside = false;
-    sides.resize(left.size());
-    for (std::size_t i = 0; i < left.size(); ++i) {
-      sides[i] = side(left[i], plane);
+    sides.resize(current.size());
+    for (std::size_t i = 0; i < current.size(); ++i) {
+      sides[i] = side(points[current[i]], plane);
       any_outside = any_outside || sides[i] == Sign::positive;
       any_inside = any_inside || sides[i] == Sign::negative;
     }
@@ -83,18 +88,20 @@ void subtract_from(ClipPolygon piece, const std::vector<ClipPlane>& region, std:
       out.push_back(std::move(piece));
       return;
     }
-    SplitPolygon parts = split_by_sides(left, plane, sides);
+    SplitPolygon parts = split_by_sides(points, current, plane, sides);
     out.push_back(std::move(parts.outside));
     left = std::move(parts.inside);
+    cut = true;
   }
 }
 
 }  // namespace
 
-void subtract_region(std::vector<ClipPolygon>& pieces, const std::vector<ClipPlane>& region) {
+void subtract_region(ClipPoints& points, std::vector<ClipPolygon>& pieces, const std::vector<ClipPlane>& region) {
   std::vector<ClipPolygon> out;
   out.reserve(pieces.size());
-  for (ClipPolygon& piece : pieces) subtract_from(std::move(piece), region, out);
+  std::vector<Sign> sides;
+  for (ClipPolygon& piece : pieces) subtract_from(points, std::move(piece), region, out, sides);
   pieces = std::move(out);
 }
 

@@ -20,6 +20,8 @@
 // at most two corners.
 #pragma once
 
+#include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "approx.hpp"
@@ -35,8 +37,15 @@ struct ClipPoint {
   ApproxVec3 approx;
 };
 
-/// A convex polygon in a plane: corners in order, strictly convex.
-using ClipPolygon = std::vector<ClipPoint>;
+/// The corners of the polygons of one plane: polygons refer to them by
+/// index, so that splitting a polygon copies no exact coordinates and makes
+/// only its crossing points. A deque: growing it never moves the exact
+/// values (which would copy them, their moves not being noexcept).
+using ClipPoints = std::deque<ClipPoint>;
+
+/// A convex polygon in a plane: indices of its corners in order, strictly
+/// convex.
+using ClipPolygon = std::vector<std::uint32_t>;
 
 /// The closed half-space dot(normal, x) <= offset. Refers to storage kept
 /// elsewhere (a piece's planes), which must outlive it.
@@ -53,12 +62,13 @@ Sign side(Vec3Ref p, const ClipPlane& plane);
 inline Sign side(const ClipPoint& p, const ClipPlane& plane) { return side(Vec3Ref{p.exact, p.approx}, plane); }
 
 /// The parts of `polygon` inside and outside the half-space, each with
-/// fewer than three corners (cleared) if it has zero area.
+/// fewer than three corners (cleared) if it has zero area. Crossing points
+/// are appended to `points`.
 struct SplitPolygon {
   ClipPolygon inside;
   ClipPolygon outside;
 };
-SplitPolygon split(const ClipPolygon& polygon, const ClipPlane& plane);
+SplitPolygon split(ClipPoints& points, const ClipPolygon& polygon, const ClipPlane& plane);
 
 /// Replaces `pieces` (interior-disjoint convex polygons of one plane) by
 /// convex polygons covering exactly the closure of their parts outside the
@@ -68,7 +78,7 @@ SplitPolygon split(const ClipPolygon& polygon, const ClipPlane& plane);
 /// the part inside the first and outside the second, and so on, keeping the
 /// parts of positive area. Any list of half-spaces whose intersection is C
 /// gives a correct result; a half-space that does not cut the part left adds
-/// no piece.
-void subtract_region(std::vector<ClipPolygon>& pieces, const std::vector<ClipPlane>& region);
+/// no piece. New corners are appended to `points`.
+void subtract_region(ClipPoints& points, std::vector<ClipPolygon>& pieces, const std::vector<ClipPlane>& region);
 
 }  // namespace cvms::detail
