@@ -81,8 +81,49 @@ Rational total_area(const std::map<std::string, Rational>& areas) {
   return total;
 }
 
+// Is x strictly inside the fragment (x on its plane)?
+bool fragment_interior_contains(const BoundaryFragment& f, const OrientedPlane& plane, const Vec3& x) {
+  const std::size_t m = f.corners.size();
+  for (std::size_t e = 0; e < m; ++e) {
+    const Vec3& a = f.corners[e];
+    if (sgn(dot(cross(f.corners[(e + 1) % m] - a, x - a), plane.normal)) <= 0) return false;
+  }
+  return true;
+}
+
+// No fragment's centroid lies inside another fragment of its plane or of
+// the opposite plane (two fragments on one plane facing opposite ways never
+// overlap either).
+::testing::AssertionResult centroids_uncovered(const BoundaryFragments& b) {
+  std::map<std::pair<Vec3, Rational>, std::vector<std::size_t>> by_plane;
+  for (std::size_t i = 0; i < b.fragments.size(); ++i) {
+    const OrientedPlane& plane = b.planes[b.fragments[i].plane];
+    if (sgn(plane.normal.x) < 0 || (sgn(plane.normal.x) == 0 && (sgn(plane.normal.y) < 0 ||
+                                                                  (sgn(plane.normal.y) == 0 && sgn(plane.normal.z) < 0))))
+      by_plane[{-plane.normal, -plane.offset}].push_back(i);
+    else
+      by_plane[{plane.normal, plane.offset}].push_back(i);
+  }
+  for (const auto& [key, members] : by_plane) {
+    for (const std::size_t i : members) {
+      const BoundaryFragment& f = b.fragments[i];
+      Vec3 centroid{0, 0, 0};
+      for (const Vec3& c : f.corners) centroid += c;
+      centroid = Rational(1, static_cast<long>(f.corners.size())) * centroid;
+      for (const std::size_t j : members) {
+        const BoundaryFragment& other = b.fragments[j];
+        if (j != i && fragment_interior_contains(other, b.planes[other.plane], centroid))
+          return ::testing::AssertionFailure() << "fragment " << i << " overlaps fragment " << j;
+      }
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
 // Strictly convex and counterclockwise seen from the normal's side: every
-// corner strictly left of every edge it is not on; all corners on the plane.
+// corner strictly left of every edge it is not on; all corners on the plane;
+// the planes distinct, with primitive integer normals; no overlaps seen
+// from the centroids.
 ::testing::AssertionResult fragment_invariants(const BoundaryFragments& b) {
   for (std::size_t i = 0; i < b.fragments.size(); ++i) {
     const BoundaryFragment& f = b.fragments[i];
@@ -119,7 +160,7 @@ Rational total_area(const std::map<std::string, Rational>& areas) {
         return ::testing::AssertionFailure() << "planes " << j << " and " << i << " are equal";
     }
   }
-  return ::testing::AssertionSuccess();
+  return centroids_uncovered(b);
 }
 
 // Is x on the closed convex fragment (counterclockwise from its normal)?
@@ -297,6 +338,27 @@ TEST(BoundaryFragments, TiltedPiecesAgreeWithPoints) {
 TEST(BoundaryFragments, RandomUnionsAgreeWithPoints) {
   for (const std::uint64_t seed : {1U, 2U, 3U}) {
     const ConvexUnion u = cvms::test::random_union(seed, 12, 4, 6);
+    const BoundaryFragments b = fragments_of(u);
+    EXPECT_TRUE(fragment_invariants(b)) << "seed " << seed;
+    expect_points_agree(u, b, seed, 3);
+  }
+}
+
+TEST(BoundaryFragments, ShearedRandomUnionAgreesWithPoints) {
+  // An affine image keeps every coincidence of the random union (shared
+  // planes, touching edges) on planes of general direction with rational
+  // offsets.
+  cvms::Mat3 shear = cvms::Mat3::identity();
+  shear.m[0][1] = Rational(1, 3);
+  shear.m[1][2] = Rational(-2, 7);
+  shear.m[2][0] = Rational(1, 5);
+  const Vec3 shift{Rational(1, 10), Rational(-3, 4), Rational(2, 9)};
+  for (const std::uint64_t seed : {6U, 7U}) {
+    const ConvexUnion straight = cvms::test::random_union(seed, 10, 4, 6);
+    std::vector<ConvexPolyhedron> pieces;
+    for (const ConvexPolyhedron& p : straight.pieces())
+      pieces.push_back(p.transformed(shear, shift));
+    const ConvexUnion u(std::move(pieces));
     const BoundaryFragments b = fragments_of(u);
     EXPECT_TRUE(fragment_invariants(b)) << "seed " << seed;
     expect_points_agree(u, b, seed, 3);
