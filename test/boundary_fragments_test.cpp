@@ -12,7 +12,8 @@
 //  - the fragments' own invariants, by plain Rational arithmetic: strictly
 //    convex, counterclockwise from the normal's side, on their plane, the
 //    planes distinct with primitive integer normals;
-//  - the same fragments for one and two threads, and cancellation.
+//  - the same fragments for one and two threads, cancellation and the
+//    memory limit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -402,6 +403,25 @@ TEST(BoundaryFragments, ReportsAndCancels) {
     } catch (const cvms::Error& e) {
       EXPECT_EQ(e.category(), cvms::ErrorCategory::cancelled);
     }
+  }
+}
+
+TEST(BoundaryFragments, MemoryLimit) {
+  // Six facets of four corners each already pass 20 corners' worth.
+  const ConvexUnion u({box(0, 0, 0, 1, 1, 1), box(1, 0, 0, 2, 1, 1)});
+  for (const unsigned threads : {1U, 2U}) {
+    cvms::Options options;
+    options.threads = threads;
+    options.limits.max_memory_bytes = 20 * 256;
+    try {
+      (void)cvms::detail::union_boundary_fragments(u.pieces(), options);
+      ADD_FAILURE() << "no limit error, threads " << threads;
+    } catch (const cvms::Error& e) {
+      EXPECT_EQ(e.category(), cvms::ErrorCategory::limit);
+      EXPECT_NE(std::string(e.message()).find("max_memory_bytes"), std::string::npos) << e.message();
+    }
+    options.limits.max_memory_bytes = 1000 * 256;
+    EXPECT_EQ(cvms::detail::union_boundary_fragments(u.pieces(), options).fragments.size(), 10U);
   }
 }
 

@@ -33,17 +33,39 @@
 namespace cvms::detail {
 namespace {
 
-// One facet's fragments, as corners and polygons of indices into them.
+// Estimated bytes of each corner a facet's clipping makes: its exact
+// coordinates with their limbs, its approximation and its place in the
+// polygons and the fragments. A bound on the memory and on the work.
+constexpr std::uint64_t bytes_per_corner = 256;
+
+// One facet's fragments, each as its corners.
 struct FacetFragments {
   std::uint32_t facet = 0;
-  ClipPoints points;
-  std::vector<ClipPolygon> polygons;
+  std::vector<std::vector<Vec3>> polygons;
 };
+
+// The polygons' corners as exact points.
+std::vector<std::vector<Vec3>> corner_lists(const ClipPoints& points, const std::vector<ClipPolygon>& polygons) {
+  std::vector<std::vector<Vec3>> out;
+  out.reserve(polygons.size());
+  for (const ClipPolygon& polygon : polygons) {
+    std::vector<Vec3>& corners = out.emplace_back();
+    corners.reserve(polygon.size());
+    for (const std::uint32_t corner : polygon) corners.push_back(points[corner].exact);
+  }
+  return out;
+}
+
+[[noreturn]] void beyond_budget(std::uint64_t budget) {
+  throw Error(ErrorCategory::limit, "union_boundary_fragments: the fragments would need more than " +
+                                        std::to_string(budget) + " bytes (SumLimits::max_memory_bytes, at " +
+                                        std::to_string(bytes_per_corner) + " bytes per corner made)");
+}
 
 class FragmentWork {
  public:
-  FragmentWork(std::span<const ConvexPolyhedron> pieces, ProgressReporter& progress)
-      : progress_(progress), slots_(pieces.size()) {
+  FragmentWork(std::span<const ConvexPolyhedron> pieces, std::uint64_t budget, ProgressReporter& progress)
+      : progress_(progress), budget_(budget), slots_(pieces.size()) {
     geometry_.reserve(pieces.size());
     std::vector<unions::OutwardBox> boxes;
     boxes.reserve(pieces.size());
@@ -89,21 +111,35 @@ class FragmentWork {
         return false;
       });
       std::sort(candidates.begin(), candidates.end());
-      FacetFragments facet{f, {}, std::vector<ClipPolygon>(1)};
+      ClipPoints points;
+      std::vector<ClipPolygon> polygons(1);
       for (std::uint32_t k = g.corner_start[f]; k < g.corner_start[f + 1]; ++k) {
-        facet.polygons[0].push_back(static_cast<std::uint32_t>(facet.points.size()));
-        facet.points.push_back(clip_point(*g.piece, g.corners[k]));
+        polygons[0].push_back(static_cast<std::uint32_t>(points.size()));
+        points.push_back(clip_point(*g.piece, g.corners[k]));
       }
+      count_corners(points.size());
       for (const std::uint32_t q : candidates) {
-        if (facet.polygons.empty()) break;
-        if (covering_region(geometry_[q], q < p, g.planes[f], sides, region))
-          subtract_region(facet.points, facet.polygons, region);
+        if (polygons.empty()) break;
+        if (!covering_region(geometry_[q], q < p, g.planes[f], sides, region)) continue;
+        const std::size_t before = points.size();
+        subtract_region(points, polygons, region);
+        count_corners(points.size() - before);
       }
-      if (!facet.polygons.empty()) slots_[p].push_back(std::move(facet));
+      if (!polygons.empty()) slots_[p].push_back({f, corner_lists(points, polygons)});
     }
   }
 
+  // Adds corners made to the running total, which is the same sum for any
+  // order of the pieces: the total passes the budget on some thread iff it
+  // does on one, so the error is the same for every thread count.
+  void count_corners(std::size_t corners) {
+    const std::uint64_t bytes = static_cast<std::uint64_t>(corners) * bytes_per_corner;
+    if (bytes_.fetch_add(bytes, std::memory_order_relaxed) + bytes > budget_) beyond_budget(budget_);
+  }
+
   ProgressReporter& progress_;
+  std::uint64_t budget_;
+  std::atomic<std::uint64_t> bytes_{0};
   std::vector<PieceGeometry> geometry_;
   std::unique_ptr<unions::BoxHierarchy> hierarchy_;
   std::vector<std::vector<FacetFragments>> slots_;
@@ -111,34 +147,28 @@ class FragmentWork {
   std::atomic<bool> stop_{false};
 };
 
-// Orders oriented planes by normal, then offset.
+// Orders the planes of facets by normal, then offset, without copying them.
 struct PlaneLess {
-  bool operator()(const OrientedPlane& a, const OrientedPlane& b) const {
-    if (a.normal != b.normal) return a.normal < b.normal;
-    return a.offset < b.offset;
+  bool operator()(const ClipPlane* a, const ClipPlane* b) const {
+    if (*a->normal != *b->normal) return *a->normal < *b->normal;
+    return *a->offset < *b->offset;
   }
 };
 
 // The slots, in piece order, as fragments on numbered planes.
 BoundaryFragments collect(FragmentWork& work, std::size_t pieces) {
   BoundaryFragments out;
-  std::map<OrientedPlane, std::uint32_t, PlaneLess> numbers;
+  std::map<const ClipPlane*, std::uint32_t, PlaneLess> numbers;
   for (std::size_t p = 0; p < pieces; ++p) {
     const PieceGeometry& g = work.geometry(p);
     for (FacetFragments& facet : work.slot(p)) {
       const ClipPlane& plane = g.planes[facet.facet];
-      OrientedPlane key{*plane.normal, *plane.offset};
-      const auto [it, inserted] = numbers.try_emplace(key, static_cast<std::uint32_t>(out.planes.size()));
-      if (inserted) out.planes.push_back(std::move(key));
-      for (ClipPolygon& polygon : facet.polygons) {
-        BoundaryFragment fragment;
-        fragment.plane = it->second;
-        fragment.corners.reserve(polygon.size());
-        for (const std::uint32_t corner : polygon) fragment.corners.push_back(facet.points[corner].exact);
-        out.fragments.push_back(std::move(fragment));
-      }
-      facet = FacetFragments{};
+      const auto [it, inserted] = numbers.try_emplace(&plane, static_cast<std::uint32_t>(out.planes.size()));
+      if (inserted) out.planes.push_back({*plane.normal, *plane.offset});
+      for (std::vector<Vec3>& corners : facet.polygons) out.fragments.push_back({it->second, std::move(corners)});
     }
+    work.slot(p).clear();
+    work.slot(p).shrink_to_fit();
   }
   return out;
 }
@@ -161,7 +191,7 @@ BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pie
   }
   ProgressReporter progress(callback_of(options.progress));
   progress.begin("union: boundary", pieces.size());
-  FragmentWork work(pieces, progress);
+  FragmentWork work(pieces, options.limits.max_memory_bytes, progress);
   work.run(thread_count(options.threads, pieces.size()));
   BoundaryFragments out = collect(work, pieces.size());
   progress.end();
