@@ -101,16 +101,15 @@ class FragmentWork {
 
   void piece_fragments(std::size_t p) {
     const PieceGeometry& g = geometry_[p];
-    std::vector<std::uint32_t> candidates;
-    std::vector<Sign> sides;
-    std::vector<ClipPlane> region;
+    std::vector<std::uint32_t> near;  // pieces whose boxes meet p's
+    hierarchy_->for_each_overlapping(g.box, [&](std::size_t q) {
+      if (q != p) near.push_back(static_cast<std::uint32_t>(q));
+      return false;
+    });
+    std::sort(near.begin(), near.end());
+    FacetScratch scratch;
     for (std::uint32_t f = 0; f < g.planes.size(); ++f) {
-      candidates.clear();
-      hierarchy_->for_each_overlapping(g.facet_boxes[f], [&](std::size_t q) {
-        if (q != p) candidates.push_back(static_cast<std::uint32_t>(q));
-        return false;
-      });
-      std::sort(candidates.begin(), candidates.end());
+      if (!find_regions(p, f, near, scratch)) continue;
       ClipPoints points;
       std::vector<ClipPolygon> polygons(1);
       for (std::uint32_t k = g.corner_start[f]; k < g.corner_start[f + 1]; ++k) {
@@ -118,15 +117,39 @@ class FragmentWork {
         points.push_back(clip_point(*g.piece, g.corners[k]));
       }
       count_corners(points.size());
-      for (const std::uint32_t q : candidates) {
-        if (polygons.empty()) break;
-        if (!covering_region(geometry_[q], q < p, g.planes[f], sides, region)) continue;
+      for (std::size_t r = 0; r < scratch.used && !polygons.empty(); ++r) {
         const std::size_t before = points.size();
-        subtract_region(points, polygons, region);
+        subtract_region(points, polygons, scratch.regions[r]);
         count_corners(points.size() - before);
       }
       if (!polygons.empty()) slots_[p].push_back({f, corner_lists(points, polygons)});
     }
+  }
+
+  // What find_regions gathers for one facet, reused from facet to facet.
+  struct FacetScratch {
+    std::vector<Sign> sides;
+    std::vector<std::vector<ClipPlane>> regions;  // regions[0 .. used)
+    std::size_t used = 0;
+  };
+
+  // The regions that the pieces near p take away from p's facet f in part,
+  // in piece order, into scratch; false if one of them takes all of it.
+  // Deciding a whole cover before any polygon is cut spares the cuts that a
+  // later cover would throw away.
+  bool find_regions(std::size_t p, std::uint32_t f, const std::vector<std::uint32_t>& near, FacetScratch& scratch) {
+    const PieceGeometry& g = geometry_[p];
+    scratch.used = 0;
+    for (const std::uint32_t q : near) {
+      if (!unions::overlaps(g.facet_boxes[f], geometry_[q].box)) continue;
+      if (scratch.used == scratch.regions.size()) scratch.regions.emplace_back();
+      std::vector<ClipPlane>& region = scratch.regions[scratch.used];
+      if (!covering_region(geometry_[q], q < p, g.planes[f], scratch.sides, region)) continue;
+      const FacetOverlap overlap = facet_overlap(region, g, f);
+      if (overlap == FacetOverlap::all) return false;
+      if (overlap == FacetOverlap::part) ++scratch.used;
+    }
+    return true;
   }
 
   // Adds corners made to the running total, which is the same sum for any

@@ -4,11 +4,22 @@
 
 #include <cstddef>
 
+#include "cvms/rational.hpp"
+
 namespace cvms::detail {
 
 bool covering_region(const PieceGeometry& q_geometry, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, std::vector<ClipPlane>& region) {
   region.clear();
+  if (!q_geometry.box_corners.empty()) {
+    // The corners nearest and farthest in the normal's direction.
+    unsigned nearest = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (sgn((*plane.normal)[k]) < 0) nearest |= 1U << k;
+    }
+    if (side(q_geometry.box_corners[nearest], plane) == Sign::positive) return false;
+    if (side(q_geometry.box_corners[nearest ^ 7U], plane) == Sign::negative) return false;
+  }
   const ConvexPolyhedron& q = *q_geometry.piece;
   sides.resize(q.num_vertices());
   bool any_outer = false;
@@ -42,6 +53,24 @@ bool covering_region(const PieceGeometry& q_geometry, bool q_before_p, const Cli
     if ((outer && inner) || (zeros >= 2 && zeros < end - begin)) region.push_back(q_geometry.planes[g]);
   }
   return true;
+}
+
+FacetOverlap facet_overlap(const std::vector<ClipPlane>& region, const PieceGeometry& p_geometry,
+                           std::uint32_t facet) {
+  const ConvexPolyhedron& piece = *p_geometry.piece;
+  bool all = true;
+  for (const ClipPlane& plane : region) {
+    bool outside = false;
+    bool inside = false;
+    for (std::uint32_t k = p_geometry.corner_start[facet]; k < p_geometry.corner_start[facet + 1]; ++k) {
+      const Sign s = side(vertex_ref(piece, p_geometry.corners[k]), plane);
+      outside = outside || s == Sign::positive;
+      inside = inside || s == Sign::negative;
+    }
+    if (outside && !inside) return FacetOverlap::none;
+    all = all && !outside;
+  }
+  return all ? FacetOverlap::all : FacetOverlap::part;
 }
 
 }  // namespace cvms::detail

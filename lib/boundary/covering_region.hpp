@@ -38,4 +38,12 @@ namespace cvms::detail {
 bool covering_region(const PieceGeometry& q_geometry, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, std::vector<ClipPlane>& region);
 
+/// How a convex region of a facet's plane (given by half-spaces) meets the
+/// facet: in zero area (some half-space has every corner on or outside its
+/// plane), containing it (every corner inside or on every plane), or
+/// otherwise in part.
+enum class FacetOverlap { none, all, part };
+FacetOverlap facet_overlap(const std::vector<ClipPlane>& region, const PieceGeometry& p_geometry,
+                           std::uint32_t facet);
+
 }  // namespace cvms::detail

@@ -25,6 +25,12 @@ struct PieceGeometry {
   std::vector<VertexId> corners;
   std::vector<unions::OutwardBox> facet_boxes;
   unions::OutwardBox box;
+  /// The box's corners as exact points (corner i takes box.hi[k] where bit
+  /// k of i is set, else box.lo[k]), when the box is finite; else empty.
+  /// A plane has the whole piece strictly on one side if it has the
+  /// box's corner that is nearest in that direction there: two filtered
+  /// predicates on doubles instead of one per vertex.
+  std::vector<ClipPoint> box_corners;
 };
 
 /// The geometry of a non-empty piece, which must outlive it.
