@@ -130,26 +130,58 @@ class FragmentWork {
   struct FacetScratch {
     std::vector<Sign> sides;
     std::vector<std::vector<ClipPlane>> regions;  // regions[0 .. used)
+    std::vector<std::uint32_t> owners;            // the piece of each region
     std::size_t used = 0;
+    // The piece that took all of the last facet it was tried on, if any:
+    // neighbouring facets are often covered by the same piece, so it is
+    // tried first. Whether a facet is wholly covered does not depend on
+    // the order of the tries, and the regions are kept in piece order, so
+    // the result does not depend on it either.
+    std::uint32_t last_cover = no_cover;
   };
+  static constexpr std::uint32_t no_cover = 0xffffffffU;
 
   // The regions that the pieces near p take away from p's facet f in part,
   // in piece order, into scratch; false if one of them takes all of it.
   // Deciding a whole cover before any polygon is cut spares the cuts that a
   // later cover would throw away.
   bool find_regions(std::size_t p, std::uint32_t f, const std::vector<std::uint32_t>& near, FacetScratch& scratch) {
-    const PieceGeometry& g = geometry_[p];
     scratch.used = 0;
+    const std::uint32_t first = scratch.last_cover;
+    if (first != no_cover && try_piece(p, f, first, scratch) == FacetOverlap::all) return false;
     for (const std::uint32_t q : near) {
-      if (!unions::overlaps(g.facet_boxes[f], geometry_[q].box)) continue;
-      if (scratch.used == scratch.regions.size()) scratch.regions.emplace_back();
-      std::vector<ClipPlane>& region = scratch.regions[scratch.used];
-      if (!covering_region(geometry_[q], q < p, g.planes[f], scratch.sides, region)) continue;
-      const FacetOverlap overlap = facet_overlap(region, g, f);
-      if (overlap == FacetOverlap::all) return false;
-      if (overlap == FacetOverlap::part) ++scratch.used;
+      if (q == first) continue;
+      if (try_piece(p, f, q, scratch) == FacetOverlap::all) {
+        scratch.last_cover = q;
+        return false;
+      }
+    }
+    // The piece tried first, if it takes a part, goes to its place in piece order.
+    if (scratch.used > 0 && scratch.owners[0] == first) {
+      std::size_t place = 1;
+      while (place < scratch.used && scratch.owners[place] < first) ++place;
+      std::rotate(scratch.regions.begin(), scratch.regions.begin() + 1,
+                  scratch.regions.begin() + static_cast<std::ptrdiff_t>(place));
+      std::rotate(scratch.owners.begin(), scratch.owners.begin() + 1,
+                  scratch.owners.begin() + static_cast<std::ptrdiff_t>(place));
     }
     return true;
+  }
+
+  // How piece q's covering region meets p's facet f; a region that takes a
+  // part is kept in scratch.
+  FacetOverlap try_piece(std::size_t p, std::uint32_t f, std::uint32_t q, FacetScratch& scratch) {
+    const PieceGeometry& g = geometry_[p];
+    if (!unions::overlaps(g.facet_boxes[f], geometry_[q].box)) return FacetOverlap::none;
+    if (scratch.used == scratch.regions.size()) {
+      scratch.regions.emplace_back();
+      scratch.owners.push_back(0);
+    }
+    std::vector<ClipPlane>& region = scratch.regions[scratch.used];
+    if (!covering_region(geometry_[q], q < p, g.planes[f], scratch.sides, region)) return FacetOverlap::none;
+    const FacetOverlap overlap = facet_overlap(region, g, f);
+    if (overlap == FacetOverlap::part) scratch.owners[scratch.used++] = q;
+    return overlap;
   }
 
   // Adds corners made to the running total, which is the same sum for any
