@@ -62,6 +62,23 @@ std::vector<std::vector<Vec3>> corner_lists(const ClipPoints& points, const std:
                                         std::to_string(bytes_per_corner) + " bytes per corner made)");
 }
 
+constexpr std::uint32_t no_cover = 0xffffffffU;
+
+// What find_regions gathers for one facet, reused from facet to facet.
+struct FacetScratch {
+  std::vector<Sign> sides;
+  SectionScratch section;
+  std::vector<std::vector<ClipPlane>> regions;  // regions[0 .. used)
+  std::vector<std::uint32_t> owners;            // the piece of each region
+  std::size_t used = 0;
+  // The piece that took all of the last facet it was tried on, if any:
+  // neighbouring facets are often covered by the same piece, so it is
+  // tried first. Whether a facet is wholly covered does not depend on
+  // the order of the tries, and the regions are kept in piece order, so
+  // the result does not depend on it either.
+  std::uint32_t last_cover = no_cover;
+};
+
 class FragmentWork {
  public:
   FragmentWork(std::span<const ConvexPolyhedron> pieces, std::uint64_t budget, ProgressReporter& progress)
@@ -86,11 +103,13 @@ class FragmentWork {
 
  private:
   void work() {
+    FacetScratch scratch;  // this thread's, kept from piece to piece
+    scratch.section.start.assign(slots_.size(), 0);
     while (!stop_.load(std::memory_order_relaxed)) {
       const std::size_t p = next_.fetch_add(1);
       if (p >= slots_.size()) return;
       try {
-        piece_fragments(p);
+        piece_fragments(p, scratch);
         progress_.advance(1);
       } catch (...) {
         stop_.store(true);
@@ -99,7 +118,7 @@ class FragmentWork {
     }
   }
 
-  void piece_fragments(std::size_t p) {
+  void piece_fragments(std::size_t p, FacetScratch& scratch) {
     const PieceGeometry& g = geometry_[p];
     std::vector<std::uint32_t> near;  // pieces whose boxes meet p's
     hierarchy_->for_each_overlapping(g.box, [&](std::size_t q) {
@@ -107,7 +126,7 @@ class FragmentWork {
       return false;
     });
     std::sort(near.begin(), near.end());
-    FacetScratch scratch;
+    scratch.last_cover = no_cover;
     for (std::uint32_t f = 0; f < g.planes.size(); ++f) {
       if (!find_regions(p, f, near, scratch)) continue;
       ClipPoints points;
@@ -126,20 +145,6 @@ class FragmentWork {
     }
   }
 
-  // What find_regions gathers for one facet, reused from facet to facet.
-  struct FacetScratch {
-    std::vector<Sign> sides;
-    std::vector<std::vector<ClipPlane>> regions;  // regions[0 .. used)
-    std::vector<std::uint32_t> owners;            // the piece of each region
-    std::size_t used = 0;
-    // The piece that took all of the last facet it was tried on, if any:
-    // neighbouring facets are often covered by the same piece, so it is
-    // tried first. Whether a facet is wholly covered does not depend on
-    // the order of the tries, and the regions are kept in piece order, so
-    // the result does not depend on it either.
-    std::uint32_t last_cover = no_cover;
-  };
-  static constexpr std::uint32_t no_cover = 0xffffffffU;
 
   // The regions that the pieces near p take away from p's facet f in part,
   // in piece order, into scratch; false if one of them takes all of it.
@@ -172,13 +177,14 @@ class FragmentWork {
   // part is kept in scratch.
   FacetOverlap try_piece(std::size_t p, std::uint32_t f, std::uint32_t q, FacetScratch& scratch) {
     const PieceGeometry& g = geometry_[p];
-    if (!unions::overlaps(g.facet_boxes[f], geometry_[q].box)) return FacetOverlap::none;
+    if (q == p || !unions::overlaps(g.facet_boxes[f], geometry_[q].box)) return FacetOverlap::none;
     if (scratch.used == scratch.regions.size()) {
       scratch.regions.emplace_back();
       scratch.owners.push_back(0);
     }
     std::vector<ClipPlane>& region = scratch.regions[scratch.used];
-    if (!covering_region(geometry_[q], q < p, g.planes[f], scratch.sides, region)) return FacetOverlap::none;
+    if (!covering_region(geometry_[q], q, q < p, g.planes[f], scratch.sides, scratch.section, region))
+      return FacetOverlap::none;
     const FacetOverlap overlap = facet_overlap(region, g, f);
     if (overlap == FacetOverlap::part) scratch.owners[scratch.used++] = q;
     return overlap;

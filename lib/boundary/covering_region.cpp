@@ -3,13 +3,14 @@
 #include "covering_region.hpp"
 
 #include <cstddef>
+#include <optional>
 
 #include "cvms/rational.hpp"
 
 namespace cvms::detail {
 
-bool covering_region(const PieceGeometry& q_geometry, bool q_before_p, const ClipPlane& plane,
-                     std::vector<Sign>& sides, std::vector<ClipPlane>& region) {
+bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, bool q_before_p, const ClipPlane& plane,
+                     std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region) {
   region.clear();
   if (!q_geometry.box_corners.empty()) {
     // The corners nearest and farthest in the normal's direction.
@@ -19,6 +20,11 @@ bool covering_region(const PieceGeometry& q_geometry, bool q_before_p, const Cli
     }
     if (side(q_geometry.box_corners[nearest], plane) == Sign::positive) return false;
     if (side(q_geometry.box_corners[nearest ^ 7U], plane) == Sign::negative) return false;
+  }
+  if (const std::optional<bool> cuts = walk_section(q_geometry, q_index, plane, section)) {
+    if (!*cuts) return false;
+    for (const std::uint32_t g : section.facets) region.push_back(q_geometry.planes[g]);
+    return true;
   }
   const ConvexPolyhedron& q = *q_geometry.piece;
   sides.resize(q.num_vertices());

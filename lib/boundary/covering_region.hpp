@@ -28,15 +28,18 @@
 #include "cvms/sign.hpp"
 #include "piece_geometry.hpp"
 #include "plane_clip.hpp"
+#include "section_walk.hpp"
 
 namespace cvms::detail {
 
 /// Fills `region` with the planes of C_Q for a facet on `plane` (the
 /// facet's own half-space) of a piece with index p, Q having index q != p,
-/// and returns true; false (region left empty) if C_Q is empty.
-/// `sides` is scratch space.
-bool covering_region(const PieceGeometry& q_geometry, bool q_before_p, const ClipPlane& plane,
-                     std::vector<Sign>& sides, std::vector<ClipPlane>& region);
+/// and returns true; false (region left empty) if C_Q is empty. The planes
+/// come in the order of Q's facets. Tries a walk round the section first
+/// (section_walk.hpp), and tests every vertex of Q when it gives up.
+/// `sides` and `section` are scratch space.
+bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
+                     std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);
 
 /// How a convex region of a facet's plane (given by half-spaces) meets the
 /// facet: in zero area (some half-space has every corner on or outside its
