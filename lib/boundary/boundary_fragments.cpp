@@ -82,18 +82,20 @@ struct FacetScratch {
 class FragmentWork {
  public:
   FragmentWork(std::span<const ConvexPolyhedron> pieces, std::uint64_t budget, ProgressReporter& progress)
-      : progress_(progress), budget_(budget), slots_(pieces.size()) {
-    geometry_.reserve(pieces.size());
-    std::vector<unions::OutwardBox> boxes;
-    boxes.reserve(pieces.size());
-    for (const ConvexPolyhedron& piece : pieces) {
-      geometry_.push_back(piece_geometry(piece));
-      boxes.push_back(geometry_.back().box);
-    }
-    hierarchy_ = std::make_unique<unions::BoxHierarchy>(boxes);
-  }
+      : pieces_(pieces), progress_(progress), budget_(budget), geometry_(pieces.size()), slots_(pieces.size()) {}
 
+  // The pieces' geometry (each made once, by whichever thread takes it),
+  // their hierarchy, then the fragments.
   void run(unsigned threads) {
+    std::atomic<std::size_t> next_geometry{0};
+    run_on_threads(threads, [&](unsigned) {
+      for (std::size_t p = next_geometry.fetch_add(1); p < pieces_.size(); p = next_geometry.fetch_add(1))
+        geometry_[p] = piece_geometry(pieces_[p]);
+    });
+    std::vector<unions::OutwardBox> boxes;
+    boxes.reserve(geometry_.size());
+    for (const PieceGeometry& g : geometry_) boxes.push_back(g.box);
+    hierarchy_ = std::make_unique<unions::BoxHierarchy>(boxes);
     run_on_threads(threads, [this](unsigned) { work(); });
   }
 
@@ -198,6 +200,7 @@ class FragmentWork {
     if (bytes_.fetch_add(bytes, std::memory_order_relaxed) + bytes > budget_) beyond_budget(budget_);
   }
 
+  std::span<const ConvexPolyhedron> pieces_;
   ProgressReporter& progress_;
   std::uint64_t budget_;
   std::atomic<std::uint64_t> bytes_{0};
