@@ -226,6 +226,14 @@ void expect_points_agree(const ConvexUnion& u, const BoundaryFragments& b, std::
   EXPECT_GT(on_boundary, 0) << "seed " << seed;
 }
 
+// The fragments of a union of boxes: their invariants, count and total area.
+void expect_fragments(const ConvexUnion& u, std::size_t count, const Rational& area) {
+  const BoundaryFragments b = fragments_of(u);
+  EXPECT_TRUE(fragment_invariants(b));
+  EXPECT_EQ(b.fragments.size(), count);
+  EXPECT_EQ(total_area(axis_areas(b)), area);
+}
+
 TEST(BoundaryFragments, CubeAlone) {
   const ConvexUnion u({box(0, 0, 0, 1, 2, 3)});
   const BoundaryFragments b = fragments_of(u);
@@ -266,11 +274,7 @@ TEST(BoundaryFragments, NestedCubeLeavesNothing) {
   for (int order = 0; order < 2; ++order) {
     std::vector<ConvexPolyhedron> pieces = {box(0, 0, 0, 4, 4, 4), box(1, 1, 1, 2, 2, 2)};
     if (order == 1) std::swap(pieces[0], pieces[1]);
-    const ConvexUnion u(pieces);
-    const BoundaryFragments b = fragments_of(u);
-    EXPECT_TRUE(fragment_invariants(b));
-    EXPECT_EQ(b.fragments.size(), 6U);
-    EXPECT_EQ(total_area(axis_areas(b)), 96);
+    expect_fragments(ConvexUnion(pieces), 6, 96);
   }
 }
 
@@ -284,21 +288,13 @@ TEST(BoundaryFragments, NestedTouchingTheBoundary) {
 }
 
 TEST(BoundaryFragments, EqualCubesKeptOnce) {
-  const ConvexUnion u({box(0, 0, 0, 1, 1, 1), box(0, 0, 0, 1, 1, 1), box(0, 0, 0, 1, 1, 1)});
-  const BoundaryFragments b = fragments_of(u);
-  EXPECT_TRUE(fragment_invariants(b));
-  EXPECT_EQ(b.fragments.size(), 6U);
-  EXPECT_EQ(total_area(axis_areas(b)), 6);
+  expect_fragments(ConvexUnion({box(0, 0, 0, 1, 1, 1), box(0, 0, 0, 1, 1, 1), box(0, 0, 0, 1, 1, 1)}), 6, 6);
 }
 
 TEST(BoundaryFragments, TouchingAlongAnEdgeOrAtAVertex) {
   for (const int z : {0, 1}) {
     // z = 0: the cubes meet along the edge x = y = 1; z = 1: at the vertex (1, 1, 1).
-    const ConvexUnion u({box(0, 0, 0, 1, 1, 1), box(1, 1, z, 2, 2, z + 1)});
-    const BoundaryFragments b = fragments_of(u);
-    EXPECT_TRUE(fragment_invariants(b));
-    EXPECT_EQ(b.fragments.size(), 12U);
-    EXPECT_EQ(total_area(axis_areas(b)), 12);
+    expect_fragments(ConvexUnion({box(0, 0, 0, 1, 1, 1), box(1, 1, z, 2, 2, z + 1)}), 12, 12);
   }
 }
 
