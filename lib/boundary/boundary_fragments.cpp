@@ -14,10 +14,12 @@
 #include "boundary_fragments.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <thread>
 #include <utility>
@@ -71,13 +73,38 @@ struct FacetScratch {
   std::vector<std::vector<ClipPlane>> regions;  // regions[0 .. used)
   std::vector<std::uint32_t> owners;            // the piece of each region
   std::size_t used = 0;
-  // The piece that took all of the last facet it was tried on, if any:
-  // neighbouring facets are often covered by the same piece, so it is
-  // tried first. Whether a facet is wholly covered does not depend on
-  // the order of the tries, and the regions are kept in piece order, so
+  // The pieces that last took all of a facet, the latest first:
+  // neighbouring facets are often covered by the same pieces, so they are
+  // tried first. Whether a facet is wholly covered does not depend on the
+  // order of the tries, and the regions are put back in piece order, so
   // the result does not depend on it either.
-  std::uint32_t last_cover = no_cover;
+  std::array<std::uint32_t, 4> recent_covers{no_cover, no_cover, no_cover, no_cover};
 };
+
+// Puts q first among the recent covers, keeping the others in order.
+void remember_cover(FacetScratch& scratch, std::uint32_t q) {
+  auto& recent = scratch.recent_covers;
+  auto at = std::find(recent.begin(), recent.end(), q);
+  if (at == recent.end()) at = recent.end() - 1;
+  std::rotate(recent.begin(), at, at + 1);
+  recent.front() = q;
+}
+
+// Sorts the regions found by their pieces.
+void sort_regions(FacetScratch& scratch) {
+  std::vector<std::size_t> order(scratch.used);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return scratch.owners[a] < scratch.owners[b]; });
+  std::vector<std::vector<ClipPlane>> regions(scratch.used);
+  std::vector<std::uint32_t> owners(scratch.used);
+  for (std::size_t k = 0; k < scratch.used; ++k) {
+    regions[k] = std::move(scratch.regions[order[k]]);
+    owners[k] = scratch.owners[order[k]];
+  }
+  std::move(regions.begin(), regions.end(), scratch.regions.begin());
+  std::copy(owners.begin(), owners.end(), scratch.owners.begin());
+}
 
 class FragmentWork {
  public:
@@ -128,7 +155,7 @@ class FragmentWork {
       return false;
     });
     std::sort(near.begin(), near.end());
-    scratch.last_cover = no_cover;
+    scratch.recent_covers.fill(no_cover);
     for (std::uint32_t f = 0; f < g.planes.size(); ++f) {
       if (!find_regions(p, f, near, scratch)) continue;
       ClipPoints points;
@@ -154,24 +181,21 @@ class FragmentWork {
   // later cover would throw away.
   bool find_regions(std::size_t p, std::uint32_t f, const std::vector<std::uint32_t>& near, FacetScratch& scratch) {
     scratch.used = 0;
-    const std::uint32_t first = scratch.last_cover;
-    if (first != no_cover && try_piece(p, f, first, scratch) == FacetOverlap::all) return false;
-    for (const std::uint32_t q : near) {
-      if (q == first) continue;
-      if (try_piece(p, f, q, scratch) == FacetOverlap::all) {
-        scratch.last_cover = q;
+    const std::array<std::uint32_t, 4> recent = scratch.recent_covers;
+    for (const std::uint32_t q : recent) {
+      if (q != no_cover && try_piece(p, f, q, scratch) == FacetOverlap::all) {
+        remember_cover(scratch, q);
         return false;
       }
     }
-    // The piece tried first, if it takes a part, goes to its place in piece order.
-    if (scratch.used > 0 && scratch.owners[0] == first) {
-      std::size_t place = 1;
-      while (place < scratch.used && scratch.owners[place] < first) ++place;
-      std::rotate(scratch.regions.begin(), scratch.regions.begin() + 1,
-                  scratch.regions.begin() + static_cast<std::ptrdiff_t>(place));
-      std::rotate(scratch.owners.begin(), scratch.owners.begin() + 1,
-                  scratch.owners.begin() + static_cast<std::ptrdiff_t>(place));
+    for (const std::uint32_t q : near) {
+      if (std::find(recent.begin(), recent.end(), q) != recent.end()) continue;
+      if (try_piece(p, f, q, scratch) == FacetOverlap::all) {
+        remember_cover(scratch, q);
+        return false;
+      }
     }
+    sort_regions(scratch);
     return true;
   }
 
