@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The union's boundary as fragments (lib/boundary/boundary_fragments.hpp),
 // checked against independent answers:
+//  - the convex clipping underneath (plane_clip.hpp) on a square, by areas;
 //  - hand-computed areas per oriented plane for unions of boxes that share
 //    facets, overlap, nest, coincide, or touch along an edge or at a vertex;
 //  - exact points: random points of every piece's facets (exact rational
@@ -18,12 +19,15 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <deque>
+#include <utility>
 #include <map>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "boundary_fragments.hpp"
+#include "plane_clip.hpp"
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
@@ -232,6 +236,74 @@ void expect_fragments(const ConvexUnion& u, std::size_t count, const Rational& a
   EXPECT_TRUE(fragment_invariants(b));
   EXPECT_EQ(b.fragments.size(), count);
   EXPECT_EQ(total_area(axis_areas(b)), area);
+}
+
+// The half-space dot(normal, x) <= offset with its approximations, kept in
+// a deque so that references to its members stay valid.
+struct TestPlane {
+  Vec3 normal;
+  cvms::ApproxVec3 normal_approx;
+  Rational offset;
+};
+cvms::detail::ClipPlane clip_plane(std::deque<TestPlane>& store, const Vec3& normal, const Rational& offset) {
+  store.push_back({normal, cvms::ApproxVec3::of(normal), offset});
+  const TestPlane& t = store.back();
+  return {&t.normal, &t.normal_approx, &t.offset, cvms::Approx::of(t.offset)};
+}
+
+// The area of a polygon of the plane z = 0, counterclockwise seen from +z.
+Rational polygon_area(const cvms::detail::ClipPoints& points, const cvms::detail::ClipPolygon& polygon) {
+  Rational twice = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3& a = points[polygon[i]].exact;
+    const Vec3& b = points[polygon[(i + 1) % polygon.size()]].exact;
+    twice += a.x * b.y - a.y * b.x;
+  }
+  return twice / 2;
+}
+
+TEST(PlaneClip, SplitAndSubtractOnASquare) {
+  // The square [0, 2]^2 of the plane z = 0.
+  cvms::detail::ClipPoints points;
+  for (const auto& [x, y] : {std::pair{0, 0}, {2, 0}, {2, 2}, {0, 2}}) {
+    const Vec3 p{x, y, 0};
+    points.push_back({p, cvms::ApproxVec3::of(p)});
+  }
+  const cvms::detail::ClipPolygon square = {0, 1, 2, 3};
+  std::deque<TestPlane> store;
+  // x <= 1/2 cuts it into 1 and 3; x <= 2 leaves it whole inside; x <= 0 has zero area inside.
+  const auto halves = cvms::detail::split(points, square, clip_plane(store, {1, 0, 0}, Rational(1, 2)));
+  EXPECT_EQ(polygon_area(points, halves.inside), 1);
+  EXPECT_EQ(polygon_area(points, halves.outside), 3);
+  EXPECT_TRUE(cvms::detail::split(points, square, clip_plane(store, {1, 0, 0}, 2)).outside.empty());
+  EXPECT_TRUE(cvms::detail::split(points, square, clip_plane(store, {1, 0, 0}, 0)).inside.empty());
+  // Minus [1, 3]^2: an L of area 3 in convex parts.
+  const std::vector<cvms::detail::ClipPlane> region = {
+      clip_plane(store, {-1, 0, 0}, -1), clip_plane(store, {1, 0, 0}, 3), clip_plane(store, {0, -1, 0}, -1),
+      clip_plane(store, {0, 1, 0}, 3)};
+  std::vector<cvms::detail::ClipPolygon> pieces = {square};
+  cvms::detail::subtract_region(points, pieces, region);
+  Rational area = 0;
+  for (const cvms::detail::ClipPolygon& piece : pieces) {
+    EXPECT_GE(piece.size(), 3U);
+    EXPECT_GT(polygon_area(points, piece), 0);
+    area += polygon_area(points, piece);
+  }
+  EXPECT_EQ(area, 3);
+  // Minus a square that only touches it along the edge x = 2: unchanged.
+  const std::vector<cvms::detail::ClipPlane> beside = {
+      clip_plane(store, {-1, 0, 0}, -2), clip_plane(store, {1, 0, 0}, 3), clip_plane(store, {0, -1, 0}, 0),
+      clip_plane(store, {0, 1, 0}, 2)};
+  pieces = {square};
+  cvms::detail::subtract_region(points, pieces, beside);
+  ASSERT_EQ(pieces.size(), 1U);
+  EXPECT_EQ(pieces[0], square);
+  // Minus a square containing it: nothing left.
+  const std::vector<cvms::detail::ClipPlane> around = {
+      clip_plane(store, {-1, 0, 0}, 1), clip_plane(store, {1, 0, 0}, 3), clip_plane(store, {0, -1, 0}, 1),
+      clip_plane(store, {0, 1, 0}, 3)};
+  cvms::detail::subtract_region(points, pieces, around);
+  EXPECT_TRUE(pieces.empty());
 }
 
 TEST(BoundaryFragments, CubeAlone) {
