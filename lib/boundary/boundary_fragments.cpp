@@ -4,13 +4,16 @@
 // from it (covering_region.hpp), each subtraction a split of convex
 // polygons by Q's planes (plane_clip.hpp). Only pieces whose boxes meet
 // f's box can take anything away, and the box hierarchy of the unions layer
-// finds them.
+// finds them. Before any cut the candidates' regions are gathered, and the
+// first region that holds all of f ends the facet: most facets of a union
+// of overlapping pieces are wholly inside one other piece, and a cut made
+// before that piece is seen would be thrown away.
 //
 // Threads: workers take pieces from one atomic counter and write each
-// piece's fragments to its own slot; the candidates of a facet are visited
-// in index order. The slots are then read in piece order, and the planes
-// numbered in order of first use there, so the result is the same for
-// every thread count.
+// piece's fragments to its own slot; the regions of a facet are subtracted
+// in piece order whatever order they were found in. The slots are then
+// read in piece order, and the planes numbered in order of first use
+// there, so the result is the same for every thread count.
 #include "boundary_fragments.hpp"
 
 #include <algorithm>
