@@ -32,7 +32,7 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
   bool any_inner = false;
   std::size_t on_plane = 0;
   for (VertexId v : q.mesh().vertices()) {
-    const Sign s = side(vertex_ref(q, v), plane);
+    const Sign s = walked_side(section, q, v, plane);
     sides[v.index()] = s;
     any_outer = any_outer || s == Sign::positive;
     any_inner = any_inner || s == Sign::negative;

@@ -25,14 +25,7 @@ class SectionWalk {
   }
 
   // The side of v, evaluated once per walk.
-  int side_of(VertexId v) {
-    const std::uint32_t i = v.index();
-    if (scratch_.stamps[i] != scratch_.stamp) {
-      scratch_.stamps[i] = scratch_.stamp;
-      scratch_.sides[i] = static_cast<std::int8_t>(side(vertex_ref(q_, v), plane_));
-    }
-    return scratch_.sides[i];
-  }
+  int side_of(VertexId v) { return static_cast<int>(walked_side(scratch_, q_, v, plane_)); }
 
   // A halfedge from a vertex strictly inside the half-space to one
   // strictly outside; invalid if the piece is strictly on one side, or
@@ -91,6 +84,15 @@ class SectionWalk {
 };
 
 }  // namespace
+
+Sign walked_side(SectionScratch& scratch, const ConvexPolyhedron& q, VertexId v, const ClipPlane& plane) {
+  const std::uint32_t i = v.index();
+  if (scratch.stamps[i] != scratch.stamp) {
+    scratch.stamps[i] = scratch.stamp;
+    scratch.sides[i] = static_cast<std::int8_t>(side(vertex_ref(q, v), plane));
+  }
+  return static_cast<Sign>(scratch.sides[i]);
+}
 
 std::optional<bool> walk_section(const PieceGeometry& q_geometry, std::uint32_t piece_index, const ClipPlane& plane,
                                  SectionScratch& scratch) {

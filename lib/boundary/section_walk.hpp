@@ -43,4 +43,10 @@ struct SectionScratch {
 std::optional<bool> walk_section(const PieceGeometry& q_geometry, std::uint32_t piece_index, const ClipPlane& plane,
                                  SectionScratch& scratch);
 
+/// The side of vertex v of the piece last walked, for the plane of that
+/// walk: remembered if the walk evaluated it, else evaluated and
+/// remembered now. For the caller that tests every vertex after the walk
+/// gave up, so that no vertex is evaluated twice.
+Sign walked_side(SectionScratch& scratch, const ConvexPolyhedron& q, VertexId v, const ClipPlane& plane);
+
 }  // namespace cvms::detail
