@@ -1,0 +1,414 @@
+// SPDX-License-Identifier: MIT
+// minkowski_sum of solids (cvms/solid_sum.hpp) end to end, against oracles
+// that never run the boundary code:
+//  - polycubes summed with integer boxes or with polycubes, placed by one
+//    map x -> M x + t (decimals, rotations): the voxel oracle
+//    (support/voxel_oracle.hpp) gives the volume, the vertex set, the facet
+//    count and containment;
+//  - exact points (random with fixed seeds, and on and next to the output's
+//    vertices, edges and facets) located against brute force over the
+//    pairwise sums of the decompositions' pieces (minkowski_sum_pieces);
+//  - every output vertex on three independent facet planes of those pieces;
+//  - the one-convex road against the road through both decompositions.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <tuple>
+#include <utility>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cvms/decomposition.hpp"
+#include "cvms/error.hpp"
+#include "cvms/solid_sum.hpp"
+#include "decomposition_fixtures.hpp"
+#include "support/union_oracle.hpp"
+#include "support/voxel_oracle.hpp"
+
+namespace cvms::test {
+namespace {
+
+// A polycube as a solid (GridSolid's triangles), mapped by m (det > 0).
+Solid polycube(const Cubes& cubes, const Mapping& m = {}) {
+  int n = 1;
+  for (const Cube& c : cubes) n = std::max({n, c[0] + 1, c[1] + 1, c[2] + 1});
+  GridSolid grid{{units(n), units(n), units(n)}, Cells(cubes.begin(), cubes.end())};
+  const Solid s = grid.solid();
+  std::vector<Vec3> vertices;
+  for (const Vec3& p : s.vertices()) vertices.push_back(m(p));
+  Triangles triangles(s.triangles().begin(), s.triangles().end());
+  return SolidAccess::assume_valid(std::move(vertices), std::move(triangles));
+}
+
+Cubes cubes_where(int nx, int ny, int nz, const std::function<bool(int, int, int)>& fill) {
+  Cubes out;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k)
+        if (fill(i, j, k)) out.insert({i, j, k});
+  return out;
+}
+
+Cubes l_shape() { return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}; }
+
+// A square frame of side n around a hole of side n - 2, one cube high.
+Cubes frame(int n) {
+  return cubes_where(n, n, 1, [n](int i, int j, int) { return i == 0 || j == 0 || i == n - 1 || j == n - 1; });
+}
+
+// A cube of side n with a cubic cavity of side n - 2.
+Cubes hollow_cube(int n) {
+  return cubes_where(n, n, n, [n](int i, int j, int k) {
+    return i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1;
+  });
+}
+
+std::string text(const Vec3& p) {
+  return "(" + to_string(p.x) + ", " + to_string(p.y) + ", " + to_string(p.z) + ")";
+}
+
+std::set<Vec3> vertex_coordinates(const Solid& s) { return {s.vertices().begin(), s.vertices().end()}; }
+
+// x with M x + t == y, by Cramer's rule.
+Vec3 unmapped(const Vec3& y, const Mapping& m) {
+  const Vec3 b = y - m.offset;
+  const Rational det = m.linear.determinant();
+  Vec3 x;
+  for (int column = 0; column < 3; ++column) {
+    Mat3 replaced = m.linear;
+    for (int row = 0; row < 3; ++row) replaced.m[row][column] = b[row];
+    x[column] = replaced.determinant() / det;
+  }
+  return x;
+}
+
+// Volume, vertices and facets against the voxels of the expected sum.
+void expect_voxels(const Solid& result, const Cubes& sum, const Mapping& m = {}) {
+  EXPECT_EQ(result.volume(), Rational(static_cast<long>(sum.size())) * m.linear.determinant());
+  std::set<Vec3> expected;
+  for (const Cube& g : voxel_vertices(sum)) expected.insert(m(Vec3{Rational(g[0]), Rational(g[1]), Rational(g[2])}));
+  EXPECT_EQ(vertex_coordinates(result), expected);
+  EXPECT_EQ(result.num_facets(), voxel_facets(sum));
+}
+
+Rational small_step(const Vec3& n) {
+  Rational largest = 1;
+  for (int i = 0; i < 3; ++i) largest = std::max(largest, Rational(abs(n[i])));
+  return Rational(1, 1024) / largest;
+}
+
+// Points on the output (its triangles' corners, edge midpoints and
+// centroids, which locate must call boundary), next to it (centroids moved
+// along the facet normal, corners along a diagonal) and random ones in its
+// box; each checked against the brute force over the pieces, and against
+// `other` when given (closed containment).
+void expect_points(const Solid& result, const ConvexUnion& pieces, std::uint64_t seed,
+                   const std::function<bool(const Vec3&)>& other = {}) {
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::vector<Vec3> on, near;
+  const auto vertices = result.vertices();
+  const auto triangles = result.triangles();
+  const std::size_t stride = std::max<std::size_t>(1, triangles.size() / 150);
+  for (std::size_t t = 0; t < triangles.size(); t += stride) {
+    const Vec3 &a = vertices[triangles[t][0]], &b = vertices[triangles[t][1]], &c = vertices[triangles[t][2]];
+    const Vec3 centroid = Rational(1, 3) * (a + b + c);
+    on.insert(on.end(), {a, Rational(1, 2) * (a + b), Rational(1, 2) * (b + c), centroid});
+    const Vec3& n = result.facet_normal(result.triangle_facets()[t]);
+    const Rational step = small_step(n);
+    near.insert(near.end(), {centroid + step * n, centroid - step * n});
+    const Vec3 diagonal{Rational(1, 1024), Rational(1, 2048), Rational(-1, 4096)};
+    near.insert(near.end(), {a + diagonal, a - diagonal});
+  }
+  std::mt19937_64 rng(seed);
+  std::vector<Vec3> random;
+  Vec3 low = vertices[0], high = vertices[0];
+  for (const Vec3& p : vertices)
+    for (int i = 0; i < 3; ++i) {
+      low[i] = std::min(low[i], p[i]);
+      high[i] = std::max(high[i], p[i]);
+    }
+  for (int k = 0; k < 300; ++k) {
+    Vec3 p;
+    for (int i = 0; i < 3; ++i) {
+      // low - 1 + r / q for r in [0, (high - low + 2) q].
+      const auto q = static_cast<long>(1 + rng() % 16);
+      const Rational span = (high[i] - low[i] + 2) * q;
+      const auto steps = static_cast<std::uint64_t>(span.get_d()) + 1;
+      p[i] = low[i] - 1 + Rational(static_cast<long>(rng() % steps), q);
+    }
+    random.push_back(p);
+  }
+  for (const Vec3& p : on) {
+    EXPECT_EQ(result.locate(p), Location::boundary) << text(p);
+    EXPECT_TRUE(union_contains_brute_force(pieces, p)) << text(p);
+  }
+  for (const auto* points : {&near, &random})
+    for (const Vec3& p : *points) {
+      const bool brute = union_contains_brute_force(pieces, p);
+      EXPECT_EQ(result.contains(p), brute) << text(p);
+      if (other) {
+        EXPECT_EQ(other(p), brute) << text(p);
+      }
+    }
+}
+
+// Every vertex on three facet planes of the pieces with independent normals.
+void expect_vertices_on_piece_planes(const Solid& result, const ConvexUnion& pieces) {
+  for (const Vec3& v : vertex_coordinates(result)) {
+    std::vector<Vec3> normals;
+    for (const ConvexPolyhedron& piece : pieces.pieces())
+      for (FaceId f : piece.mesh().faces())
+        if (dot(piece.normal(f), v) == piece.plane_offset(f)) normals.push_back(piece.normal(f));
+    bool independent = false;
+    for (std::size_t i = 0; i < normals.size() && !independent; ++i)
+      for (std::size_t j = i + 1; j < normals.size() && !independent; ++j) {
+        const Vec3 c = cross(normals[i], normals[j]);
+        if (c == Vec3{}) continue;
+        for (std::size_t k = j + 1; k < normals.size() && !independent; ++k) independent = dot(c, normals[k]) != 0;
+      }
+    EXPECT_TRUE(independent) << text(v) << " lies on " << normals.size() << " piece planes, not three independent";
+  }
+}
+
+// Everything above for a sum of two polycubes placed by m (the second one's
+// offset is m's too, so the sum's offset is 2 t).
+void expect_polycube_sum(const Cubes& a, const Cubes& b, const Mapping& m, std::uint64_t seed) {
+  const Solid sa = polycube(a, m), sb = polycube(b, m);
+  const Solid result = minkowski_sum(sa, sb);
+  const Cubes sum = polycube_sum(a, b);
+  const Mapping twice{m.linear, m.offset + m.offset};
+  expect_voxels(result, sum, twice);
+  const ConvexUnion pieces = minkowski_sum_pieces(sa, sb);
+  expect_points(result, pieces, seed, [&](const Vec3& p) { return voxel_contains(sum, unmapped(p, twice)); });
+  expect_vertices_on_piece_planes(result, pieces);
+}
+
+// The matrix with these 9 entries, row-major.
+Mat3 matrix(const std::vector<Rational>& entries) {
+  Mat3 m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m.m[i][j] = entries[static_cast<std::size_t>(3 * i + j)];
+  return m;
+}
+
+// A rotation with rational entries (two 3-4-5 turns about different axes).
+Mat3 rational_rotation() {
+  const Mat3 z = matrix({Rational(3, 5), Rational(-4, 5), 0, Rational(4, 5), Rational(3, 5), 0, 0, 0, 1});
+  const Mat3 x = matrix({1, 0, 0, 0, Rational(5, 13), Rational(-12, 13), 0, Rational(12, 13), Rational(5, 13)});
+  return z * x;
+}
+
+TEST(SolidSum, LShapePlusCubeIsTheLOfSideThreeByHand) {
+  const Solid result = minkowski_sum(polycube(l_shape()), polycube(box_cubes(1, 1, 1)));
+  // By hand: the 3 x 3 square without its 1 x 1 corner, 2 high: 8 x 2.
+  EXPECT_EQ(result.volume(), 16);
+  EXPECT_EQ(result.num_facets(), 8u);
+  EXPECT_EQ(vertex_coordinates(result).size(), 12u);
+  EXPECT_EQ(result.num_shells(), 1u);
+  expect_polycube_sum(l_shape(), box_cubes(1, 1, 1), {}, 1);
+}
+
+TEST(SolidSum, LShapePlusFlatBoxAndTallBox) {
+  expect_polycube_sum(l_shape(), box_cubes(2, 1, 3), {}, 2);
+  expect_polycube_sum(cubes_where(3, 3, 2, [](int i, int j, int k) { return i + j + k < 3; }), box_cubes(1, 2, 1),
+                      {}, 3);
+}
+
+TEST(SolidSum, FrameKeepsItsHoleWithASmallCubeAndLosesItWithABigOne) {
+  const Solid small = minkowski_sum(polycube(frame(5)), polycube(box_cubes(1, 1, 1)));
+  EXPECT_EQ(small.genus(), 1u);
+  expect_polycube_sum(frame(5), box_cubes(1, 1, 1), {}, 4);
+  const Solid big = minkowski_sum(polycube(frame(5)), polycube(box_cubes(3, 3, 1)));
+  EXPECT_EQ(big.genus(), 0u);
+  EXPECT_TRUE(big.is_convex());
+  expect_polycube_sum(frame(5), box_cubes(3, 3, 1), {}, 5);
+}
+
+TEST(SolidSum, RotatedCoarseTorusKeepsItsGenus) {
+  // A ring 4 x 4 x 2 around a 2 x 2 hole, turned off every axis, plus a
+  // turned unit cube: the voxel oracle through the same rotation.
+  const Cubes torus = cubes_where(4, 4, 2, [](int i, int j, int) { return i == 0 || j == 0 || i == 3 || j == 3; });
+  const Mapping turn{rational_rotation(), Vec3{Rational(1, 3), 0, Rational(-2)}};
+  const Solid result = minkowski_sum(polycube(torus, turn), polycube(box_cubes(1, 1, 1), turn));
+  EXPECT_EQ(result.genus(), 1u);
+  expect_polycube_sum(torus, box_cubes(1, 1, 1), turn, 6);
+}
+
+TEST(SolidSum, CavityShrinksWithASmallCubeAndFillsWithABigOne) {
+  const Solid small = minkowski_sum(polycube(hollow_cube(5)), polycube(box_cubes(1, 1, 1)));
+  EXPECT_EQ(small.num_cavities(), 1u);
+  EXPECT_EQ(small.num_shells(), 2u);
+  expect_polycube_sum(hollow_cube(5), box_cubes(1, 1, 1), {}, 7);
+  const Solid big = minkowski_sum(polycube(hollow_cube(5)), polycube(box_cubes(3, 3, 3)));
+  EXPECT_EQ(big.num_cavities(), 0u);
+  expect_voxels(big, dilated(hollow_cube(5), 3, 3, 3));
+}
+
+TEST(SolidSum, DecimalCoordinates) {
+  // Cubes of side 0.1 at an offset of 0.25: every coordinate a decimal.
+  const Rational tenth_part(1, 10);
+  const Mat3 scale = matrix({tenth_part, 0, 0, 0, tenth_part, 0, 0, 0, tenth_part});
+  const Mapping tenth{scale, Vec3{Rational(1, 4), Rational(-7, 20), Rational(3, 100)}};
+  expect_polycube_sum(l_shape(), box_cubes(2, 1, 1), tenth, 8);
+  expect_polycube_sum(frame(4), box_cubes(1, 1, 1), tenth, 9);
+}
+
+TEST(SolidSum, TwoNonConvexSolidsGoThroughBothDecompositions) {
+  expect_polycube_sum(l_shape(), frame(3), {}, 10);
+  const Cubes step = cubes_where(2, 2, 2, [](int i, int j, int k) { return i + j + k <= 1; });
+  expect_polycube_sum(step, l_shape(), {}, 11);
+}
+
+TEST(SolidSum, LobesTouchingAlongAnEdgeHoldItsVerticesOncePerLobe) {
+  // Two unit cubes apart, plus a unit cube: two 2 x 2 x 2 blocks meeting
+  // along the edge x = y = 2, 0 <= z <= 2. The output keeps both blocks
+  // closed: its ends (2, 2, 0) and (2, 2, 2) appear twice, once per shell.
+  const Cubes apart{{0, 0, 0}, {2, 2, 0}};
+  const Solid result = minkowski_sum(polycube(apart), polycube(box_cubes(1, 1, 1)));
+  EXPECT_EQ(result.num_shells(), 2u);
+  EXPECT_EQ(result.vertices().size(), 16u);
+  const Vec3 end{Rational(2), Rational(2), Rational(0)};
+  EXPECT_EQ(std::count(result.vertices().begin(), result.vertices().end(), end), 2);
+  EXPECT_EQ(result.locate(Vec3{Rational(2), Rational(2), Rational(1)}), Location::boundary);
+  expect_polycube_sum(apart, box_cubes(1, 1, 1), {}, 12);
+}
+
+TEST(SolidSum, LobesTouchingAtAPointHoldItOncePerLobe) {
+  const Cubes apart{{0, 0, 0}, {2, 2, 2}};
+  const Solid result = minkowski_sum(polycube(apart), polycube(box_cubes(1, 1, 1)));
+  EXPECT_EQ(result.num_shells(), 2u);
+  const Vec3 touch{Rational(2), Rational(2), Rational(2)};
+  EXPECT_EQ(std::count(result.vertices().begin(), result.vertices().end(), touch), 2);
+  expect_polycube_sum(apart, box_cubes(1, 1, 1), {}, 13);
+}
+
+Solid data_solid(const std::string& name) { return read_solid(std::string(CVMS_TEST_DATA_DIR) + "/solids/" + name); }
+
+TEST(SolidSum, StarPrismPlusCube) {
+  const Solid star = data_solid("star_prism.off");
+  const Solid cube = polycube(box_cubes(1, 1, 1));
+  const Solid result = minkowski_sum(star, cube);
+  const ConvexUnion pieces = minkowski_sum_pieces(star, cube);
+  expect_points(result, pieces, 14);
+  expect_vertices_on_piece_planes(result, pieces);
+  EXPECT_EQ(result.num_shells(), 1u);
+}
+
+TEST(SolidSum, OneConvexRoadAndBothDecomposedRoadGiveTheSameSolid) {
+  for (const Solid& a : {data_solid("star_prism.off"), polycube(hollow_cube(4)), polycube(frame(4))}) {
+    const Solid b = polycube(box_cubes(1, 2, 1), {Mat3::identity(), Vec3{Rational(1, 2), 0, Rational(-1, 3)}});
+    const Solid one_convex = minkowski_sum(a, b);
+    const Solid decomposed = union_solid(minkowski_sum_pieces(a, b));
+    EXPECT_EQ(vertex_coordinates(one_convex), vertex_coordinates(decomposed));
+    EXPECT_EQ(one_convex.volume(), decomposed.volume());
+    EXPECT_EQ(one_convex.num_facets(), decomposed.num_facets());
+    // The sum commutes: B + A takes the same road.
+    const Solid swapped = minkowski_sum(b, a);
+    EXPECT_EQ(vertex_coordinates(swapped), vertex_coordinates(one_convex));
+    EXPECT_EQ(swapped.volume(), one_convex.volume());
+  }
+}
+
+TEST(SolidSum, TwoConvexSolidsGiveTheirConvexSum) {
+  const Solid a = polycube(box_cubes(1, 2, 3));
+  const Solid b = polycube(box_cubes(2, 1, 1), {Mat3::identity(), Vec3{Rational(1, 2), 0, 0}});
+  const Solid result = minkowski_sum(a, b);
+  EXPECT_TRUE(result.is_convex());
+  EXPECT_EQ(result.volume(), 3 * 3 * 4);
+  EXPECT_EQ(vertex_coordinates(result).size(), 8u);
+}
+
+TEST(SolidSum, ThreadCountDoesNotChangeTheResult) {
+  for (const Solid& a : {polycube(hollow_cube(4)), data_solid("star_prism.off")}) {
+    const Solid b = polycube(box_cubes(1, 1, 1));
+    Options one, two;
+    two.threads = 2;
+    const Solid r1 = minkowski_sum(a, b, one), r2 = minkowski_sum(a, b, two);
+    EXPECT_TRUE(std::ranges::equal(r1.vertices(), r2.vertices()));
+    EXPECT_TRUE(std::ranges::equal(r1.triangles(), r2.triangles()));
+  }
+  const Solid r1 = minkowski_sum(polycube(l_shape()), polycube(frame(3)));
+  Options two;
+  two.threads = 2;
+  const Solid r2 = minkowski_sum(polycube(l_shape()), polycube(frame(3)), two);
+  EXPECT_TRUE(std::ranges::equal(r1.vertices(), r2.vertices()));
+  EXPECT_TRUE(std::ranges::equal(r1.triangles(), r2.triangles()));
+}
+
+TEST(SolidSum, ProgressCanCancelEachRoad) {
+  const Solid l = polycube(l_shape()), cube = polycube(box_cubes(1, 1, 1)), ring = polycube(frame(3));
+  for (unsigned threads : {1u, 2u})
+    for (int allowed : {0, 1, 3}) {
+      SCOPED_TRACE("threads " + std::to_string(threads) + ", calls allowed " + std::to_string(allowed));
+      int calls = 0;
+      Options options;
+      options.threads = threads;
+      options.progress = [&](const Progress&) { return calls++ < allowed; };
+      for (const auto& [a, b] : {std::pair{l, cube}, std::pair{l, ring}, std::pair{cube, cube}}) {
+        // A sum of two unit cubes reports at least its stages' starts and ends.
+        if (a.is_convex() && b.is_convex() && allowed > 1) continue;
+        calls = 0;
+        try {
+          (void)minkowski_sum(a, b, options);
+          ADD_FAILURE() << "not cancelled";
+        } catch (const Error& e) {
+          EXPECT_EQ(e.category(), ErrorCategory::cancelled) << e.what();
+        }
+      }
+    }
+}
+
+TEST(SolidSum, ProgressHearsTheFaceSums) {
+  std::set<std::string> stages;
+  Options options;
+  options.progress = [&](const Progress& p) {
+    stages.insert(p.stage);
+    return true;
+  };
+  (void)minkowski_sum(polycube(l_shape()), polycube(box_cubes(1, 1, 1)), options);
+  EXPECT_EQ(stages.count("solid sum: faces"), 1u);
+}
+
+TEST(SolidSum, LimitErrorNamesTheLimit) {
+  Options options;
+  options.limits.max_output_facets = 12;
+  const Solid l = polycube(l_shape()), cube = polycube(box_cubes(1, 1, 1)), ring = polycube(frame(3));
+  for (const auto& [a, b] : {std::pair{l, cube}, std::pair{cube, l}, std::pair{l, ring}}) {
+    try {
+      (void)minkowski_sum(a, b, options);
+      ADD_FAILURE() << "no limit error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::limit);
+      EXPECT_NE(std::string(e.message()).find("max_output_facets"), std::string::npos) << e.what();
+    }
+  }
+  options.limits.max_output_facets = std::uint64_t{1} << 26;
+  options.limits.max_memory_bytes = 16 * SumLimits::bytes_per_output_facet;
+  try {
+    (void)minkowski_sum(l, cube, options);
+    ADD_FAILURE() << "no limit error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.category(), ErrorCategory::limit);
+    EXPECT_NE(std::string(e.message()).find("max_memory_bytes"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SolidSum, EmptyOperandIsRefused) {
+  const Solid cube = polycube(box_cubes(1, 1, 1));
+  for (const auto& [a, b, name] : {std::tuple{Solid(), cube, "A"}, std::tuple{cube, Solid(), "B"}}) {
+    try {
+      (void)minkowski_sum(a, b);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
+      EXPECT_NE(std::string(e.message()).find(std::string(name) + " is empty"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cvms::test
