@@ -219,7 +219,7 @@ TEST_F(CliSolidSum, RefusalsSayWhy) {
                  "convex sets only");
   dir_.write("square.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
   expect_failure("sum " + solid_path("l_block") + " square.off -o s.off",
-                 "square.off: a polygon: a solid that is not convex is summed with polyhedra and solids only");
+                 "square.off: a convex polygon: a solid that is not convex is summed with polyhedra and solids only");
   ok("decompose " + solid_path("l_block") + " -o l.obj");
   expect_failure("sum l.obj " + cube_path() + " -o s.off",
                  "l.obj: a pieces file of 2 convex pieces, not a convex set: pass --pieces");

@@ -183,14 +183,14 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 void register_sum(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<SumArgs>();
   args->limits = sum_limits_for_memory(usable_memory_bytes());
-  CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
+  CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension, or A + B of solids");
   add_operands(*command, args->a, args->b);
   command->add_option("C", args->more, "further operands")->check(set_path());
   add_output_options(*command, args->output, args->format, args->float_output);
   add_algorithm_option(*command, args->algorithm);
   command
       ->add_option("--threads", args->threads,
-                   "threads for each sum of two polyhedra by cvms, used where they pay (the output is identical)")
+                   "threads for each sum of two polyhedra by cvms and for sums of solids, used where they pay (the output is identical)")
       ->check(CLI::Range(1u, 1024u))
       ->default_val(1u);
   command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");
