@@ -8,11 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
 #include "cvms/convex_set.hpp"
+#include "cvms/convex_union.hpp"
+#include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "decomposition_fixtures.hpp"
 #include "face_sums.hpp"
@@ -101,6 +104,27 @@ TEST(FaceSums, EachIsTheHullOfThePairwiseVertexSums) {
     for (const Vec3& p : polygons[i])
       for (VertexId v : b.mesh().vertices()) pairwise.push_back(p + b.vertex(v));
     EXPECT_EQ(vertex_set(sums[i]), vertex_set(convex_hull(pairwise))) << "polygon " << i;
+  }
+}
+
+// A + B = (A + b) u (the face sums) for b inside B: random exact points
+// and the face sums' vertices against brute force over the pairwise sums of
+// both decompositions' pieces.
+TEST(FaceSums, WithTheSolidMovedIntoBTheyMakeTheWholeSum) {
+  const ConvexPolyhedron b = tilted_box();
+  const Vec3 inside_b{Rational(1, 2), Rational(1, 2), Rational(1, 2)};
+  for (const Solid& a : {l_block(), hollow_cube(), star_prism()}) {
+    const std::vector<ConvexPolyhedron> sums = detail::face_sums(detail::facet_polygons(a), b, Options{});
+    const ConvexUnion faces(sums);
+    const ConvexUnion pieces = minkowski_sum_pieces(a, Solid::from_polyhedron(b));
+    std::mt19937_64 rng(50);
+    for (int k = 0; k < 500; ++k) {
+      const Vec3 p = random_exact_point(rng, 7);
+      EXPECT_EQ(a.contains(p - inside_b) || faces.contains(p), union_contains_brute_force(pieces, p))
+          << "seed 50, point " << k;
+    }
+    for (const ConvexPolyhedron& sum : sums)
+      for (VertexId v : sum.mesh().vertices()) EXPECT_TRUE(union_contains_brute_force(pieces, sum.vertex(v)));
   }
 }
 

@@ -202,6 +202,29 @@ Mat3 rational_rotation() {
   return z * x;
 }
 
+// The oracle itself against counts found by hand.
+TEST(VoxelOracle, AgreesWithHandCounts) {
+  // L + unit cube: the 3 x 3 L without its corner, 2 high.
+  const Cubes l = polycube_sum(l_shape(), box_cubes(1, 1, 1));
+  EXPECT_EQ(l, dilated(l_shape(), 1, 1, 1));
+  EXPECT_EQ(l.size(), 16u);
+  EXPECT_EQ(voxel_vertices(l).size(), 12u);
+  EXPECT_EQ(voxel_facets(l), 8u);
+  // Frame 5 + unit cube: a 6 x 6 ring around a 2 x 2 hole, 2 high.
+  const Cubes ring = dilated(frame(5), 1, 1, 1);
+  EXPECT_EQ(ring.size(), 2u * (36 - 4));
+  EXPECT_EQ(voxel_vertices(ring).size(), 16u);
+  EXPECT_EQ(voxel_facets(ring), 10u);
+  // Two blocks meeting along an edge: the edge's ends once in the grid.
+  const Cubes edge = dilated({{0, 0, 0}, {2, 2, 0}}, 1, 1, 1);
+  EXPECT_EQ(voxel_vertices(edge).size(), 14u);
+  EXPECT_EQ(voxel_facets(edge), 12u);
+  EXPECT_TRUE(voxel_contains(edge, Vec3{Rational(2), Rational(2), Rational(1, 2)}));
+  EXPECT_FALSE(voxel_contains(edge, Vec3{Rational(5, 2), Rational(3, 2), Rational(1, 2)}));
+  EXPECT_TRUE(voxel_contains(edge, Vec3{Rational(-0), Rational(3, 2), Rational(2)}));
+  EXPECT_FALSE(voxel_contains(edge, Vec3{Rational(-1, 3), Rational(3, 2), Rational(1)}));
+}
+
 TEST(SolidSum, LShapePlusCubeIsTheLOfSideThreeByHand) {
   const Solid result = minkowski_sum(polycube(l_shape()), polycube(box_cubes(1, 1, 1)));
   // By hand: the 3 x 3 square without its 1 x 1 corner, 2 high: 8 x 2.
