@@ -138,7 +138,9 @@ void expect_points(const Solid& result, const ConvexUnion& pieces, std::uint64_t
       const auto q = static_cast<long>(1 + rng() % 16);
       const Rational span = (high[i] - low[i] + 2) * q;
       const auto steps = static_cast<std::uint64_t>(span.get_d()) + 1;
-      p[i] = low[i] - 1 + Rational(static_cast<long>(rng() % steps), q);
+      Rational r(static_cast<long>(rng() % steps), q);
+      r.canonicalize();
+      p[i] = low[i] - 1 + r;
     }
     random.push_back(p);
   }
