@@ -40,6 +40,7 @@ class PolygonGrower {
     for (std::size_t t = 0; t < triangles_.size(); ++t) {
       if (used_[t]) continue;
       used_[t] = true;
+      if (flat(triangles_[t])) continue;
       std::vector<std::uint32_t> cycle(triangles_[t].begin(), triangles_[t].end());
       grow(cycle, facets_[t]);
       std::vector<Vec3> corners;
@@ -60,7 +61,8 @@ class PolygonGrower {
         const std::size_t k = cycle.size();
         const std::uint32_t u = cycle[i], v = cycle[(i + 1) % k];
         const auto it = edges_.find(edge_key(v, u));
-        if (it == edges_.end() || used_[it->second] || facets_[it->second] != facet) continue;
+        if (it == edges_.end() || used_[it->second] || facets_[it->second] != facet || flat(triangles_[it->second]))
+          continue;
         const std::uint32_t w = third_vertex(triangles_[it->second], u, v);
         const std::uint32_t before = cycle[(i + k - 1) % k], after = cycle[(i + 2) % k];
         if (!convex_corner(before, u, w, normal) || !convex_corner(w, v, after, normal)) continue;
@@ -69,6 +71,13 @@ class PolygonGrower {
         grown = true;
       }
     }
+  }
+
+  // A triangle of zero area (the solid's own triangulations make none, but
+  // a solid built otherwise might) covers only a segment that its
+  // neighbours' sums cover already: it starts no polygon.
+  bool flat(const Triangle& t) const {
+    return is_parallel(points_[t[1]] - points_[t[0]], points_[t[2]] - points_[t[0]]);
   }
 
   static std::uint32_t third_vertex(const Triangle& t, std::uint32_t u, std::uint32_t v) {
