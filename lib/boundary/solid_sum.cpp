@@ -18,7 +18,10 @@
 // x - b = a + (c - b) (not in A) meets dA at some a' = a + t (c - b),
 // t in [0, 1], and x - a' = (1 - t) c + t b lies in B (convex): x is in
 // dA + B. Both sets lie in A + B, so the union is all of it.
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
 #include "boundary_assembly.hpp"
@@ -29,6 +32,7 @@
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
 #include "progress_reporter.hpp"
+#include "worker.hpp"
 
 namespace cvms {
 namespace {
@@ -45,20 +49,45 @@ Vec3 interior_point(const ConvexPolyhedron& b) {
   return Rational(Rational(1) / b.num_vertices()) * sum;
 }
 
-// Keeps the fragments that lie outside A + b (and the planes they use,
-// renumbered in order).
+// Whether each fragment lies inside A + b, by one locate of a point of its
+// relative interior (the centroid of three corners) in A; on
+// options.threads threads taking chunks of fragments from one counter, each
+// answer in its own slot, so the answers do not depend on the threads.
+std::vector<char> inside_translate(const detail::BoundaryFragments& all, const Solid& a, const Vec3& b,
+                                   const Options& options) {
+  constexpr std::size_t chunk = 256;
+  const std::size_t n = all.fragments.size();
+  std::vector<char> inside(n, 0);
+  detail::ProgressReporter progress(detail::callback_of(options.progress));
+  progress.begin("solid sum: fragments", n);
+  std::atomic<std::size_t> next{0};
+  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+  const auto threads = static_cast<unsigned>(std::min<std::size_t>({std::max(1U, options.threads), cores, n / chunk + 1}));
+  detail::run_on_threads(threads, [&](unsigned) {
+    for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk)) {
+      const std::size_t end = std::min(n, begin + chunk);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::vector<Vec3>& c = all.fragments[i].corners;
+        const Vec3 centroid = Rational(Rational(1) / 3) * (c[0] + c[1] + c[2]);
+        inside[i] = a.locate(centroid - b) == Location::inside ? 1 : 0;
+      }
+      progress.advance(end - begin);
+    }
+  });
+  progress.end();
+  return inside;
+}
+
+// The fragments that lie outside A + b, with the planes they use renumbered
+// in order.
 detail::BoundaryFragments outside(detail::BoundaryFragments all, const Solid& a, const Vec3& b,
                                   const Options& options) {
-  detail::ProgressReporter progress(detail::callback_of(options.progress));
-  progress.begin("solid sum: fragments", all.fragments.size());
+  const std::vector<char> inside = inside_translate(all, a, b, options);
   detail::BoundaryFragments kept;
   std::vector<std::uint32_t> renumbered(all.planes.size(), UINT32_MAX);
   for (std::size_t i = 0; i < all.fragments.size(); ++i) {
+    if (inside[i] != 0) continue;
     detail::BoundaryFragment& fragment = all.fragments[i];
-    const std::vector<Vec3>& c = fragment.corners;
-    const Vec3 centroid = Rational(Rational(1) / 3) * (c[0] + c[1] + c[2]);
-    if ((i & 255) == 255) progress.reach(i);
-    if (a.locate(centroid - b) == Location::inside) continue;
     std::uint32_t& plane = renumbered[fragment.plane];
     if (plane == UINT32_MAX) {
       plane = static_cast<std::uint32_t>(kept.planes.size());
@@ -67,7 +96,6 @@ detail::BoundaryFragments outside(detail::BoundaryFragments all, const Solid& a,
     fragment.plane = plane;
     kept.fragments.push_back(std::move(fragment));
   }
-  progress.end();
   return kept;
 }
 
