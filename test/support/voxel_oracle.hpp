@@ -22,8 +22,10 @@
 #include <cstdint>
 #include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
+#include "cvms/polygon_soup.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
 
@@ -144,6 +146,41 @@ inline bool voxel_contains(const Cubes& cubes, const Vec3& x) {
       for (int k : spans[2])
         if (cubes.count({i, j, k}) != 0) return true;
   return false;
+}
+
+/// The polycube's boundary as a soup of unit squares, outward (each square
+/// between a filled and an empty cube, counterclockwise seen from the empty
+/// one). Solid::from_soup accepts it exactly when no two cubes meet only
+/// along an edge or at a corner.
+inline PolygonSoup polycube_soup(const Cubes& cubes) {
+  PolygonSoup soup;
+  std::map<Cube, std::uint32_t> index;
+  auto vertex = [&](const Cube& g) {
+    const auto [it, added] = index.emplace(g, static_cast<std::uint32_t>(soup.points.size()));
+    if (added) soup.points.push_back(Vec3{Rational(g[0]), Rational(g[1]), Rational(g[2])});
+    return it->second;
+  };
+  for (const Cube& c : cubes)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int dir = 0; dir < 2; ++dir) {
+        Cube n = c;
+        n[axis] += dir == 0 ? -1 : 1;
+        if (cubes.count(n) != 0) continue;
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        std::vector<std::uint32_t> square;
+        for (const auto& [du, dv] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
+          Cube g = c;
+          g[axis] += dir;
+          g[u] += du;
+          g[v] += dv;
+          square.push_back(vertex(g));
+        }
+        // (u, v, axis) is a right-handed frame: counterclockwise seen from
+        // +axis; reversed when the square faces -axis.
+        if (dir == 0) std::swap(square[1], square[3]);
+        soup.add_face(square);
+      }
+  return soup;
 }
 
 /// The grid point g as a point, mapped.
