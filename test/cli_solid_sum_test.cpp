@@ -21,13 +21,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <initializer_list>
-#include <utility>
 #include <fstream>
+#include <initializer_list>
 #include <random>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cvms/decomposition.hpp"
@@ -43,7 +43,10 @@ std::string solid_path(const std::string& name) {
   return (std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids" / (name + ".off")).string();
 }
 
-std::string cube_path() { return (std::filesystem::path(CVMS_TEST_DATA_DIR) / ".." / ".." / "examples" / "data" / "cube.off").string(); }
+std::string cube_path() {
+  return (std::filesystem::path(CVMS_TEST_DATA_DIR) / ".." / ".." / "examples" / "data" / "cube.off")
+      .string();
+}
 
 std::set<Vec3> coordinates(const Solid& s) { return {s.vertices().begin(), s.vertices().end()}; }
 
@@ -53,7 +56,8 @@ Vec3 v(const Rational& x, const Rational& y, const Rational& z) { return {x, y, 
 std::set<Vec3> l_sum_vertices() {
   std::set<Vec3> out;
   for (int z : {0, 2})
-    for (const auto& [x, y] : std::initializer_list<std::pair<int, int>>{{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 3}, {0, 3}})
+    for (const auto& [x, y] :
+         std::initializer_list<std::pair<int, int>>{{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 3}, {0, 3}})
       out.insert(v(x, y, z));
   return out;
 }
@@ -161,7 +165,8 @@ void write_negated_translated(const std::string& from, const std::filesystem::pa
 
 TEST_F(CliSolidSum, PlacementOptionsActAsOnAFilePlacedByHand) {
   write_negated_translated(solid_path("star_prism"), at("placed.off"), v(1, Rational(1, 2), -3));
-  ok("sum " + solid_path("l_block") + " " + solid_path("star_prism") + " --translate-b 1 1/2 -3 --negate-b -o a.off");
+  ok("sum " + solid_path("l_block") + " " + solid_path("star_prism") +
+     " --translate-b 1 1/2 -3 --negate-b -o a.off");
   ok("sum " + solid_path("l_block") + " placed.off -o b.off");
   EXPECT_EQ(read("a.off"), read("b.off"));
   // A quarter turn about z of the L: (x, y) -> (-y, x). L + cube turned
@@ -212,20 +217,24 @@ TEST_F(CliSolidSum, LimitsNameTheirOptionAndKeepTheOutput) {
   dir_.write("out.off", "untouched");
   expect_failure("sum " + solid_path("l_block") + " " + cube_path() + " --max-facets 10 -o out.off",
                  "raise it with --max-facets");
-  expect_failure("sum " + solid_path("l_block") + " " + solid_path("star_prism") + " --max-facets 10 -o out.off",
-                 "raise it with --max-facets");
-  expect_failure("sum " + solid_path("l_block") + " " + solid_path("star_prism") + " --max-pieces 1 -o out.off",
-                 "raise it with --max-pieces");
+  expect_failure(
+      "sum " + solid_path("l_block") + " " + solid_path("star_prism") + " --max-facets 10 -o out.off",
+      "raise it with --max-facets");
+  expect_failure(
+      "sum " + solid_path("l_block") + " " + solid_path("star_prism") + " --max-pieces 1 -o out.off",
+      "raise it with --max-pieces");
   EXPECT_EQ(read("out.off"), "untouched");
 }
 
 TEST_F(CliSolidSum, RefusalsSayWhy) {
-  expect_failure("sum " + solid_path("l_block") + " " + cube_path() + " " + cube_path() + " -o s.off",
-                 "l_block.off: a solid with 1 reflex edge, not a convex set: a sum of more than two operands takes "
-                 "convex sets only");
+  expect_failure(
+      "sum " + solid_path("l_block") + " " + cube_path() + " " + cube_path() + " -o s.off",
+      "l_block.off: a solid with 1 reflex edge, not a convex set: a sum of more than two operands takes "
+      "convex sets only");
   dir_.write("square.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
-  expect_failure("sum " + solid_path("l_block") + " square.off -o s.off",
-                 "square.off: a convex polygon: a solid that is not convex is summed with polyhedra and solids only");
+  expect_failure(
+      "sum " + solid_path("l_block") + " square.off -o s.off",
+      "square.off: a convex polygon: a solid that is not convex is summed with polyhedra and solids only");
   ok("decompose " + solid_path("l_block") + " -o l.obj");
   expect_failure("sum l.obj " + cube_path() + " -o s.off",
                  "l.obj: a pieces file of 2 convex pieces, not a convex set: pass --pieces");

@@ -25,7 +25,6 @@
 
 namespace cvms::test {
 
-
 // A polycube as a solid (GridSolid's triangles), mapped by m (det > 0).
 inline Solid polycube(const Cubes& cubes, const Mapping& m = {}) {
   int n = 1;
@@ -51,7 +50,8 @@ inline Cubes l_shape() { return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}; }
 
 // A square frame of side n around a hole of side n - 2, one cube high.
 inline Cubes frame(int n) {
-  return cubes_where(n, n, 1, [n](int i, int j, int) { return i == 0 || j == 0 || i == n - 1 || j == n - 1; });
+  return cubes_where(n, n, 1,
+                     [n](int i, int j, int) { return i == 0 || j == 0 || i == n - 1 || j == n - 1; });
 }
 
 // A cube of side n with a cubic cavity of side n - 2.
@@ -65,7 +65,9 @@ inline std::string text(const Vec3& p) {
   return "(" + to_string(p.x) + ", " + to_string(p.y) + ", " + to_string(p.z) + ")";
 }
 
-inline std::set<Vec3> vertex_coordinates(const Solid& s) { return {s.vertices().begin(), s.vertices().end()}; }
+inline std::set<Vec3> vertex_coordinates(const Solid& s) {
+  return {s.vertices().begin(), s.vertices().end()};
+}
 
 // x with M x + t == y, by Cramer's rule.
 inline Vec3 unmapped(const Vec3& y, const Mapping& m) {
@@ -84,7 +86,8 @@ inline Vec3 unmapped(const Vec3& y, const Mapping& m) {
 inline void expect_voxels(const Solid& result, const Cubes& sum, const Mapping& m = {}) {
   EXPECT_EQ(result.volume(), Rational(static_cast<long>(sum.size())) * m.linear.determinant());
   std::set<Vec3> expected;
-  for (const Cube& g : voxel_vertices(sum)) expected.insert(m(Vec3{Rational(g[0]), Rational(g[1]), Rational(g[2])}));
+  for (const Cube& g : voxel_vertices(sum))
+    expected.insert(m(Vec3{Rational(g[0]), Rational(g[1]), Rational(g[2])}));
   EXPECT_EQ(vertex_coordinates(result), expected);
   EXPECT_EQ(result.num_facets(), voxel_facets(sum));
 }
@@ -101,7 +104,7 @@ inline Rational small_step(const Vec3& n) {
 // box; each checked against the brute force over the pieces, and against
 // `other` when given (closed containment).
 inline void expect_points(const Solid& result, const ConvexUnion& pieces, std::uint64_t seed,
-                   const std::function<bool(const Vec3&)>& other = {}) {
+                          const std::function<bool(const Vec3&)>& other = {}) {
   SCOPED_TRACE("seed " + std::to_string(seed));
   std::vector<Vec3> on, near;
   const auto vertices = result.vertices();
@@ -164,9 +167,11 @@ inline void expect_vertices_on_piece_planes(const Solid& result, const ConvexUni
       for (std::size_t j = i + 1; j < normals.size() && !independent; ++j) {
         const Vec3 c = cross(normals[i], normals[j]);
         if (c == Vec3{}) continue;
-        for (std::size_t k = j + 1; k < normals.size() && !independent; ++k) independent = dot(c, normals[k]) != 0;
+        for (std::size_t k = j + 1; k < normals.size() && !independent; ++k)
+          independent = dot(c, normals[k]) != 0;
       }
-    EXPECT_TRUE(independent) << text(v) << " lies on " << normals.size() << " piece planes, not three independent";
+    EXPECT_TRUE(independent) << text(v) << " lies on " << normals.size()
+                             << " piece planes, not three independent";
   }
 }
 
@@ -194,7 +199,8 @@ inline Mat3 matrix(const std::vector<Rational>& entries) {
 // A rotation with rational entries (two 3-4-5 turns about different axes).
 inline Mat3 rational_rotation() {
   const Mat3 z = matrix({Rational(3, 5), Rational(-4, 5), 0, Rational(4, 5), Rational(3, 5), 0, 0, 0, 1});
-  const Mat3 x = matrix({1, 0, 0, 0, Rational(5, 13), Rational(-12, 13), 0, Rational(12, 13), Rational(5, 13)});
+  const Mat3 x =
+      matrix({1, 0, 0, 0, Rational(5, 13), Rational(-12, 13), 0, Rational(12, 13), Rational(5, 13)});
   return z * x;
 }
 

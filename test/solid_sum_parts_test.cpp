@@ -34,9 +34,8 @@ Solid l_block() {
 }
 
 Solid hollow_cube() {
-  return grid_solid(4, 4, 4, [](int i, int j, int k) {
-    return i == 0 || j == 0 || k == 0 || i == 3 || j == 3 || k == 3;
-  });
+  return grid_solid(
+      4, 4, 4, [](int i, int j, int k) { return i == 0 || j == 0 || k == 0 || i == 3 || j == 3 || k == 3; });
 }
 
 Solid star_prism() { return read_solid(std::string(CVMS_TEST_DATA_DIR) + "/solids/star_prism.off"); }
@@ -44,7 +43,8 @@ Solid star_prism() { return read_solid(std::string(CVMS_TEST_DATA_DIR) + "/solid
 // Twice the area of a planar polygon along n: dot(n, sum of cross(p_i, p_i+1)).
 Rational twice_area(const std::vector<Vec3>& polygon, const Vec3& n) {
   Vec3 sum;
-  for (std::size_t i = 0; i < polygon.size(); ++i) sum = sum + cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    sum = sum + cross(polygon[i], polygon[(i + 1) % polygon.size()]);
   return dot(n, sum);
 }
 
@@ -60,9 +60,8 @@ long facet_of(const Solid& s, const std::vector<Vec3>& polygon) {
 }
 
 TEST(FacetPolygons, AUnitCubeGivesItsSixSquares) {
-  const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(grid_solid(1, 1, 1, [](int, int, int) {
-    return true;
-  }));
+  const std::vector<std::vector<Vec3>> polygons =
+      detail::facet_polygons(grid_solid(1, 1, 1, [](int, int, int) { return true; }));
   ASSERT_EQ(polygons.size(), 6u);
   for (const auto& p : polygons) EXPECT_EQ(p.size(), 4u);
 }
@@ -90,8 +89,8 @@ TEST(FacetPolygons, ConvexOnOneFacetEachAndCoveringEveryFacet) {
 }
 
 ConvexPolyhedron tilted_box() {
-  return convex_hull(std::vector<Vec3>{{0, 0, 0}, {2, 1, 0}, {0, 1, 0}, {2, 2, 0}, {0, 0, 1}, {1, 0, 1},
-                                        {0, 1, Rational(3, 2)}, {1, 1, 1}});
+  return convex_hull(std::vector<Vec3>{
+      {0, 0, 0}, {2, 1, 0}, {0, 1, 0}, {2, 2, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, Rational(3, 2)}, {1, 1, 1}});
 }
 
 TEST(FaceSums, EachIsTheHullOfThePairwiseVertexSums) {
@@ -161,7 +160,8 @@ TEST(FaceSums, TheTotalOfFacetsRespectsTheLimitsForEveryThreadCount) {
     (void)detail::face_sums(polygons, tilted_box(), tiny);
     ADD_FAILURE() << "no limit error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.message()).find("would have at least 4 facets each"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.message()).find("would have at least 4 facets each"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -62,8 +62,8 @@ TEST(SolidSum, LShapePlusCubeIsTheLOfSideThreeByHand) {
 
 TEST(SolidSum, LShapePlusFlatBoxAndTallBox) {
   expect_polycube_sum(l_shape(), box_cubes(2, 1, 3), {}, 2);
-  expect_polycube_sum(cubes_where(3, 3, 2, [](int i, int j, int k) { return i + j + k < 3; }), box_cubes(1, 2, 1),
-                      {}, 3);
+  expect_polycube_sum(cubes_where(3, 3, 2, [](int i, int j, int k) { return i + j + k < 3; }),
+                      box_cubes(1, 2, 1), {}, 3);
 }
 
 TEST(SolidSum, FrameKeepsItsHoleWithASmallCubeAndLosesItWithABigOne) {
@@ -79,7 +79,8 @@ TEST(SolidSum, FrameKeepsItsHoleWithASmallCubeAndLosesItWithABigOne) {
 TEST(SolidSum, RotatedCoarseTorusKeepsItsGenus) {
   // A ring 4 x 4 x 2 around a 2 x 2 hole, turned off every axis, plus a
   // turned unit cube: the voxel oracle through the same rotation.
-  const Cubes torus = cubes_where(4, 4, 2, [](int i, int j, int) { return i == 0 || j == 0 || i == 3 || j == 3; });
+  const Cubes torus =
+      cubes_where(4, 4, 2, [](int i, int j, int) { return i == 0 || j == 0 || i == 3 || j == 3; });
   const Mapping turn{rational_rotation(), Vec3{Rational(1, 3), 0, Rational(-2)}};
   const Solid result = minkowski_sum(polycube(torus, turn), polycube(box_cubes(1, 1, 1), turn));
   EXPECT_EQ(result.genus(), 1u);
@@ -134,7 +135,9 @@ TEST(SolidSum, LobesTouchingAtAPointHoldItOncePerLobe) {
   expect_polycube_sum(apart, box_cubes(1, 1, 1), {}, 13);
 }
 
-Solid data_solid(const std::string& name) { return read_solid(std::string(CVMS_TEST_DATA_DIR) + "/solids/" + name); }
+Solid data_solid(const std::string& name) {
+  return read_solid(std::string(CVMS_TEST_DATA_DIR) + "/solids/" + name);
+}
 
 TEST(SolidSum, StarPrismPlusCube) {
   const Solid star = data_solid("star_prism.off");
@@ -148,7 +151,8 @@ TEST(SolidSum, StarPrismPlusCube) {
 
 TEST(SolidSum, OneConvexRoadAndBothDecomposedRoadGiveTheSameSolid) {
   for (const Solid& a : {data_solid("star_prism.off"), polycube(hollow_cube(4)), polycube(frame(4))}) {
-    const Solid b = polycube(box_cubes(1, 2, 1), {Mat3::identity(), Vec3{Rational(1, 2), 0, Rational(-1, 3)}});
+    const Solid b =
+        polycube(box_cubes(1, 2, 1), {Mat3::identity(), Vec3{Rational(1, 2), 0, Rational(-1, 3)}});
     const Solid one_convex = minkowski_sum(a, b);
     const Solid decomposed = union_solid(minkowski_sum_pieces(a, b));
     EXPECT_EQ(vertex_coordinates(one_convex), vertex_coordinates(decomposed));
@@ -253,7 +257,8 @@ TEST(SolidSum, EmptyOperandIsRefused) {
       ADD_FAILURE() << "no error";
     } catch (const Error& e) {
       EXPECT_EQ(e.category(), ErrorCategory::invalid_argument);
-      EXPECT_NE(std::string(e.message()).find(std::string(name) + " is empty"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.message()).find(std::string(name) + " is empty"), std::string::npos)
+          << e.what();
     }
   }
 }

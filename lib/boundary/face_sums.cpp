@@ -34,14 +34,15 @@ constexpr std::uint64_t min_piece_facets = 4;
     std::rethrow_exception(error);
   } catch (const Error& e) {
     if (e.category() == ErrorCategory::cancelled) throw;
-    throw Error(e.category(), "minkowski_sum of solids: face polygon " + std::to_string(k) + " + B: " + e.message());
+    throw Error(e.category(),
+                "minkowski_sum of solids: face polygon " + std::to_string(k) + " + B: " + e.message());
   }
 }
 
 }  // namespace
 
-std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polygons, const ConvexPolyhedron& b,
-                                        const Options& options) {
+std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polygons,
+                                        const ConvexPolyhedron& b, const Options& options) {
   const std::uint64_t budget = facet_budget(options.limits);
   if (polygons.size() > budget / min_piece_facets)
     beyond_budget(std::to_string(polygons.size()) + " face polygons of A summed with B would have at least " +

@@ -27,7 +27,7 @@ namespace cvms::detail {
 /// \pre every polygon is convex with at least 3 corners, not all collinear.
 /// \throw Error(limit) naming the limit; Error(cancelled) if
 ///   options.progress returns false.
-std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polygons, const ConvexPolyhedron& b,
-                                        const Options& options);
+std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polygons,
+                                        const ConvexPolyhedron& b, const Options& options);
 
 }  // namespace cvms::detail

@@ -61,7 +61,8 @@ class PolygonGrower {
         const std::size_t k = cycle.size();
         const std::uint32_t u = cycle[i], v = cycle[(i + 1) % k];
         const auto it = edges_.find(edge_key(v, u));
-        if (it == edges_.end() || used_[it->second] || facets_[it->second] != facet || flat(triangles_[it->second]))
+        if (it == edges_.end() || used_[it->second] || facets_[it->second] != facet ||
+            flat(triangles_[it->second]))
           continue;
         const std::uint32_t w = third_vertex(triangles_[it->second], u, v);
         const std::uint32_t before = cycle[(i + k - 1) % k], after = cycle[(i + 2) % k];

@@ -18,6 +18,8 @@
 // x - b = a + (c - b) (not in A) meets dA at some a' = a + t (c - b),
 // t in [0, 1], and x - a' = (1 - t) c + t b lies in B (convex): x is in
 // dA + B. Both sets lie in A + B, so the union is all of it.
+#include "cvms/solid_sum.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -28,7 +30,6 @@
 #include "boundary_fragments.hpp"
 #include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
-#include "cvms/solid_sum.hpp"
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
 #include "progress_reporter.hpp"
@@ -62,7 +63,8 @@ std::vector<char> inside_translate(const detail::BoundaryFragments& all, const S
   progress.begin("solid sum: fragments", n);
   std::atomic<std::size_t> next{0};
   const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
-  const auto threads = static_cast<unsigned>(std::min<std::size_t>({std::max(1U, options.threads), cores, n / chunk + 1}));
+  const auto threads =
+      static_cast<unsigned>(std::min<std::size_t>({std::max(1U, options.threads), cores, n / chunk + 1}));
   detail::run_on_threads(threads, [&](unsigned) {
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk)) {
       const std::size_t end = std::min(n, begin + chunk);
@@ -104,16 +106,18 @@ Solid sum_with_convex(const Solid& a, const ConvexPolyhedron& b, const Options& 
   const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
   const std::vector<ConvexPolyhedron> pieces = detail::face_sums(polygons, b, options);
   const Vec3 inside_b = interior_point(b);
-  return detail::assemble_boundary(outside(detail::union_boundary_fragments(pieces, options), a, inside_b, options),
-                                   options);
+  return detail::assemble_boundary(
+      outside(detail::union_boundary_fragments(pieces, options), a, inside_b, options), options);
 }
 
 }  // namespace
 
 Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options,
                     const DecompositionOptions& decomposition) {
-  if (a.triangles().empty()) throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: A is empty");
-  if (b.triangles().empty()) throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: B is empty");
+  if (a.triangles().empty())
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: A is empty");
+  if (b.triangles().empty())
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: B is empty");
   if (a.is_convex() && b.is_convex())
     return Solid::from_polyhedron(minkowski_sum(as_polyhedron(a), as_polyhedron(b), options).polyhedron);
   if (b.is_convex()) return sum_with_convex(a, as_polyhedron(b), options);

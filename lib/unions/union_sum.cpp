@@ -36,7 +36,8 @@ std::string pair_name(std::size_t k, std::size_t m) {
 
 [[noreturn]] void beyond_budget(std::uint64_t facets, const std::string& where, const SumLimits& limits) {
   throw Error(ErrorCategory::limit, "minkowski_sum of unions: " + where + " has " + std::to_string(facets) +
-                                        " facets in all, beyond the limit of " + detail::facet_limit_text(limits));
+                                        " facets in all, beyond the limit of " +
+                                        detail::facet_limit_text(limits));
 }
 
 // Refuses before any work a pair count whose pieces alone would pass the
@@ -69,11 +70,11 @@ class PairSums {
 
   // The pieces in pair order, or the first failure in pair order.
   std::vector<ConvexPolyhedron> take() {
-    std::vector<ConvexPolyhedron> pieces = work_.take(
-        [this](std::size_t k, const std::exception_ptr& error) { rethrow_named(error, k); },
-        [this](std::size_t k, std::uint64_t facets) {
-          beyond_budget(facets, "the union up to " + pair_name(k, b_.size()), options_.limits);
-        });
+    std::vector<ConvexPolyhedron> pieces =
+        work_.take([this](std::size_t k, const std::exception_ptr& error) { rethrow_named(error, k); },
+                   [this](std::size_t k, std::uint64_t facets) {
+                     beyond_budget(facets, "the union up to " + pair_name(k, b_.size()), options_.limits);
+                   });
     if (options_.diagnostics != nullptr) *options_.diagnostics = summed_diagnostics();
     return pieces;
   }

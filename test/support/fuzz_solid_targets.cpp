@@ -3,9 +3,9 @@
 // reader, the solid reader and the sum of solids as one solid. Each accepted input is checked against what
 // the library promises, with the test's own exact arithmetic where it can.
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <sstream>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,9 +59,9 @@ void solid_sum_target(std::span<const std::uint8_t> data) {
   // then B's.
   const std::uint8_t mode = data[0];
   const test::Cubes a_cubes = decode_cubes(data, 8, 3, 3, 2);
-  const test::Cubes b_cubes = (mode & 1) != 0 ? decode_cubes(data, 8 + 18, 2, 2, 2)
-                                              : test::box_cubes(1 + ((mode >> 1) & 1), 1 + ((mode >> 2) & 3),
-                                                                1 + ((mode >> 4) & 1));
+  const test::Cubes b_cubes =
+      (mode & 1) != 0 ? decode_cubes(data, 8 + 18, 2, 2, 2)
+                      : test::box_cubes(1 + ((mode >> 1) & 1), 1 + ((mode >> 2) & 3), 1 + ((mode >> 4) & 1));
   const std::optional<Solid> a = polycube_solid(a_cubes), b = polycube_solid(b_cubes);
   if (!a || !b) return;
   Options options;

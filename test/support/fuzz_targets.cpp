@@ -559,9 +559,8 @@ Target target_by_name(const std::string& name) {
 }
 
 std::vector<std::string> target_names() {
-  return {"read_off",  "read_obj",  "read_stl",        "read_ply",   "read_points", "from_soup",
-          "minkowski", "sets",      "read_halfspaces", "halfspaces", "read_pieces", "read_solid",
-          "solid_sum"};
+  return {"read_off", "read_obj",        "read_stl",   "read_ply",    "read_points", "from_soup", "minkowski",
+          "sets",     "read_halfspaces", "halfspaces", "read_pieces", "read_solid",  "solid_sum"};
 }
 
 }  // namespace cvms::fuzz

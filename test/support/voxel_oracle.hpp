@@ -46,7 +46,8 @@ inline Cubes polycube_sum(const Cubes& a, const Cubes& b) {
   Cubes out;
   for (const Cube& p : a)
     for (const Cube& q : b)
-      for (int d = 0; d < 8; ++d) out.insert({p[0] + q[0] + (d & 1), p[1] + q[1] + ((d >> 1) & 1), p[2] + q[2] + (d >> 2)});
+      for (int d = 0; d < 8; ++d)
+        out.insert({p[0] + q[0] + (d & 1), p[1] + q[1] + ((d >> 1) & 1), p[2] + q[2] + (d >> 2)});
   return out;
 }
 
@@ -184,6 +185,8 @@ inline PolygonSoup polycube_soup(const Cubes& cubes) {
 }
 
 /// The grid point g as a point, mapped.
-inline Vec3 mapped_point(const Cube& g, const Mapping& m) { return m(Vec3{Rational(g[0]), Rational(g[1]), Rational(g[2])}); }
+inline Vec3 mapped_point(const Cube& g, const Mapping& m) {
+  return m(Vec3{Rational(g[0]), Rational(g[1]), Rational(g[2])});
+}
 
 }  // namespace cvms::test

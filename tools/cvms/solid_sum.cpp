@@ -31,8 +31,8 @@ const char* road(const Solid& a, const Solid& b) {
 
 std::optional<Solid> read_non_convex_solid(const Error& convex_error, const std::string& path,
                                            const Placement& placement, const std::string& operand) {
-  const bool shape_error =
-      convex_error.category() == ErrorCategory::not_convex || convex_error.category() == ErrorCategory::topology;
+  const bool shape_error = convex_error.category() == ErrorCategory::not_convex ||
+                           convex_error.category() == ErrorCategory::topology;
   if (!shape_error || is_std_stream(path) || !check_mesh_path(path).empty() || is_cdd_points_path(path) ||
       is_pieces_path(path))
     return std::nullopt;
@@ -43,8 +43,9 @@ std::optional<Solid> read_non_convex_solid(const Error& convex_error, const std:
 
 void check_solid_sum(const SolidSum& sum) {
   if (sum.float_output == "outer")
-    throw UsageError("--float outer writes convex sets only: the sum of a solid that is not convex is written "
-                     "exactly or with --float nearest");
+    throw UsageError(
+        "--float outer writes convex sets only: the sum of a solid that is not convex is written "
+        "exactly or with --float nearest");
 }
 
 void run_solid_sum(const Solid& a, const Solid& b, const SolidSum& sum, std::ostream& report) {

@@ -30,9 +30,9 @@ std::optional<Solid> read_non_convex_solid(const Error& convex_error, const std:
 /// What a sum of solids writes, and how.
 struct SolidSum {
   std::string output, format;
-  Options options;  ///< threads, limits, progress of the sum
+  Options options;                     ///< threads, limits, progress of the sum
   DecompositionOptions decomposition;  ///< when both operands need decomposing
-  std::string float_output;  ///< --float: empty or "nearest" ("outer" is refused)
+  std::string float_output;            ///< --float: empty or "nearest" ("outer" is refused)
   bool stats = false;
 };
 

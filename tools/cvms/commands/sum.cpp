@@ -139,11 +139,13 @@ Operands read_operands(const SumArgs& args) {
 // A + B when an operand is a solid that is not convex: the other one, a
 // convex set, must be a polyhedron.
 void sum_solids(Operands operands, const SumArgs& args, std::ostream& report) {
-  SolidSum sum{args.output, args.format, args.options(), args.pieces.decomposition, args.float_output, args.stats};
+  SolidSum sum{args.output,       args.format, args.options(), args.pieces.decomposition,
+               args.float_output, args.stats};
   check_solid_sum(sum);
   for (std::size_t i = 0; i < 2; ++i) {
     if (operands.solids[i]) continue;
-    const ConvexSet set = placed(std::move(operands.sets[i]), i == 0 ? args.place_a : args.place_b, i == 0 ? "a" : "b");
+    const ConvexSet set =
+        placed(std::move(operands.sets[i]), i == 0 ? args.place_a : args.place_b, i == 0 ? "a" : "b");
     if (set.dimension() != 3)
       throw Error(ErrorCategory::invalid_argument,
                   input_name(i == 0 ? args.a : args.b) + ": a " + kind(set) +
@@ -183,14 +185,16 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 void register_sum(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<SumArgs>();
   args->limits = sum_limits_for_memory(usable_memory_bytes());
-  CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension, or A + B of solids");
+  CLI::App* command = app.add_subcommand(
+      "sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension, or A + B of solids");
   add_operands(*command, args->a, args->b);
   command->add_option("C", args->more, "further operands")->check(set_path());
   add_output_options(*command, args->output, args->format, args->float_output);
   add_algorithm_option(*command, args->algorithm);
   command
       ->add_option("--threads", args->threads,
-                   "threads for each sum of two polyhedra by cvms and for sums of solids, used where they pay (the output is identical)")
+                   "threads for each sum of two polyhedra by cvms and for sums of solids, used where they "
+                   "pay (the output is identical)")
       ->check(CLI::Range(1u, 1024u))
       ->default_val(1u);
   command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");
