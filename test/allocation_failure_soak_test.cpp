@@ -20,6 +20,14 @@
 namespace cvms::test {
 namespace {
 
+// Each test ends with a leak check (a no-op without AddressSanitizer).
+class AllocationFailureSoak : public ::testing::Test {
+ protected:
+  void TearDown() override {
+    EXPECT_FALSE(unreachable_blocks()) << "LeakSanitizer found blocks left behind (above)";
+  }
+};
+
 // Both modes of failure, one sweep each.
 template <class Run>
 void expect_sweeps(const std::string& name, Run run, const std::function<std::string()>& operands) {
@@ -31,7 +39,7 @@ void expect_sweeps(const std::string& name, Run run, const std::function<std::st
   }
 }
 
-TEST(AllocationFailureSoak, SumsWithEveryAlgorithmOnOneAndTwoThreads) {
+TEST_F(AllocationFailureSoak, SumsWithEveryAlgorithmOnOneAndTwoThreads) {
   const ConvexPolyhedron a = shapes::random_hull(7, 24, 50);
   const ConvexPolyhedron b = shapes::truncated_cube();
   const auto operands = [&] { return fingerprint(a) + fingerprint(b); };
@@ -45,7 +53,7 @@ TEST(AllocationFailureSoak, SumsWithEveryAlgorithmOnOneAndTwoThreads) {
     }
 }
 
-TEST(AllocationFailureSoak, SumOfManyAndOfUnions) {
+TEST_F(AllocationFailureSoak, SumOfManyAndOfUnions) {
   const std::vector<ConvexSet> operands{ConvexSet(shapes::random_hull(3, 12, 20)),
                                         ConvexSet::segment(Vec3{0, 0, 0}, Vec3{1, 2, 3}),
                                         ConvexSet(shapes::octahedron()), ConvexSet(shapes::prism(5, Rational(2)))};
@@ -66,7 +74,7 @@ TEST(AllocationFailureSoak, SumOfManyAndOfUnions) {
   }
 }
 
-TEST(AllocationFailureSoak, HullHalfspacesDifferenceProximity) {
+TEST_F(AllocationFailureSoak, HullHalfspacesDifferenceProximity) {
   const std::vector<Vec3> points = shapes::random_points(11, 60, 100);
   expect_sweeps("convex_hull", [&] { return convex_hull(points); }, [&] { return fingerprint(points); });
   const ConvexSet sphere = shapes::geodesic_sphere(1);
@@ -83,7 +91,7 @@ TEST(AllocationFailureSoak, HullHalfspacesDifferenceProximity) {
   expect_sweeps("penetration", [&] { return penetration(a, c); }, [&] { return fingerprint(a) + fingerprint(c); });
 }
 
-TEST(AllocationFailureSoak, SolidsReadAndWrite) {
+TEST_F(AllocationFailureSoak, SolidsReadAndWrite) {
   const Solid spot = read_solid(std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids/star_prism.off");
   expect_sweeps("convex_decomposition", [&] { return convex_decomposition(spot); },
                 [&] { return fingerprint(spot); });

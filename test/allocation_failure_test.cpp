@@ -37,6 +37,14 @@
 namespace cvms::test {
 namespace {
 
+// Each test ends with a leak check (a no-op without AddressSanitizer).
+class AllocationFailure : public ::testing::Test {
+ protected:
+  void TearDown() override {
+    EXPECT_FALSE(unreachable_blocks()) << "LeakSanitizer found blocks left behind (above)";
+  }
+};
+
 ConvexPolyhedron polyhedron_of(const PolygonSoup& soup) { return ConvexPolyhedron::from_soup(soup); }
 
 Vec3 q3(long x, long y, long z, long d) {
@@ -86,7 +94,7 @@ struct alignas(64) CacheLine {
 
 // The replaced operator new fails in each of its forms, and only the
 // armed k-th call (or every call from the k-th on, persistent).
-TEST(AllocationFailure, EveryFormOfOperatorNewFails) {
+TEST_F(AllocationFailure, EveryFormOfOperatorNewFails) {
   const auto fails = [](auto allocate) {
     const FailingAllocations failing(1);
     try {
@@ -133,7 +141,7 @@ TEST(AllocationFailure, EveryFormOfOperatorNewFails) {
 
 // --- read --------------------------------------------------------------------
 
-TEST(AllocationFailure, ReadEachFormatFromMemory) {
+TEST_F(AllocationFailure, ReadEachFormatFromMemory) {
   const PolygonSoup cube = box().to_soup();
   for (const FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::ply, FileFormat::stl}) {
     std::ostringstream out;
@@ -150,7 +158,7 @@ TEST(AllocationFailure, ReadEachFormatFromMemory) {
   }
 }
 
-TEST(AllocationFailure, ReadFiles) {
+TEST_F(AllocationFailure, ReadFiles) {
   expect_sweep("read_file off", [] { return read_file(data_path("cube.off")); }, no_operands);
   expect_sweep("read_file obj", [] { return read_file(data_path("cube.obj")); }, no_operands);
   expect_sweep("read_file stl", [] { return read_file(data_path("tetra_ascii.stl")); }, no_operands);
@@ -159,7 +167,7 @@ TEST(AllocationFailure, ReadFiles) {
   expect_sweep("read_solid", [] { return read_solid(data_path("solids/l_block.off")); }, no_operands);
 }
 
-TEST(AllocationFailure, ReadPointsAndRows) {
+TEST_F(AllocationFailure, ReadPointsAndRows) {
   const ConvexSet set = tetra();
   std::ostringstream cdd_rows, plain_rows, cdd_points, plain_points;
   write_halfspaces(cdd_rows, to_halfspaces(set), HalfspaceFormat::cdd);
@@ -186,7 +194,7 @@ TEST(AllocationFailure, ReadPointsAndRows) {
   sweep_text("read_points", xyz, [](std::istream& in) { return read_points(in, "points.xyz"); });
 }
 
-TEST(AllocationFailure, ReadPieces) {
+TEST_F(AllocationFailure, ReadPieces) {
   const ConvexUnion pieces(std::vector<ConvexPolyhedron>{box(), tetra().translated(v3(3, 0, 0))});
   std::ostringstream out;
   write_pieces(out, pieces);
@@ -203,7 +211,7 @@ TEST(AllocationFailure, ReadPieces) {
 
 // --- validate ----------------------------------------------------------------
 
-TEST(AllocationFailure, Validate) {
+TEST_F(AllocationFailure, Validate) {
   const PolygonSoup cube = cube_triangles();
   const PolygonSoup l_block = l_block_soup();
   const PolygonSoup square = make_soup({v3(0, 0, 0), v3(1, 0, 0), v3(1, 1, 0), v3(0, 1, 0)}, {{0, 1, 2, 3}});
@@ -216,7 +224,7 @@ TEST(AllocationFailure, Validate) {
 
 // --- sums --------------------------------------------------------------------
 
-TEST(AllocationFailure, SumOfTwoWithEachAlgorithm) {
+TEST_F(AllocationFailure, SumOfTwoWithEachAlgorithm) {
   const ConvexPolyhedron a = tetra();
   const ConvexPolyhedron b = box();
   const auto operands = [&] { return fingerprint(a) + fingerprint(b); };
@@ -231,7 +239,7 @@ TEST(AllocationFailure, SumOfTwoWithEachAlgorithm) {
   expect_sweep("chms", [&] { return chms(a, b); }, operands);
 }
 
-TEST(AllocationFailure, SumOfTwoSetsOfLowerDimension) {
+TEST_F(AllocationFailure, SumOfTwoSetsOfLowerDimension) {
   const ConvexSet segment = ConvexSet::segment(v3(0, 0, 0), v3(1, 2, 3));
   const std::array<Vec3, 3> triangle{v3(0, 0, 0), v3(2, 0, 0), v3(0, 2, 0)};
   const ConvexSet polygon = ConvexSet::polygon(triangle);
@@ -239,7 +247,7 @@ TEST(AllocationFailure, SumOfTwoSetsOfLowerDimension) {
                [&] { return fingerprint(segment) + fingerprint(polygon); });
 }
 
-TEST(AllocationFailure, SumOfMany) {
+TEST_F(AllocationFailure, SumOfMany) {
   const std::array<Vec3, 3> triangle{v3(0, 0, 0), v3(2, 0, 0), v3(0, 2, 1)};
   const std::vector<ConvexSet> operands{ConvexSet::segment(v3(0, 0, 0), v3(1, 2, 3)), ConvexSet::polygon(triangle),
                                         ConvexSet(tetra()), ConvexSet::point(v3(5, 5, 5))};
@@ -259,7 +267,7 @@ ConvexUnion two_pieces(const Vec3& offset) {
   return ConvexUnion(std::vector<ConvexPolyhedron>{box().translated(offset), tetra().translated(offset + v3(2, 0, 0))});
 }
 
-TEST(AllocationFailure, SumOfUnions) {
+TEST_F(AllocationFailure, SumOfUnions) {
   const ConvexUnion a = two_pieces(v3(0, 0, 0));
   const ConvexUnion b(std::vector<ConvexPolyhedron>{octa(), tetra().translated(v3(0, 0, 4))});
   Options options;
@@ -268,7 +276,7 @@ TEST(AllocationFailure, SumOfUnions) {
                [&] { return fingerprint(a) + fingerprint(b); });
 }
 
-TEST(AllocationFailure, ThreadedUnionSum) {
+TEST_F(AllocationFailure, ThreadedUnionSum) {
   // Two threads: which call is the k-th differs between runs, so the sweep
   // ends near (not at) the number of calls of a whole run; each run must
   // still end in a typed error, or the reference result, with no leak.
@@ -280,11 +288,15 @@ TEST(AllocationFailure, ThreadedUnionSum) {
                [&] { return fingerprint(a) + fingerprint(b); });
 }
 
-TEST(AllocationFailure, ConvexDecompositionAndSumOfPieces) {
+TEST_F(AllocationFailure, ConvexDecomposition) {
   const Solid l_block = Solid::from_soup(l_block_soup());
-  const Solid small = Solid::from_polyhedron(tetra());
   expect_sweep("convex_decomposition", [&] { return convex_decomposition(l_block); },
                [&] { return fingerprint(l_block); });
+}
+
+TEST_F(AllocationFailure, SumOfPieces) {
+  const Solid l_block = Solid::from_soup(l_block_soup());
+  const Solid small = Solid::from_polyhedron(tetra());
   Options options;
   options.threads = 1;
   expect_sweep("minkowski_sum_pieces", [&] { return minkowski_sum_pieces(l_block, small, options); },
@@ -293,7 +305,7 @@ TEST(AllocationFailure, ConvexDecompositionAndSumOfPieces) {
 
 // --- hull and half-spaces -----------------------------------------------------
 
-TEST(AllocationFailure, Hull) {
+TEST_F(AllocationFailure, Hull) {
   std::vector<Vec3> points;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -320,7 +332,7 @@ std::vector<HalfspaceRow> box_rows() {
   return rows;
 }
 
-TEST(AllocationFailure, FromHalfspaces) {
+TEST_F(AllocationFailure, FromHalfspaces) {
   const std::vector<HalfspaceRow> rows = box_rows();
   const std::vector<HalfspaceRow> unbounded(rows.begin(), rows.begin() + 5);
   HalfspaceSystem with_equality;
@@ -335,7 +347,7 @@ TEST(AllocationFailure, FromHalfspaces) {
   expect_sweep("to_halfspaces", [&] { return to_halfspaces(set); }, [&] { return fingerprint(set); });
 }
 
-TEST(AllocationFailure, Difference) {
+TEST_F(AllocationFailure, Difference) {
   const ConvexSet big = ConvexSet(polyhedron_of(cube_quads(4)));
   const ConvexSet b = tetra();
   const auto operands = [&] { return fingerprint(big) + fingerprint(b); };
@@ -347,7 +359,7 @@ TEST(AllocationFailure, Difference) {
 
 // --- proximity ------------------------------------------------------------------
 
-TEST(AllocationFailure, Distance) {
+TEST_F(AllocationFailure, Distance) {
   const ConvexPolyhedron a = box();
   const ConvexPolyhedron b = tetra().translated(v3(3, 1, 0));
   const auto operands = [&] { return fingerprint(a) + fingerprint(b); };
@@ -363,7 +375,7 @@ TEST(AllocationFailure, Distance) {
   expect_sweep("intersects", [&] { return intersects(a, b); }, operands);
 }
 
-TEST(AllocationFailure, Penetration) {
+TEST_F(AllocationFailure, Penetration) {
   const ConvexPolyhedron a = box();
   const ConvexPolyhedron b = tetra().translated(q3(-1, -1, -1, 4));
   expect_sweep("penetration", [&] { return penetration(a, b); }, [&] { return fingerprint(a) + fingerprint(b); });
@@ -374,7 +386,7 @@ TEST(AllocationFailure, Penetration) {
 
 // --- write -------------------------------------------------------------------------
 
-TEST(AllocationFailure, WriteEachFormatToMemory) {
+TEST_F(AllocationFailure, WriteEachFormatToMemory) {
   const ConvexPolyhedron p = tetra();
   const auto operands = [&] { return fingerprint(p); };
   for (const FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::ply, FileFormat::stl})
@@ -392,7 +404,7 @@ TEST(AllocationFailure, WriteEachFormatToMemory) {
     }
 }
 
-TEST(AllocationFailure, WriteSetsRowsAndPieces) {
+TEST_F(AllocationFailure, WriteSetsRowsAndPieces) {
   const ConvexSet set = ConvexSet::polygon(std::array<Vec3, 3>{v3(0, 0, 0), v3(2, 0, 0), v3(0, 2, 1)});
   const ConvexSet solid = box();
   const ConvexUnion pieces = two_pieces(v3(1, 1, 1));
@@ -438,7 +450,7 @@ TEST(AllocationFailure, WriteSetsRowsAndPieces) {
       [&] { return fingerprint(pieces); });
 }
 
-TEST(AllocationFailure, WriteFileKeepsTheExistingFile) {
+TEST_F(AllocationFailure, WriteFileKeepsTheExistingFile) {
   // A failed write leaves the file that was there, or the whole new one,
   // and no other file.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cvms_allocation_failure_write";
@@ -470,7 +482,7 @@ TEST(AllocationFailure, WriteFileKeepsTheExistingFile) {
 
 // --- queries that build a cache on first use -----------------------------------------
 
-TEST(AllocationFailure, FirstQueriesBuildTheirCacheOnce) {
+TEST_F(AllocationFailure, FirstQueriesBuildTheirCacheOnce) {
   // Solid::locate and ConvexUnion::contains build a hierarchy of boxes on
   // their first call: a call that fails while building it must leave an
   // object whose next call builds it again and answers right.

@@ -6,6 +6,17 @@
 
 #include "cvms/rational.hpp"
 
+#if defined(__SANITIZE_ADDRESS__)
+#define CVMS_SWEEP_LEAK_CHECK 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CVMS_SWEEP_LEAK_CHECK 1
+#endif
+#endif
+#ifdef CVMS_SWEEP_LEAK_CHECK
+#include <sanitizer/lsan_interface.h>
+#endif
+
 namespace cvms::test {
 namespace {
 
@@ -133,6 +144,14 @@ std::string fingerprint(const std::vector<Vec3>& points) {
     out << '\n';
   }
   return out.str();
+}
+
+bool unreachable_blocks() {
+#ifdef CVMS_SWEEP_LEAK_CHECK
+  return __lsan_do_recoverable_leak_check() != 0;
+#else
+  return false;
+#endif
 }
 
 std::string summary(std::string_view name, const SweepReport& report) {

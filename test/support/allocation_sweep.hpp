@@ -62,6 +62,13 @@ class TextBuffer : public std::streambuf {
   }
 };
 
+/// Under AddressSanitizer: runs LeakSanitizer's check now, which prints any
+/// block that nothing reaches, and says whether there was one, so that a
+/// leak is charged to the test that made it rather than found at the exit
+/// of a process that ran many. Elsewhere: false. A check scans the whole
+/// heap (a fraction of a second under ASan): once per test, not per sweep.
+bool unreachable_blocks();
+
 /// How a sweep fails its allocations.
 struct SweepOptions {
   bool persistent = false;  ///< every call after the k-th fails too
