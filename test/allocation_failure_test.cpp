@@ -192,6 +192,14 @@ TEST_F(AllocationFailure, ReadPointsAndRows) {
   sweep_text("read_cdd_points", cdd_points.str(), [](std::istream& in) { return read_cdd_points(in); });
   sweep_text("read_plain_points", plain_points.str(), [](std::istream& in) { return read_plain_points(in); });
   sweep_text("read_points", xyz, [](std::istream& in) { return read_points(in, "points.xyz"); });
+
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cvms_allocation_failure_read";
+  std::filesystem::create_directories(dir);
+  write_halfspace_file(dir / "rows.ine", to_halfspaces(set));
+  write_pieces(dir / "two.pieces", ConvexUnion(std::vector<ConvexPolyhedron>{box(), tetra().translated(v3(3, 0, 0))}));
+  expect_sweep("read_halfspace_file", [&] { return read_halfspace_file(dir / "rows.ine"); }, no_operands);
+  expect_sweep("read_pieces of a file", [&] { return read_pieces(dir / "two.pieces"); }, no_operands);
+  std::filesystem::remove_all(dir);
 }
 
 TEST_F(AllocationFailure, ReadPieces) {
@@ -404,6 +412,20 @@ TEST_F(AllocationFailure, WriteEachFormatToMemory) {
     }
 }
 
+TEST_F(AllocationFailure, WriteSoupsInEachFormat) {
+  // A soup need not be convex: the L-shaped block, written as it is.
+  const PolygonSoup l_block = l_block_soup();
+  for (const FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::ply, FileFormat::stl})
+    expect_sweep(
+        "write soup " + std::to_string(static_cast<int>(format)),
+        [&] {
+          std::ostringstream out;
+          write(out, l_block, format, format == FileFormat::stl ? Coordinates::double_ : Coordinates::exact);
+          return out.str();
+        },
+        [&] { return fingerprint(l_block); });
+}
+
 TEST_F(AllocationFailure, WriteSetsRowsAndPieces) {
   const ConvexSet set = ConvexSet::polygon(std::array<Vec3, 3>{v3(0, 0, 0), v3(2, 0, 0), v3(0, 2, 1)});
   const ConvexSet solid = box();
@@ -477,6 +499,53 @@ TEST_F(AllocationFailure, WriteFileKeepsTheExistingFile) {
         return file_bytes(path);
       },
       operands);
+  std::filesystem::remove_all(dir);
+}
+
+// --- memory that stays exhausted -------------------------------------------------
+
+TEST_F(AllocationFailure, PersistentFailureOnTheLongerPaths) {
+  // Every call from the k-th on fails, so that the code that unwinds (error
+  // messages, the union's worker collecting a pair's exception, the writer
+  // removing its temporary file) meets failures too.
+  SweepOptions persistent;
+  persistent.persistent = true;
+  const ConvexPolyhedron a = tetra();
+  const ConvexPolyhedron b = box();
+  const auto operands = [&] { return fingerprint(a) + fingerprint(b); };
+  expect_sweep("minkowski_sum, persistent", [&] { return minkowski_sum(a, b).polyhedron; }, operands, persistent);
+  const ConvexUnion u = two_pieces(v3(0, 0, 0));
+  Options two_threads;
+  two_threads.threads = 2;
+  expect_sweep("minkowski_sum of unions, 2 threads, persistent", [&] { return minkowski_sum(u, u, two_threads); },
+               [&] { return fingerprint(u); }, persistent);
+  const std::vector<HalfspaceRow> rows = box_rows();
+  expect_sweep("from_halfspaces, persistent", [&] { return from_halfspaces(rows); },
+               [&] { return fingerprint(rows); }, persistent);
+  expect_sweep("read_solid, persistent", [] { return read_solid(data_path("solids/l_block.off")); }, no_operands,
+               persistent);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cvms_allocation_failure_persistent";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path path = dir / "out.obj";
+  write_file(path, a);
+  const std::string whole = file_bytes(path);
+  std::filesystem::remove(path);
+  // Called after every run: no file but the whole one, which it removes.
+  const auto left_behind = [&] {
+    std::string text;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path() != path || file_bytes(path) != whole) text += entry.path().filename().string() + '\n';
+    std::filesystem::remove(path);
+    return text;
+  };
+  expect_sweep(
+      "write_file, persistent",
+      [&] {
+        write_file(path, a);
+        return file_bytes(path);
+      },
+      left_behind, persistent);
   std::filesystem::remove_all(dir);
 }
 
