@@ -48,53 +48,61 @@ TEST_F(AllocationFailureSoak, SumsWithEveryAlgorithmOnOneAndTwoThreads) {
       Options options;
       options.algorithm = algorithm;
       options.threads = threads;
-      expect_sweeps(std::string("minkowski_sum ") + to_string(algorithm) + " threads " + std::to_string(threads),
-                    [&] { return minkowski_sum(a, b, options).polyhedron; }, operands);
+      expect_sweeps(
+          std::string("minkowski_sum ") + to_string(algorithm) + " threads " + std::to_string(threads),
+          [&] { return minkowski_sum(a, b, options).polyhedron; }, operands);
     }
 }
 
 TEST_F(AllocationFailureSoak, SumOfManyAndOfUnions) {
-  const std::vector<ConvexSet> operands{ConvexSet(shapes::random_hull(3, 12, 20)),
-                                        ConvexSet::segment(Vec3{0, 0, 0}, Vec3{1, 2, 3}),
-                                        ConvexSet(shapes::octahedron()), ConvexSet(shapes::prism(5, Rational(2)))};
+  const std::vector<ConvexSet> operands{
+      ConvexSet(shapes::random_hull(3, 12, 20)), ConvexSet::segment(Vec3{0, 0, 0}, Vec3{1, 2, 3}),
+      ConvexSet(shapes::octahedron()), ConvexSet(shapes::prism(5, Rational(2)))};
   const auto fingerprints = [&] {
     std::string text;
     for (const ConvexSet& s : operands) text += fingerprint(s);
     return text;
   };
-  expect_sweeps("n-ary minkowski_sum", [&] { return minkowski_sum(std::span<const ConvexSet>(operands)); },
-                fingerprints);
+  expect_sweeps(
+      "n-ary minkowski_sum", [&] { return minkowski_sum(std::span<const ConvexSet>(operands)); },
+      fingerprints);
   const ConvexUnion u(std::vector<ConvexPolyhedron>{shapes::cube(), shapes::random_hull(5, 10, 20),
                                                     shapes::octahedron().translated(Vec3{4, 0, 0})});
   for (const unsigned threads : {1u, 2u}) {
     Options options;
     options.threads = threads;
-    expect_sweeps("minkowski_sum of unions, threads " + std::to_string(threads),
-                  [&] { return minkowski_sum(u, u, options); }, [&] { return fingerprint(u); });
+    expect_sweeps(
+        "minkowski_sum of unions, threads " + std::to_string(threads),
+        [&] { return minkowski_sum(u, u, options); }, [&] { return fingerprint(u); });
   }
 }
 
 TEST_F(AllocationFailureSoak, HullHalfspacesDifferenceProximity) {
   const std::vector<Vec3> points = shapes::random_points(11, 60, 100);
-  expect_sweeps("convex_hull", [&] { return convex_hull(points); }, [&] { return fingerprint(points); });
+  expect_sweeps(
+      "convex_hull", [&] { return convex_hull(points); }, [&] { return fingerprint(points); });
   const ConvexSet sphere = shapes::geodesic_sphere(1);
   const HalfspaceSystem rows = to_halfspaces(sphere);
-  expect_sweeps("from_halfspaces", [&] { return from_halfspaces(rows); }, [&] { return fingerprint(rows); });
+  expect_sweeps(
+      "from_halfspaces", [&] { return from_halfspaces(rows); }, [&] { return fingerprint(rows); });
   const ConvexSet small = shapes::tetrahedron();
-  expect_sweeps("pontryagin_difference", [&] { return pontryagin_difference(sphere, small); },
-                [&] { return fingerprint(sphere) + fingerprint(small); });
+  expect_sweeps(
+      "pontryagin_difference", [&] { return pontryagin_difference(sphere, small); },
+      [&] { return fingerprint(sphere) + fingerprint(small); });
   const ConvexPolyhedron a = shapes::random_hull(13, 30, 40);
   const ConvexPolyhedron b = shapes::random_hull(17, 30, 40).translated(Vec3{30, 10, 0});
-  expect_sweeps("squared_distance", [&] { return squared_distance(a, b); },
-                [&] { return fingerprint(a) + fingerprint(b); });
+  expect_sweeps(
+      "squared_distance", [&] { return squared_distance(a, b); },
+      [&] { return fingerprint(a) + fingerprint(b); });
   const ConvexPolyhedron c = shapes::random_hull(19, 30, 40);
-  expect_sweeps("penetration", [&] { return penetration(a, c); }, [&] { return fingerprint(a) + fingerprint(c); });
+  expect_sweeps(
+      "penetration", [&] { return penetration(a, c); }, [&] { return fingerprint(a) + fingerprint(c); });
 }
 
 TEST_F(AllocationFailureSoak, SolidsReadAndWrite) {
   const Solid spot = read_solid(std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids/star_prism.off");
-  expect_sweeps("convex_decomposition", [&] { return convex_decomposition(spot); },
-                [&] { return fingerprint(spot); });
+  expect_sweeps(
+      "convex_decomposition", [&] { return convex_decomposition(spot); }, [&] { return fingerprint(spot); });
   const ConvexPolyhedron p = shapes::geodesic_sphere(2);
   std::ostringstream text;
   write(text, p, FileFormat::off);

@@ -76,8 +76,8 @@ std::string fingerprint(const ConvexUnion& u) {
 
 std::string fingerprint(const Solid& s) {
   std::ostringstream out;
-  out << "volume " << to_string(s.volume()) << ", shells " << s.num_shells() << ", cavities " << s.num_cavities()
-      << ", genus " << s.genus() << ", reflex edges " << s.num_reflex_edges() << '\n';
+  out << "volume " << to_string(s.volume()) << ", shells " << s.num_shells() << ", cavities "
+      << s.num_cavities() << ", genus " << s.genus() << ", reflex edges " << s.num_reflex_edges() << '\n';
   out << fingerprint(s.to_soup());
   for (const auto& t : s.triangles()) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
   return out.str();

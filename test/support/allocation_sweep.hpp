@@ -80,11 +80,11 @@ struct SweepOptions {
 
 /// What a sweep saw.
 struct SweepReport {
-  std::uint64_t allocations = 0;       ///< calls of operator new in a complete run
-  std::uint64_t failing_runs = 0;      ///< runs that reached the failure
-  std::uint64_t bad_allocs = 0;        ///< runs that ended in std::bad_alloc
-  std::uint64_t errors = 0;            ///< runs that ended in cvms::Error
-  std::uint64_t completed = 0;         ///< runs that completed despite a failure (result checked)
+  std::uint64_t allocations = 0;   ///< calls of operator new in a complete run
+  std::uint64_t failing_runs = 0;  ///< runs that reached the failure
+  std::uint64_t bad_allocs = 0;    ///< runs that ended in std::bad_alloc
+  std::uint64_t errors = 0;        ///< runs that ended in cvms::Error
+  std::uint64_t completed = 0;     ///< runs that completed despite a failure (result checked)
   std::map<std::string, std::uint64_t> error_categories;  ///< cvms::Error runs by category
 };
 
@@ -94,7 +94,8 @@ struct SweepReport {
 /// finding through gtest, with the k of the failing call, and stops at the
 /// first. `name` labels the messages.
 template <class Run>
-SweepReport sweep_allocation_failures(std::string_view name, Run run, const std::function<std::string()>& operands,
+SweepReport sweep_allocation_failures(std::string_view name, Run run,
+                                      const std::function<std::string()>& operands,
                                       SweepOptions options = {}) {
   using Result = std::decay_t<decltype(run())>;
   SweepReport report;
