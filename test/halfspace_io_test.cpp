@@ -5,7 +5,10 @@
 // naming the line; a lying header count allocates nothing).
 #include <gtest/gtest.h>
 
+#include <array>
+#include <ostream>
 #include <sstream>
+#include <streambuf>
 #include <string>
 
 #include "cvms/error.hpp"
@@ -200,6 +203,39 @@ TEST(PlainFormat, RowsAreAxPlusByPlusCzAtMostD) {
                                   HalfspaceFormat::plain);
   EXPECT_EQ(s.inequalities.size(), 6u);
   EXPECT_EQ(describe_set(from_halfspaces(s)), describe_set(ConvexSet(shapes::box(v3(-1, -1, -1), v3(1, 1, 1)))));
+}
+
+// A stream buffer that takes no byte, as a full disk or a string that
+// cannot grow: the stream swallows the failure into its badbit.
+class RefusingBuffer : public std::streambuf {
+ protected:
+  int_type overflow(int_type /*c*/) override { return traits_type::eof(); }
+};
+
+// Regression: the row and point writers returned normally on a stream that
+// had failed, so that lost output (a buffer that could not grow in memory)
+// looked written.
+TEST(Writers, LostOutputIsAnIoError) {
+  const ConvexSet cube = shapes::box(v3(-1, -1, -1), v3(1, 1, 1));
+  const HalfspaceSystem rows = to_halfspaces(cube);
+  const auto expect_io_error = [](const auto& write) {
+    RefusingBuffer refusing;
+    std::ostream out(&refusing);
+    try {
+      write(out);
+      ADD_FAILURE() << "no error for lost output";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::io) << e.what();
+      EXPECT_NE(std::string(e.what()).find("writing the output failed"), std::string::npos) << e.what();
+    }
+  };
+  expect_io_error([&](std::ostream& out) { write_halfspaces(out, rows, HalfspaceFormat::cdd); });
+  expect_io_error([&](std::ostream& out) { write_halfspaces(out, rows, HalfspaceFormat::plain); });
+  const std::array<Vec3, 3> triangle{v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0)};
+  const HalfspaceSystem plane_rows = to_halfspaces(ConvexSet::polygon(triangle));
+  expect_io_error([&](std::ostream& out) { write_halfspaces(out, plane_rows, HalfspaceFormat::cdd, 2); });
+  expect_io_error([&](std::ostream& out) { write_cdd_points(out, cube); });
+  expect_io_error([&](std::ostream& out) { write_plain_points(out, cube); });
 }
 
 }  // namespace

@@ -96,7 +96,8 @@ HalfspaceSystem read_halfspace_file(const std::filesystem::path& path, const Rea
 /// written restricted to that plane (its z coefficient dropped, made
 /// primitive), and rows that hold on the whole plane (the plane's own
 /// equality) are left out.
-/// \throw Error(invalid_argument) for a dimension other than 2 or 3.
+/// \throw Error(invalid_argument) for a dimension other than 2 or 3;
+///   Error(io) if the stream fails.
 void write_halfspaces(std::ostream& out, const HalfspaceSystem& system, HalfspaceFormat format, int dimension = 3);
 
 /// Writes a file of half-spaces, its format by extension, atomically (see
@@ -121,7 +122,8 @@ std::vector<Vec3> read_cdd_points(std::istream& in, std::string_view source = "<
 /// `integer` or `rational`); the empty set gives `0 4` rows (`0 3` in the
 /// plane). With dimension 2, as a file of the plane.
 /// \throw Error(invalid_argument) for a dimension other than 2 or 3, or
-///   with dimension 2 for a vertex off the plane z = 0.
+///   with dimension 2 for a vertex off the plane z = 0; Error(io) if the
+///   stream fails.
 void write_cdd_points(std::ostream& out, const ConvexSet& set, int dimension = 3);
 
 /// write_cdd_points to a file, atomically (see write_file in cvms/io.hpp);
@@ -139,7 +141,7 @@ PointFile read_plain_points(std::istream& in, std::string_view source = "<stream
 
 /// Writes the vertices of the set, one line each (in the plane: `x y`).
 /// \throw Error(invalid_argument) for the empty set (a point list cannot
-///   hold it), and as write_cdd_points.
+///   hold it), and as write_cdd_points (Error(io) if the stream fails).
 void write_plain_points(std::ostream& out, const ConvexSet& set, int dimension = 3);
 
 /// write_plain_points to a file, atomically; the set is checked before the

@@ -283,6 +283,19 @@ bool all_integers(const HalfspaceSystem& system) {
          std::all_of(system.inequalities.begin(), system.inequalities.end(), integer);
 }
 
+// Ends a writer: the flushed stream's state. A stream that failed on the
+// way (a full disk, a buffer that could not grow) sets its badbit and
+// swallows the cause, so that a writer that does not look would report
+// lost output as written.
+void finish_output(std::ostream& out) {
+  try {
+    out.flush();
+  } catch (const std::ios_base::failure&) {
+    throw Error(ErrorCategory::io, "writing the output failed");
+  }
+  if (!out) throw Error(ErrorCategory::io, "writing the output failed");
+}
+
 void write_plain_row(std::ostream& out, const Vec3& a, const Rational& b, int dimension) {
   out << to_string(a.x) << ' ' << to_string(a.y) << ' ';
   if (dimension == 3) out << to_string(a.z) << ' ';
@@ -391,8 +404,11 @@ HalfspaceSystem read_halfspace_file(const std::filesystem::path& path, const Rea
 
 void write_halfspaces(std::ostream& out, const HalfspaceSystem& system, HalfspaceFormat format, int dimension) {
   check_dimension(dimension);
-  if (dimension == 3) return write_system(out, system, format, 3);
-  write_system(out, in_plane(system), format, 2);
+  if (dimension == 3)
+    write_system(out, system, format, 3);
+  else
+    write_system(out, in_plane(system), format, 2);
+  finish_output(out);
 }
 
 void write_halfspace_file(const std::filesystem::path& path, const HalfspaceSystem& system, int dimension) {
@@ -434,6 +450,7 @@ void write_cdd_points(std::ostream& out, const ConvexSet& set, int dimension) {
     out << '\n';
   }
   out << "end\n";
+  finish_output(out);
 }
 
 void write_cdd_points_file(const std::filesystem::path& path, const ConvexSet& set, int dimension) {
@@ -465,6 +482,7 @@ void write_plain_points(std::ostream& out, const ConvexSet& set, int dimension) 
     if (dimension == 3) out << ' ' << to_string(p.z);
     out << '\n';
   }
+  finish_output(out);
 }
 
 void write_plain_points_file(const std::filesystem::path& path, const ConvexSet& set, int dimension) {
