@@ -108,6 +108,7 @@ build/release/bench/cvms_halfspace_bench --benchmark_min_time=0.2 \
 build/release/bench/cvms_halfspace_bench --benchmark_min_time=0.2 \
     --benchmark_out=docs/bench/halfspace_cgal.json --benchmark_out_format=json
 build/release/bench/cvms_decimal_sum_bench --benchmark_min_time=1 --benchmark_repetitions=3 \
+    --benchmark_enable_random_interleaving=true \
     --benchmark_out=docs/bench/decimal_sum.json --benchmark_out_format=json
 build/release/bench/cvms_load_bench --benchmark_min_time=0.3 --benchmark_repetitions=3 \
     --benchmark_out=docs/bench/load.json --benchmark_out_format=json
@@ -413,6 +414,138 @@ def decimal_section(page, path):
               "its parallel facet pairs scale both polygons to 64-bit integers over the common denominator "
               "of their coordinates (it divides 10^6 here) and merge them in 64/128-bit arithmetic, with no "
               "filter, no GMP and no gcd (`lib/planar/small_points.cpp`).")
+    written_section(page, path)
+
+
+WRITTEN_FAMILIES = (("SphereRot", "Sphere6 + rotated Sphere6"), ("CubeSphere", "Cube + Sphere6"))
+WRITTEN_FORMS = ("exact dyadic expansions", "shortest round-trip decimals", "6-digit decimals")
+
+
+def written_section(page, path):
+    """The scaling families at k = 6 with both operands written three ways (BM_Written_*/6/<form>)."""
+    rows = bench_json.rows(path, "cpu_time", "min")
+    table = {}
+    for key, label in WRITTEN_FAMILIES:
+        forms = [rows.get(f"BM_Written_{key}/6/{form}") for form in range(3)]
+        if all(forms):
+            table[label] = forms
+    if not table:
+        return
+    page.add("### The same sums, operands written three ways", "")
+    page.para("The scaling families at k = 6 (every coordinate a double), both operands written as text three "
+              "ways and read back exactly (`read_off` from a string stream, then `from_soup`, with their facet "
+              "planes, outside the timing): the exact binary expansions of the doubles (dyadic rationals); the "
+              "shortest decimals that read back to the same doubles (`std::to_chars`, as Python, numpy and "
+              "most exporters write them; read exactly, `0.1` is 1/10, so these are other numbers than the "
+              "doubles, with denominators up to about 10^17); 6 decimals (denominators 10^6). Same run as the "
+              "table above; the cube's coordinates are integers in every form.")
+    lines = ["| sum | operands written as | output facets | time (ms) | µs per output facet | / dyadic |",
+             "|---|---|---:|---:|---:|---:|"]
+    for label, forms in table.items():
+        dyadic = forms[0][0]
+        for form, (ms, b) in zip(WRITTEN_FORMS, forms):
+            lines.append(f"| {label} | {form} | {int(b['out_facets']):,} | {fmt_ms(ms)} "
+                         f"| {1e3 * ms / b['out_facets']:.2f} | {ratio(ms, dyadic, 2)} |")
+    page.block(lines)
+    profile_section(page, os.path.join(os.path.dirname(path), "decimal_profile.json"), table)
+
+
+PROFILE_FORMS = (("dyadic", 0), ("shortest", 1), ("six_digits", 2))
+
+
+def profile_section(page, path, table):
+    """Where Sphere6 + rotated Sphere6's time goes in each written form: the phase shares of
+    docs/bench/decimal_profile.json (bench/perf_phases.py) times the row's time in the table above."""
+    forms = table.get("Sphere6 + rotated Sphere6")
+    if not forms or not os.path.exists(path):
+        return
+    with open(path) as f:
+        rows = json.load(f)["rows"]
+    if not all(name in rows for name, _ in PROFILE_FORMS):
+        return
+    page.para("Where the time of Sphere6 + rotated Sphere6 goes (`docs/bench/decimal_profile.json`: "
+              "`perf record --call-graph dwarf` of each row, the samples inside `minkowski_sum` split by the "
+              "functions on their stack by `bench/perf_phases.py`, whose header gives the commands; the "
+              "shares times each row's time above, in ms; phases nest, so indented rows are parts of the row "
+              "above them):")
+    names = list(rows["dyadic"]["phases"])
+    lines = ["| phase | " + " | ".join(f"{label} (ms)" for label in WRITTEN_FORMS) + " |",
+             "|---|" + "---:|" * len(WRITTEN_FORMS)]
+    ms = {}
+    for name in names:
+        cells = []
+        for form, i in PROFILE_FORMS:
+            ms[(name, form)] = rows[form]["phases"][name] * forms[i][0]
+            cells.append(fmt_ms(ms[(name, form)]))
+        label = name.replace("output build: ", "&nbsp;&nbsp;") if name.startswith("output build: ") else name
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    for group in rows["dyadic"]["innermost"]:
+        cells = [fmt_ms(rows[form]["innermost"][group] * forms[i][0]) for form, i in PROFILE_FORMS]
+        lines.append(f"| innermost frame in {group} | " + " | ".join(cells) + " |")
+    page.block(lines)
+    search = "search: contributing vertices and edge-facet trace"
+    normals, general = "output build: facet normals", "output build: edge directions as rationals"
+    vertices, sums = "output build: vertices and mesh", "output build: vertex sums as rationals"
+    extra = forms[1][0] - forms[0][0]
+    page.para(
+        f"With shortest decimals the sum takes {fmt_ms(extra)} ms more than with the dyadic operands. The "
+        f"output build takes {fmt_ms(ms[('output build', 'shortest')] - ms[('output build', 'dyadic')])} ms "
+        f"of it: the facet normals {fmt_ms(ms[(normals, 'shortest')] - ms[(normals, 'dyadic')])} ms more, "
+        f"{fmt_ms(ms[(general, 'shortest')])} ms of which is making the operands' edge directions as "
+        "rationals (`EdgeDirections::general` in `lib/minkowski/stitch.cpp`: an exact difference of two "
+        "vertices with its gcds, then `primitive_direction`), because the machine-integer edge directions "
+        "(`small_integer_direction`) take only endpoints that are doubles; then every edge-facet normal is "
+        "a GMP cross product and gcd. The vertices and the mesh take "
+        f"{fmt_ms(ms[(vertices, 'shortest')] - ms[(vertices, 'dyadic')])} ms more: each output vertex is a sum "
+        "of two rationals with a gcd per coordinate, kept as a `Vec3` in a hash map "
+        f"(`SumFacetBuilder::soup`, {fmt_ms(ms[(sums, 'shortest')])} ms), where dyadic vertices are packed "
+        "16-byte values built from machine words. The search differs by "
+        f"{fmt_ms(ms[(search, 'shortest')] - ms[(search, 'dyadic')])} ms: its predicates stay on the "
+        "floating-point filters in every form (the approximations of decimals carry an error bound, "
+        "rarely enough to need exact arithmetic). GMP's own code is "
+        f"{100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's samples and "
+        f"malloc/free {100 * rows['shortest']['innermost']['malloc/free']:.0f} %, against "
+        f"{100 * rows['dyadic']['innermost']['GMP']:.0f} % and "
+        f"{100 * rows['dyadic']['innermost']['malloc/free']:.0f} % with dyadic operands. 6-digit decimals "
+        "take the same general paths: their denominators are small, but the edge directions and vertex "
+        "sums test for doubles, not for a small common denominator.")
+
+
+def load_forms_section(page, path):
+    """Sphere6 loaded in each written form (BM_load/BM_parse/... of inputs 0, 4, 5) against parsing its numbers."""
+    rows = bench_json.rows(path, "cpu_time", "min")
+    inputs = (("exact dyadic expansions", 0), ("shortest round-trip decimals", 4), ("6-digit decimals", 5))
+    steps = (("load: parse + validate", "BM_load"), ("load, then the facet planes", None),
+             ("parse alone (`read_off`)", "BM_parse"), ("validate alone (`from_soup`)", "BM_validate"),
+             ("validate and make the facet planes", "BM_validate_and_planes"),
+             ("its coordinates parsed exactly (`try_parse_rational`)", "BM_parse_numbers"),
+             ("its coordinates parsed to doubles (`std::from_chars`)", "BM_parse_numbers_double"))
+    if not all(rows.get(f"BM_parse_numbers/{i}") for _, i in inputs):
+        return
+    page.para("Sphere6 (20,480 facets, 30,726 coordinates, all doubles) written three ways, as in the sums "
+              "above. \"Load, then the facet planes\" is the load plus the planes' share of validating with "
+              "planes (`validate and make the facet planes` − `validate alone`): a loaded polyhedron makes its "
+              "planes on first use, and the first sum with it pays for them.")
+    lines = ["| step | " + " | ".join(f"{label} (ms)" for label, _ in inputs) + " |",
+             "|---|" + "---:|" * len(inputs)]
+    value = {}
+    for label, name in steps:
+        cells = []
+        for _, i in inputs:
+            if name is None:
+                ms = rows[f"BM_load/{i}"][0] + rows[f"BM_validate_and_planes/{i}"][0] - rows[f"BM_validate/{i}"][0]
+            else:
+                ms = rows[f"{name}/{i}"][0]
+            value[(label, i)] = ms
+            cells.append(fmt_ms(ms))
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    page.block(lines)
+    load, numbers = "load: parse + validate", "its coordinates parsed exactly (`try_parse_rational`)"
+    planes = "load, then the facet planes"
+    page.para("Load over the exact parse of the numbers alone: " +
+              ", ".join(f"{label} {value[(load, i)] / value[(numbers, i)]:.1f}× "
+                        f"({value[(planes, i)] / value[(numbers, i)]:.1f}× with the planes)"
+                        for label, i in inputs) + ".")
 
 
 def load_section(page, load_path, timings_path):
@@ -433,11 +566,12 @@ def load_section(page, load_path, timings_path):
             a, b = loads.get(name + "/0"), loads.get(name + "/1")
             lines.append(f"| {label} | {fmt_ms(a) if a else '—'} | {fmt_ms(b) if b else '—'} |")
         page.block(lines)
+    page.para(run_line(load_path, "cpu_time", "min"))
+    load_forms_section(page, load_path)
     rows = bench_json.rows(load_path, "cpu_time", "min")
     write = rows.get("BM_write/1")
     total = rows.get("BM_sum")
     if write and total:
-        page.para(run_line(load_path, "cpu_time", "min"))
         w, b = write
         w0 = rows.get("BM_write/0")
         text = (f"Writing the exact OFF of Sphere6 + rotated Sphere6 ({int(b['facets']):,} facets, "
