@@ -112,6 +112,9 @@ build/release/bench/cvms_decimal_sum_bench --benchmark_min_time=1 --benchmark_re
     --benchmark_out=docs/bench/decimal_sum.json --benchmark_out_format=json
 build/release/bench/cvms_load_bench --benchmark_min_time=0.3 --benchmark_repetitions=3 \
     --benchmark_out=docs/bench/load.json --benchmark_out_format=json
+# where a decimal sum's time goes (commands in bench/perf_phases.py), and two trees alternately
+bench/decimal_before_after.py --before /tmp/main/build/release --after build/release \
+    --rounds 3 --json docs/bench/decimal_before_after.json
 
 # whole `cvms` runs from file to file (minimum of 5 rounds)
 bench/end_to_end.py --cvms build/release/tools/cvms --json docs/bench/end_to_end.json
@@ -448,6 +451,34 @@ def written_section(page, path):
                          f"| {1e3 * ms / b['out_facets']:.2f} | {ratio(ms, dyadic, 2)} |")
     page.block(lines)
     profile_section(page, os.path.join(os.path.dirname(path), "decimal_profile.json"), table)
+    before_after_section(page, os.path.join(os.path.dirname(path), "decimal_before_after.json"))
+
+
+def before_after_section(page, path):
+    """The rows of bench/decimal_before_after.py: two release trees run alternately."""
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        data = json.load(f)
+    before, after = data["cpu_ms_min"]["before"], data["cpu_ms_min"]["after"]
+    page.para(f"*`docs/bench/{os.path.basename(path)}` (`bench/decimal_before_after.py`): two release trees "
+              f"run alternately, {data['rounds']} rounds; CPU time, the minimum over all repetitions of all "
+              "rounds. `--before` makes the edge directions and facet planes of points that are not doubles "
+              "as rationals (or in machine words when their common denominator is below 2^40); `--after`, "
+              "the code on this page, in machine integers whenever the points' common denominator is below "
+              "2^63 and the scaled coordinates below 2^61.*")
+    forms = dict(zip(("0", "4", "5"), WRITTEN_FORMS))
+    labels = {f"BM_Written_{key}/6/{i}": f"{label}, {WRITTEN_FORMS[i]}" for key, label in WRITTEN_FAMILIES
+              for i in range(3)}
+    for step, name in (("load", "BM_load"), ("validate with the facet planes", "BM_validate_and_planes"),
+                       ("coordinates parsed exactly", "BM_parse_numbers")):
+        labels.update({f"{name}/{i}": f"Sphere6 {step}, {form}" for i, form in forms.items()})
+    lines = ["| row | `--before` (ms) | `--after` (ms) | after / before |", "|---|---:|---:|---:|"]
+    for name, label in labels.items():
+        if name in before and name in after:
+            lines.append(f"| {label} | {fmt_ms(before[name])} | {fmt_ms(after[name])} "
+                         f"| {after[name] / before[name]:.2f} |")
+    page.block(lines)
 
 
 PROFILE_FORMS = (("dyadic", 0), ("shortest", 1), ("six_digits", 2))
@@ -484,31 +515,27 @@ def profile_section(page, path, table):
         lines.append(f"| innermost frame in {group} | " + " | ".join(cells) + " |")
     page.block(lines)
     search = "search: contributing vertices and edge-facet trace"
-    normals, general = "output build: facet normals", "output build: edge directions as rationals"
+    build, normals = "output build", "output build: facet normals"
     vertices, sums = "output build: vertices and mesh", "output build: vertex sums as rationals"
-    extra = forms[1][0] - forms[0][0]
+
+    def more(phase):
+        return fmt_ms(ms[(phase, "shortest")] - ms[(phase, "dyadic")])
+
     page.para(
-        f"With shortest decimals the sum takes {fmt_ms(extra)} ms more than with the dyadic operands. The "
-        f"output build takes {fmt_ms(ms[('output build', 'shortest')] - ms[('output build', 'dyadic')])} ms "
-        f"of it: the facet normals {fmt_ms(ms[(normals, 'shortest')] - ms[(normals, 'dyadic')])} ms more, "
-        f"{fmt_ms(ms[(general, 'shortest')])} ms of which is making the operands' edge directions as "
-        "rationals (`EdgeDirections::general` in `lib/minkowski/stitch.cpp`: an exact difference of two "
-        "vertices with its gcds, then `primitive_direction`), because the machine-integer edge directions "
-        "(`small_integer_direction`) take only endpoints that are doubles; then every edge-facet normal is "
-        "a GMP cross product and gcd. The vertices and the mesh take "
-        f"{fmt_ms(ms[(vertices, 'shortest')] - ms[(vertices, 'dyadic')])} ms more: each output vertex is a sum "
-        "of two rationals with a gcd per coordinate, kept as a `Vec3` in a hash map "
-        f"(`SumFacetBuilder::soup`, {fmt_ms(ms[(sums, 'shortest')])} ms), where dyadic vertices are packed "
-        "16-byte values built from machine words. The search differs by "
-        f"{fmt_ms(ms[(search, 'shortest')] - ms[(search, 'dyadic')])} ms: its predicates stay on the "
-        "floating-point filters in every form (the approximations of decimals carry an error bound, "
-        "rarely enough to need exact arithmetic). GMP's own code is "
-        f"{100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's samples and "
-        f"malloc/free {100 * rows['shortest']['innermost']['malloc/free']:.0f} %, against "
-        f"{100 * rows['dyadic']['innermost']['GMP']:.0f} % and "
-        f"{100 * rows['dyadic']['innermost']['malloc/free']:.0f} % with dyadic operands. 6-digit decimals "
-        "take the same general paths: their denominators are small, but the edge directions and vertex "
-        "sums test for doubles, not for a small common denominator.")
+        f"With shortest decimals the sum takes {fmt_ms(forms[1][0] - forms[0][0])} ms more than with the "
+        f"dyadic operands. The output build takes {more(build)} ms of it. The vertices and the mesh, "
+        f"{more(vertices)} ms more: each output vertex is a sum of two rationals with a gcd per "
+        f"coordinate, kept as a `Vec3` in a hash map (`SumFacetBuilder::soup`, "
+        f"{fmt_ms(ms[(sums, 'shortest')])} ms), where dyadic vertices are packed 16-byte values built from "
+        f"machine words; this is the largest part. The facet normals, {more(normals)} ms more: the edge "
+        "directions of ends that are not doubles are machine integers over the ends' common denominator "
+        "(`small_fraction_direction` in `lib/numeric/small_direction.cpp`, when that denominator is below "
+        "2^63 and the scaled coordinates below 2^61; the general rational path beyond), read from the "
+        "twelve GMP integers of the ends' coordinates, where a double's direction is a few shifts of its "
+        f"bits. The search, {more(search)} ms more, decides its predicates on the floating-point filters "
+        "in every form (the rows' `exact_share` counter is the same for the three forms). GMP's "
+        f"own code is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's "
+        f"samples, against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
 
 
 def load_forms_section(page, path):
@@ -522,8 +549,9 @@ def load_forms_section(page, path):
              ("its coordinates parsed to doubles (`std::from_chars`)", "BM_parse_numbers_double"))
     if not all(rows.get(f"BM_parse_numbers/{i}") for _, i in inputs):
         return
-    page.para("Sphere6 (20,480 facets, 30,726 coordinates, all doubles) written three ways, as in the sums "
-              "above. \"Load, then the facet planes\" is the load plus the planes' share of validating with "
+    numbers = int(rows["BM_parse_numbers/0"][1]["numbers"])
+    page.para(f"Sphere6 (20,480 facets, {numbers:,} coordinates, all doubles) written three ways, as in the "
+              "sums above. \"Load, then the facet planes\" is the load plus the planes' share of validating with "
               "planes (`validate and make the facet planes` − `validate alone`): a loaded polyhedron makes its "
               "planes on first use, and the first sum with it pays for them.")
     lines = ["| step | " + " | ".join(f"{label} (ms)" for label, _ in inputs) + " |",
