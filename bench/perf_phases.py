@@ -33,7 +33,7 @@ PHASES = (
     ("output build: facet normals", ("cvms::detail::SumFacetBuilder::write_normals",)),
     ("output build: edge directions as rationals", ("EdgeDirections::general",)),
     ("output build: vertices and mesh", ("cvms::detail::SumFacetBuilder::mesh_with_points",)),
-    ("output build: vertex sums as rationals", ("cvms::detail::SumFacetBuilder::soup",)),
+    ("output build: vertices as rationals", ("cvms::detail::SumFacetBuilder::soup",)),
 )
 GROUPS = (("GMP", re.compile(r"libgmp")), ("malloc/free", re.compile(r"libc[.-]")),
           ("kernel", re.compile(r"kernel")))

@@ -464,9 +464,10 @@ def before_after_section(page, path):
     page.para(f"*`docs/bench/{os.path.basename(path)}` (`bench/decimal_before_after.py`): two release trees "
               f"run alternately, {data['rounds']} rounds; CPU time, the minimum over all repetitions of all "
               "rounds. `--before` makes the edge directions and facet planes of points that are not doubles "
-              "as rationals (or in machine words when their common denominator is below 2^40); `--after`, "
-              "the code on this page, in machine integers whenever the points' common denominator is below "
-              "2^63 and the scaled coordinates below 2^61.*")
+              "as rationals (or in machine words when their common denominator is below 2^40) and sums "
+              "non-dyadic vertex coordinates in GMP; `--after`, the code on this page, makes those "
+              "directions in machine integers whenever the points' common denominator is below 2^63 and "
+              "the scaled coordinates below 2^61, and sums one-word fractions in 128-bit words.*")
     forms = dict(zip(("0", "4", "5"), WRITTEN_FORMS))
     labels = {f"BM_Written_{key}/6/{i}": f"{label}, {WRITTEN_FORMS[i]}" for key, label in WRITTEN_FAMILIES
               for i in range(3)}
@@ -516,7 +517,7 @@ def profile_section(page, path, table):
     page.block(lines)
     search = "search: contributing vertices and edge-facet trace"
     build, normals = "output build", "output build: facet normals"
-    vertices, sums = "output build: vertices and mesh", "output build: vertex sums as rationals"
+    vertices, sums = "output build: vertices and mesh", "output build: vertices as rationals"
 
     def more(phase):
         return fmt_ms(ms[(phase, "shortest")] - ms[(phase, "dyadic")])
@@ -524,18 +525,20 @@ def profile_section(page, path, table):
     page.para(
         f"With shortest decimals the sum takes {fmt_ms(forms[1][0] - forms[0][0])} ms more than with the "
         f"dyadic operands. The output build takes {more(build)} ms of it. The vertices and the mesh, "
-        f"{more(vertices)} ms more: each output vertex is a sum of two rationals with a gcd per "
-        f"coordinate, kept as a `Vec3` in a hash map (`SumFacetBuilder::soup`, "
-        f"{fmt_ms(ms[(sums, 'shortest')])} ms), where dyadic vertices are packed 16-byte values built from "
-        f"machine words; this is the largest part. The facet normals, {more(normals)} ms more: the edge "
-        "directions of ends that are not doubles are machine integers over the ends' common denominator "
+        f"{more(vertices)} ms more, the largest part: each output vertex is made as three GMP rationals "
+        f"(`SumFacetBuilder::soup`, {fmt_ms(ms[(sums, 'shortest')])} ms), their sums in 128-bit words "
+        "when numerators and denominators fit one word each (`word_fraction.hpp`, with GMP's one-limb "
+        "gcd), stored in the result's arena, and their double approximations divided out of the "
+        "rationals (`Approx::of`), where a dyadic vertex is a packed 16-byte value made from machine "
+        f"words with its approximation. The facet normals, {more(normals)} ms more: the edge directions "
+        "of ends that are not doubles are machine integers over the ends' common denominator "
         "(`small_fraction_direction` in `lib/numeric/small_direction.cpp`, when that denominator is below "
         "2^63 and the scaled coordinates below 2^61; the general rational path beyond), read from the "
         "twelve GMP integers of the ends' coordinates, where a double's direction is a few shifts of its "
         f"bits. The search, {more(search)} ms more, decides its predicates on the floating-point filters "
-        "in every form (the rows' `exact_share` counter is the same for the three forms). GMP's "
-        f"own code is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's "
-        f"samples, against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
+        "in every form (the rows' `exact_share` counter is the same for the three forms). GMP's own code "
+        f"is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's samples, "
+        f"against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
 
 
 def load_forms_section(page, path):
