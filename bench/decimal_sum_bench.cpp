@@ -17,13 +17,28 @@
 // are hull vertices (n = 20,000 gives a hull of about 4,500 vertices).
 // Built once, outside the timing; counters give the
 // output facets and the time per output facet.
+//
+// And the scaling families of cvms_minkowski_bench at k = 6 (Sphere6 +
+// rotated Sphere6, Cube + Sphere6: every coordinate a double) with both
+// operands written as text in three forms (decimal_point.hpp): the exact
+// binary expansions of the doubles, the shortest round-trip decimals of the
+// same doubles, and 6 decimals. Rows <Family>/<k>/<form> (form 0 dyadic,
+// 1 shortest, 2 six digits): the same sum side by side, each operand read
+// from its text (read_off from a string stream, then from_soup) outside the
+// timing with their facet planes, so that only the representation of the
+// numbers differs.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <map>
+#include <sstream>
+#include <tuple>
 #include <random>
 #include <vector>
 
+#include "bench_operands.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/io.hpp"
 #include "cvms/minkowski.hpp"
 #include "decimal_point.hpp"
 
@@ -78,6 +93,59 @@ void BM_DecimalSum_self(benchmark::State& state) {
 }
 BENCHMARK(BM_DecimalSum_general)->Arg(20000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DecimalSum_self)->Arg(20000)->Unit(benchmark::kMillisecond);
+
+using cvms_bench::Family;
+using cvms_bench::TextForm;
+
+// p written in `form` and read back, its facet planes made (a loaded
+// polyhedron makes them on first use, which the first sum would pay inside
+// the timing: the load rows of cvms_load_bench time that).
+ConvexPolyhedron read_back(const ConvexPolyhedron& p, TextForm form) {
+  std::istringstream in(cvms_bench::off_text(p.to_soup(), form));
+  ConvexPolyhedron q = cvms::to_polyhedron(cvms::read_off(in, "operand"), "operand");
+  benchmark::DoNotOptimize(&q.normal(cvms::FaceId(0)));
+  return q;
+}
+
+// The family member's operands, written in `form` and read back (once per process).
+const cvms_bench::Pair& written_pair(Family family, int k, TextForm form) {
+  static std::map<std::tuple<Family, int, TextForm>, cvms_bench::Pair> cache;
+  const auto key = std::make_tuple(family, k, form);
+  auto it = cache.find(key);
+  if (it != cache.end()) return it->second;
+  const cvms_bench::Pair& exact = cvms_bench::family_pair(family, k);
+  cvms_bench::Pair p{read_back(exact.a, form), read_back(exact.b, form)};
+  return cache.emplace(key, std::move(p)).first->second;
+}
+
+// The share of predicate calls that exact arithmetic decided, from one sum
+// outside the timing (diagnostics cost a little inside it).
+double exact_share(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  cvms::SumDiagnostics diagnostics;
+  cvms::Options options;
+  options.diagnostics = &diagnostics;
+  (void)cvms::minkowski_sum(a, b, options);
+  const double total = static_cast<double>(diagnostics.predicate_filtered + diagnostics.predicate_exact);
+  return total > 0 ? static_cast<double>(diagnostics.predicate_exact) / total : 0.0;
+}
+
+void run_written(benchmark::State& state, Family family) {
+  const int k = static_cast<int>(state.range(0));
+  const auto form = static_cast<TextForm>(state.range(1));
+  const cvms_bench::Pair& p = written_pair(family, k, form);
+  run(state, p.a, p.b);
+  state.counters["exact_share"] = exact_share(p.a, p.b);
+  state.SetLabel(cvms_bench::family_label(family, k) + " " + cvms_bench::text_form_name(form));
+}
+
+void BM_Written_SphereRot(benchmark::State& state) { run_written(state, Family::sphere_rotated); }
+void BM_Written_CubeSphere(benchmark::State& state) { run_written(state, Family::cube_sphere); }
+
+void written_args(benchmark::internal::Benchmark* b) {
+  b->ArgsProduct({{6}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+}
+BENCHMARK(BM_Written_SphereRot)->Apply(written_args);
+BENCHMARK(BM_Written_CubeSphere)->Apply(written_args);
 
 }  // namespace
 

@@ -5,14 +5,18 @@ sum alone inside the same run (`cvms sum --stats` prints it), so that the
 ratio end-to-end / in-process comes from one process and one machine state.
 
 Rows: `cvms sum cube.off sphere6.off -o out.off`, `cvms sum sphere6.off
-sphere6_rotated.off -o out.off` and `cvms check sphere6.off`. Inputs are made
-by `cvms gen` in a scratch directory first. Each row is run --rounds times;
+sphere6_rotated.off -o out.off` and `cvms check sphere6.off`, each again
+with the spheres' doubles written as their shortest round-trip decimals
+(`*_shortest.off`, as Python, numpy and most exporters write them; read
+exactly, those are other numbers than the doubles). Inputs are made by
+`cvms gen` in a scratch directory first. Each row is run --rounds times;
 the minimum wall time is reported (the machine is shared), with the peak
 resident memory of that process (from wait4, per child).
 
 usage: bench/end_to_end.py [--cvms build/release/tools/cvms] [--rounds 5] [--json out.json]
 """
 import argparse
+from fractions import Fraction
 import json
 import os
 import re
@@ -34,6 +38,19 @@ def run_measured(argv):
     if child.returncode != 0:
         raise SystemExit(f"{' '.join(argv)} failed: {err.strip()}")
     return wall, usage.ru_maxrss * 1024, out
+
+
+def write_shortest(exact_path, out_path):
+    """The OFF file exact_path (header, counts, one "x y z" line per point,
+    then faces), its coordinates, all doubles, written as their shortest
+    round-trip decimals (Python's repr of a float)."""
+    with open(exact_path) as f:
+        lines = f.read().split("\n")
+    points = int(lines[1].split()[0])
+    for i in range(2, 2 + points):
+        lines[i] = " ".join(repr(float(Fraction(token))) for token in lines[i].split())
+    with open(out_path, "w") as f:
+        f.write("\n".join(lines))
 
 
 def in_process_ms(stats):
@@ -64,14 +81,15 @@ def main():
         run_measured([cvms, "gen", "cube", "-o", path("cube.off")])
         run_measured([cvms, "gen", "sphere", "--subdivisions", "6", "-o", path("sphere6.off")])
         run_measured([cvms, "gen", "rotated-sphere", "--subdivisions", "6", "-o", path("sphere6_rotated.off")])
-        rows = {
-            "sum cube.off sphere6.off -o out.off": [cvms, "sum", path("cube.off"), path("sphere6.off"), "-o",
-                                                    path("out.off"), "--stats"],
-            "sum sphere6.off sphere6_rotated.off -o out.off": [cvms, "sum", path("sphere6.off"),
-                                                               path("sphere6_rotated.off"), "-o", path("out.off"),
-                                                               "--stats"],
-            "check sphere6.off": [cvms, "check", path("sphere6.off")],
-        }
+        for name in ("sphere6", "sphere6_rotated"):
+            write_shortest(path(name + ".off"), path(name + "_shortest.off"))
+        rows = {}
+        for form in ("", "_shortest"):
+            a, b = f"sphere6{form}.off", f"sphere6_rotated{form}.off"
+            rows[f"sum cube.off {a} -o out.off"] = [cvms, "sum", path("cube.off"), path(a), "-o", path("out.off"),
+                                                    "--stats"]
+            rows[f"sum {a} {b} -o out.off"] = [cvms, "sum", path(a), path(b), "-o", path("out.off"), "--stats"]
+            rows[f"check {a}"] = [cvms, "check", path(a)]
         results = {name: measure(argv, args.rounds) for name, argv in rows.items()}
     print("| command | wall (ms) | sum in process (ms) | wall / sum | peak RSS (MiB) |")
     print("|---|---:|---:|---:|---:|")

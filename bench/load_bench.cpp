@@ -10,6 +10,13 @@
 // Two more inputs where faces are coplanar in large groups: the surface of a
 // box cut into 19,200 triangles or 9,600 quads (6 facets).
 //
+// And Sphere6 again, its doubles written as an exporter writes them
+// (decimal_point.hpp): their shortest round-trip decimals, and 6 decimals.
+// parse_numbers/<input> reads the coordinates of a Sphere6 text alone,
+// each token exactly (try_parse_rational, as the readers do), and
+// parse_numbers_double/<input> each to a double (std::from_chars): the
+// floor a load is measured against.
+//
 // Rows: load/<input> (parse + validate, what read_polyhedron does),
 // parse/<input> (read_off alone), validate/<input> (from_soup of the
 // parsed soup, copied before each run outside the timing) and
@@ -21,10 +28,13 @@
 // the output of (writing should cost a small fraction of computing).
 #include <benchmark/benchmark.h>
 
+#include <charconv>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cvms/convex_hull.hpp"
@@ -97,19 +107,49 @@ std::string tessellated_box_text(int n, bool triangles) {
   return out.str();
 }
 
-constexpr int num_inputs = 4;
+std::string sphere6_text(cvms_bench::TextForm form) {
+  return cvms_bench::off_text(cvms::shapes::geodesic_sphere(6).to_soup(), form);
+}
+
+constexpr int num_inputs = 6;
 
 const std::string& input(int which) {
   static const std::string texts[num_inputs] = {off_text(cvms::shapes::geodesic_sphere(6)),
-                                                decimal_hull_text(35000), tessellated_box_text(40, true),
-                                                tessellated_box_text(40, false)};
+                                                decimal_hull_text(35000),
+                                                tessellated_box_text(40, true),
+                                                tessellated_box_text(40, false),
+                                                sphere6_text(cvms_bench::TextForm::shortest),
+                                                sphere6_text(cvms_bench::TextForm::six_digits)};
   return texts[which];
 }
 
 const char* name(int which) {
-  static const char* const names[num_inputs] = {"Sphere6", "decimal_hull_35000", "box_19200_triangles",
-                                                "box_9600_quads"};
+  static const char* const names[num_inputs] = {"Sphere6",        "decimal_hull_35000",        "box_19200_triangles",
+                                                "box_9600_quads", "Sphere6_shortest_decimals", "Sphere6_6_digits"};
   return names[which];
+}
+
+// The inputs that are Sphere6, in each of its written forms.
+void sphere6_inputs(benchmark::internal::Benchmark* b) {
+  b->Arg(0)->Arg(4)->Arg(5)->Unit(benchmark::kMillisecond);
+}
+
+// The coordinate tokens of an OFF text as write_off and off_text write it
+// (a header line, a counts line, then one "x y z" line per point).
+std::vector<std::string_view> coordinate_tokens(const std::string& text) {
+  std::istringstream in(text);
+  std::string header;
+  std::size_t points = 0;
+  in >> header >> points;
+  std::vector<std::string_view> tokens;
+  std::size_t at = text.find('\n', text.find('\n') + 1) + 1;
+  while (tokens.size() < 3 * points) {
+    while (text[at] == ' ' || text[at] == '\n') ++at;
+    const std::size_t end = text.find_first_of(" \n", at);
+    tokens.emplace_back(text.data() + at, end - at);
+    at = end;
+  }
+  return tokens;
 }
 
 PolygonSoup parse(int which) {
@@ -139,6 +179,33 @@ void BM_parse(benchmark::State& state) {
   state.SetLabel(name(which));
 }
 BENCHMARK(BM_parse)->DenseRange(0, num_inputs - 1)->Unit(benchmark::kMillisecond);
+
+void BM_parse_numbers(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  const std::vector<std::string_view> tokens = coordinate_tokens(input(which));
+  for (auto _ : state)
+    for (std::string_view token : tokens) {
+      std::optional<cvms::Rational> value = cvms::try_parse_rational(token);
+      benchmark::DoNotOptimize(value);
+    }
+  state.counters["numbers"] = static_cast<double>(tokens.size());
+  state.SetLabel(name(which));
+}
+BENCHMARK(BM_parse_numbers)->Apply(sphere6_inputs);
+
+void BM_parse_numbers_double(benchmark::State& state) {
+  const int which = static_cast<int>(state.range(0));
+  const std::vector<std::string_view> tokens = coordinate_tokens(input(which));
+  for (auto _ : state)
+    for (std::string_view token : tokens) {
+      double value = 0;
+      std::from_chars(token.data(), token.data() + token.size(), value);
+      benchmark::DoNotOptimize(value);
+    }
+  state.counters["numbers"] = static_cast<double>(tokens.size());
+  state.SetLabel(name(which));
+}
+BENCHMARK(BM_parse_numbers_double)->Apply(sphere6_inputs);
 
 // from_soup of the parsed input (copied outside the timing), then, with
 // read_planes, one facet plane read: a loaded polyhedron makes its planes

@@ -108,9 +108,13 @@ build/release/bench/cvms_halfspace_bench --benchmark_min_time=0.2 \
 build/release/bench/cvms_halfspace_bench --benchmark_min_time=0.2 \
     --benchmark_out=docs/bench/halfspace_cgal.json --benchmark_out_format=json
 build/release/bench/cvms_decimal_sum_bench --benchmark_min_time=1 --benchmark_repetitions=3 \
+    --benchmark_enable_random_interleaving=true \
     --benchmark_out=docs/bench/decimal_sum.json --benchmark_out_format=json
 build/release/bench/cvms_load_bench --benchmark_min_time=0.3 --benchmark_repetitions=3 \
     --benchmark_out=docs/bench/load.json --benchmark_out_format=json
+# where a decimal sum's time goes (commands in bench/perf_phases.py), and two trees alternately
+bench/decimal_before_after.py --before /tmp/main/build/release --after build/release \
+    --rounds 3 --json docs/bench/decimal_before_after.json
 
 # whole `cvms` runs from file to file (minimum of 5 rounds)
 bench/end_to_end.py --cvms build/release/tools/cvms --json docs/bench/end_to_end.json
@@ -413,6 +417,166 @@ def decimal_section(page, path):
               "its parallel facet pairs scale both polygons to 64-bit integers over the common denominator "
               "of their coordinates (it divides 10^6 here) and merge them in 64/128-bit arithmetic, with no "
               "filter, no GMP and no gcd (`lib/planar/small_points.cpp`).")
+    written_section(page, path)
+
+
+WRITTEN_FAMILIES = (("SphereRot", "Sphere6 + rotated Sphere6"), ("CubeSphere", "Cube + Sphere6"))
+WRITTEN_FORMS = ("exact dyadic expansions", "shortest round-trip decimals", "6-digit decimals")
+
+
+def written_section(page, path):
+    """The scaling families at k = 6 with both operands written three ways (BM_Written_*/6/<form>)."""
+    rows = bench_json.rows(path, "cpu_time", "min")
+    table = {}
+    for key, label in WRITTEN_FAMILIES:
+        forms = [rows.get(f"BM_Written_{key}/6/{form}") for form in range(3)]
+        if all(forms):
+            table[label] = forms
+    if not table:
+        return
+    page.add("### The same sums, operands written three ways", "")
+    page.para("The scaling families at k = 6 (every coordinate a double), both operands written as text three "
+              "ways and read back exactly (`read_off` from a string stream, then `from_soup`, with their facet "
+              "planes, outside the timing): the exact binary expansions of the doubles (dyadic rationals); the "
+              "shortest decimals that read back to the same doubles (`std::to_chars`, as Python, numpy and "
+              "most exporters write them; read exactly, `0.1` is 1/10, so these are other numbers than the "
+              "doubles, with denominators up to about 10^17); 6 decimals (denominators 10^6). Same run as the "
+              "table above; the cube's coordinates are integers in every form.")
+    lines = ["| sum | operands written as | output facets | time (ms) | µs per output facet | / dyadic |",
+             "|---|---|---:|---:|---:|---:|"]
+    for label, forms in table.items():
+        dyadic = forms[0][0]
+        for form, (ms, b) in zip(WRITTEN_FORMS, forms):
+            lines.append(f"| {label} | {form} | {int(b['out_facets']):,} | {fmt_ms(ms)} "
+                         f"| {1e3 * ms / b['out_facets']:.2f} | {ratio(ms, dyadic, 2)} |")
+    page.block(lines)
+    profile_section(page, os.path.join(os.path.dirname(path), "decimal_profile.json"), table)
+    before_after_section(page, os.path.join(os.path.dirname(path), "decimal_before_after.json"))
+
+
+def before_after_section(page, path):
+    """The rows of bench/decimal_before_after.py: two release trees run alternately."""
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        data = json.load(f)
+    before, after = data["cpu_ms_min"]["before"], data["cpu_ms_min"]["after"]
+    page.para(f"*`docs/bench/{os.path.basename(path)}` (`bench/decimal_before_after.py`): two release trees "
+              f"run alternately, {data['rounds']} rounds; CPU time, the minimum over all repetitions of all "
+              "rounds. `--before` makes the edge directions and facet planes of points that are not doubles "
+              "as rationals (or in machine words when their common denominator is below 2^40) and sums "
+              "non-dyadic vertex coordinates in GMP; `--after`, the code on this page, makes those "
+              "directions in machine integers whenever the points' common denominator is below 2^63 and "
+              "the scaled coordinates below 2^61, and sums one-word fractions in 128-bit words.*")
+    forms = dict(zip(("0", "4", "5"), WRITTEN_FORMS))
+    labels = {f"BM_Written_{key}/6/{i}": f"{label}, {WRITTEN_FORMS[i]}" for key, label in WRITTEN_FAMILIES
+              for i in range(3)}
+    for step, name in (("load", "BM_load"), ("validate with the facet planes", "BM_validate_and_planes"),
+                       ("coordinates parsed exactly", "BM_parse_numbers")):
+        labels.update({f"{name}/{i}": f"Sphere6 {step}, {form}" for i, form in forms.items()})
+    lines = ["| row | `--before` (ms) | `--after` (ms) | after / before |", "|---|---:|---:|---:|"]
+    for name, label in labels.items():
+        if name in before and name in after:
+            lines.append(f"| {label} | {fmt_ms(before[name])} | {fmt_ms(after[name])} "
+                         f"| {after[name] / before[name]:.2f} |")
+    page.block(lines)
+
+
+PROFILE_FORMS = (("dyadic", 0), ("shortest", 1), ("six_digits", 2))
+
+
+def profile_section(page, path, table):
+    """Where Sphere6 + rotated Sphere6's time goes in each written form: the phase shares of
+    docs/bench/decimal_profile.json (bench/perf_phases.py) times the row's time in the table above."""
+    forms = table.get("Sphere6 + rotated Sphere6")
+    if not forms or not os.path.exists(path):
+        return
+    with open(path) as f:
+        rows = json.load(f)["rows"]
+    if not all(name in rows for name, _ in PROFILE_FORMS):
+        return
+    page.para("Where the time of Sphere6 + rotated Sphere6 goes (`docs/bench/decimal_profile.json`: "
+              "`perf record --call-graph dwarf` of each row, the samples inside `minkowski_sum` split by the "
+              "functions on their stack by `bench/perf_phases.py`, whose header gives the commands; the "
+              "shares times each row's time above, in ms; phases nest, so indented rows are parts of the row "
+              "above them):")
+    names = list(rows["dyadic"]["phases"])
+    lines = ["| phase | " + " | ".join(f"{label} (ms)" for label in WRITTEN_FORMS) + " |",
+             "|---|" + "---:|" * len(WRITTEN_FORMS)]
+    ms = {}
+    for name in names:
+        cells = []
+        for form, i in PROFILE_FORMS:
+            ms[(name, form)] = rows[form]["phases"][name] * forms[i][0]
+            cells.append(fmt_ms(ms[(name, form)]))
+        label = name.replace("output build: ", "&nbsp;&nbsp;") if name.startswith("output build: ") else name
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    for group in rows["dyadic"]["innermost"]:
+        cells = [fmt_ms(rows[form]["innermost"][group] * forms[i][0]) for form, i in PROFILE_FORMS]
+        lines.append(f"| innermost frame in {group} | " + " | ".join(cells) + " |")
+    page.block(lines)
+    search = "search: contributing vertices and edge-facet trace"
+    build, normals = "output build", "output build: facet normals"
+    vertices, sums = "output build: vertices and mesh", "output build: vertices as rationals"
+
+    def more(phase):
+        return fmt_ms(ms[(phase, "shortest")] - ms[(phase, "dyadic")])
+
+    page.para(
+        f"With shortest decimals the sum takes {fmt_ms(forms[1][0] - forms[0][0])} ms more than with the "
+        f"dyadic operands. The output build takes {more(build)} ms of it. The vertices and the mesh, "
+        f"{more(vertices)} ms more, the largest part: each output vertex is made as three GMP rationals "
+        f"(`SumFacetBuilder::soup`, {fmt_ms(ms[(sums, 'shortest')])} ms), their sums in 128-bit words "
+        "when numerators and denominators fit one word each (`word_fraction.hpp`, with GMP's one-limb "
+        "gcd), stored in the result's arena, and their double approximations divided out of the "
+        "rationals (`Approx::of`), where a dyadic vertex is a packed 16-byte value made from machine "
+        f"words with its approximation. The facet normals, {more(normals)} ms more: the edge directions "
+        "of ends that are not doubles are machine integers over the ends' common denominator "
+        "(`small_fraction_direction` in `lib/numeric/small_direction.cpp`, when that denominator is below "
+        "2^63 and the scaled coordinates below 2^61; the general rational path beyond), read from the "
+        "twelve GMP integers of the ends' coordinates, where a double's direction is a few shifts of its "
+        f"bits. The search, {more(search)} ms more, decides its predicates on the floating-point filters "
+        "in every form (the rows' `exact_share` counter is the same for the three forms). GMP's own code "
+        f"is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's samples, "
+        f"against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
+
+
+def load_forms_section(page, path):
+    """Sphere6 loaded in each written form (BM_load/BM_parse/... of inputs 0, 4, 5) against parsing its numbers."""
+    rows = bench_json.rows(path, "cpu_time", "min")
+    inputs = (("exact dyadic expansions", 0), ("shortest round-trip decimals", 4), ("6-digit decimals", 5))
+    steps = (("load: parse + validate", "BM_load"), ("load, then the facet planes", None),
+             ("parse alone (`read_off`)", "BM_parse"), ("validate alone (`from_soup`)", "BM_validate"),
+             ("validate and make the facet planes", "BM_validate_and_planes"),
+             ("its coordinates parsed exactly (`try_parse_rational`)", "BM_parse_numbers"),
+             ("its coordinates parsed to doubles (`std::from_chars`)", "BM_parse_numbers_double"))
+    if not all(rows.get(f"BM_parse_numbers/{i}") for _, i in inputs):
+        return
+    numbers = int(rows["BM_parse_numbers/0"][1]["numbers"])
+    page.para(f"Sphere6 (20,480 facets, {numbers:,} coordinates, all doubles) written three ways, as in the "
+              "sums above. \"Load, then the facet planes\" is the load plus the planes' share of validating with "
+              "planes (`validate and make the facet planes` − `validate alone`): a loaded polyhedron makes its "
+              "planes on first use, and the first sum with it pays for them.")
+    lines = ["| step | " + " | ".join(f"{label} (ms)" for label, _ in inputs) + " |",
+             "|---|" + "---:|" * len(inputs)]
+    value = {}
+    for label, name in steps:
+        cells = []
+        for _, i in inputs:
+            if name is None:
+                ms = rows[f"BM_load/{i}"][0] + rows[f"BM_validate_and_planes/{i}"][0] - rows[f"BM_validate/{i}"][0]
+            else:
+                ms = rows[f"{name}/{i}"][0]
+            value[(label, i)] = ms
+            cells.append(fmt_ms(ms))
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+    page.block(lines)
+    load, numbers = "load: parse + validate", "its coordinates parsed exactly (`try_parse_rational`)"
+    planes = "load, then the facet planes"
+    page.para("Load over the exact parse of the numbers alone: " +
+              ", ".join(f"{label} {value[(load, i)] / value[(numbers, i)]:.1f}× "
+                        f"({value[(planes, i)] / value[(numbers, i)]:.1f}× with the planes)"
+                        for label, i in inputs) + ".")
 
 
 def load_section(page, load_path, timings_path):
@@ -433,11 +597,12 @@ def load_section(page, load_path, timings_path):
             a, b = loads.get(name + "/0"), loads.get(name + "/1")
             lines.append(f"| {label} | {fmt_ms(a) if a else '—'} | {fmt_ms(b) if b else '—'} |")
         page.block(lines)
+    page.para(run_line(load_path, "cpu_time", "min"))
+    load_forms_section(page, load_path)
     rows = bench_json.rows(load_path, "cpu_time", "min")
     write = rows.get("BM_write/1")
     total = rows.get("BM_sum")
     if write and total:
-        page.para(run_line(load_path, "cpu_time", "min"))
         w, b = write
         w0 = rows.get("BM_write/0")
         text = (f"Writing the exact OFF of Sphere6 + rotated Sphere6 ({int(b['facets']):,} facets, "

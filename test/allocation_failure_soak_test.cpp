@@ -144,5 +144,22 @@ TEST_F(AllocationFailureSoak, SolidsReadAndWrite) {
       [&] { return fingerprint(p); });
 }
 
+TEST_F(AllocationFailureSoak, SumsOfSolidsAsOneSolid) {
+  const Solid ring = read_solid(std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids/box_with_hole.off");
+  const Solid l_block = read_solid(std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids/l_block.off");
+  for (const unsigned threads : {1U, 2U}) {
+    Options options;
+    options.threads = threads;
+    const std::string on = " on " + std::to_string(threads) + " thread(s)";
+    expect_sweeps(
+        "minkowski_sum(Solid, Solid)" + on, [&] { return minkowski_sum(l_block, ring, options); },
+        [&] { return fingerprint(l_block) + fingerprint(ring); });
+    expect_sweeps(
+        "minkowski_sum(Solid, convex Solid)" + on,
+        [&] { return minkowski_sum(ring, Solid::from_polyhedron(shapes::geodesic_sphere(1)), options); },
+        [&] { return fingerprint(ring); });
+  }
+}
+
 }  // namespace
 }  // namespace cvms::test

@@ -346,6 +346,27 @@ TEST_F(AllocationFailure, SumOfPieces) {
       [&] { return fingerprint(l_block) + fingerprint(small); });
 }
 
+TEST_F(AllocationFailure, SumOfSolidsAsOneSolid) {
+  const Solid l_block = Solid::from_soup(l_block_soup());
+  const Solid small = Solid::from_polyhedron(tetra());
+  Options options;
+  options.threads = 1;
+  // One convex operand: the faces' sums, their fragments and the assembly.
+  expect_sweep(
+      "minkowski_sum(Solid, convex Solid)", [&] { return minkowski_sum(l_block, small, options); },
+      [&] { return fingerprint(l_block) + fingerprint(small); });
+  // Neither convex (both decomposed, then the union of the pieces' sums):
+  // the soak sweeps it.
+}
+
+TEST_F(AllocationFailure, UnionAsOneSolid) {
+  const ConvexUnion pieces(std::vector<ConvexPolyhedron>{box(), tetra(), octa()});
+  Options options;
+  options.threads = 1;
+  expect_sweep(
+      "union_solid", [&] { return union_solid(pieces, options); }, [&] { return fingerprint(pieces); });
+}
+
 // --- hull and half-spaces -----------------------------------------------------
 
 TEST_F(AllocationFailure, Hull) {

@@ -6,8 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cmath>
 #include <random>
+#include <string_view>
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/rational.hpp"
@@ -180,14 +182,80 @@ TEST(SmallDirection, FractionDirectionsFallBackBeyondTheirLimits) {
   const Vec3 b{Rational(1), Rational(0), Rational(0)};
   const Vec3 c{Rational(0), Rational(1), Rational(0)};
   EXPECT_TRUE(small_fraction_directions(a, b, c));
-  // A denominator of two limbs, a common denominator of 2^40 and more, and a
+  // A denominator of two limbs, a common denominator of 2^63 and more, and a
   // numerator that scales beyond 2^61.
   const Vec3 huge_den{Rational(1, mpz_class(1) << 70), Rational(0), Rational(0)};
   EXPECT_FALSE(small_fraction_directions(a, huge_den, c));
-  const Vec3 coprime{Rational(1, (1L << 20) + 7), Rational(1, (1L << 20) + 9), Rational(0)};
+  EXPECT_FALSE(small_fraction_direction(a, huge_den));
+  // (2^32 + 1)(2^32 + 3) > 2^64: two odd numbers 2 apart are coprime.
+  const Vec3 coprime{Rational(1, (1L << 32) + 1), Rational(1, (1L << 32) + 3), Rational(0)};
   EXPECT_FALSE(small_fraction_directions(a, coprime, c));
+  EXPECT_FALSE(small_fraction_direction(a, coprime));
+  // A common denominator just below 2^40 (the product of two coprime ones)
+  // is well within the limit.
+  const Vec3 below_2_40{Rational(1, (1L << 20) + 7), Rational(1, (1L << 20) + 9), Rational(0)};
+  EXPECT_TRUE(small_fraction_directions(a, below_2_40, c));
   const Vec3 big{Rational(mpz_class(1) << 62), Rational(0), Rational(0)};
   EXPECT_FALSE(small_fraction_directions(a, big, c));
+  EXPECT_FALSE(small_fraction_direction(a, big));
+}
+
+// The word-size bounds of the common denominator: 10^18 < 2^63 <= 10^19
+// (both one limb), 2^62 < 2^63, and 2^61 * 5 (the lcm of 2^61 and 10) past it.
+TEST(SmallDirection, FractionDirectionAtTheWordSizeBounds) {
+  const Vec3 origin{Rational(0), Rational(0), Rational(0)};
+  const auto point = [](const Rational& x) {
+    Vec3 p{x, Rational(1, 4), Rational(-1, 8)};  // scaled by 2^62: below 2^61
+    return p;
+  };
+  const mpz_class ten_18("1000000000000000000"), ten_19("10000000000000000000");
+  const Rational at_10_18(mpz_class("123456789012345678"), ten_18);
+  const Rational at_10_19(mpz_class("1234567890123456789"), ten_19);
+  const Rational at_2_62(mpz_class(1), mpz_class(1) << 62);
+  const Rational at_2_61_times_10 = Rational(1, 10) + Rational(mpz_class(1), mpz_class(1) << 61);
+  for (const Rational& x : {at_10_18, at_2_62}) {
+    const auto d = small_fraction_direction(origin, point(x));
+    ASSERT_TRUE(d) << x;
+    EXPECT_EQ(primitive_direction(d->to_vec3()), primitive_direction(point(x) - origin)) << x;
+  }
+  EXPECT_FALSE(small_fraction_direction(origin, point(at_10_19)));
+  EXPECT_FALSE(small_fraction_direction(origin, point(at_2_61_times_10)));
+}
+
+// Shortest round-trip decimals of doubles (up to 17 significant digits, the
+// form numpy and most exporters write), mixed with the doubles' own dyadic
+// values: every direction the fast path gives is a positive multiple of the
+// rational difference (the oracle), and most decimal pairs take it.
+TEST(SmallDirection, FractionDirectionOfShortestDecimals) {
+  const std::uint64_t seed = 5252;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto decimal = [&](double d) {
+    char digits[32];
+    const auto r = std::to_chars(digits, digits + sizeof digits, d);
+    return parse_rational(std::string_view(digits, static_cast<std::size_t>(r.ptr - digits)));
+  };
+  int small = 0, decimal_pairs = 0;
+  for (int i = 0; i < 3000; ++i) {
+    Vec3 p[2];
+    const bool mixed = i % 3 == 0;
+    for (int q = 0; q < 2; ++q)
+      for (int k = 0; k < 3; ++k) {
+        const double d = unit(rng);
+        p[q][k] = mixed && q == 1 ? rational_from_double(d) : decimal(d);
+      }
+    if (i % 13 == 0) p[1] = p[0];
+    const auto d = small_fraction_direction(p[0], p[1]);
+    if (p[0] == p[1]) {
+      EXPECT_FALSE(d) << "seed " << seed << " i " << i;
+      continue;
+    }
+    if (!mixed) ++decimal_pairs;
+    if (!d) continue;  // a fallback is always allowed; a wrong answer never
+    if (!mixed) ++small;
+    ASSERT_EQ(primitive_direction(d->to_vec3()), primitive_direction(p[1] - p[0])) << "seed " << seed << " i " << i;
+  }
+  EXPECT_GT(small, decimal_pairs * 9 / 10) << "shortest decimals should take the fast path";
 }
 
 }  // namespace

@@ -96,7 +96,10 @@ void primitive_cross(const Vec3& u, const Vec3& v, Vec3& out) {
 // Integer directions of the edges of one operand that edge facets use,
 // each computed once (many edge facets share an edge), indexed by edge; the
 // direction is that of the edge's even halfedge. Machine integers when the
-// endpoints are doubles, rationals otherwise.
+// endpoints are doubles, or fractions whose common denominator and scaled
+// numerators fit machine words (decimals as files hold them), rationals
+// otherwise. Every form is a positive multiple of the same edge vector, so
+// the primitive normal made from it is the same integer vector.
 class EdgeDirections {
  public:
   explicit EdgeDirections(const ConvexPolyhedron& p) : p_(p), state_(p.num_edges(), State::unknown) {}
@@ -107,7 +110,8 @@ class EdgeDirections {
     if (state_[e] == State::unknown) {
       if (!small_) small_.emplace(state_.size());  // written before read: no pass zeroes it
       const auto [from, to] = end_approximations(Mesh::edge(h));
-      const auto d = small_integer_direction(*from, *to);
+      std::optional<SmallDirection> d = small_integer_direction(*from, *to);
+      if (!d && !exactly_doubles(*from, *to)) d = fraction_direction(Mesh::edge(h));
       state_[e] = d ? State::small : State::general;
       if (d) (*small_)[e] = *d;
     }
@@ -146,6 +150,21 @@ class EdgeDirections {
     const Mesh& m = p_.mesh();
     const HalfedgeId even = Mesh::halfedge(e);
     return {&detail::vertex_approx(p_, m.from(even)), &detail::vertex_approx(p_, m.to(even))};
+  }
+
+  // Ends that are doubles (no approximation error) that small_integer_direction
+  // refused have exponents too far apart for the fraction path as well.
+  [[nodiscard]] static bool exactly_doubles(const ApproxVec3& from, const ApproxVec3& to) noexcept {
+    return from.x.error == 0.0 && from.y.error == 0.0 && from.z.error == 0.0 && to.x.error == 0.0 &&
+           to.y.error == 0.0 && to.z.error == 0.0;
+  }
+
+  // The direction of e's even halfedge from the exact ends, as fractions over
+  // their common denominator, when that fits machine words.
+  [[nodiscard]] std::optional<SmallDirection> fraction_direction(EdgeId e) const {
+    const Mesh& m = p_.mesh();
+    const HalfedgeId even = Mesh::halfedge(e);
+    return small_fraction_direction(p_.vertex(m.from(even)), p_.vertex(m.to(even)));
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the

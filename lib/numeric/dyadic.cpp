@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <bit>
 
+#include "word_fraction.hpp"
+
 namespace cvms::detail {
 namespace {
 
@@ -263,6 +265,10 @@ void exact_integer_dot(const Vec3& n, const Vec3& p, DotScratch& scratch, Ration
 void store_sum(LimbArena& arena, Rational& out, const Rational& x, const Rational& y, Rational& scratch) {
   if (const std::optional<FixedDyadic<2>> sum = fixed_sum(x, y)) {
     store_dyadic(arena, out, *sum);
+    return;
+  }
+  if (const std::optional<WordFraction> sum = word_fraction_sum(x, y)) {  // decimals as files hold them
+    store_word_fraction(arena, out, *sum);
     return;
   }
   exact_add_or_subtract(scratch, x, y, false);

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
+#include <span>
 #include <utility>
 
 #include <gmp.h>
@@ -170,15 +171,19 @@ std::optional<SmallDirection> small_integer_direction(const ApproxVec3& from, co
 
 namespace {
 
-// The limits of small_fraction_directions: scaled coordinates below 2^61 in
+// The limits of the fraction directions: scaled coordinates below 2^61 in
 // magnitude make differences below 2^62 (SmallDirection's bound); a common
-// denominator below 2^40 keeps the lcm and the scaling in 128-bit products.
-constexpr std::uint64_t max_denominator = std::uint64_t{1} << 40;
+// denominator below 2^63 keeps the lcm's steps (a one-limb quotient times a
+// one-limb denominator) and the scaling (a factor below 2^63 times a
+// one-limb numerator) within 128-bit products. Shortest round-trip decimals
+// of doubles of magnitude near 1 have denominators up to about 10^17 (< 2^57)
+// and 6-digit ones 10^6, so both fit.
+constexpr std::uint64_t max_denominator = std::uint64_t{1} << 63;
 constexpr Int128 max_scaled = Int128{1} << 61;
 
-// The lcm of the nine denominators, or 0 when one is not one limb or the lcm
-// reaches max_denominator.
-std::uint64_t common_denominator(const Vec3* const (&points)[3]) {
+// The lcm of the points' denominators, or 0 when one is not one limb or the
+// lcm reaches max_denominator.
+std::uint64_t common_denominator(std::span<const Vec3* const> points) {
   std::uint64_t l = 1;
   for (const Vec3* p : points)
     for (int i = 0; i < 3; ++i) {
@@ -199,31 +204,48 @@ std::optional<Int128> scaled(const Rational& x, std::uint64_t l) {
   mpz_srcptr num = x.get_num_mpz_t();
   if (mpz_size(num) > 1) return std::nullopt;
   const Uint128 factor = l / mpz_getlimbn(x.get_den_mpz_t(), 0);  // exact: the den divides l
-  const Uint128 magnitude = factor * mpz_getlimbn(num, 0);       // both below 2^64: no overflow
+  const Uint128 magnitude = factor * mpz_getlimbn(num, 0);       // below 2^63 * 2^64: no overflow
   if (magnitude >= static_cast<Uint128>(max_scaled)) return std::nullopt;
   return mpz_sgn(num) < 0 ? -static_cast<Int128>(magnitude) : static_cast<Int128>(magnitude);
 }
 
+// (points[p] - points[0]) * L for p = 1 .. n-1, L the lcm of all the points'
+// denominators, into out[p - 1]; false when a limit above is exceeded or a
+// difference is zero.
+bool scaled_differences(std::span<const Vec3* const> points, std::span<SmallDirection> out) {
+  const std::uint64_t l = common_denominator(points);
+  if (l == 0) return false;
+  Int128 origin[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::optional<Int128> x = scaled((*points[0])[i], l);
+    if (!x) return false;
+    origin[i] = *x;
+  }
+  for (std::size_t p = 1; p < points.size(); ++p) {
+    auto& v = out[p - 1].c;
+    for (int i = 0; i < 3; ++i) {
+      const std::optional<Int128> x = scaled((*points[p])[i], l);
+      if (!x) return false;
+      v[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(*x - origin[i]);  // below 2^62: both below 2^61
+    }
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+std::optional<SmallDirection> small_fraction_direction(const Vec3& from, const Vec3& to) {
+  const Vec3* const points[2] = {&from, &to};
+  std::array<SmallDirection, 1> d{};
+  if (!scaled_differences(points, d)) return std::nullopt;
+  return d[0];
+}
 
 std::optional<std::array<SmallDirection, 2>> small_fraction_directions(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3* const points[3] = {&a, &b, &c};
-  const std::uint64_t l = common_denominator(points);
-  if (l == 0) return std::nullopt;
-  Int128 coordinates[3][3];
-  for (int p = 0; p < 3; ++p)
-    for (int i = 0; i < 3; ++i) {
-      const std::optional<Int128> x = scaled((*points[p])[i], l);
-      if (!x) return std::nullopt;
-      coordinates[p][i] = *x;
-    }
   std::array<SmallDirection, 2> d{};
-  for (int p = 1; p < 3; ++p) {
-    for (std::size_t i = 0; i < 3; ++i)  // below 2^62: both terms are below 2^61
-      d[static_cast<std::size_t>(p - 1)].c[i] = static_cast<std::int64_t>(coordinates[p][i] - coordinates[0][i]);
-    const auto& v = d[static_cast<std::size_t>(p - 1)].c;
-    if (v[0] == 0 && v[1] == 0 && v[2] == 0) return std::nullopt;
-  }
+  if (!scaled_differences(points, d)) return std::nullopt;
   return d;
 }
 

@@ -34,12 +34,16 @@ struct SmallDirection {
 
 /// Positive integer multiples of b - a and c - a (the same multiple of both),
 /// when every coordinate of a, b and c is a fraction of one-limb integers
-/// (small decimals like 0.123456) whose common denominator L and scaled
-/// numerators are small: the differences of the points times L. nullopt
-/// otherwise (the caller then uses the general rational path), and when
-/// b == a or c == a.
+/// (decimals like 0.123456 or -0.9999510991904915) whose common denominator
+/// L is below 2^63 and whose scaled numerators are below 2^61 in magnitude:
+/// the differences of the points times L. nullopt otherwise (the caller then
+/// uses the general rational path), and when b == a or c == a.
 [[nodiscard]] std::optional<std::array<SmallDirection, 2>> small_fraction_directions(const Vec3& a, const Vec3& b,
                                                                                      const Vec3& c);
+/// The same for one edge: a positive integer multiple of to - from (the
+/// difference times the common denominator of the two points), under the
+/// same limits; nullopt otherwise and for to == from.
+[[nodiscard]] std::optional<SmallDirection> small_fraction_direction(const Vec3& from, const Vec3& to);
 
 class LimbArena;
 

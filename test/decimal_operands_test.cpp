@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: MIT
+// Sums of the same geometry with its coordinates written as files write
+// them: the doubles' exact (dyadic) values, their shortest round-trip
+// decimals, 6 decimals, 18 decimals (a common denominator 10^18, just below
+// 2^63, where machine-word directions still apply) and 19 (10^19, just
+// beyond, where the general rational path takes over), and one operand of
+// each kind mixed. Each sum is checked against an independent oracle: the
+// exact hull of the pairwise vertex sums (vertices and facet planes), the
+// sum's stored facet normals against primitive normals worked out here in
+// plain rationals from each facet's vertices, and the written bytes against
+// those of the hull (canonical order) and of the two-thread sum.
+#include <gtest/gtest.h>
+
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cvms/convex_hull.hpp"
+#include "cvms/io.hpp"
+#include "cvms/minkowski.hpp"
+#include "cvms/shapes.hpp"
+#include "support/oracle.hpp"
+
+namespace cvms {
+namespace {
+
+enum class Form { dyadic, shortest, six_digits, eighteen_digits, nineteen_digits };
+
+const char* name(Form form) {
+  switch (form) {
+    case Form::dyadic:
+      return "dyadic";
+    case Form::shortest:
+      return "shortest";
+    case Form::six_digits:
+      return "6 digits";
+    case Form::eighteen_digits:
+      return "18 digits";
+    case Form::nineteen_digits:
+      break;
+  }
+  return "19 digits";
+}
+
+// The double c written in `form` and read back exactly.
+Rational written(const Rational& c, Form form) {
+  if (form == Form::dyadic) return c;
+  const double d = c.get_d();
+  char digits[64];
+  std::size_t length = 0;
+  if (form == Form::shortest) {
+    length = static_cast<std::size_t>(std::to_chars(digits, digits + sizeof digits, d).ptr - digits);
+  } else {
+    const int places = form == Form::six_digits ? 6 : form == Form::eighteen_digits ? 18 : 19;
+    length = static_cast<std::size_t>(std::snprintf(digits, sizeof digits, "%.*f", places, d));
+  }
+  return parse_rational(std::string_view(digits, length));
+}
+
+ConvexPolyhedron in_form(const ConvexPolyhedron& p, Form form) {
+  PolygonSoup soup = p.to_soup();
+  for (Vec3& v : soup.points)
+    for (int k = 0; k < 3; ++k) v[k] = written(v[k], form);
+  return ConvexPolyhedron::from_soup(std::move(soup));
+}
+
+std::string canonical_off(const ConvexPolyhedron& p) {
+  std::ostringstream out;
+  write(out, p, FileFormat::off, Coordinates::exact, VertexOrder::canonical);
+  return out.str();
+}
+
+std::string as_is_off(const ConvexPolyhedron& p) {
+  std::ostringstream out;
+  write(out, p, FileFormat::off);
+  return out.str();
+}
+
+std::vector<Vec3> points(const ConvexPolyhedron& p) {
+  std::vector<Vec3> out;
+  for (VertexId v : p.mesh().vertices()) out.push_back(p.vertex(v));
+  return out;
+}
+
+// "" when every stored facet normal of p is the primitive integer normal of
+// the facet's first three corners (plain rationals; counterclockwise from
+// outside, so it points outward).
+std::string check_stored_normals(const ConvexPolyhedron& p) {
+  for (FaceId f : p.mesh().faces()) {
+    std::vector<Vec3> corners;
+    for (HalfedgeId h : p.mesh().face_halfedges(f)) corners.push_back(p.vertex(p.mesh().from(h)));
+    const Vec3 n = primitive_direction(cross(corners[1] - corners[0], corners[2] - corners[0]));
+    if (p.normal(f) != n)
+      return "facet " + std::to_string(f.index()) + ": stored " + test::to_text(p.normal(f)) + ", expected " +
+             test::to_text(n);
+  }
+  return "";
+}
+
+void check_sum(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const std::string& what) {
+  SCOPED_TRACE(what);
+  const MinkowskiResult sum = minkowski_sum(a, b);
+  const ConvexPolyhedron hull = convex_hull(test::pairwise_sums(points(a), points(b)));
+  const test::Shape expected = test::describe(hull), actual = test::describe(sum.polyhedron);
+  ASSERT_EQ(actual, expected) << test::difference(expected, actual);
+  ASSERT_EQ(check_stored_normals(sum.polyhedron), "");
+  ASSERT_EQ(canonical_off(sum.polyhedron), canonical_off(hull));
+  Options two;
+  two.threads = 2;
+  ASSERT_EQ(as_is_off(minkowski_sum(a, b, two).polyhedron), as_is_off(sum.polyhedron));
+}
+
+const Form all_forms[] = {Form::dyadic, Form::shortest, Form::six_digits, Form::eighteen_digits,
+                          Form::nineteen_digits};
+
+TEST(DecimalOperands, SphereAndRotatedSphereInEveryForm) {
+  const ConvexPolyhedron a = shapes::geodesic_sphere(3), b = shapes::rotated_geodesic_sphere(3);
+  for (Form form : all_forms) check_sum(in_form(a, form), in_form(b, form), std::string("both ") + name(form));
+}
+
+TEST(DecimalOperands, CubeAndSphereInEveryForm) {
+  const ConvexPolyhedron a = shapes::cube(), b = shapes::geodesic_sphere(3);
+  for (Form form : all_forms) check_sum(a, in_form(b, form), std::string("sphere ") + name(form));
+}
+
+// One operand dyadic, the other decimal: the edge facets pair a machine-word
+// direction of each kind (or a rational one past the word-size bound).
+TEST(DecimalOperands, MixedDyadicAndDecimalOperands) {
+  const ConvexPolyhedron a = shapes::geodesic_sphere(3), b = shapes::rotated_geodesic_sphere(3);
+  for (Form form : all_forms) {
+    if (form == Form::dyadic) continue;
+    check_sum(a, in_form(b, form), std::string("dyadic + ") + name(form));
+    check_sum(in_form(a, form), b, std::string(name(form)) + " + dyadic");
+  }
+  check_sum(in_form(a, Form::shortest), in_form(b, Form::six_digits), "shortest + 6 digits");
+}
+
+// Loaded operands make their facet planes on first use; the fast path for
+// decimal corners gives the same primitive normals as plain rationals.
+TEST(DecimalOperands, LoadedOperandsHaveTheRationalNormals) {
+  const ConvexPolyhedron a = shapes::rotated_geodesic_sphere(3);
+  for (Form form : all_forms) {
+    SCOPED_TRACE(name(form));
+    EXPECT_EQ(check_stored_normals(in_form(a, form)), "");
+  }
+}
+
+}  // namespace
+}  // namespace cvms
