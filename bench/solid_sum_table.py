@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""Prints the tables of sums of solids that need not be convex, as one closed
+solid: cvms_solid_sum_bench's rows (the sum, the pieces stage, writing the
+result, the other road, the CGAL Nef peer) next to Manifold's rows
+(bench/manifold_peer.py), the comb family's least-squares log-log slope of
+time against output facets, and whole `cvms sum` runs
+(bench/solid_sum_end_to_end.py). bench/performance_page.py puts them on the
+performance page; run alone, this prints them.
+
+One-thread rows are read in CPU time (steadier on a shared machine), the
+two-thread rows in wall time (their CPU time counts the calling thread only).
+
+usage: bench/solid_sum_table.py [--bench-dir docs/bench]
+"""
+import argparse
+import json
+import math
+import os
+import re
+
+import bench_json
+
+SOLID_LABELS = {
+    "l_block": "L-block",
+    "box_with_hole": "frame",
+    "star_prism": "star prism",
+    "coarse_torus": "coarse torus",
+    "cube": "cube",
+    "spot": "spot",
+    "icosphere": "icosphere",
+}
+
+
+def pair_label(pair):
+    def one(name):
+        m = re.fullmatch(r"comb(\d+)", name)
+        return f"comb of {m.group(1)} teeth" if m else SOLID_LABELS.get(name, name)
+
+    return " ⊕ ".join(one(n) for n in pair.split("+"))
+
+
+def fmt_ms(ms):
+    if ms is None:
+        return "—"
+    if ms >= 100:
+        return f"{ms:,.0f}"
+    if ms >= 10:
+        return f"{ms:.1f}"
+    if ms >= 1:
+        return f"{ms:.2f}"
+    return f"{ms:.3f}"
+
+
+def load(path):
+    """{kind: {pair: {threads: (ms, entry)}}} from rows "<kind>/<pair>/<threads>"; {} without the file."""
+    if not os.path.exists(path):
+        return {}
+    timed = dict(bench_json.rows(path, "real_time", "min"))
+    timed.update(bench_json.rows(path, "cpu_time", "min"))
+    out = {}
+    for key, value in timed.items():
+        parts = key.split("/")
+        if len(parts) == 3 and parts[2].isdigit():
+            out.setdefault(parts[0], {}).setdefault(parts[1], {})[int(parts[2])] = value
+    return out
+
+
+def pairs_in(*tables):
+    """The pairs of all tables, in first-seen order."""
+    seen = {}
+    for table in tables:
+        for kind in table.values():
+            for pair in kind:
+                seen.setdefault(pair, None)
+    return list(seen)
+
+
+def at(rows, kind, pair, threads=1):
+    """(ms, entry) or None."""
+    return rows.get(kind, {}).get(pair, {}).get(threads)
+
+
+def in_process_table(rows):
+    """Our rows: the sum, the pieces stage and writing the result; the other road."""
+    lines = ["| pair | output facets | vertices | shells | genus | sum (ms) | pieces stage (ms) | writing (ms) "
+             "| (sum + writing) / (pieces + writing) | union of both decompositions (ms) |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for pair in pairs_in(rows):
+        if pair.startswith("comb"):
+            continue
+        ours, pieces = at(rows, "BM_SolidSum", pair), at(rows, "BM_PiecesStage", pair)
+        write, other = at(rows, "BM_WriteResult", pair), at(rows, "BM_UnionOfPieces", pair)
+        if not (ours or pieces):
+            continue
+        cells = [pair_label(pair)]
+        if ours:
+            b = ours[1]
+            cells += [f"{int(b['out_facets']):,}", f"{int(b['out_vertices']):,}", f"{int(b['shells'])}",
+                      f"{int(b['genus'])}"]
+        else:
+            cells += ["—"] * 4
+        cells += [fmt_ms(ours[0] if ours else None), fmt_ms(pieces[0] if pieces else None),
+                  fmt_ms(write[0] if write else None)]
+        cells.append(f"{(ours[0] + write[0]) / (pieces[0] + write[0]):.2f}" if ours and pieces and write else "—")
+        cells.append(fmt_ms(other[0] if other else None))
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def peers_table(rows, manifold):
+    """Ours next to CGAL Nef (same binary, same run) and Manifold, one row per pair."""
+    lines = ["| pair | cvms (ms) | CGAL Nef (ms) | Nef / cvms | Manifold (ms) | Manifold / cvms "
+             "| Manifold's output, checked exactly |",
+             "|---|---:|---:|---:|---:|---:|---|"]
+    for pair in pairs_in(rows, manifold):
+        for threads in (1, 2):
+            ours, nef = at(rows, "BM_SolidSum", pair, threads), at(rows, "BM_CgalNef", pair, threads)
+            peer = at(manifold, "Manifold", pair, 1) if threads == 1 else None
+            if not (ours or nef or peer):
+                continue
+            label = pair_label(pair) + (f", {threads} threads" if threads > 1 else "")
+            cells = [label, fmt_ms(ours[0] if ours else None), fmt_ms(nef[0] if nef else None),
+                     f"{nef[0] / ours[0]:,.0f}×" if ours and nef else "—", fmt_ms(peer[0] if peer else None),
+                     f"{peer[0] / ours[0]:.1f}×" if ours and peer else "—"]
+            if peer:
+                b = peer[1]
+                verdict = "valid" if b.get("exact_valid") else f"invalid: {b.get('exact_check', '?')}"
+                cells.append(f"{int(b['peer_vertices']):,} vertices, {verdict}")
+            else:
+                cells.append("—")
+            lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in cells) + " |")
+    return lines
+
+
+def manifold_failures(manifold):
+    """(invalid results, results) of Manifold's rows."""
+    checked = [b for pairs in manifold.values() for t in pairs.values() for _, b in t.values()]
+    return sum(1 for b in checked if not b.get("exact_valid")), len(checked)
+
+
+def comb_series(rows, kind="BM_SolidSum"):
+    """[(k, output facets, ms)] of the comb family, by k."""
+    out = []
+    for pair, by_threads in rows.get(kind, {}).items():
+        m = re.fullmatch(r"comb(\d+)\+cube", pair)
+        if m and 1 in by_threads:
+            ms, b = by_threads[1]
+            out.append((int(m.group(1)), b.get("out_facets"), ms))
+    return sorted(out)
+
+
+def slope(series):
+    """Least-squares slope of log time against log output facets, or None."""
+    points = [(math.log(f), math.log(ms)) for _, f, ms in series if f]
+    if len(points) < 2:
+        return None
+    mx, my = sum(x for x, _ in points) / len(points), sum(y for _, y in points) / len(points)
+    return sum((x - mx) * (y - my) for x, y in points) / sum((x - mx) ** 2 for x, _ in points)
+
+
+def scaling_table(rows, manifold):
+    lines = ["| comb teeth k | output facets | cvms (ms) | µs per output facet | CGAL Nef (ms) | Manifold (ms) |",
+             "|---:|---:|---:|---:|---:|---:|"]
+    for k, facets, ms in comb_series(rows):
+        pair = f"comb{k}+cube"
+        nef, peer = at(rows, "BM_CgalNef", pair), at(manifold, "Manifold", pair)
+        lines.append(f"| {k} | {int(facets):,} | {fmt_ms(ms)} | {1e3 * ms / facets:.1f} "
+                     f"| {fmt_ms(nef[0] if nef else None)} | {fmt_ms(peer[0] if peer else None)} |")
+    return lines
+
+
+def end_to_end_table(results):
+    lines = ["| command | wall (ms) | sum in process (ms) | wall / sum | peak RSS (MiB) |", "|---|---:|---:|---:|---:|"]
+    for name, r in results.items():
+        pair, threads = name.rsplit("/", 1)
+        a, b = pair.split("+")
+        command = f"`cvms sum {a}.off {b}.off -o out.off" + (f" --threads {threads}`" if threads != "1" else "`")
+        if "wall_ms" not in r:
+            lines.append(f"| {command} | failed | — | — | — |")
+            continue
+        s = r.get("sum_ms")
+        lines.append(f"| {command} | {fmt_ms(r['wall_ms'])} | {fmt_ms(s)} "
+                     f"| {r['wall_ms'] / s:.1f}× | {r['peak_rss_bytes'] / 2**20:.1f} |" if s else
+                     f"| {command} | {fmt_ms(r['wall_ms'])} | — | — | {r['peak_rss_bytes'] / 2**20:.1f} |")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--bench-dir", default="docs/bench")
+    args = parser.parse_args()
+    rows = load(os.path.join(args.bench_dir, "solid_sum.json"))
+    manifold = load(os.path.join(args.bench_dir, "solid_sum_manifold.json"))
+    for lines in (in_process_table(rows), peers_table(rows, manifold), scaling_table(rows, manifold)):
+        print("\n".join(lines) + "\n")
+    s = slope(comb_series(rows))
+    if s is not None:
+        print(f"log-log slope of time against output facets (combs): {s:.2f}\n")
+    path = os.path.join(args.bench_dir, "solid_sum_end_to_end.json")
+    if os.path.exists(path):
+        with open(path) as f:
+            print("\n".join(end_to_end_table(json.load(f))))
+
+
+if __name__ == "__main__":
+    main()
