@@ -178,10 +178,10 @@ bool one_convex_small(const SolidPair& pair) {
 }
 
 const bool registered = [] {
-  cvms_bench::register_solid_rows("BM_SolidSum", solid_sum, every_pair);
-  cvms_bench::register_solid_rows("BM_WriteResult", write_result, every_pair);
-  cvms_bench::register_solid_rows("BM_PiecesStage", pieces_stage, every_pair);
-  cvms_bench::register_solid_rows("BM_UnionOfPieces", union_of_pieces, one_convex_small);
+  cvms_bench::register_solid_rows("BM_SolidSum", solid_sum, every_pair, true);
+  cvms_bench::register_solid_rows("BM_WriteResult", write_result, every_pair, false);
+  cvms_bench::register_solid_rows("BM_PiecesStage", pieces_stage, every_pair, true);
+  cvms_bench::register_solid_rows("BM_UnionOfPieces", union_of_pieces, one_convex_small, false);
   return true;
 }();
 

@@ -98,12 +98,12 @@ void write_operands(const std::filesystem::path& dir) {
 }
 
 std::vector<benchmark::internal::Benchmark*> register_solid_rows(const char* prefix, SolidPairRow row,
-                                                                 bool (*keep)(const SolidPair&)) {
+                                                                 bool (*keep)(const SolidPair&), bool two_threads) {
   std::vector<benchmark::internal::Benchmark*> rows;
   for (const SolidPair& pair : solid_pairs()) {
     if (!keep(pair)) continue;
     for (unsigned threads : {1U, 2U}) {
-      if (threads > 1 && pair.group != PairGroup::mesh) continue;
+      if (threads > 1 && (!two_threads || pair.group != PairGroup::mesh)) continue;
       const std::string name = std::string(prefix) + "/" + pair.name + "/" + std::to_string(threads);
       auto* registered = benchmark::RegisterBenchmark(name.c_str(), row, pair, threads);
       registered->Unit(benchmark::kMillisecond);

@@ -65,9 +65,10 @@ void write_operands(const std::filesystem::path& dir);
 using SolidPairRow = void (*)(benchmark::State&, const SolidPair&, unsigned threads);
 
 /// Registers "<prefix>/<pair>/<threads>" in ms for the pairs `keep` accepts,
-/// on one thread, and on two as well for the mesh pair (in wall time: the
-/// name gets "/real_time"). Returns the registered benchmarks.
+/// on one thread, and with `two_threads` on two as well for the mesh pair
+/// (in wall time: the name gets "/real_time"). Returns the registered
+/// benchmarks.
 std::vector<benchmark::internal::Benchmark*> register_solid_rows(const char* prefix, SolidPairRow row,
-                                                                 bool (*keep)(const SolidPair&));
+                                                                 bool (*keep)(const SolidPair&), bool two_threads);
 
 }  // namespace cvms_bench

@@ -57,7 +57,7 @@ const bool registered = [] {
   const std::string_view cases = nef_cases();
   if (cases != "small" && cases != "all") return false;
   for (auto* row : cvms_bench::register_solid_rows("BM_CgalNef", cgal_nef,
-                                                   cases == "all" ? every_nef_case : small_nef_case))
+                                                   cases == "all" ? every_nef_case : small_nef_case, true))
     row->Iterations(1)->Repetitions(1);
   return true;
 }();
