@@ -5,7 +5,8 @@
 //  - BM_SolidSum/<pair>/<threads>: the whole sum, from the two validated
 //    solids to the result solid (the road the library chooses: no
 //    decomposition when one operand is convex, the pieces otherwise);
-//    counters for the output (facets, vertices, triangles, shells, genus).
+//    counters for the output (facets, vertices, triangles, shells, genus,
+//    the exact volume rounded to a double).
 //  - BM_WriteResult/<pair>/1: writing that result as exact OFF text (to
 //    memory), so that "sum + write" and "pieces + write" can be compared.
 //  - BM_PiecesStage/<pair>/<threads>: the convex pieces alone, before any
@@ -34,6 +35,7 @@
 #include "cvms/convex_hull.hpp"
 #include "cvms/decomposition.hpp"
 #include "cvms/io.hpp"
+#include "cvms/rational.hpp"
 #include "cvms/set_sum.hpp"
 #include "cvms/solid_sum.hpp"
 #include "solid_sum_operands.hpp"
@@ -75,6 +77,7 @@ void solid_sum(benchmark::State& state, const SolidPair& pair, unsigned threads)
   state.counters["shells"] = sum.num_shells();
   state.counters["cavities"] = sum.num_cavities();
   state.counters["genus"] = sum.genus();
+  state.counters["volume"] = cvms::to_double_nearest(sum.volume());
   state.counters["in_facets"] = a.num_facets() + b.num_facets();
 }
 

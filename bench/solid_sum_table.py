@@ -125,7 +125,11 @@ def peers_table(rows, manifold):
             if peer:
                 b = peer[1]
                 verdict = "valid" if b.get("exact_valid") else f"invalid: {b.get('exact_check', '?')}"
-                cells.append(f"{int(b['peer_vertices']):,} vertices, {verdict}")
+                text = f"{int(b['peer_vertices']):,} vertices (cvms: " + (
+                    f"{int(ours[1]['out_vertices']):,}" if ours else "—") + f"), {verdict}"
+                if ours and ours[1].get("volume"):
+                    text += f", volume off by {b['peer_volume'] / ours[1]['volume'] - 1:+.1e}"
+                cells.append(text)
             else:
                 cells.append("—")
             lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in cells) + " |")
