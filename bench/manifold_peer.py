@@ -53,7 +53,8 @@ def exact_check(cvms, path):
     done = subprocess.run([cvms, "check", path], capture_output=True, text=True)
     if done.returncode == 0:
         return 1, ""
-    return 0, (done.stderr.strip() or done.stdout.strip()).splitlines()[0][:300]
+    message = (done.stderr.strip() or done.stdout.strip()).splitlines()[0]
+    return 0, message.replace(path, os.path.basename(path))[:300]
 
 
 def run_pair(args, scratch, name, a, b):

@@ -142,33 +142,45 @@ def manifold_failures(manifold):
     return sum(1 for b in checked if not b.get("exact_valid")), len(checked)
 
 
-def comb_series(rows, kind="BM_SolidSum"):
-    """[(k, output facets, ms)] of the comb family, by k."""
-    out = []
-    for pair, by_threads in rows.get(kind, {}).items():
-        m = re.fullmatch(r"comb(\d+)\+cube", pair)
-        if m and 1 in by_threads:
-            ms, b = by_threads[1]
-            out.append((int(m.group(1)), b.get("out_facets"), ms))
-    return sorted(out)
+def comb_teeth(*tables):
+    """The tooth counts k of the comb pairs "comb<k>+cube" in any table, sorted."""
+    return sorted({int(m.group(1)) for pair in pairs_in(*tables) if (m := re.fullmatch(r"comb(\d+)\+cube", pair))})
 
 
-def slope(series):
-    """Least-squares slope of log time against log output facets, or None."""
-    points = [(math.log(f), math.log(ms)) for _, f, ms in series if f]
+def slope(points):
+    """Least-squares slope of log y against log x over [(x, y)], or None."""
+    points = [(math.log(x), math.log(y)) for x, y in points if x and y]
     if len(points) < 2:
         return None
     mx, my = sum(x for x, _ in points) / len(points), sum(y for _, y in points) / len(points)
     return sum((x - mx) * (y - my) for x, y in points) / sum((x - mx) ** 2 for x, _ in points)
 
 
+def comb_slopes(rows, manifold):
+    """{label: slope}: cvms's time against its output facets, and each one's time against the teeth k."""
+    out = {}
+    ks = comb_teeth(rows, manifold)
+    ours = [at(rows, "BM_SolidSum", f"comb{k}+cube") for k in ks]
+    s = slope([(r[1]["out_facets"], r[0]) for r in ours if r])
+    if s is not None:
+        out["cvms against output facets"] = s
+    for label, table, kind in (("cvms", rows, "BM_SolidSum"), ("CGAL Nef", rows, "BM_CgalNef"),
+                               ("Manifold", manifold, "Manifold")):
+        s = slope([(k, r[0]) for k in ks if (r := at(table, kind, f"comb{k}+cube"))])
+        if s is not None:
+            out[f"{label} against k"] = s
+    return out
+
+
 def scaling_table(rows, manifold):
     lines = ["| comb teeth k | output facets | cvms (ms) | µs per output facet | CGAL Nef (ms) | Manifold (ms) |",
              "|---:|---:|---:|---:|---:|---:|"]
-    for k, facets, ms in comb_series(rows):
+    for k in comb_teeth(rows, manifold):
         pair = f"comb{k}+cube"
-        nef, peer = at(rows, "BM_CgalNef", pair), at(manifold, "Manifold", pair)
-        lines.append(f"| {k} | {int(facets):,} | {fmt_ms(ms)} | {1e3 * ms / facets:.1f} "
+        ours, nef, peer = at(rows, "BM_SolidSum", pair), at(rows, "BM_CgalNef", pair), at(manifold, "Manifold", pair)
+        facets = ours[1]["out_facets"] if ours else None
+        lines.append(f"| {k} | {f'{int(facets):,}' if facets else '—'} | {fmt_ms(ours[0] if ours else None)} "
+                     f"| {f'{1e3 * ours[0] / facets:.1f}' if facets else '—'} "
                      f"| {fmt_ms(nef[0] if nef else None)} | {fmt_ms(peer[0] if peer else None)} |")
     return lines
 
@@ -197,9 +209,8 @@ def main():
     manifold = load(os.path.join(args.bench_dir, "solid_sum_manifold.json"))
     for lines in (in_process_table(rows), peers_table(rows, manifold), scaling_table(rows, manifold)):
         print("\n".join(lines) + "\n")
-    s = slope(comb_series(rows))
-    if s is not None:
-        print(f"log-log slope of time against output facets (combs): {s:.2f}\n")
+    for label, s in comb_slopes(rows, manifold).items():
+        print(f"least-squares log-log slope, {label}: {s:.2f}")
     path = os.path.join(args.bench_dir, "solid_sum_end_to_end.json")
     if os.path.exists(path):
         with open(path) as f:
