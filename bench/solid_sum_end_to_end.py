@@ -6,7 +6,8 @@ closed solid), following bench/end_to_end.py: the minimum wall time over
 time inside it (`--stats`). The operands are the files the benchmark writes
 (`--write_operands`), so the in-process rows and these sum the same solids.
 The mesh pair is run with `--threads 1` and `--threads 2`, the others on one
-thread.
+thread. The reference row of each pair, `cvms sum A B --pieces -o pieces.obj`,
+writes the pairwise sums of both decompositions instead of their union.
 
 usage: bench/solid_sum_end_to_end.py [--filter REGEX] [--rounds 3] [--json docs/bench/solid_sum_end_to_end.json]
 """
@@ -31,14 +32,17 @@ def main():
         for name, a, b in solid_sum_pairs.pairs(bench):
             if args.filter and not re.search(args.filter, name):
                 continue
-            for threads in ((1, 2) if name.startswith("spot+") else (1,)):
-                argv = [cvms, "sum", os.path.join(scratch, a + ".off"), os.path.join(scratch, b + ".off"), "-o",
-                        os.path.join(scratch, "out.off"), "--threads", str(threads), "--stats"]
-                row = f"{name}/{threads}"
+            runs = {f"{name}/{t}": ["--threads", str(t), "-o", "out.off"]
+                    for t in ((1, 2) if name.startswith("spot+") else (1,))}
+            runs[f"{name}/pieces"] = ["--pieces", "-o", "pieces.obj"]
+            for row, options in runs.items():
+                argv = [cvms, "sum", os.path.join(scratch, a + ".off"), os.path.join(scratch, b + ".off"), "--stats"]
+                argv += [os.path.join(scratch, o) if o.endswith((".off", ".obj")) else o for o in options]
                 try:
                     results[row] = end_to_end.measure(argv, args.rounds)
                 except SystemExit as failed:  # the command failed: keep its message, go on
-                    results[row] = {"error": str(failed)[-300:]}
+                    message = str(failed).split(" failed: ", 1)[-1].replace(scratch + os.sep, "")
+                    results[row] = {"error": message[-300:]}
                 print(f"{row}: " + (f"{results[row]['wall_ms']:.1f} ms" if "wall_ms" in results[row]
                                     else results[row]["error"]), flush=True)
     if args.json:

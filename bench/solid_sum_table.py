@@ -188,16 +188,16 @@ def scaling_table(rows, manifold):
 def end_to_end_table(results):
     lines = ["| command | wall (ms) | sum in process (ms) | wall / sum | peak RSS (MiB) |", "|---|---:|---:|---:|---:|"]
     for name, r in results.items():
-        pair, threads = name.rsplit("/", 1)
+        pair, run = name.rsplit("/", 1)
         a, b = pair.split("+")
-        command = f"`cvms sum {a}.off {b}.off -o out.off" + (f" --threads {threads}`" if threads != "1" else "`")
+        options = {"1": "-o out.off", "pieces": "--pieces -o pieces.obj"}.get(run, f"-o out.off --threads {run}")
+        command = f"`cvms sum {a}.off {b}.off {options}`"
         if "wall_ms" not in r:
             lines.append(f"| {command} | failed | — | — | — |")
             continue
         s = r.get("sum_ms")
-        lines.append(f"| {command} | {fmt_ms(r['wall_ms'])} | {fmt_ms(s)} "
-                     f"| {r['wall_ms'] / s:.1f}× | {r['peak_rss_bytes'] / 2**20:.1f} |" if s else
-                     f"| {command} | {fmt_ms(r['wall_ms'])} | — | — | {r['peak_rss_bytes'] / 2**20:.1f} |")
+        lines.append(f"| {command} | {fmt_ms(r['wall_ms'])} | {fmt_ms(s)} | "
+                     + (f"{r['wall_ms'] / s:.1f}×" if s else "—") + f" | {r['peak_rss_bytes'] / 2**20:.1f} |")
     return lines
 
 
