@@ -131,6 +131,8 @@ bench/performance_page.py
 
 SOLID_SUM_COMMAND = r"""build/release/bench/cvms_solid_sum_bench --benchmark_min_time=0.05 --benchmark_repetitions=3 \
     --benchmark_enable_random_interleaving=true --benchmark_out=docs/bench/solid_sum.json --benchmark_out_format=json
+CVMS_BENCH_NEF=all build/release/bench/cvms_solid_sum_bench --benchmark_filter='^BM_CgalNef/spot' \
+    --benchmark_out=docs/bench/solid_sum_nef_spot.json --benchmark_out_format=json
 bench/manifold_peer.py --install --json docs/bench/solid_sum_manifold.json   # npm, into ~/.cache/cvms-bench
 bench/solid_sum_end_to_end.py --json docs/bench/solid_sum_end_to_end.json"""
 
@@ -412,11 +414,15 @@ def solid_sum_section(page, bench_dir):
     end_to_end_path = path_in(bench_dir, "solid_sum_end_to_end.json")
     if not (os.path.exists(path) or os.path.exists(manifold_path)):
         return
-    rows, manifold = solid_sum_table.load(path), solid_sum_table.load(manifold_path)
+    nef_spot_path = path_in(bench_dir, "solid_sum_nef_spot.json")
+    rows, manifold = solid_sum_table.load(path, nef_spot_path), solid_sum_table.load(manifold_path)
     page.add("## Non-convex sums as one closed solid", "")
     if os.path.exists(path):
         page.para(run_line(path, "cpu_time", "min", " The two-thread rows are wall time (their CPU time counts "
                            "the calling thread only); the CGAL Nef rows ran once each."))
+    if os.path.exists(nef_spot_path):
+        page.para(run_line(nef_spot_path, "cpu_time", "min", " CGAL Nef on spot ⊕ icosphere, run on its own "
+                           "(minutes)."))
     if os.path.exists(manifold_path):
         c = bench_json.context(manifold_path)
         page.para(f"*`docs/bench/{os.path.basename(manifold_path)}` (`bench/manifold_peer.py`): "

@@ -51,28 +51,45 @@ def fmt_ms(ms):
     return f"{ms:.3f}"
 
 
-def load(path):
-    """{kind: {pair: {threads: (ms, entry)}}} from rows "<kind>/<pair>/<threads>"; {} without the file."""
-    if not os.path.exists(path):
-        return {}
-    timed = dict(bench_json.rows(path, "real_time", "min"))
-    timed.update(bench_json.rows(path, "cpu_time", "min"))
+SMALL_SOLIDS = ["l_block", "box_with_hole", "star_prism", "coarse_torus"]
+
+
+def load(*paths):
+    """{kind: {pair: {threads: (ms, entry)}}} from rows "<kind>/<pair>/<threads>" (settings such as
+    "/iterations:1" dropped) of the files that exist, later files adding rows; {} without any."""
     out = {}
-    for key, value in timed.items():
-        parts = key.split("/")
-        if len(parts) == 3 and parts[2].isdigit():
-            out.setdefault(parts[0], {}).setdefault(parts[1], {})[int(parts[2])] = value
+    for path in paths:
+        if not os.path.exists(path):
+            continue
+        timed = dict(bench_json.rows(path, "real_time", "min"))
+        timed.update(bench_json.rows(path, "cpu_time", "min"))
+        for key, value in timed.items():
+            parts = [p for p in key.split("/") if ":" not in p]
+            if len(parts) == 3 and parts[2].isdigit():
+                out.setdefault(parts[0], {}).setdefault(parts[1], {})[int(parts[2])] = value
     return out
 
 
+def pair_order(pair):
+    """The benchmark's order: the small solids + the cube, + each other, spot, the combs by size."""
+    a, b = (pair.split("+") + [""])[:2]
+    if a in SMALL_SOLIDS and b == "cube":
+        return (0, SMALL_SOLIDS.index(a), 0)
+    if a in SMALL_SOLIDS and b in SMALL_SOLIDS:
+        return (1, SMALL_SOLIDS.index(a), SMALL_SOLIDS.index(b))
+    m = re.fullmatch(r"comb(\d+)", a)
+    if m:
+        return (3, int(m.group(1)), 0)
+    return (2, 0, 0) if a == "spot" else (4, 0, 0)
+
+
 def pairs_in(*tables):
-    """The pairs of all tables, in first-seen order."""
-    seen = {}
+    """The pairs of all tables, in the benchmark's order."""
+    seen = set()
     for table in tables:
         for kind in table.values():
-            for pair in kind:
-                seen.setdefault(pair, None)
-    return list(seen)
+            seen.update(kind)
+    return sorted(seen, key=lambda pair: (pair_order(pair), pair))
 
 
 def at(rows, kind, pair, threads=1):
@@ -205,7 +222,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--bench-dir", default="docs/bench")
     args = parser.parse_args()
-    rows = load(os.path.join(args.bench_dir, "solid_sum.json"))
+    rows = load(os.path.join(args.bench_dir, "solid_sum.json"), os.path.join(args.bench_dir, "solid_sum_nef_spot.json"))
     manifold = load(os.path.join(args.bench_dir, "solid_sum_manifold.json"))
     for lines in (in_process_table(rows), peers_table(rows, manifold), scaling_table(rows, manifold)):
         print("\n".join(lines) + "\n")
