@@ -6,27 +6,17 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/minkowski_sum_3.h>
 
-#include <type_traits>
 #include <vector>
+
+#include "cgal_exact.hpp"
 
 namespace cvms_bench {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Point = Kernel::Point_3;
+using cgal::exact;
+using Point = cgal::Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
-using Nef = CGAL::Nef_polyhedron_3<Kernel>;
-using ExactNumber = Kernel::FT::Exact_type;
-
-// As in peer_cgal.cpp: every configuration of Epeck's exact number type
-// takes a GMP rational, so the conversion is exact.
-Kernel::FT exact(const cvms::Rational& q) {
-  if constexpr (std::is_constructible_v<ExactNumber, const mpq_class&>) {
-    return Kernel::FT(ExactNumber(q));
-  } else {
-    return Kernel::FT(ExactNumber(q.get_mpq_t()));
-  }
-}
+using Nef = CGAL::Nef_polyhedron_3<cgal::Kernel>;
 
 }  // namespace
 
@@ -38,7 +28,7 @@ CgalNefOperand::CgalNefOperand(const cvms::Solid& solid) : impl_(std::make_uniqu
   std::vector<Mesh::Vertex_index> index;
   index.reserve(solid.vertices().size());
   for (const cvms::Vec3& v : solid.vertices())
-    index.push_back(impl_->mesh.add_vertex(Point(exact(v.x), exact(v.y), exact(v.z))));
+    index.push_back(impl_->mesh.add_vertex(exact(v)));
   for (const auto& t : solid.triangles()) impl_->mesh.add_face(index[t[0]], index[t[1]], index[t[2]]);
 }
 

@@ -40,14 +40,7 @@ def run_line(path, time_field, statistic, extra=""):
     return (f"*`docs/bench/{os.path.basename(path)}`: {what}, {stat}; {machine}.{extra}*")
 
 
-def fmt_ms(ms):
-    if ms >= 100:
-        return f"{ms:,.0f}"
-    if ms >= 10:
-        return f"{ms:.1f}"
-    if ms >= 1:
-        return f"{ms:.2f}"
-    return f"{ms:.3f}"
+fmt_ms = bench_json.fmt_ms
 
 
 def ratio(a, b, digits=1):

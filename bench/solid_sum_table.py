@@ -39,16 +39,7 @@ def pair_label(pair):
     return " ⊕ ".join(one(n) for n in pair.split("+"))
 
 
-def fmt_ms(ms):
-    if ms is None:
-        return "—"
-    if ms >= 100:
-        return f"{ms:,.0f}"
-    if ms >= 10:
-        return f"{ms:.1f}"
-    if ms >= 1:
-        return f"{ms:.2f}"
-    return f"{ms:.3f}"
+fmt_ms = bench_json.fmt_ms
 
 
 SMALL_SOLIDS = ["l_block", "box_with_hole", "star_prism", "coarse_torus"]
