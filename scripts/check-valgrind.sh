@@ -79,7 +79,9 @@ expect() {
 expect 0 check_cube check test/data/cube.off
 expect 0 check_tetra_exact check test/data/tetra_exact.off
 expect 0 check_reflex check "$work/reflex.off"  # a valid solid that is not convex
-expect 1 sum_reflex sum "$work/reflex.off" test/data/cube.off -o "$work/reflex_sum.off"  # refused without --pieces
+expect 0 sum_reflex sum "$work/reflex.off" test/data/cube.off -o "$work/reflex_sum.off"  # the sum as one solid
+expect 0 check_reflex_sum check "$work/reflex_sum.off"
+expect 1 sum_reflex_three sum "$work/reflex.off" test/data/cube.off test/data/cube.off -o "$work/reflex_three.off"
 expect 0 sum_reflex_pieces sum "$work/reflex.off" test/data/cube.off --pieces -o "$work/reflex_sum.obj"
 expect 1 check_open check "$work/open.off"
 expect 1 check_lying_header check "$work/lying.off"

@@ -186,10 +186,11 @@ TEST_F(CliPieces, PlacementOptionsMoveEveryPiece) {
                         [&](const Vec3& q) { return -(q + t); });
 }
 
-TEST_F(CliPieces, NonConvexOperandWithoutPiecesIsRefusedWithTheWayOut) {
+TEST_F(CliPieces, PiecesFileWithoutPiecesIsRefusedWithTheWayOut) {
   dir_.write("out.off", "untouched");
-  expect_failure("sum " + solid_path("l_block") + " " + solid_path("decimal_box") + " -o out.off",
-                 "l_block.off: a solid with 1 reflex edge, not a convex set: pass --pieces");
+  ok("decompose " + solid_path("l_block") + " -o l.obj");
+  expect_failure("sum l.obj " + solid_path("decimal_box") + " -o out.off",
+                 "l.obj: a pieces file of 2 convex pieces, not a convex set: pass --pieces");
   EXPECT_EQ(read("out.off"), "untouched");
   // An invalid solid gets the solid's located defect.
   expect_failure("sum " + solid_path("decimal_box") + " " + solid_path("open_box"),

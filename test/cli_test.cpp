@@ -332,12 +332,14 @@ TEST_F(Cli, BadInputExitsOneWithOneLineNamingTheFile) {
              "4 0 3 2 1\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
   expect_bad_input("check open.off", "open.off");
   // An octahedron whose top vertex is pushed below the equator: reflex edges.
-  // A valid solid (`check` reports it, cli_pieces_test), refused as a convex operand.
+  // A valid solid (`check` reports it, cli_pieces_test), refused as an
+  // operand of a sum of more than two (a sum of two writes its sum as a
+  // solid, cli_solid_sum_test).
   write_text("dent.off",
              "OFF\n6 8 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n0 0 -1/2\n0 0 -1\n"
              "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n3 1 0 5\n3 2 1 5\n3 3 2 5\n3 0 3 5\n");
-  expect_bad_input("sum dent.off cube.off", "dent.off");
-  Outcome dent = run("sum dent.off cube.off");
+  expect_bad_input("sum dent.off cube.off cube.off", "dent.off");
+  Outcome dent = run("sum dent.off cube.off cube.off");
   EXPECT_NE(dent.err.find("not_convex"), std::string::npos) << dent.err;
   // A non-convex flat face (flat input is a set, but a reflex one is not).
   write_text("bent.off", "OFF\n4 1 0\n0 0 0\n4 0 0\n1 1 0\n0 4 0\n4 0 1 2 3\n");

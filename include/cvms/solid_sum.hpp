@@ -34,6 +34,15 @@ Solid union_solid(const ConvexUnion& pieces, const Options& options = {});
 /// A + b (b a point inside B) and of the sums of A's boundary faces with B.
 /// Otherwise both are decomposed (convex_decomposition) and the pairwise sums
 /// of the pieces are united. Two convex operands give their convex sum.
+/// options.threads spreads the sums and the union over that many threads;
+/// the result is the same for every thread count. options.limits bounds each
+/// convex sum and all of them together, as minkowski_sum of two unions does
+/// (cvms/convex_union.hpp). options.progress hears "solid sum: faces" (A's
+/// face polygons summed with B) and "solid sum: fragments" (the union's
+/// fragments tested against A + b) when one operand is convex, and the
+/// stages of the sums and of the union.
+/// \throw Error(invalid_argument) for an empty operand;
+/// \throw Error(limit) naming the limit (SumLimits, DecompositionLimits);
 /// \throw as convex_decomposition, minkowski_sum and union_solid.
 Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options = {},
                     const DecompositionOptions& decomposition = {});

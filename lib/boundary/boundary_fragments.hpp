@@ -48,6 +48,9 @@ struct BoundaryFragments {
 /// touch or share facets). Deterministic: the same pieces in the same order
 /// give the same fragments in the same order, whatever options.threads.
 /// \throw Error(cancelled) if options.progress returns false.
+/// \throw Error(limit) if the corners made would pass
+///   options.limits.max_memory_bytes (an estimate per corner).
+/// \throw Error(invalid_argument) for an empty piece.
 BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options);
 
 }  // namespace cvms::detail

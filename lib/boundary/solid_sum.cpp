@@ -1,13 +1,128 @@
 // SPDX-License-Identifier: MIT
-// A + B of solids as one solid (see cvms/solid_sum.hpp).
+// A + B of solids as one solid (see cvms/solid_sum.hpp), by the road with the
+// fewest pieces:
+//  - both convex: their convex sum;
+//  - one convex (say B; the sum commutes): no decomposition. For a point b
+//    inside B, A + B = (A + b) u (dA + B) (proof below), and dA + B is the
+//    union of f + B over A's boundary cut into convex polygons f
+//    (facet_polygons.hpp, face_sums.hpp): convex pieces whose union's
+//    boundary comes in fragments as for any union. dA + b lies in the
+//    interior of dA + B (b is interior to B), so no point of the boundary of
+//    dA + B lies on the boundary of A + b: each fragment (connected) lies
+//    wholly in the interior of A + b, where it bounds nothing of the sum and
+//    is dropped, or wholly outside A + b, where it is kept. One exact locate
+//    of a point of its relative interior in A tells which.
+//  - neither convex: the pairwise sums of both decompositions, united.
+// Proof of A + B = (A + b) u (dA + B): let x = a + c with a in A, c in B.
+// If x - b is in A, x is in A + b. Otherwise the segment from a (in A) to
+// x - b = a + (c - b) (not in A) meets dA at some a' = a + t (c - b),
+// t in [0, 1], and x - a' = (1 - t) c + t b lies in B (convex): x is in
+// dA + B. Both sets lie in A + B, so the union is all of it.
 #include "cvms/solid_sum.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+#include "boundary_assembly.hpp"
+#include "boundary_fragments.hpp"
+#include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
+#include "face_sums.hpp"
+#include "facet_polygons.hpp"
+#include "progress_reporter.hpp"
+#include "worker.hpp"
 
 namespace cvms {
+namespace {
 
-Solid minkowski_sum(const Solid&, const Solid&, const Options&, const DecompositionOptions&) {
-  throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: not built yet");
+ConvexPolyhedron as_polyhedron(const Solid& convex) {
+  const std::vector<Vec3> points(convex.vertices().begin(), convex.vertices().end());
+  return convex_hull(points);
+}
+
+// A point in B's interior: the centroid of its vertices.
+Vec3 interior_point(const ConvexPolyhedron& b) {
+  Vec3 sum;
+  for (VertexId v : b.mesh().vertices()) sum = sum + b.vertex(v);
+  return Rational(Rational(1) / b.num_vertices()) * sum;
+}
+
+// Whether each fragment lies inside A + b, by one locate of a point of its
+// relative interior (the centroid of three corners) in A; on
+// options.threads threads taking chunks of fragments from one counter, each
+// answer in its own slot, so the answers do not depend on the threads.
+std::vector<char> inside_translate(const detail::BoundaryFragments& all, const Solid& a, const Vec3& b,
+                                   const Options& options) {
+  constexpr std::size_t chunk = 256;
+  const std::size_t n = all.fragments.size();
+  std::vector<char> inside(n, 0);
+  detail::ProgressReporter progress(detail::callback_of(options.progress));
+  progress.begin("solid sum: fragments", n);
+  std::atomic<std::size_t> next{0};
+  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+  const auto threads =
+      static_cast<unsigned>(std::min<std::size_t>({std::max(1U, options.threads), cores, n / chunk + 1}));
+  detail::run_on_threads(threads, [&](unsigned) {
+    for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk)) {
+      const std::size_t end = std::min(n, begin + chunk);
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::vector<Vec3>& c = all.fragments[i].corners;
+        const Vec3 centroid = Rational(Rational(1) / 3) * (c[0] + c[1] + c[2]);
+        inside[i] = a.locate(centroid - b) == Location::inside ? 1 : 0;
+      }
+      progress.advance(end - begin);
+    }
+  });
+  progress.end();
+  return inside;
+}
+
+// The fragments that lie outside A + b, with the planes they use renumbered
+// in order.
+detail::BoundaryFragments outside(detail::BoundaryFragments all, const Solid& a, const Vec3& b,
+                                  const Options& options) {
+  const std::vector<char> inside = inside_translate(all, a, b, options);
+  detail::BoundaryFragments kept;
+  std::vector<std::uint32_t> renumbered(all.planes.size(), UINT32_MAX);
+  for (std::size_t i = 0; i < all.fragments.size(); ++i) {
+    if (inside[i] != 0) continue;
+    detail::BoundaryFragment& fragment = all.fragments[i];
+    std::uint32_t& plane = renumbered[fragment.plane];
+    if (plane == UINT32_MAX) {
+      plane = static_cast<std::uint32_t>(kept.planes.size());
+      kept.planes.push_back(all.planes[fragment.plane]);
+    }
+    fragment.plane = plane;
+    kept.fragments.push_back(std::move(fragment));
+  }
+  return kept;
+}
+
+// A + B for A not convex and B convex.
+Solid sum_with_convex(const Solid& a, const ConvexPolyhedron& b, const Options& options) {
+  const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
+  const std::vector<ConvexPolyhedron> pieces = detail::face_sums(polygons, b, options);
+  const Vec3 inside_b = interior_point(b);
+  return detail::assemble_boundary(
+      outside(detail::union_boundary_fragments(pieces, options), a, inside_b, options), options);
+}
+
+}  // namespace
+
+Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options,
+                    const DecompositionOptions& decomposition) {
+  if (a.triangles().empty())
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: A is empty");
+  if (b.triangles().empty())
+    throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: B is empty");
+  if (a.is_convex() && b.is_convex())
+    return Solid::from_polyhedron(minkowski_sum(as_polyhedron(a), as_polyhedron(b), options).polyhedron);
+  if (b.is_convex()) return sum_with_convex(a, as_polyhedron(b), options);
+  if (a.is_convex()) return sum_with_convex(b, as_polyhedron(a), options);
+  return union_solid(minkowski_sum_pieces(a, b, options, decomposition), options);
 }
 
 }  // namespace cvms

@@ -8,22 +8,17 @@
 // face) no edge folds back onto its neighbour and no two other edges meet.
 // A simple polygon whose corners are not all collinear has positive area.
 //
-// Ear clipping: a corner is an ear when it turns strictly as the polygon
-// does and no other remaining corner lies in the closed triangle of it and
-// its neighbours; clipping it leaves a simple polygon (no edge can enter the
-// triangle without a corner inside it, since the triangle's other two sides
-// are edges of the polygon) of the same turning, and the ear's triangle has
-// positive area. Only the two neighbours of a clipped ear change status; the
-// others are re-examined before giving up, so a face is never rejected for a
-// stale status. Quadratic in the face's size.
+// Ear clipping (ear_clipping.hpp) of the checked simple polygon: its corners
+// are distinct, so every ear test is the plain one (no other corner in the
+// closed triangle).
 #include "face_triangulation.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <string>
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "ear_clipping.hpp"
 #include "element_names.hpp"
 #include "planar_tests.hpp"
 #include "plane_chart.hpp"
@@ -100,70 +95,6 @@ class FaceCheck {
   std::string where_;
 };
 
-class EarClipper {
- public:
-  EarClipper(std::span<const Vec2> p, int turn)
-      : p_(p), turn_(turn), prev_(p.size()), next_(p.size()), ear_(p.size()) {
-    const std::size_t k = p.size();
-    for (std::size_t i = 0; i < k; ++i) {
-      prev_[i] = (i + k - 1) % k;
-      next_[i] = (i + 1) % k;
-    }
-    for (std::size_t i = 0; i < k; ++i) ear_[i] = is_ear(i);
-  }
-
-  // Calls emit(a, b, c) with corner positions of each triangle; false if no
-  // ear is left (never for a simple polygon).
-  template <class Emit>
-  bool run(Emit emit) {
-    std::size_t remaining = p_.size();
-    std::size_t cur = 0;
-    while (remaining > 3) {
-      const auto ear = find_ear(cur, remaining);
-      if (!ear) return false;
-      const std::size_t i = *ear;
-      const std::size_t a = prev_[i];
-      const std::size_t b = next_[i];
-      emit(a, i, b);
-      next_[a] = b;
-      prev_[b] = a;
-      --remaining;
-      ear_[a] = is_ear(a);
-      ear_[b] = is_ear(b);
-      cur = b;
-    }
-    if (orient2(p_[prev_[cur]], p_[cur], p_[next_[cur]]) != turn_) return false;
-    emit(prev_[cur], cur, next_[cur]);
-    return true;
-  }
-
- private:
-  std::optional<std::size_t> find_ear(std::size_t cur, std::size_t remaining) {
-    for (int pass = 0; pass < 2; ++pass) {
-      std::size_t i = cur;
-      for (std::size_t step = 0; step < remaining; ++step, i = next_[i]) {
-        if (pass == 1) ear_[i] = is_ear(i);
-        if (ear_[i]) return i;
-      }
-    }
-    return std::nullopt;
-  }
-
-  bool is_ear(std::size_t i) const {
-    const std::size_t a = prev_[i];
-    const std::size_t b = next_[i];
-    if (orient2(p_[a], p_[i], p_[b]) != turn_) return false;
-    for (std::size_t j = next_[b]; j != a; j = next_[j])
-      if (point_in_triangle(p_[j], p_[a], p_[i], p_[b])) return false;
-    return true;
-  }
-
-  std::span<const Vec2> p_;
-  int turn_;
-  std::vector<std::size_t> prev_, next_;
-  std::vector<bool> ear_;
-};
-
 }  // namespace
 
 void triangulate_face(std::span<const Vec3> points, std::span<const std::uint32_t> ids,
@@ -193,13 +124,16 @@ void triangulate_face(std::span<const Vec3> points, std::span<const std::uint32_
   check.check_simple(p);
   Rational twice_area;
   for (std::size_t i = 0; i < k; ++i) twice_area += cross(p[i], p[(i + 1) % k]);
-  EarClipper clipper(p, sgn(twice_area));
-  const bool done = clipper.run([&](std::size_t a, std::size_t b, std::size_t c) {
+  std::vector<std::uint32_t> positions(k);
+  for (std::uint32_t i = 0; i < k; ++i) positions[i] = i;
+  std::vector<std::array<std::uint32_t, 3>> ears;
+  EarClipper clipper(p, std::move(positions), sgn(twice_area));
+  if (!clipper.run(ears)) degenerate(check.where() + " could not be triangulated without new vertices");
+  for (const auto& [a, b, c] : ears) {
     out.push_back({ids[a], ids[b], ids[c]});
     const Vec3& pa = points[ids[a]];
     areas.push_back(cross(points[ids[b]] - pa, points[ids[c]] - pa));
-  });
-  if (!done) degenerate(check.where() + " could not be triangulated without new vertices");
+  }
 }
 
 }  // namespace cvms::detail

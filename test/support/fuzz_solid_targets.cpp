@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The fuzz targets of the non-convex paths (fuzz_targets.hpp): the pieces
-// reader and the solid reader. Each accepted input is checked against what
+// reader, the solid reader and the sum of solids as one solid. Each accepted input is checked against what
 // the library promises, with the test's own exact arithmetic where it can.
+#include <algorithm>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -9,9 +12,11 @@
 #include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "cvms/solid.hpp"
+#include "cvms/solid_sum.hpp"
 #include "cvms/union_io.hpp"
 #include "support/fuzz_targets.hpp"
 #include "support/union_oracle.hpp"
+#include "support/voxel_oracle.hpp"
 
 namespace cvms::fuzz {
 namespace {
@@ -22,7 +27,60 @@ std::string text_of(std::span<const std::uint8_t> data) {
   return std::string(reinterpret_cast<const char*>(data.data()), data.size());
 }
 
+// Cubes of an nx x ny x nz grid, one bit each from `data` from bit `first`
+// on (missing bits are 0).
+test::Cubes decode_cubes(std::span<const std::uint8_t> data, std::size_t first, int nx, int ny, int nz) {
+  test::Cubes cubes;
+  std::size_t bit = first;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k, ++bit)
+        if (bit / 8 < data.size() && ((data[bit / 8] >> (bit % 8)) & 1) != 0) cubes.insert({i, j, k});
+  return cubes;
+}
+
+// The polycube as a solid, or nothing when it is none (empty, or cubes
+// meeting only along an edge or at a corner).
+std::optional<Solid> polycube_solid(const test::Cubes& cubes) {
+  if (cubes.empty()) return std::nullopt;
+  try {
+    return Solid::from_soup(test::polycube_soup(cubes));
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
+
+void solid_sum_target(std::span<const std::uint8_t> data) {
+  if (data.empty()) return;
+  // Byte 0: bit 0 picks B (a box, or a polycube of a 2 x 2 x 2 grid), bits
+  // 1-5 the box's sides, bit 6 two threads. Then A's cubes (3 x 3 x 2 grid),
+  // then B's.
+  const std::uint8_t mode = data[0];
+  const test::Cubes a_cubes = decode_cubes(data, 8, 3, 3, 2);
+  const test::Cubes b_cubes =
+      (mode & 1) != 0 ? decode_cubes(data, 8 + 18, 2, 2, 2)
+                      : test::box_cubes(1 + ((mode >> 1) & 1), 1 + ((mode >> 2) & 3), 1 + ((mode >> 4) & 1));
+  const std::optional<Solid> a = polycube_solid(a_cubes), b = polycube_solid(b_cubes);
+  if (!a || !b) return;
+  Options options;
+  options.threads = (mode & 64) != 0 ? 2 : 1;
+  Solid sum;
+  try {
+    sum = minkowski_sum(*a, *b, options);
+  } catch (const Error& e) {
+    finding(std::string("solid_sum: two valid polycubes do not sum: ") + e.what());
+  }
+  const test::Cubes expected = test::polycube_sum(a_cubes, b_cubes);
+  if (sum.volume() != Rational(static_cast<long>(expected.size())))
+    finding("solid_sum: the volume is not the voxel count");
+  std::set<Vec3> corners;
+  for (const test::Cube& g : test::voxel_vertices(expected)) corners.insert(test::mapped_point(g, {}));
+  if (std::set<Vec3>(sum.vertices().begin(), sum.vertices().end()) != corners)
+    finding("solid_sum: the vertices are not the voxels' corners");
+  if (sum.num_facets() != test::voxel_facets(expected)) finding("solid_sum: the facets are not the voxels'");
+}
 
 void read_pieces_target(std::span<const std::uint8_t> data) {
   std::istringstream in(text_of(data));

@@ -554,12 +554,13 @@ Target target_by_name(const std::string& name) {
   if (name == "halfspaces") return &halfspaces_target;
   if (name == "read_pieces") return &read_pieces_target;
   if (name == "read_solid") return &read_solid_target;
+  if (name == "solid_sum") return &solid_sum_target;
   return nullptr;
 }
 
 std::vector<std::string> target_names() {
-  return {"read_off",  "read_obj",  "read_stl",        "read_ply",   "read_points", "from_soup",
-          "minkowski", "sets",      "read_halfspaces", "halfspaces", "read_pieces", "read_solid"};
+  return {"read_off", "read_obj",        "read_stl",   "read_ply",    "read_points", "from_soup", "minkowski",
+          "sets",     "read_halfspaces", "halfspaces", "read_pieces", "read_solid",  "solid_sum"};
 }
 
 }  // namespace cvms::fuzz

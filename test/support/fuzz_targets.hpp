@@ -92,9 +92,17 @@ void read_pieces_target(std::span<const std::uint8_t> data);
 /// sum to its volume.
 void read_solid_target(std::span<const std::uint8_t> data);
 
+/// A sum of solids as one solid (minkowski_sum of two Solids): bytes
+/// decoded to a polycube A (cubes of a 3 x 3 x 2 grid) and a box or a
+/// polycube B (2 x 2 x 2), on one or two threads; inputs that are no valid
+/// solid are skipped. The result's volume, vertex set and facet count equal
+/// the exact voxel oracle's (test/support/voxel_oracle.hpp).
+void solid_sum_target(std::span<const std::uint8_t> data);
+
 /// A target by name ("read_off", "read_obj", "read_stl", "read_ply",
 /// "read_points", "from_soup", "minkowski", "sets", "read_halfspaces",
-/// "halfspaces", "read_pieces", "read_solid"); nullptr for an unknown name.
+/// "halfspaces", "read_pieces", "read_solid", "solid_sum"); nullptr for an
+/// unknown name.
 using Target = void (*)(std::span<const std::uint8_t>);
 Target target_by_name(const std::string& name);
 /// All target names, in a fixed order.

@@ -8,6 +8,8 @@
 // for every nonzero q (no square root of n is needed, so it stays exact).
 #include "placement.hpp"
 
+#include <algorithm>
+
 #include "cvms/convex_hull.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
@@ -130,6 +132,26 @@ ConvexSet placed(ConvexSet set, const Placement& placement, const std::string& o
   }
   if (placement.negate) set = set.reflected();
   return set;
+}
+
+PolygonSoup placed(PolygonSoup soup, const Placement& placement, const std::string& operand) {
+  const std::optional<Mat3> m = linear_part(placement, operand);
+  Vec3 t;
+  if (!placement.translate.empty()) {
+    const std::vector<Rational> v = numbers(placement.translate, "--translate-" + operand);
+    t = Vec3{v[0], v[1], v[2]};
+  }
+  for (Vec3& p : soup.points) {
+    if (m) p = *m * p;
+    p = p + t;
+    if (placement.negate) p = -p;
+  }
+  const bool reversed = (m && sgn(m->determinant()) < 0) != placement.negate;
+  if (reversed)
+    for (std::size_t f = 0; f < soup.num_faces(); ++f)
+      std::reverse(soup.face_indices.begin() + static_cast<std::ptrdiff_t>(soup.face_offsets[f]),
+                   soup.face_indices.begin() + static_cast<std::ptrdiff_t>(soup.face_offsets[f + 1]));
+  return soup;
 }
 
 }  // namespace cvms::cli

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cvms/convex_set.hpp"
+#include "cvms/polygon_soup.hpp"
 
 namespace cvms::cli {
 
@@ -39,5 +40,11 @@ void check_placement(const Placement& placement, const std::string& operand);
 /// not parse, a zero quaternion, a --rotate matrix that is not a rotation
 /// (not orthogonal, or determinant -1), a singular --linear matrix.
 ConvexSet placed(ConvexSet set, const Placement& placement, const std::string& operand);
+
+/// A mesh placed the same way, point by point; each face's order is
+/// reversed when the map reverses orientation (a negative determinant:
+/// --negate-X, or a --linear-X matrix with det < 0, but not both), so that
+/// an outward surface stays outward. 	hrow UsageError as above.
+PolygonSoup placed(PolygonSoup soup, const Placement& placement, const std::string& operand);
 
 }  // namespace cvms::cli

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 // `cvms sum A B [C ...]`: the Minkowski sum of convex sets of any dimension.
 // Two polyhedra go through minkowski_sum; flat operands, or more than two,
-// through the sum of convex sets. With --pieces, operands that need not be
-// convex go through pieces_sum.hpp.
+// through the sum of convex sets. A solid that is not convex, one of two
+// operands, goes through solid_sum.hpp (the boundary of A + B as one solid);
+// with --pieces, operands that need not be convex go through pieces_sum.hpp
+// (the pieces of A + B).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +28,7 @@
 #include "reports.hpp"
 #include "set_files.hpp"
 #include "sizes.hpp"
+#include "solid_sum.hpp"
 #include "timed_sum.hpp"
 #include "usage_error.hpp"
 
@@ -99,22 +104,56 @@ void sum_sets(const std::vector<ConvexSet>& operands, const SumArgs& args, std::
          << "\ntime: " << milliseconds(time) << "\n";
 }
 
+// The operands as read: convex sets, and for a sum of two, a solid that is
+// not convex in place of its operand (the set there is then empty).
+struct Operands {
+  std::vector<ConvexSet> sets;
+  std::array<std::optional<Solid>, 2> solids;
+};
+
 // Moved in one by one: a braced list would copy every operand (its elements
 // are const), as costly as a sum on large operands.
-std::vector<ConvexSet> read_operands(const SumArgs& args) {
-  std::vector<ConvexSet> sets;
-  sets.reserve(2 + args.more.size());
-  auto read = [](const std::string& path) {
+Operands read_operands(const SumArgs& args) {
+  Operands operands;
+  operands.sets.reserve(2 + args.more.size());
+  auto read = [&](const std::string& path) {
     try {
       return read_set(path);
     } catch (const Error& e) {
-      rethrow_explaining_non_convex(e, path, "pass --pieces to sum it as a union of convex pieces");
+      const std::size_t index = operands.sets.size();
+      if (!args.more.empty())
+        rethrow_explaining_non_convex(e, path, "a sum of more than two operands takes convex sets only");
+      const Placement& placement = index == 0 ? args.place_a : args.place_b;
+      operands.solids[index] = read_non_convex_solid(e, path, placement, index == 0 ? "a" : "b");
+      if (!operands.solids[index])
+        rethrow_explaining_non_convex(e, path, "pass --pieces to sum it as a union of convex pieces");
+      return ConvexSet();
     }
   };
-  sets.push_back(read(args.a));
-  sets.push_back(read(args.b));
-  for (const std::string& path : args.more) sets.push_back(read(path));
-  return sets;
+  operands.sets.push_back(read(args.a));
+  operands.sets.push_back(read(args.b));
+  for (const std::string& path : args.more) operands.sets.push_back(read(path));
+  return operands;
+}
+
+// A + B when an operand is a solid that is not convex: the other one, a
+// convex set, must be a polyhedron.
+void sum_solids(Operands operands, const SumArgs& args, std::ostream& report) {
+  SolidSum sum{args.output,       args.format, args.options(), args.pieces.decomposition,
+               args.float_output, args.stats};
+  check_solid_sum(sum);
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (operands.solids[i]) continue;
+    const ConvexSet set =
+        placed(std::move(operands.sets[i]), i == 0 ? args.place_a : args.place_b, i == 0 ? "a" : "b");
+    if (set.dimension() != 3)
+      throw Error(ErrorCategory::invalid_argument,
+                  input_name(i == 0 ? args.a : args.b) + ": a " + kind(set) +
+                      ": a solid that is not convex is summed with polyhedra and solids only");
+    operands.solids[i] = Solid::from_polyhedron(set.polyhedron());
+  }
+  run_solid_sum(*operands.solids[0], *operands.solids[1], sum, report);
+  keep_until_exit(std::move(operands));
 }
 
 // With stats, the counts, the time and the algorithm's statistics go to report.
@@ -129,7 +168,9 @@ void run_sum(const SumArgs& args, std::ostream& report) {
     throw UsageError("only one input can be read from stdin");
   check_placement(args.place_a, "a");
   check_placement(args.place_b, "b");
-  std::vector<ConvexSet> sets = read_operands(args);
+  Operands operands = read_operands(args);
+  if (operands.solids[0] || operands.solids[1]) return sum_solids(std::move(operands), args, report);
+  std::vector<ConvexSet>& sets = operands.sets;
   sets[0] = placed(std::move(sets[0]), args.place_a, "a");
   sets[1] = placed(std::move(sets[1]), args.place_b, "b");
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
@@ -144,14 +185,16 @@ void run_sum(const SumArgs& args, std::ostream& report) {
 void register_sum(CLI::App& app, Commands& commands) {
   auto args = std::make_shared<SumArgs>();
   args->limits = sum_limits_for_memory(usable_memory_bytes());
-  CLI::App* command = app.add_subcommand("sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension");
+  CLI::App* command = app.add_subcommand(
+      "sum", "Minkowski sum A + B [+ C ...] of convex sets of any dimension, or A + B of solids");
   add_operands(*command, args->a, args->b);
   command->add_option("C", args->more, "further operands")->check(set_path());
   add_output_options(*command, args->output, args->format, args->float_output);
   add_algorithm_option(*command, args->algorithm);
   command
       ->add_option("--threads", args->threads,
-                   "threads for each sum of two polyhedra by cvms, used where they pay (the output is identical)")
+                   "threads for each sum of two polyhedra by cvms and for sums of solids, used where they "
+                   "pay (the output is identical)")
       ->check(CLI::Range(1u, 1024u))
       ->default_val(1u);
   command->add_flag("--stats", args->stats, "print counts, time and algorithm statistics");

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// What one piece Q takes away from a facet f of another piece P on the
+// plane h (outward normal n): the closed convex polygon C_Q of h whose
+// points are not on the union's boundary because of Q, as cutting planes.
+//
+// A point x of f's relative interior, off a set of measure zero, is on the
+// union's boundary iff no other piece covers the outer side of h near x.
+// Q covers it iff x is in Q's interior (Q has vertices strictly on both
+// sides of h, so Q ∩ h is a polygon of positive area), or Q has a facet on
+// h facing the other way (Q lies on the outer side). A facet of Q on h
+// facing the same way is the same stretch of boundary twice: the piece of
+// smaller index keeps it. Otherwise Q meets h in an edge, a vertex or not
+// at all, which covers nothing of positive area. So C_Q is Q ∩ h in the
+// first three cases and empty otherwise.
+//
+// Q ∩ h as planes: within h it is the intersection of the half-spaces of
+// Q's facets g that meet h in a segment (its edges lie on those), found
+// from the sides of g's corners: corners strictly on both sides, or two
+// corners on h without g lying in h. Three corners of Q on h with Q on one
+// side mean that Q has a facet on h: Q's vertices are extreme, so no three
+// of them lie on one edge, and three non-collinear points of Q on a
+// supporting plane span a facet.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cvms/sign.hpp"
+#include "piece_geometry.hpp"
+#include "plane_clip.hpp"
+#include "section_walk.hpp"
+
+namespace cvms::detail {
+
+/// Fills `region` with the planes of C_Q for a facet on `plane` (the
+/// facet's own half-space) of a piece with index p, Q having index q != p,
+/// and returns true; false (region left empty) if C_Q is empty. The planes
+/// come in the order of Q's facets. Tries a walk round the section first
+/// (section_walk.hpp), and tests every vertex of Q when it gives up.
+/// `sides` and `section` are scratch space.
+bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
+                     std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);
+
+/// How a convex region of a facet's plane (given by half-spaces) meets the
+/// facet: in zero area (some half-space has every corner on or outside its
+/// plane), containing it (every corner inside or on every plane), or
+/// otherwise in part.
+enum class FacetOverlap { none, all, part };
+FacetOverlap facet_overlap(const std::vector<ClipPlane>& region, const PieceGeometry& p_geometry,
+                           std::uint32_t facet);
+
+}  // namespace cvms::detail

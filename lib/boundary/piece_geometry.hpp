@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// What the union's boundary reads of each piece, gathered once before the
+// pieces are shared among threads: the facets' planes as cutting planes
+// (exact integer normal and offset, with their approximations), the facets'
+// corner cycles, and outward-rounded boxes of the piece and of each facet
+// for the box hierarchy.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cvms/convex_polyhedron.hpp"
+#include "outward_box.hpp"
+#include "plane_clip.hpp"
+
+namespace cvms::detail {
+
+struct PieceGeometry {
+  const ConvexPolyhedron* piece = nullptr;
+  /// One per facet: dot(normal, x) <= offset holds on the piece.
+  std::vector<ClipPlane> planes;
+  /// Facet f's corners are corners[corner_start[f] .. corner_start[f + 1]),
+  /// counterclockwise seen from outside.
+  std::vector<std::uint32_t> corner_start;
+  std::vector<VertexId> corners;
+  std::vector<unions::OutwardBox> facet_boxes;
+  unions::OutwardBox box;
+  /// The box's corners as exact points (corner i takes box.hi[k] where bit
+  /// k of i is set, else box.lo[k]), when the box is finite; else empty.
+  /// A plane has the whole piece strictly on one side if it has the
+  /// box's corner that is nearest in that direction there: two filtered
+  /// predicates on doubles instead of one per vertex.
+  std::vector<ClipPoint> box_corners;
+};
+
+/// The geometry of a non-empty piece, which must outlive it.
+PieceGeometry piece_geometry(const ConvexPolyhedron& piece);
+
+/// Corner v of the piece with its cached approximation.
+Vec3Ref vertex_ref(const ConvexPolyhedron& piece, VertexId v);
+
+/// Corner v of the piece as a clip point.
+ClipPoint clip_point(const ConvexPolyhedron& piece, VertexId v);
+
+}  // namespace cvms::detail

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// See plane_clip.hpp.
+#include "plane_clip.hpp"
+
+#include <cstddef>
+#include <utility>
+
+#include "filtered_predicates.hpp"
+
+namespace cvms::detail {
+namespace {
+
+// Rationals reused by crossing() on each thread, so that its intermediate
+// values keep their limbs from one call to the next instead of allocating.
+struct CrossingScratch {
+  Rational sa, sb, product, t;
+};
+
+// s = dot(n, x) - offset, into s.
+void plane_value(Rational& s, Rational& product, const Vec3& n, const Vec3& x, const Rational& offset) {
+  mpq_mul(s.get_mpq_t(), n.x.get_mpq_t(), x.x.get_mpq_t());
+  mpq_mul(product.get_mpq_t(), n.y.get_mpq_t(), x.y.get_mpq_t());
+  mpq_add(s.get_mpq_t(), s.get_mpq_t(), product.get_mpq_t());
+  mpq_mul(product.get_mpq_t(), n.z.get_mpq_t(), x.z.get_mpq_t());
+  mpq_add(s.get_mpq_t(), s.get_mpq_t(), product.get_mpq_t());
+  mpq_sub(s.get_mpq_t(), s.get_mpq_t(), offset.get_mpq_t());
+}
+
+// The point where the segment [a, b] crosses the plane, for a and b
+// strictly on opposite sides: a + t (b - a) with t = s_a / (s_a - s_b),
+// s = dot(normal, x) - offset.
+ClipPoint crossing(const ClipPoint& a, const ClipPoint& b, const ClipPlane& plane) {
+  thread_local CrossingScratch s;
+  plane_value(s.sa, s.product, *plane.normal, a.exact, *plane.offset);
+  plane_value(s.sb, s.product, *plane.normal, b.exact, *plane.offset);
+  mpq_sub(s.sb.get_mpq_t(), s.sa.get_mpq_t(), s.sb.get_mpq_t());
+  mpq_div(s.t.get_mpq_t(), s.sa.get_mpq_t(), s.sb.get_mpq_t());
+  Vec3 x;
+  for (int k = 0; k < 3; ++k) {
+    mpq_sub(s.product.get_mpq_t(), b.exact[k].get_mpq_t(), a.exact[k].get_mpq_t());
+    mpq_mul(s.product.get_mpq_t(), s.product.get_mpq_t(), s.t.get_mpq_t());
+    mpq_add(x[k].get_mpq_t(), a.exact[k].get_mpq_t(), s.product.get_mpq_t());
+  }
+  const ApproxVec3 approx = ApproxVec3::of(x);
+  return {std::move(x), approx};
+}
+
+// Appends the crossing point of corners i and j and returns its index.
+std::uint32_t add_crossing(ClipPoints& points, std::uint32_t i, std::uint32_t j, const ClipPlane& plane) {
+  ClipPoint x = crossing(points[i], points[j], plane);
+  points.push_back(std::move(x));
+  return static_cast<std::uint32_t>(points.size() - 1);
+}
+
+// split() with the corners' sides known.
+SplitPolygon split_by_sides(ClipPoints& points, const ClipPolygon& polygon, const ClipPlane& plane,
+                            const std::vector<Sign>& sides) {
+  const std::size_t m = polygon.size();
+  SplitPolygon out;
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t j = (i + 1) % m;
+    if (sides[i] != Sign::positive) out.inside.push_back(polygon[i]);
+    if (sides[i] != Sign::negative) out.outside.push_back(polygon[i]);
+    if ((sides[i] == Sign::negative && sides[j] == Sign::positive) ||
+        (sides[i] == Sign::positive && sides[j] == Sign::negative)) {
+      const std::uint32_t x = add_crossing(points, polygon[i], polygon[j], plane);
+      out.inside.push_back(x);
+      out.outside.push_back(x);
+    }
+  }
+  if (out.inside.size() < 3) out.inside.clear();
+  if (out.outside.size() < 3) out.outside.clear();
+  return out;
+}
+
+}  // namespace
+
+Sign side(Vec3Ref p, const ClipPlane& plane) {
+  return side_of_plane(p, Vec3Ref{*plane.normal, *plane.normal_approx}, *plane.offset, plane.offset_approx);
+}
+
+SplitPolygon split(ClipPoints& points, const ClipPolygon& polygon, const ClipPlane& plane) {
+  std::vector<Sign> sides(polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i) sides[i] = side(points[polygon[i]], plane);
+  return split_by_sides(points, polygon, plane, sides);
+}
+
+namespace {
+
+// Appends to `out` the parts of `piece` outside the region, or the piece
+// itself if it meets the region in zero area. `sides` is scratch space.
+void subtract_from(ClipPoints& points, ClipPolygon&& piece, const std::vector<ClipPlane>& region,
+                   std::vector<ClipPolygon>& out, std::vector<Sign>& sides) {
+  const std::size_t first = out.size();
+  ClipPolygon left;  // the part inside the planes seen so far, once cut
+  bool cut = false;
+  for (const ClipPlane& plane : region) {
+    const ClipPolygon& current = cut ? left : piece;
+    bool any_outside = false;
+    bool any_inside = false;
+    sides.resize(current.size());
+    for (std::size_t i = 0; i < current.size(); ++i) {
+      sides[i] = side(points[current[i]], plane);
+      any_outside = any_outside || sides[i] == Sign::positive;
+      any_inside = any_inside || sides[i] == Sign::negative;
+    }
+    if (!any_outside) continue;  // the plane does not cut what is left
+    if (!any_inside) {           // the region meets the piece in zero area
+      out.resize(first);
+      out.push_back(std::move(piece));
+      return;
+    }
+    SplitPolygon parts = split_by_sides(points, current, plane, sides);
+    out.push_back(std::move(parts.outside));
+    left = std::move(parts.inside);
+    cut = true;
+  }
+}
+
+}  // namespace
+
+void subtract_region(ClipPoints& points, std::vector<ClipPolygon>& pieces, const std::vector<ClipPlane>& region) {
+  std::vector<ClipPolygon> out;
+  out.reserve(pieces.size());
+  std::vector<Sign> sides;
+  for (ClipPolygon& piece : pieces) subtract_from(points, std::move(piece), region, out, sides);
+  pieces = std::move(out);
+}
+
+}  // namespace cvms::detail

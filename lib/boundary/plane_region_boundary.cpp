@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// The cancellation of plane_region_boundary.hpp, line by line.
+//
+// In an exact chart of the plane (plane_chart.hpp, orientation kept), every
+// fragment edge lies on a line; lines are keyed by their primitive integer
+// direction (first nonzero coordinate positive) and the offset cross(d, a),
+// and a point of the line by its parameter t = dot(d, a). An edge whose
+// parameter grows from its start to its end counts +1 on its interval (the
+// fragment on the left of d), one whose parameter decreases counts -1 (the
+// fragment on the right). Interior-disjoint fragments put at most one
+// fragment on each side of the line at any point, so the sum over the edges
+// is -1, 0 or +1 on every interval between consecutive ends: 0 where
+// fragments lie on both sides (the line runs through the region) or on
+// neither, +1 or -1 where the region is on one side only, i.e. exactly on
+// the region's boundary, with the region on the left of d for +1. A maximal
+// run of one nonzero value is a maximal straight piece of the boundary: its
+// ends are where the region stops lying on that side of the line, so the
+// boundary turns there (or the region touches itself there, where the value
+// jumps from +1 to -1, and the two runs stay separate segments).
+//
+// No edge needs splitting at another fragment's corners first, and no
+// corner that only the fragments' cutting made survives.
+#include "plane_region_boundary.hpp"
+
+#include <algorithm>
+
+#include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
+#include "plane_chart.hpp"
+
+namespace cvms::detail {
+
+namespace {
+
+// A fragment edge on its line: the line's key (dx, dy, offset), the
+// parameters of its lower and upper ends, whether it runs up (+1) or down
+// (-1), and its ends in 3D, lower first.
+struct LineEdge {
+  Vec3 line;
+  Rational t_low, t_high;
+  int along = 0;
+  const Vec3* low = nullptr;
+  const Vec3* high = nullptr;
+};
+
+// One end of an edge: its parameter, the count it adds to the intervals
+// after it, and its point.
+struct LineEvent {
+  const Rational* t;
+  int step;
+  const Vec3* point;
+};
+
+int compare_lines(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k)
+    if (int c = cmp(a[k], b[k]); c != 0) return c;
+  return 0;
+}
+
+LineEdge line_edge(const PlaneChart& chart, const Vec3& a, const Vec3& b) {
+  const Vec2 pa = chart(a);
+  const Vec2 pb = chart(b);
+  const Vec2 d = pb - pa;
+  const Vec3 dir3 = canonical_normal(Vec3{d.x, d.y, 0});
+  const Vec2 dir{dir3.x, dir3.y};
+  LineEdge e;
+  e.line = Vec3{dir.x, dir.y, cross(dir, pa)};
+  Rational ta = dot(dir, pa);
+  Rational tb = dot(dir, pb);
+  e.along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
+  if (e.along > 0) {
+    e.t_low = std::move(ta);
+    e.t_high = std::move(tb);
+    e.low = &a;
+    e.high = &b;
+  } else {
+    e.t_low = std::move(tb);
+    e.t_high = std::move(ta);
+    e.low = &b;
+    e.high = &a;
+  }
+  return e;
+}
+
+// The runs of the events of one line, sorted by parameter.
+void line_runs(std::span<const LineEvent> events, std::vector<DirectedSegment>& out) {
+  int value = 0;
+  const Vec3* run_start = nullptr;
+  for (std::size_t k = 0; k < events.size();) {
+    const int before = value;
+    std::size_t e = k;
+    for (; e < events.size() && cmp(*events[e].t, *events[k].t) == 0; ++e) value += events[e].step;
+    if (value < -1 || value > 1)
+      throw Error(ErrorCategory::invalid_argument,
+                  "assemble_boundary: two fragments on one side of a line overlap (their interiors are not disjoint)");
+    const Vec3* here = events[k].point;
+    if (before != value) {
+      if (before > 0) out.push_back({*run_start, *here});
+      if (before < 0) out.push_back({*here, *run_start});
+      if (value != 0) run_start = here;
+    }
+    k = e;
+  }
+}
+
+// One convex fragment is its own region: its edges, joined across corners
+// where it does not turn (none, when it keeps the contract).
+std::vector<DirectedSegment> single_fragment_boundary(const PlaneChart& chart, const std::vector<Vec3>& corners) {
+  const std::size_t k = corners.size();
+  std::vector<Vec2> p;
+  p.reserve(k);
+  for (const Vec3& c : corners) p.push_back(chart(c));
+  std::vector<std::size_t> turning;
+  for (std::size_t i = 0; i < k; ++i)
+    if (orient2d(p[(i + k - 1) % k], p[i], p[(i + 1) % k]) != Sign::zero) turning.push_back(i);
+  std::vector<DirectedSegment> out;
+  for (std::size_t j = 0; j < turning.size(); ++j)
+    out.push_back({corners[turning[j]], corners[turning[(j + 1) % turning.size()]]});
+  return out;
+}
+
+}  // namespace
+
+std::vector<DirectedSegment> plane_region_boundary(const BoundaryFragments& fragments,
+                                                   std::span<const std::uint32_t> on_plane, const Vec3& normal) {
+  std::vector<DirectedSegment> out;
+  const PlaneChart chart(normal);
+  if (on_plane.size() == 1) return single_fragment_boundary(chart, fragments.fragments[on_plane[0]].corners);
+  std::vector<LineEdge> edges;
+  for (std::uint32_t f : on_plane) {
+    const auto& corners = fragments.fragments[f].corners;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      edges.push_back(line_edge(chart, corners[i], corners[(i + 1) % corners.size()]));
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const LineEdge& a, const LineEdge& b) { return compare_lines(a.line, b.line) < 0; });
+  std::vector<LineEvent> events;
+  for (std::size_t k = 0; k < edges.size();) {
+    std::size_t e = k;
+    events.clear();
+    for (; e < edges.size() && compare_lines(edges[e].line, edges[k].line) == 0; ++e) {
+      events.push_back({&edges[e].t_low, edges[e].along, edges[e].low});
+      events.push_back({&edges[e].t_high, -edges[e].along, edges[e].high});
+    }
+    std::sort(events.begin(), events.end(), [](const LineEvent& a, const LineEvent& b) { return cmp(*a.t, *b.t) < 0; });
+    line_runs(events, out);
+    k = e;
+  }
+  return out;
+}
+
+}  // namespace cvms::detail

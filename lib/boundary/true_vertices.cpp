@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+// The vertex set and the splitting of true_vertices.hpp.
+//
+// A vertex v lies in the relative interior of the segment [a, b] iff
+// b - a and v - a are parallel and v is in the segment's bounding box and
+// is neither end. Candidates come from three lexicographic orders of the
+// vertices, by coordinates (k, k + 1, k + 2) for k = 0, 1, 2: the vertices
+// that share the segment's first coordinates in that order where a and b
+// agree, and lie between a and b in the next, form one range of the order,
+// and the test scans the smallest of the three ranges (for an edge parallel
+// to a coordinate axis, the vertices on its line). Points of a line are ordered along it by the lexicographic
+// order (the first nonzero coordinate of the direction decides it), so the
+// hits sorted that way, reversed when b precedes a, are the pieces' order.
+#include "true_vertices.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "cvms/error.hpp"
+#include "cvms/predicates.hpp"
+
+namespace cvms::detail {
+
+std::vector<Vec3> true_vertices(const std::vector<std::vector<DirectedSegment>>& segments_per_plane) {
+  std::vector<Vec3> vertices;
+  for (const auto& segments : segments_per_plane)
+    for (const auto& s : segments) {
+      vertices.push_back(s.from);
+      vertices.push_back(s.to);
+    }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+SegmentSplitter::SegmentSplitter(const std::vector<Vec3>& vertices) : vertices_(vertices) {
+  for (int k = 0; k < 3; ++k) {
+    auto& order = by_axis_[k];
+    order.resize(vertices.size());
+    std::iota(order.begin(), order.end(), std::uint32_t{0});
+    const int k1 = (k + 1) % 3;
+    const int k2 = (k + 2) % 3;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
+      const Vec3& p = vertices[i];
+      const Vec3& q = vertices[j];
+      if (int c = cmp(p[k], q[k]); c != 0) return c < 0;
+      if (int c = cmp(p[k1], q[k1]); c != 0) return c < 0;
+      return p[k2] < q[k2];
+    });
+  }
+}
+
+std::span<const std::uint32_t> SegmentSplitter::candidates(int k, const Vec3& a, const Vec3& b) const {
+  // The coordinates k, k + 1, k + 2 in turn: those a and b share are fixed,
+  // the first they differ in is a range; the rest are free.
+  std::array<int, 3> axes{k, (k + 1) % 3, (k + 2) % 3};
+  int fixed = 0;
+  while (fixed < 2 && a[axes[fixed]] == b[axes[fixed]]) ++fixed;
+  const int r = axes[fixed];
+  const Rational& lo = a[r] < b[r] ? a[r] : b[r];
+  const Rational& hi = a[r] < b[r] ? b[r] : a[r];
+  // Sign of (vertex i's key) - (the query's), compared on the first fixed + 1 coordinates.
+  const auto compare = [&](std::uint32_t i, const Rational& bound) {
+    const Vec3& p = vertices_[i];
+    for (int m = 0; m < fixed; ++m)
+      if (int c = cmp(p[axes[m]], a[axes[m]]); c != 0) return c;
+    return cmp(p[r], bound);
+  };
+  const auto& order = by_axis_[k];
+  const auto first = std::partition_point(order.begin(), order.end(), [&](std::uint32_t i) { return compare(i, lo) < 0; });
+  const auto last = std::partition_point(first, order.end(), [&](std::uint32_t i) { return compare(i, hi) <= 0; });
+  return {first, last};
+}
+
+std::uint32_t SegmentSplitter::id(const Vec3& p) const {
+  const auto it = std::lower_bound(vertices_.begin(), vertices_.end(), p);
+  if (it == vertices_.end() || *it != p)
+    throw Error(ErrorCategory::invalid_argument, "assemble_boundary: a segment end is not a vertex");
+  return static_cast<std::uint32_t>(it - vertices_.begin());
+}
+
+void SegmentSplitter::split(const DirectedSegment& segment, std::vector<std::array<std::uint32_t, 2>>& edges) const {
+  const Vec3& a = segment.from;
+  const Vec3& b = segment.to;
+  std::array<Rational, 3> lo, hi;
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = a[k] < b[k] ? a[k] : b[k];
+    hi[k] = a[k] < b[k] ? b[k] : a[k];
+  }
+  // The smallest of the three candidate ranges.
+  std::span<const std::uint32_t> candidates = this->candidates(0, a, b);
+  for (int k = 1; k < 3; ++k) {
+    const auto range = this->candidates(k, a, b);
+    if (range.size() < candidates.size()) candidates = range;
+  }
+  const Vec3 ab = b - a;
+  std::vector<std::uint32_t> inside;
+  for (std::uint32_t v : candidates) {
+    const Vec3& p = vertices_[v];
+    if (p == a || p == b) continue;
+    bool in_box = true;
+    for (int k = 0; k < 3 && in_box; ++k) in_box = lo[k] <= p[k] && p[k] <= hi[k];
+    if (in_box && is_parallel(ab, p - a)) inside.push_back(v);
+  }
+  // Vertex ids follow the lexicographic order.
+  std::sort(inside.begin(), inside.end());
+  if (b < a) std::reverse(inside.begin(), inside.end());
+  std::uint32_t from = id(a);
+  for (std::uint32_t v : inside) {
+    edges.push_back({from, v});
+    from = v;
+  }
+  edges.push_back({from, id(b)});
+}
+
+}  // namespace cvms::detail
