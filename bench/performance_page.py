@@ -451,6 +451,9 @@ def solid_sum_section(page, bench_dir):
     bad, checked = solid_sum_table.manifold_failures(manifold)
     if checked:
         page.para(f"Manifold's result failed the exact check on {bad} of the {checked} pairs.")
+    summary = solid_sum_table.summary(rows, manifold)
+    if summary:
+        page.para(summary)
     page.para("Output-sensitive scaling: a comb of k teeth (the prism over a comb polygon, 4k vertices a cap) "
               "⊕ the cube; the output grows linearly in k.")
     page.block(solid_sum_table.scaling_table(rows, manifold))

@@ -150,6 +150,37 @@ def manifold_failures(manifold):
     return sum(1 for b in checked if not b.get("exact_valid")), len(checked)
 
 
+def summary(rows, manifold):
+    """What the side-by-side table says, as a sentence or two computed from it ("" without cvms's rows)."""
+    text = []
+    spot = "spot+icosphere"
+    ours1, ours2 = at(rows, "BM_SolidSum", spot, 1), at(rows, "BM_SolidSum", spot, 2)
+    nef, peer = at(rows, "BM_CgalNef", spot), at(manifold, "Manifold", spot)
+    if ours1:
+        best = min(r[0] for r in (ours1, ours2) if r)
+        part = (f"On spot ⊕ icosphere cvms takes {fmt_ms(ours1[0])} ms on one thread"
+                + (f" and {fmt_ms(ours2[0])} ms on two" if ours2 else ""))
+        ratios = []
+        if nef:
+            ratios.append(f"CGAL Nef {fmt_ms(nef[0])} ms ({nef[0] / best:,.0f}× the faster cvms row)")
+        if peer:
+            ratios.append(f"Manifold {fmt_ms(peer[0])} ms ({peer[0] / best:.1f}×)")
+        text.append(part + (": " + ", ".join(ratios) if ratios else "") + ".")
+    nef_ratios = [(n[0] / o[0], pair) for pair in pairs_in(rows)
+                  if (o := at(rows, "BM_SolidSum", pair)) and (n := at(rows, "BM_CgalNef", pair))]
+    if nef_ratios:
+        low, high = min(nef_ratios), max(nef_ratios)
+        text.append(f"Nef / cvms ranges from {low[0]:.1f}× ({pair_label(low[1])}) to {high[0]:,.0f}× "
+                    f"({pair_label(high[1])}).")
+    extra = [(m[1]["peer_vertices"] / o[1]["out_vertices"]) for pair in pairs_in(rows, manifold)
+             if (o := at(rows, "BM_SolidSum", pair)) and (m := at(manifold, "Manifold", pair))]
+    if extra:
+        text.append(f"Manifold's results have {min(extra):.1f}× to {max(extra):.1f}× the vertices of the exact "
+                    "boundary: its union keeps vertices inside flat regions and straight edges, where cvms keeps "
+                    "only the true corners.")
+    return " ".join(text)
+
+
 def comb_teeth(*tables):
     """The tooth counts k of the comb pairs "comb<k>+cube" in any table, sorted."""
     return sorted({int(m.group(1)) for pair in pairs_in(*tables) if (m := re.fullmatch(r"comb(\d+)\+cube", pair))})
