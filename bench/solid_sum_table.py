@@ -31,6 +31,11 @@ SOLID_LABELS = {
 }
 
 
+def times(r):
+    """A ratio: two decimals below 1, one below 10, none above."""
+    return f"{r:.2f}×" if r < 1 else f"{r:.1f}×" if r < 10 else f"{r:,.0f}×"
+
+
 def pair_label(pair):
     def one(name):
         m = re.fullmatch(r"comb(\d+)", name)
@@ -128,8 +133,8 @@ def peers_table(rows, manifold):
                 continue
             label = pair_label(pair) + (f", {threads} threads" if threads > 1 else "")
             cells = [label, fmt_ms(ours[0] if ours else None), fmt_ms(nef[0] if nef else None),
-                     f"{nef[0] / ours[0]:,.0f}×" if ours and nef else "—", fmt_ms(peer[0] if peer else None),
-                     f"{peer[0] / ours[0]:.1f}×" if ours and peer else "—"]
+                     times(nef[0] / ours[0]) if ours and nef else "—", fmt_ms(peer[0] if peer else None),
+                     times(peer[0] / ours[0]) if ours and peer else "—"]
             if peer:
                 b = peer[1]
                 verdict = "valid" if b.get("exact_valid") else f"invalid: {b.get('exact_check', '?')}"
@@ -162,15 +167,15 @@ def summary(rows, manifold):
                 + (f" and {fmt_ms(ours2[0])} ms on two" if ours2 else ""))
         ratios = []
         if nef:
-            ratios.append(f"CGAL Nef {fmt_ms(nef[0])} ms ({nef[0] / best:,.0f}× the faster cvms row)")
+            ratios.append(f"CGAL Nef {fmt_ms(nef[0])} ms ({times(nef[0] / best)} the faster cvms row)")
         if peer:
-            ratios.append(f"Manifold {fmt_ms(peer[0])} ms ({peer[0] / best:.1f}×)")
+            ratios.append(f"Manifold {fmt_ms(peer[0])} ms ({times(peer[0] / best)})")
         text.append(part + (": " + ", ".join(ratios) if ratios else "") + ".")
     nef_ratios = [(n[0] / o[0], pair) for pair in pairs_in(rows)
                   if (o := at(rows, "BM_SolidSum", pair)) and (n := at(rows, "BM_CgalNef", pair))]
     if nef_ratios:
         low, high = min(nef_ratios), max(nef_ratios)
-        text.append(f"Nef / cvms ranges from {low[0]:.1f}× ({pair_label(low[1])}) to {high[0]:,.0f}× "
+        text.append(f"Nef / cvms ranges from {times(low[0])} ({pair_label(low[1])}) to {times(high[0])} "
                     f"({pair_label(high[1])}).")
     extra = [(m[1]["peer_vertices"] / o[1]["out_vertices"]) for pair in pairs_in(rows, manifold)
              if (o := at(rows, "BM_SolidSum", pair)) and (m := at(manifold, "Manifold", pair))]
@@ -219,7 +224,7 @@ def scaling_table(rows, manifold):
         ours, nef, peer = at(rows, "BM_SolidSum", pair), at(rows, "BM_CgalNef", pair), at(manifold, "Manifold", pair)
         facets = ours[1]["out_facets"] if ours else None
         lines.append(f"| {k} | {f'{int(facets):,}' if facets else '—'} | {fmt_ms(ours[0] if ours else None)} "
-                     f"| {f'{1e3 * ours[0] / facets:.1f}' if facets else '—'} "
+                     f"| {f'{1e3 * ours[0] / facets:,.0f}' if facets else '—'} "
                      f"| {fmt_ms(nef[0] if nef else None)} | {fmt_ms(peer[0] if peer else None)} |")
     return lines
 
