@@ -1,6 +1,6 @@
 """Reading Google Benchmark JSON from the cvms benchmarks, shared by every
 script in bench/: one place decides which entries count and which time is
-read."""
+read, and how a time is printed."""
 import json
 
 _UNIT_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
@@ -19,6 +19,19 @@ def add_time_options(parser):
 def time_options(args):
     """(time_field, statistic) from arguments parsed with add_time_options."""
     return ("cpu_time" if args.cpu else "real_time"), ("min" if args.min else "median")
+
+
+def fmt_ms(ms):
+    """A time in ms with three significant digits or so (thousands separated); "—" for None."""
+    if ms is None:
+        return "—"
+    if ms >= 100:
+        return f"{ms:,.0f}"
+    if ms >= 10:
+        return f"{ms:.1f}"
+    if ms >= 1:
+        return f"{ms:.2f}"
+    return f"{ms:.3f}"
 
 
 def context(path):

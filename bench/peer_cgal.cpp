@@ -13,28 +13,16 @@
 #include <optional>
 #endif
 
-#include <type_traits>
 #include <vector>
+
+#include "cgal_exact.hpp"
 
 namespace cvms_bench {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using cgal::exact;
+using Kernel = cgal::Kernel;
 using Point = Kernel::Point_3;
-using ExactNumber = Kernel::FT::Exact_type;
-
-// Epeck's exact number type depends on how CGAL was configured (gmpxx's
-// mpq_class, CGAL::Gmpq or Boost.Multiprecision over GMP); every one of
-// them takes a GMP rational, so the conversion is exact either way.
-Kernel::FT exact(const cvms::Rational& q) {
-  if constexpr (std::is_constructible_v<ExactNumber, const mpq_class&>) {
-    return Kernel::FT(ExactNumber(q));
-  } else {
-    return Kernel::FT(ExactNumber(q.get_mpq_t()));
-  }
-}
-
-Point exact(const cvms::Vec3& v) { return Point(exact(v.x), exact(v.y), exact(v.z)); }
 
 }  // namespace
 

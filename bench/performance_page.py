@@ -17,6 +17,7 @@ import bench_json
 import qhull_ratios
 import scaling
 import set_table
+import solid_sum_table
 import table
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -39,14 +40,7 @@ def run_line(path, time_field, statistic, extra=""):
     return (f"*`docs/bench/{os.path.basename(path)}`: {what}, {stat}; {machine}.{extra}*")
 
 
-def fmt_ms(ms):
-    if ms >= 100:
-        return f"{ms:,.0f}"
-    if ms >= 10:
-        return f"{ms:.1f}"
-    if ms >= 1:
-        return f"{ms:.2f}"
-    return f"{ms:.3f}"
+fmt_ms = bench_json.fmt_ms
 
 
 def ratio(a, b, digits=1):
@@ -100,6 +94,10 @@ MALLOC_TRIM_THRESHOLD_=4000000000 MALLOC_MMAP_THRESHOLD_=268435456 MALLOC_TOP_PA
 # non-convex solids: decompositions, sums as unions of pieces, qhull on every piece pair
 PIECES_RUN
 
+# non-convex sums as one closed solid, CGAL Nef on the small pairs (CVMS_BENCH_NEF=all: spot too,
+# minutes), Manifold under node, whole `cvms sum` runs
+CVMS_BENCH_NEF=small SOLID_SUM_RUN
+
 # sums of convex sets, half-spaces, decimal coordinates, loading and writing
 build/release/bench/cvms_set_bench --benchmark_min_time=0.2 \
     --benchmark_out=docs/bench/sets.json --benchmark_out_format=json
@@ -128,7 +126,14 @@ PYTHONPATH=build/python/python /usr/bin/python3 python/bench/sum_overhead.py --c
 bench/performance_page.py
 ```"""
 
-REPRODUCE = REPRODUCE.replace("PIECES_RUN", PIECES_COMMAND)
+SOLID_SUM_COMMAND = r"""build/release/bench/cvms_solid_sum_bench --benchmark_min_time=0.05 --benchmark_repetitions=3 \
+    --benchmark_enable_random_interleaving=true --benchmark_out=docs/bench/solid_sum.json --benchmark_out_format=json
+CVMS_BENCH_NEF=all build/release/bench/cvms_solid_sum_bench --benchmark_filter='^BM_CgalNef/spot' \
+    --benchmark_out=docs/bench/solid_sum_nef_spot.json --benchmark_out_format=json
+bench/manifold_peer.py --install --json docs/bench/solid_sum_manifold.json   # npm, into ~/.cache/cvms-bench
+bench/solid_sum_end_to_end.py --json docs/bench/solid_sum_end_to_end.json"""
+
+REPRODUCE = REPRODUCE.replace("PIECES_RUN", PIECES_COMMAND).replace("SOLID_SUM_RUN", SOLID_SUM_COMMAND)
 
 NOISY_MACHINE = """\
 **How to read these numbers on a noisy machine.** The runs come from a 2-core virtual machine
@@ -390,6 +395,84 @@ def pieces_section(page, path):
                   "boundary fragments) and the merge (exact hulls and volumes of candidate unions): exact "
                   "rational arithmetic with its gcd normalisation, the conversions of rational coordinates to "
                   "the predicates' floating-point filters, and the allocations of exact numbers.")
+
+
+def failed_rows(path, prefix):
+    """The distinct error messages of the rows named "<prefix>/..." that failed in the run."""
+    with open(path) as f:
+        entries = json.load(f)["benchmarks"]
+    return sorted({b.get("error_message", "?") for b in entries
+                   if b.get("error_occurred") and b["name"].startswith(prefix + "/")})
+
+
+def solid_sum_section(page, bench_dir):
+    path = path_in(bench_dir, "solid_sum.json")
+    manifold_path = path_in(bench_dir, "solid_sum_manifold.json")
+    end_to_end_path = path_in(bench_dir, "solid_sum_end_to_end.json")
+    if not (os.path.exists(path) or os.path.exists(manifold_path)):
+        return
+    nef_spot_path = path_in(bench_dir, "solid_sum_nef_spot.json")
+    rows, manifold = solid_sum_table.load(path, nef_spot_path), solid_sum_table.load(manifold_path)
+    page.add("## Non-convex sums as one closed solid", "")
+    if os.path.exists(path):
+        page.para(run_line(path, "cpu_time", "min", " The two-thread rows are wall time (their CPU time counts "
+                           "the calling thread only); the CGAL Nef rows ran once each."))
+    if os.path.exists(nef_spot_path):
+        page.para(run_line(nef_spot_path, "cpu_time", "min", " CGAL Nef on spot ⊕ icosphere, run on its own "
+                           "(minutes)."))
+    if os.path.exists(manifold_path):
+        c = bench_json.context(manifold_path)
+        page.para(f"*`docs/bench/{os.path.basename(manifold_path)}` (`bench/manifold_peer.py`): "
+                  f"{c.get('peer', 'Manifold')}, CPU time, the minimum of each pair's runs in one node process; "
+                  f"{c.get('num_cpus', '?')} CPUs, load average {c.get('load_avg', [0])[0]:.1f} when the run "
+                  "started.*")
+    page.para("`minkowski_sum(Solid, Solid)` returns the exact boundary of A ⊕ B as one closed solid. The pairs: "
+              "four small non-convex solids (the L-block, the frame (a box with a square hole), the star prism "
+              "of `test/data/solids`, the coarse torus of `bench/data/solids`), each ⊕ the cube [−1/4, 1/4]³ "
+              "(one operand convex: nothing is decomposed) and ⊕ each other (both decomposed); spot.obj ⊕ "
+              "Sphere2 scaled by 1/20 (42 vertices, radius 2 % of spot's bounding-box diagonal); and the "
+              "output-sensitive family, combs of k teeth ⊕ the cube. The peers sum the same solids: CGAL's "
+              "exact Nef `minkowski_sum_3` in the same binary and run (the conversion of both surface meshes "
+              "to Nef polyhedra included), and Manifold's floating-point `minkowskiSum` (WebAssembly under "
+              "node, single precision coordinates) on the triangle files the benchmark writes. Each of "
+              "Manifold's results is then checked exactly by `cvms check` (its float32 coordinates read "
+              "exactly): a closed, oriented, non-self-intersecting solid with no two vertices at one point "
+              "and no degenerate face. Reproduced by:")
+    page.block(["```sh", "CVMS_BENCH_NEF=small " + SOLID_SUM_COMMAND, "```"])
+    failed = failed_rows(path, "BM_SolidSum") if os.path.exists(path) else []
+    if failed:
+        page.para("cvms's own rows failed in this run (" + "; ".join(f"`{m}`" for m in failed) + "): the tables "
+                  "below show the peers alone.")
+    page.para("In process. \"pieces stage\" is the convex pieces alone, before any union: "
+              "`minkowski_sum_pieces` (both decompositions and the pairwise sums) when both operands are "
+              "non-convex, the convex sums of A's boundary triangles with the convex B otherwise; \"writing\" "
+              "is the result's exact OFF text (to memory). The last column is the other road where one "
+              "operand is convex: the union of the pieces of both decompositions. Times in ms.")
+    page.block(solid_sum_table.in_process_table(rows))
+    page.para("Side by side: cvms, CGAL Nef and Manifold on the same solids (the ratios are the peer's time "
+              "over cvms's).")
+    page.block(solid_sum_table.peers_table(rows, manifold))
+    bad, checked = solid_sum_table.manifold_failures(manifold)
+    if checked:
+        page.para(f"Manifold's result failed the exact check on {bad} of the {checked} pairs.")
+    summary = solid_sum_table.summary(rows, manifold)
+    if summary:
+        page.para(summary)
+    page.para("Output-sensitive scaling: a comb of k teeth (the prism over a comb polygon, 4k vertices a cap) "
+              "⊕ the cube; the output grows linearly in k.")
+    page.block(solid_sum_table.scaling_table(rows, manifold))
+    slopes = solid_sum_table.comb_slopes(rows, manifold)
+    if slopes:
+        page.para("Least-squares log-log slopes of time on the combs (1 is linear): "
+                  + ", ".join(f"{label} {s:.2f}" for label, s in slopes.items()) + ".")
+    if os.path.exists(end_to_end_path):
+        with open(end_to_end_path) as f:
+            results = json.load(f)
+        page.para(f"End to end (`docs/bench/{os.path.basename(end_to_end_path)}`, "
+                  "`bench/solid_sum_end_to_end.py`): whole `cvms sum` runs from file to file on the same "
+                  "operand files, the minimum wall time over the rounds, with the sum's own time inside the run "
+                  "(`--stats`) and the peak resident memory.")
+        page.block(solid_sum_table.end_to_end_table(results))
 
 
 def decimal_section(page, path):
@@ -790,6 +873,7 @@ def build(bench_dir):
     sets_section(page, path_in(bench_dir, "sets.json"))
     halfspace_section(page, path_in(bench_dir, "halfspace.json"), path_in(bench_dir, "halfspace_cgal.json"))
     pieces_section(page, path_in(bench_dir, "pieces.json"))
+    solid_sum_section(page, bench_dir)
     decimal_section(page, path_in(bench_dir, "decimal_sum.json"))
     load_section(page, path_in(bench_dir, "load.json"), path_in(bench_dir, "load_before_after.json"))
     end_to_end_section(page, path_in(bench_dir, "end_to_end.json"))
