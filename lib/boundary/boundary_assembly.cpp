@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <atomic>
 #include <string>
-#include <thread>
 
 #include "cvms/error.hpp"
 #include "manifold_split.hpp"
@@ -56,10 +55,8 @@ std::vector<std::vector<std::uint32_t>> fragments_by_plane(const BoundaryFragmen
 // turn; each call counts one unit of progress.
 template <class F>
 void for_each_plane(unsigned threads, std::size_t n, ProgressReporter& progress, F f) {
-  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
-  const auto count = static_cast<unsigned>(std::min<std::size_t>({std::max(1U, threads), cores, std::max<std::size_t>(n, 1)}));
   std::atomic<std::size_t> next{0};
-  run_on_threads(count, [&](unsigned) {
+  run_on_threads(thread_count(threads, n), [&](unsigned) {
     for (std::size_t i = next++; i < n; i = next++) {
       f(i);
       progress.advance(1);

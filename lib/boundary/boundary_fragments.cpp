@@ -24,7 +24,6 @@
 #include <memory>
 #include <numeric>
 #include <string>
-#include <thread>
 #include <utility>
 
 #include "box_hierarchy.hpp"
@@ -262,14 +261,6 @@ BoundaryFragments collect(FragmentWork& work, std::size_t pieces) {
     work.slot(p).shrink_to_fit();
   }
   return out;
-}
-
-unsigned thread_count(unsigned requested, std::size_t pieces) {
-  const unsigned cores = std::thread::hardware_concurrency();
-  unsigned threads = std::max(1U, requested);
-  if (cores != 0) threads = std::min(threads, cores);
-  if (threads > pieces) threads = static_cast<unsigned>(std::max<std::size_t>(pieces, 1));
-  return threads;
 }
 
 }  // namespace

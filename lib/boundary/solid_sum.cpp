@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
-#include <thread>
 #include <vector>
 
 #include "boundary_assembly.hpp"
@@ -62,10 +61,7 @@ std::vector<char> inside_translate(const detail::BoundaryFragments& all, const S
   detail::ProgressReporter progress(detail::callback_of(options.progress));
   progress.begin("solid sum: fragments", n);
   std::atomic<std::size_t> next{0};
-  const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
-  const auto threads =
-      static_cast<unsigned>(std::min<std::size_t>({std::max(1U, options.threads), cores, n / chunk + 1}));
-  detail::run_on_threads(threads, [&](unsigned) {
+  detail::run_on_threads(detail::thread_count(options.threads, n / chunk + 1), [&](unsigned) {
     for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk)) {
       const std::size_t end = std::min(n, begin + chunk);
       for (std::size_t i = begin; i < end; ++i) {

@@ -16,6 +16,8 @@
 // N = 1 starts nothing and N = 2 starts one worker.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <exception>
 #include <memory>
 #include <system_error>
@@ -92,6 +94,18 @@ unsigned run_on_threads(unsigned n, F&& f) {
   f(0u);
   for (unsigned i = 1; i < started; ++i) workers[i - 1].join();
   return started;
+}
+
+/// How many threads to share `items` independent items on: `requested` (at
+/// least one), but no more than the machine's cores, when it says, and no
+/// more than the items (at least one). More threads than either would only
+/// wait.
+inline unsigned thread_count(unsigned requested, std::size_t items) {
+  const unsigned cores = std::thread::hardware_concurrency();
+  unsigned threads = std::max(1U, requested);
+  if (cores != 0) threads = std::min(threads, cores);
+  if (threads > items) threads = static_cast<unsigned>(std::max<std::size_t>(items, 1));
+  return threads;
 }
 
 }  // namespace cvms::detail

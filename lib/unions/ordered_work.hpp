@@ -19,7 +19,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
-#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -39,14 +38,9 @@ class OrderedWork {
   /// after an exception or once the sizes made pass the budget.
   template <class Make>
   void run(unsigned threads, const Make& make) {
-    const unsigned cores = std::thread::hardware_concurrency();
-    threads = std::max(1U, threads);
-    if (cores != 0) threads = std::min(threads, cores);
-    const std::size_t most = std::max<std::size_t>(1, outcomes_.size());
-    if (threads > most) threads = static_cast<unsigned>(most);
     // Each call shares the indices through the counter, so any number of
     // threads started gives the same outcome.
-    run_on_threads(threads, [&](unsigned) { work(make); });
+    run_on_threads(thread_count(threads, outcomes_.size()), [&](unsigned) { work(make); });
   }
 
   /// The values in index order. Before that, in index order: failed(k,
