@@ -6,40 +6,29 @@
 #include <utility>
 
 #include "filtered_predicates.hpp"
+#include "plane_crossing.hpp"
 
 namespace cvms::detail {
 namespace {
 
-// Rationals reused by crossing() on each thread, so that its intermediate
-// values keep their limbs from one call to the next instead of allocating.
-struct CrossingScratch {
-  Rational sa, sb, product, t;
-};
-
-// s = dot(n, x) - offset, into s.
-void plane_value(Rational& s, Rational& product, const Vec3& n, const Vec3& x, const Rational& offset) {
-  mpq_mul(s.get_mpq_t(), n.x.get_mpq_t(), x.x.get_mpq_t());
-  mpq_mul(product.get_mpq_t(), n.y.get_mpq_t(), x.y.get_mpq_t());
-  mpq_add(s.get_mpq_t(), s.get_mpq_t(), product.get_mpq_t());
-  mpq_mul(product.get_mpq_t(), n.z.get_mpq_t(), x.z.get_mpq_t());
-  mpq_add(s.get_mpq_t(), s.get_mpq_t(), product.get_mpq_t());
-  mpq_sub(s.get_mpq_t(), s.get_mpq_t(), offset.get_mpq_t());
+bool has_integer_coordinates(const Vec3& v) {
+  return mpz_cmp_ui(v.x.get_den_mpz_t(), 1) == 0 && mpz_cmp_ui(v.y.get_den_mpz_t(), 1) == 0 &&
+         mpz_cmp_ui(v.z.get_den_mpz_t(), 1) == 0;
 }
 
 // The point where the segment [a, b] crosses the plane, for a and b
-// strictly on opposite sides: a + t (b - a) with t = s_a / (s_a - s_b),
-// s = dot(normal, x) - offset.
+// strictly on opposite sides: on integers when the normal is an integer
+// vector (a facet's primitive normal, plane_crossing.hpp), else as
+// a + t (b - a) with t = s_a / (s_a - s_b), s = dot(normal, x) - offset.
 ClipPoint crossing(const ClipPoint& a, const ClipPoint& b, const ClipPlane& plane) {
-  thread_local CrossingScratch s;
-  plane_value(s.sa, s.product, *plane.normal, a.exact, *plane.offset);
-  plane_value(s.sb, s.product, *plane.normal, b.exact, *plane.offset);
-  mpq_sub(s.sb.get_mpq_t(), s.sa.get_mpq_t(), s.sb.get_mpq_t());
-  mpq_div(s.t.get_mpq_t(), s.sa.get_mpq_t(), s.sb.get_mpq_t());
   Vec3 x;
-  for (int k = 0; k < 3; ++k) {
-    mpq_sub(s.product.get_mpq_t(), b.exact[k].get_mpq_t(), a.exact[k].get_mpq_t());
-    mpq_mul(s.product.get_mpq_t(), s.product.get_mpq_t(), s.t.get_mpq_t());
-    mpq_add(x[k].get_mpq_t(), a.exact[k].get_mpq_t(), s.product.get_mpq_t());
+  if (has_integer_coordinates(*plane.normal)) {
+    plane_crossing(a.exact, b.exact, *plane.normal, *plane.offset, x);
+  } else {
+    const Rational sa = dot(*plane.normal, a.exact) - *plane.offset;
+    const Rational sb = dot(*plane.normal, b.exact) - *plane.offset;
+    const Rational t = sa / (sa - sb);
+    x = a.exact + (b.exact - a.exact) * t;
   }
   const ApproxVec3 approx = ApproxVec3::of(x);
   return {std::move(x), approx};
