@@ -309,6 +309,46 @@ TEST(Predicates, CompareDotWithIntegerNormalsMatchesTheOracle) {
   }
 }
 
+// The exact paths with an integer normal scale a point to the lcm of its
+// denominators, skipping the quotient for a denominator equal to it and the
+// gcd for one that divides or is divided by the others: points over one
+// shared denominator, over nested ones (10^3 and 10^6, 2^40 and 2^90, a
+// long odd d and 7 d) and over coprime ones, placed exactly on a plane
+// (offset = dot(n, p)), next to it (offset moved by 10^-40 or 2^-300) and
+// anywhere, against the written-out oracles.
+TEST(Predicates, IntegerNormalsOnPointsOverRelatedDenominators) {
+  for (const unsigned seed : {1300U, 1301U, 1302U}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    for (int i = 0; i < 400; ++i) {
+      const mpz_class odd = test::random_integer(rng, 100) * 2 + 1;
+      const Rational related[][2] = {
+          {power_of_ten(-3), power_of_ten(-6)},
+          {power_of_two(-40), power_of_two(-90)},
+          {fraction(1, abs(odd)), fraction(1, abs(odd) * 7)},
+          {fraction(1, 3), fraction(1, 1024)},
+      };
+      const auto& units = related[rng() % 4];
+      Vec3 p;
+      for (int k = 0; k < 3; ++k)
+        p[k] = Rational(test::random_integer(rng, 80)) * units[rng() % 2];
+      const Vec3 n{Rational(test::random_integer(rng, 1u + static_cast<unsigned>(rng() % 120))),
+                   static_cast<long>(rng() % 21) - 10, Rational(test::random_integer(rng, 60))};
+      const Rational on = dot(n, p);
+      const Rational moves[] = {0, power_of_ten(-40), -power_of_ten(-40), power_of_two(-300), -power_of_two(-300),
+                                test::random_rational(rng)};
+      for (const Rational& move : moves) {
+        const Rational offset = on + move;
+        ASSERT_EQ(side_of_plane(p, n, offset), oracle_side(p, n, offset)) << "case " << i << ", move " << move;
+      }
+      const Vec3 q = p + cross(n, Vec3{units[0], units[1], 1});  // dot(n, q) = dot(n, p)
+      ASSERT_EQ(compare_dot(p, q, n), oracle_compare_dot(p, q, n)) << "case " << i;
+      ASSERT_EQ(compare_dot(p, q + power_of_two(-300) * n, n), oracle_compare_dot(p, q + power_of_two(-300) * n, n))
+          << "case " << i;
+    }
+  }
+}
+
 TEST(Predicates, ZeroAnswersAlwaysComeFromTheFallback) {
   // One call, one count; a zero is always an exact evaluation.
   Vec3 a{1, 2, 3}, b{2, 4, 6};

@@ -11,12 +11,18 @@ struct ScaledPoint {
   mpz_class denominator;
 
   // p = numerators / denominator, denominator the lcm of p's denominators:
-  // no gcd when they are equal, as for most sums of points.
+  // no gcd when one of them is a multiple of the others, as when they are
+  // equal (most sums of points) or powers of two.
   void set(const Vec3& p) {
-    denominator = p.x.get_den();
+    mpz_ptr l = denominator.get_mpz_t();
+    mpz_set(l, p.x.get_den_mpz_t());
     for (int k = 1; k < 3; ++k) {
-      if (mpz_cmp(p[k].get_den_mpz_t(), denominator.get_mpz_t()) != 0)
-        mpz_lcm(denominator.get_mpz_t(), denominator.get_mpz_t(), p[k].get_den_mpz_t());
+      const mpz_srcptr d = p[k].get_den_mpz_t();
+      if (mpz_cmp(d, l) == 0 || mpz_divisible_p(l, d) != 0) continue;
+      if (mpz_divisible_p(d, l) != 0)
+        mpz_set(l, d);
+      else
+        mpz_lcm(l, l, d);
     }
     for (int k = 0; k < 3; ++k) {
       if (mpz_cmp(p[k].get_den_mpz_t(), denominator.get_mpz_t()) == 0) {

@@ -52,23 +52,38 @@ struct ScaledDots {
   mpz_class l, sum, term;
   mpz_class n_scaled[3];  // n as an integer vector when it is not one
 
-  // l = the lcm of the coordinates' denominators of every point.
+  // l = the lcm of the coordinates' denominators of every point. A
+  // denominator that l is a multiple of (an equal one, as for the three
+  // coordinates of most sums of points, or a power of two below l) needs
+  // no gcd; one that is a multiple of l replaces it.
   void common_denominator(std::initializer_list<const Vec3*> points) {
     l = (*points.begin())->x.get_den();
-    for (const Vec3* p : points)
-      for (int i = 0; i < 3; ++i)
-        if ((*p)[i].get_den() != l) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), (*p)[i].get_den_mpz_t());
+    for (const Vec3* p : points) {
+      for (int i = 0; i < 3; ++i) {
+        const mpz_srcptr d = (*p)[i].get_den_mpz_t();
+        if (mpz_cmp(d, l.get_mpz_t()) == 0 || mpz_divisible_p(l.get_mpz_t(), d) != 0) continue;
+        if (mpz_divisible_p(d, l.get_mpz_t()) != 0)
+          mpz_set(l.get_mpz_t(), d);
+        else
+          mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), d);
+      }
+    }
   }
-  // sum += L dot(p, n), or -= when subtract, for an integer vector n.
+  // sum += L dot(p, n), or -= when subtract, for an integer vector n. A
+  // coordinate over the denominator L itself is its numerator: no quotient.
   void add_scaled_dot(const Vec3& p, const mpz_class* const n[3], bool subtract) {
     for (int i = 0; i < 3; ++i) {
       if (mpz_sgn(n[i]->get_mpz_t()) == 0 || mpz_sgn(p[i].get_num_mpz_t()) == 0) continue;
-      mpz_divexact(term.get_mpz_t(), l.get_mpz_t(), p[i].get_den_mpz_t());
-      mpz_mul(term.get_mpz_t(), term.get_mpz_t(), p[i].get_num_mpz_t());
+      mpz_srcptr scaled = p[i].get_num_mpz_t();
+      if (mpz_cmp(p[i].get_den_mpz_t(), l.get_mpz_t()) != 0) {
+        mpz_divexact(term.get_mpz_t(), l.get_mpz_t(), p[i].get_den_mpz_t());
+        mpz_mul(term.get_mpz_t(), term.get_mpz_t(), p[i].get_num_mpz_t());
+        scaled = term.get_mpz_t();
+      }
       if (subtract)
-        mpz_submul(sum.get_mpz_t(), term.get_mpz_t(), n[i]->get_mpz_t());
+        mpz_submul(sum.get_mpz_t(), scaled, n[i]->get_mpz_t());
       else
-        mpz_addmul(sum.get_mpz_t(), term.get_mpz_t(), n[i]->get_mpz_t());
+        mpz_addmul(sum.get_mpz_t(), scaled, n[i]->get_mpz_t());
     }
   }
 };
