@@ -54,9 +54,11 @@ std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polyg
   // reports no progress and runs on its calling thread.
   Options face_options;
   face_options.limits = options.limits;
+  // B as a set once: converting it for each sum would copy its values.
+  const ConvexSet b_set(b);
   OrderedWork<ConvexPolyhedron> work(polygons.size(), budget);
   work.run(options.threads, [&](std::size_t k) {
-    ConvexPolyhedron sum = minkowski_sum(ConvexSet::polygon(polygons[k]), b, face_options).polyhedron();
+    ConvexPolyhedron sum = minkowski_sum(ConvexSet::polygon(polygons[k]), b_set, face_options).polyhedron();
     progress.advance(1);
     const std::uint64_t facets = sum.num_facets();
     return std::pair{std::move(sum), facets};
