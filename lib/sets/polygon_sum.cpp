@@ -69,14 +69,24 @@
 #include "cvms/predicates.hpp"
 #include "first_use.hpp"
 #include "output_budget.hpp"
+#include "dyadic.hpp"
 #include "filtered_predicates.hpp"
 #include "plane_chart.hpp"
+#include "small_direction.hpp"
 #include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
 
 namespace cvms::detail {
 
 namespace {
+
+// A positive integer multiple of to - from in machine words: from the
+// doubles when both points are doubles, else from one-word fractions; none
+// when neither fits (the caller then takes the rational path).
+std::optional<SmallDirection> small_direction(Vec3Ref from, Vec3Ref to) {
+  if (auto d = small_integer_direction(from.approx, to.approx)) return d;
+  return small_fraction_direction(from.exact, to.exact);
+}
 
 // Q's cycle with the approximations of its corners and of its normal m, and
 // the walk that finds F_Q(u). Positions around the pole, counterclockwise:
@@ -88,6 +98,13 @@ class Cycle {
         q_(q.vertices()) {
     approx_.reserve(q_.size());
     for (const Vec3& v : q_) approx_.push_back(ApproxVec3::of(v));
+    directions_.reserve(q_.size());
+    for (std::size_t i = 0; i < q_.size(); ++i) directions_.push_back(small_direction(ref(i), ref(i + 1)));
+  }
+
+  /// A positive integer multiple of e_i in machine words, if there is one.
+  [[nodiscard]] const std::optional<SmallDirection>& direction(std::size_t i) const {
+    return directions_[i % directions_.size()];
   }
 
   [[nodiscard]] std::size_t size() const { return q_.size(); }
@@ -138,6 +155,7 @@ class Cycle {
   ApproxVec3 minus_m_approx_;
   std::vector<Vec3> q_;
   std::vector<ApproxVec3> approx_;
+  std::vector<std::optional<SmallDirection>> directions_;
 };
 
 // Where the facets of P sit on Q's Gaussian map: each facet's position (none
@@ -202,6 +220,14 @@ GaussPlacement place(const Cycle& q, const ConvexPolyhedron& p) {
   return placement;
 }
 
+// A face's outward primitive normal when the construction knows it: a
+// normal of P or a pole (given), or a parallelogram's cross product of two
+// small edge directions (small); neither: made from the face's corners.
+struct FaceNormal {
+  std::optional<Vec3Ref> given;
+  std::optional<SmallNormal> small;
+};
+
 // The soup of Q + P: vertex (j, v) is q_j + p_v. Faces are kept as keys
 // j |P| + v and numbered by first use at the end, by sorting (first_use.hpp:
 // hashed, the keys of one v collide when |P| is a multiple of the bucket
@@ -215,22 +241,22 @@ class SumSoup {
   }
   /// Adds a face whose outward normal is `normal` (primitive), or is to be
   /// made from its first corners if null.
-  void add_face(std::initializer_list<std::uint64_t> face, const Vec3Ref* normal) {
+  void add_face(std::initializer_list<std::uint64_t> face, const FaceNormal& normal) {
     add_face(std::vector<std::uint64_t>(face), normal);
   }
-  void add_face(const std::vector<std::uint64_t>& face, const Vec3Ref* normal) {
+  void add_face(const std::vector<std::uint64_t>& face, const FaceNormal& normal) {
     keys_.insert(keys_.end(), face.begin(), face.end());
     offsets_.push_back(static_cast<std::uint32_t>(keys_.size()));
-    normals_.push_back(normal == nullptr ? std::nullopt : std::optional<Vec3Ref>(*normal));
+    normals_.push_back(normal);
   }
-  [[nodiscard]] const std::vector<std::optional<Vec3Ref>>& normals() const { return normals_; }
+  [[nodiscard]] const std::vector<FaceNormal>& normals() const { return normals_; }
   PolygonSoup take() {
     FirstUse numbered = first_use(keys_, std::less<>{});
     PolygonSoup soup;
     soup.points.reserve(numbered.first.size());
     const std::uint64_t n = p_.num_vertices();
     for (std::size_t i : numbered.first)
-      soup.points.push_back(q_.vertex(keys_[i] / n) + p_.vertex(VertexId(static_cast<std::uint32_t>(keys_[i] % n))));
+      soup.points.push_back(add(q_.vertex(keys_[i] / n), p_.vertex(VertexId(static_cast<std::uint32_t>(keys_[i] % n)))));
     soup.face_offsets = std::move(offsets_);
     soup.face_indices = std::move(numbered.index);
     return soup;
@@ -241,14 +267,14 @@ class SumSoup {
   const ConvexPolyhedron& p_;
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint32_t> offsets_{0};
-  std::vector<std::optional<Vec3Ref>> normals_;
+  std::vector<FaceNormal> normals_;
 };
 
 // The polyhedron of the soup with the normals the construction knows: the
 // poles' +-m and P's facet normals (each the unique primitive outward
 // normal, as planes_from_first_corners would make it), stored rather than
 // recomputed; the parallelograms' from their first corners.
-ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<std::optional<Vec3Ref>>& known) {
+ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<FaceNormal>& known) {
   Mesh mesh = output_mesh(std::move(soup));
   VertexApproximations vertex_approx;
   vertex_approx.reserve(mesh.num_vertices());
@@ -261,9 +287,13 @@ ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<std::opt
   Vec3 general;  // keeps its limbs from facet to facet
   for (FaceId f : mesh.faces()) {
     Vec3& normal = planes.normals.emplace_back();
-    if (const auto& n = known[f.index()]) {
-      arena.store(normal, n->exact);
-      planes.normal_approx[f.index()] = n->approx;
+    const FaceNormal& n = known[f.index()];
+    if (n.given) {
+      arena.store(normal, n.given->exact);
+      planes.normal_approx[f.index()] = n.given->approx;
+    } else if (n.small) {
+      n.small->store(arena, normal);
+      planes.normal_approx[f.index()] = n.small->approx();
     } else {
       const std::array<VertexId, 3> t = first_corners(mesh, f);
       primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, normal, planes.normal_approx[f.index()]);
@@ -316,7 +346,7 @@ void add_pole_facet(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, co
   std::vector<std::uint64_t> out;
   for (const auto& [i, j] : planar_sum_indices(charted(cycle, chart), charted(face_points, chart)))
     out.push_back(soup.vertex(reversed ? q.size() - 1 - i : i, face[j]));
-  soup.add_face(out, &pole);
+  soup.add_face(out, FaceNormal{pole, std::nullopt});
 }
 
 // f + F_Q(n_f) for a facet at `position` (not a pole).
@@ -330,7 +360,7 @@ void add_facet(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, FaceId 
     for (const auto& [v, end] : stretched_facet(p, f, q.vertex(i), q.vertex(i + 1))) out.push_back(soup.vertex(i + end, v));
   }
   const Vec3Ref normal = normal_ref(p, f);
-  soup.add_face(out, &normal);
+  soup.add_face(out, FaceNormal{normal, std::nullopt});
 }
 
 // The meridians the arc of e's edge crosses: the first and how many.
@@ -348,11 +378,21 @@ void add_edge_facets(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, c
   const Mesh& m = p.mesh();
   const auto [first, count] = crossings(q, p, placement, e);
   const HalfedgeId h0 = Mesh::halfedge(e);
+  if (count == 0) return;
+  const std::optional<SmallDirection> d = small_direction(vertex_ref(p, m.from(h0)), vertex_ref(p, m.to(h0)));
   for (std::size_t i = first; i < first + count; ++i) {
     // h runs u -> w in the facet on the side of q_i (dot(n, e_i) < 0).
-    const HalfedgeId h = q.rise(i, normal_ref(p, m.face(h0))) == Sign::negative ? h0 : Mesh::twin(h0);
+    const bool along = q.rise(i, normal_ref(p, m.face(h0))) == Sign::negative;
+    const HalfedgeId h = along ? h0 : Mesh::twin(h0);
     const VertexId u = m.from(h), w = m.to(h);
-    soup.add_face({soup.vertex(i, w), soup.vertex(i, u), soup.vertex(i + 1, u), soup.vertex(i + 1, w)}, nullptr);
+    // The first corners q_i + p_w, q_i + p_u, q_{i+1} + p_u turn around
+    // cross(p_u - p_w, e_i) = cross(e_i, w - u): the outward normal.
+    FaceNormal normal;
+    if (d && q.direction(i)) {
+      normal.small = primitive_cross(*q.direction(i), *d);
+      if (!along) normal.small->negate();
+    }
+    soup.add_face({soup.vertex(i, w), soup.vertex(i, u), soup.vertex(i + 1, u), soup.vertex(i + 1, w)}, normal);
   }
 }
 
@@ -375,7 +415,7 @@ ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedro
   for (FaceId f : m.faces())
     if (placement.facet[f.index()]) add_facet(soup, q, p, f, *placement.facet[f.index()]);
   for (EdgeId e : m.edges()) add_edge_facets(soup, q, p, placement, e);
-  const std::vector<std::optional<Vec3Ref>> normals = soup.normals();
+  const std::vector<FaceNormal> normals = soup.normals();
   return ConvexSet(with_known_normals(soup.take(), normals));
 }
 
