@@ -250,13 +250,24 @@ class SumSoup {
     normals_.push_back(normal);
   }
   [[nodiscard]] const std::vector<FaceNormal>& normals() const { return normals_; }
-  PolygonSoup take() {
+  /// The soup, its points' limbs kept in arena (in machine words when the
+  /// coordinates allow: store_sum), each denominator's own limb given back
+  /// as the point is made, so that the points cost no heap block each.
+  PolygonSoup take(LimbArena& arena) {
     FirstUse numbered = first_use(keys_, std::less<>{});
     PolygonSoup soup;
     soup.points.reserve(numbered.first.size());
     const std::uint64_t n = p_.num_vertices();
-    for (std::size_t i : numbered.first)
-      soup.points.push_back(add(q_.vertex(keys_[i] / n), p_.vertex(VertexId(static_cast<std::uint32_t>(keys_[i] % n)))));
+    Rational scratch;
+    for (std::size_t i : numbered.first) {
+      const Vec3& a = q_.vertex(keys_[i] / n);
+      const Vec3& b = p_.vertex(VertexId(static_cast<std::uint32_t>(keys_[i] % n)));
+      Vec3& point = soup.points.emplace_back();
+      for (int k = 0; k < 3; ++k) {
+        LimbArena::give_back_denominator(point[k]);
+        store_sum(arena, point[k], a[k], b[k], scratch);
+      }
+    }
     soup.face_offsets = std::move(offsets_);
     soup.face_indices = std::move(numbered.index);
     return soup;
@@ -274,13 +285,12 @@ class SumSoup {
 // poles' +-m and P's facet normals (each the unique primitive outward
 // normal, as planes_from_first_corners would make it), stored rather than
 // recomputed; the parallelograms' from their first corners.
-ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<FaceNormal>& known) {
+ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<FaceNormal>& known, LimbArena arena) {
   Mesh mesh = output_mesh(std::move(soup));
   VertexApproximations vertex_approx;
   vertex_approx.reserve(mesh.num_vertices());
   for (VertexId v : mesh.vertices()) vertex_approx.push_back(ApproxVec3::of(mesh.position(v)));
   const auto ref = [&](VertexId v) { return Vec3Ref{mesh.position(v), vertex_approx[v.index()]}; };
-  LimbArena arena;
   FacetPlanes planes;
   planes.normal_approx.resize(mesh.num_faces());
   planes.normals.reserve(mesh.num_faces());
@@ -416,7 +426,9 @@ ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedro
     if (placement.facet[f.index()]) add_facet(soup, q, p, f, *placement.facet[f.index()]);
   for (EdgeId e : m.edges()) add_edge_facets(soup, q, p, placement, e);
   const std::vector<FaceNormal> normals = soup.normals();
-  return ConvexSet(with_known_normals(soup.take(), normals));
+  LimbArena arena;
+  PolygonSoup sum = soup.take(arena);
+  return ConvexSet(with_known_normals(std::move(sum), normals, std::move(arena)));
 }
 
 }  // namespace cvms::detail
