@@ -336,11 +336,25 @@ std::vector<VertexId> extreme_face(const Cycle& q, const ConvexPolyhedron& p, co
     const Sign s = compare_dot(vertex_ref(p, v), vertex_ref(p, w), q.normal());
     return reversed ? -s : s;
   };
+  // Walk, don't scan: a linear function on a convex polyhedron has no
+  // local maximum but the global one, so climbing along edges ends on the
+  // farthest face, here a vertex or an edge (a facet was found above); an
+  // edge's other end is the one neighbour at the same level.
   VertexId best(0);
-  for (VertexId v : m.vertices())
-    if (farther(v, best) == Sign::positive) best = v;
-  for (VertexId v : m.vertices())
-    if (farther(v, best) == Sign::zero) face.push_back(v);
+  for (bool climbed = true; climbed;) {
+    climbed = false;
+    for (HalfedgeId h : m.outgoing_halfedges(best))
+      if (farther(m.to(h), best) == Sign::positive) {
+        best = m.to(h);
+        climbed = true;
+        break;
+      }
+  }
+  face.push_back(best);
+  for (HalfedgeId h : m.outgoing_halfedges(best))
+    if (farther(m.to(h), best) == Sign::zero) face.push_back(m.to(h));
+  // In index order, as the face's corners are listed for the planar sum.
+  std::sort(face.begin(), face.end());
   return face;
 }
 
