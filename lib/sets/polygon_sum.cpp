@@ -67,14 +67,14 @@
 #include "cvms/error.hpp"
 #include "cvms/planar_sum.hpp"
 #include "cvms/predicates.hpp"
-#include "first_use.hpp"
-#include "output_budget.hpp"
 #include "dyadic.hpp"
 #include "filtered_predicates.hpp"
+#include "first_use.hpp"
+#include "output_budget.hpp"
 #include "plane_chart.hpp"
-#include "small_direction.hpp"
 #include "polyhedron_builder.hpp"
 #include "set_sum_parts.hpp"
+#include "small_direction.hpp"
 
 namespace cvms::detail {
 
@@ -109,7 +109,6 @@ class Cycle {
 
   [[nodiscard]] std::size_t size() const { return q_.size(); }
   [[nodiscard]] const Vec3& vertex(std::size_t i) const { return q_[i % q_.size()]; }
-  [[nodiscard]] Vec3 edge(std::size_t i) const { return vertex(i + 1) - vertex(i); }
   [[nodiscard]] const std::vector<Vec3>& cycle() const { return q_; }
   [[nodiscard]] Vec3Ref normal() const { return {m_, m_approx_}; }
   [[nodiscard]] Vec3Ref pole(bool reversed) const {
@@ -159,8 +158,8 @@ class Cycle {
 };
 
 // Where the facets of P sit on Q's Gaussian map: each facet's position (none
-// for a pole), and for each edge the counterclockwise arc between its two
-// facets' normals, when it turns.
+// for a pole); the arcs of P's edges and the meridians they cross follow
+// from them.
 struct GaussPlacement {
   std::vector<std::optional<std::size_t>> facet;  // by FaceId
 
@@ -180,9 +179,11 @@ struct GaussPlacement {
   }
 
   // The meridians strictly inside the arc from position a to position b
-  // (neither a pole): the first, and how many (consecutive from it).
+  // (neither a pole): the first, and how many (consecutive from it). Ends
+  // in one lune cross none; ends on one meridian would not turn.
   [[nodiscard]] static std::pair<std::size_t, std::size_t> crossed(std::size_t a, std::size_t b, std::size_t k) {
     const std::size_t span = (b + 2 * k - a) % (2 * k);
+    if (span == 0) return {0, 0};
     return {(a + 1) / 2, (span - a % 2) / 2};
   }
 };
@@ -239,8 +240,7 @@ class SumSoup {
   [[nodiscard]] std::uint64_t vertex(std::size_t j, VertexId v) const {
     return std::uint64_t{j % q_.size()} * p_.num_vertices() + v.index();
   }
-  /// Adds a face whose outward normal is `normal` (primitive), or is to be
-  /// made from its first corners if null.
+  /// Adds a face with what is known of its outward normal (FaceNormal).
   void add_face(std::initializer_list<std::uint64_t> face, const FaceNormal& normal) {
     add_face(std::vector<std::uint64_t>(face), normal);
   }
@@ -282,9 +282,10 @@ class SumSoup {
 };
 
 // The polyhedron of the soup with the normals the construction knows: the
-// poles' +-m and P's facet normals (each the unique primitive outward
-// normal, as planes_from_first_corners would make it), stored rather than
-// recomputed; the parallelograms' from their first corners.
+// poles' +-m and P's facet normals stored as they are, the parallelograms'
+// from the small edge directions, the rest from their first corners (each
+// the unique primitive outward normal, the value planes_from_first_corners
+// would make).
 ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<FaceNormal>& known, LimbArena arena) {
   Mesh mesh = output_mesh(std::move(soup));
   VertexApproximations vertex_approx;
@@ -392,7 +393,7 @@ std::pair<std::size_t, std::size_t> crossings(const Cycle& q, const ConvexPolyhe
                                               const GaussPlacement& placement, EdgeId e) {
   const auto arc = GaussPlacement::arc(q, p, e);
   if (!arc) return {0, 0};
-  return placement.crossed(*placement.facet[arc->first.index()], *placement.facet[arc->second.index()], q.size());
+  return GaussPlacement::crossed(*placement.facet[arc->first.index()], *placement.facet[arc->second.index()], q.size());
 }
 
 // The parallelograms g + e_i for the meridians the arc of g's edge crosses,
@@ -406,15 +407,15 @@ void add_edge_facets(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, c
   const std::optional<SmallDirection> d = small_direction(vertex_ref(p, m.from(h0)), vertex_ref(p, m.to(h0)));
   for (std::size_t i = first; i < first + count; ++i) {
     // h runs u -> w in the facet on the side of q_i (dot(n, e_i) < 0).
-    const bool along = q.rise(i, normal_ref(p, m.face(h0))) == Sign::negative;
-    const HalfedgeId h = along ? h0 : Mesh::twin(h0);
+    const bool h0_on_q_i_side = q.rise(i, normal_ref(p, m.face(h0))) == Sign::negative;
+    const HalfedgeId h = h0_on_q_i_side ? h0 : Mesh::twin(h0);
     const VertexId u = m.from(h), w = m.to(h);
     // The first corners q_i + p_w, q_i + p_u, q_{i+1} + p_u turn around
     // cross(p_u - p_w, e_i) = cross(e_i, w - u): the outward normal.
     FaceNormal normal;
     if (d && q.direction(i)) {
       normal.small = primitive_cross(*q.direction(i), *d);
-      if (!along) normal.small->negate();
+      if (!h0_on_q_i_side) normal.small->negate();
     }
     soup.add_face({soup.vertex(i, w), soup.vertex(i, u), soup.vertex(i + 1, u), soup.vertex(i + 1, w)}, normal);
   }
