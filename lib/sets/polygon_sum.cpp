@@ -423,8 +423,8 @@ void add_edge_facets(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, c
 
 }  // namespace
 
-ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
-                                 const std::string& what) {
+ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
+                                        const std::string& what) {
   const Cycle q(polygon);
   const Mesh& m = p.mesh();
   const GaussPlacement placement = place(q, p);
@@ -443,7 +443,7 @@ ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedro
   const std::vector<FaceNormal> normals = soup.normals();
   LimbArena arena;
   PolygonSoup sum = soup.take(arena);
-  return ConvexSet(with_known_normals(std::move(sum), normals, std::move(arena)));
+  return with_known_normals(std::move(sum), normals, std::move(arena));
 }
 
 }  // namespace cvms::detail
