@@ -37,7 +37,8 @@ using Rng = std::mt19937_64;
 // A random convex polygon of up to `corners` corners in the plane through
 // `origin` spanned by u and w (not parallel), on a small grid of that plane:
 // the hull of random grid points, none if they fall on a line.
-std::optional<ConvexSet> random_polygon(Rng& rng, const Vec3& origin, const Vec3& u, const Vec3& w, int corners) {
+std::optional<ConvexSet> random_polygon(Rng& rng, const Vec3& origin, const Vec3& u, const Vec3& w,
+                                        int corners) {
   std::uniform_int_distribution<int> coordinate(-4, 4);
   std::vector<Vec3> points;
   for (int i = 0; i < corners; ++i)
@@ -97,8 +98,8 @@ TEST(PolygonPlusPolyhedron, RandomPolygonsAgainstTheHullOfPairwiseSums) {
     const int corners = seed % 3 == 0 ? 3 : 3 + static_cast<int>(rng() % 12);
     const auto q = random_polygon(rng, random_vector(rng), u, w, corners);
     if (!q) continue;
-    ASSERT_EQ(test::check_set_sum(*q, ConvexSet(p)), "") << "seed " << seed << ", " << q->num_vertices()
-                                                         << " corners";
+    ASSERT_EQ(test::check_set_sum(*q, ConvexSet(p)), "")
+        << "seed " << seed << ", " << q->num_vertices() << " corners";
     ++checked;
   }
   EXPECT_GT(checked, 300);
@@ -116,7 +117,8 @@ TEST(PolygonPlusPolyhedron, DecimalAndHugeCoordinates) {
     const auto [u, w] = plane_directions(rng, p, seed);
     if (is_parallel(u, w)) continue;
     const Rational scale = seed % 2 == 0 ? parse_rational("0.001") : Rational(1);
-    const auto q = random_polygon(rng, random_vector(rng), scale * u, scale * w, 3 + static_cast<int>(seed % 6));
+    const auto q =
+        random_polygon(rng, random_vector(rng), scale * u, scale * w, 3 + static_cast<int>(seed % 6));
     if (!q) continue;
     const Vec3& offset = seed % 3 == 2 ? huge_offset : decimal_offset;
     ASSERT_EQ(test::check_set_sum(q->translated(offset), ConvexSet(p).translated(-decimal_offset)), "")
@@ -151,9 +153,11 @@ TEST(PolygonPlusPolyhedron, AlignedWithTheCube) {
 // is that of the triangle), corners all on one line are refused.
 TEST(PolygonPlusPolyhedron, CollinearCornersAsConvexSetPolygon) {
   const ConvexSet cube(shapes::cube());
-  const ConvexSet with_middle = ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(1, 1, 1), v3(2, 2, 2), v3(0, 3, 1)});
+  const ConvexSet with_middle =
+      ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(1, 1, 1), v3(2, 2, 2), v3(0, 3, 1)});
   const ConvexSet triangle = ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(2, 2, 2), v3(0, 3, 1)});
-  EXPECT_EQ(test::describe_set(minkowski_sum(with_middle, cube)), test::describe_set(minkowski_sum(triangle, cube)));
+  EXPECT_EQ(test::describe_set(minkowski_sum(with_middle, cube)),
+            test::describe_set(minkowski_sum(triangle, cube)));
   EXPECT_EQ(test::check_set_sum(with_middle, cube), "");
   try {
     (void)ConvexSet::polygon(std::vector<Vec3>{v3(0, 0, 0), v3(1, 1, 1), v3(2, 2, 2)});

@@ -58,7 +58,8 @@ std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polyg
   const OutputBudget sum_budget(options.limits, "sets");
   OrderedWork<ConvexPolyhedron> work(polygons.size(), budget);
   work.run(options.threads, [&](std::size_t k) {
-    ConvexPolyhedron sum = polygon_polyhedron_sum(ConvexSet::polygon(polygons[k]), b, sum_budget, "polygon + polyhedron");
+    ConvexPolyhedron sum =
+        polygon_polyhedron_sum(ConvexSet::polygon(polygons[k]), b, sum_budget, "polygon + polyhedron");
     progress.advance(1);
     const std::uint64_t facets = sum.num_facets();
     return std::pair{std::move(sum), facets};

@@ -94,7 +94,10 @@ std::optional<SmallDirection> small_direction(Vec3Ref from, Vec3Ref to) {
 class Cycle {
  public:
   explicit Cycle(const ConvexSet& q)
-      : m_(q.normal()), m_approx_(ApproxVec3::of(m_)), minus_m_(-m_), minus_m_approx_(ApproxVec3::of(minus_m_)),
+      : m_(q.normal()),
+        m_approx_(ApproxVec3::of(m_)),
+        minus_m_(-m_),
+        minus_m_approx_(ApproxVec3::of(minus_m_)),
         q_(q.vertices()) {
     approx_.reserve(q_.size());
     for (const Vec3& v : q_) approx_.push_back(ApproxVec3::of(v));
@@ -181,7 +184,8 @@ struct GaussPlacement {
   // The meridians strictly inside the arc from position a to position b
   // (neither a pole): the first, and how many (consecutive from it). Ends
   // in one lune cross none; ends on one meridian would not turn.
-  [[nodiscard]] static std::pair<std::size_t, std::size_t> crossed(std::size_t a, std::size_t b, std::size_t k) {
+  [[nodiscard]] static std::pair<std::size_t, std::size_t> crossed(std::size_t a, std::size_t b,
+                                                                   std::size_t k) {
     const std::size_t span = (b + 2 * k - a) % (2 * k);
     if (span == 0) return {0, 0};
     return {(a + 1) / 2, (span - a % 2) / 2};
@@ -307,7 +311,8 @@ ConvexPolyhedron with_known_normals(PolygonSoup soup, const std::vector<FaceNorm
       planes.normal_approx[f.index()] = n.small->approx();
     } else {
       const std::array<VertexId, 3> t = first_corners(mesh, f);
-      primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, normal, planes.normal_approx[f.index()]);
+      primitive_normal(ref(t[0]), ref(t[1]), ref(t[2]), arena, general, normal,
+                       planes.normal_approx[f.index()]);
     }
   }
   return assemble(std::move(mesh), std::move(vertex_approx), std::move(planes), std::move(arena));
@@ -382,7 +387,8 @@ void add_facet(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, FaceId 
     for (HalfedgeId h : m.face_halfedges(f)) out.push_back(soup.vertex(position / 2, m.from(h)));
   } else {  // on the meridian C_i: stretched along the edge e_i
     const std::size_t i = position / 2;
-    for (const auto& [v, end] : stretched_facet(p, f, q.vertex(i), q.vertex(i + 1))) out.push_back(soup.vertex(i + end, v));
+    for (const auto& [v, end] : stretched_facet(p, f, q.vertex(i), q.vertex(i + 1)))
+      out.push_back(soup.vertex(i + end, v));
   }
   const Vec3Ref normal = normal_ref(p, f);
   soup.add_face(out, FaceNormal{normal, std::nullopt});
@@ -393,13 +399,14 @@ std::pair<std::size_t, std::size_t> crossings(const Cycle& q, const ConvexPolyhe
                                               const GaussPlacement& placement, EdgeId e) {
   const auto arc = GaussPlacement::arc(q, p, e);
   if (!arc) return {0, 0};
-  return GaussPlacement::crossed(*placement.facet[arc->first.index()], *placement.facet[arc->second.index()], q.size());
+  return GaussPlacement::crossed(*placement.facet[arc->first.index()], *placement.facet[arc->second.index()],
+                                 q.size());
 }
 
 // The parallelograms g + e_i for the meridians the arc of g's edge crosses,
 // counterclockwise from its start.
-void add_edge_facets(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, const GaussPlacement& placement,
-                     EdgeId e) {
+void add_edge_facets(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p,
+                     const GaussPlacement& placement, EdgeId e) {
   const Mesh& m = p.mesh();
   const auto [first, count] = crossings(q, p, placement, e);
   const HalfedgeId h0 = Mesh::halfedge(e);
@@ -417,14 +424,15 @@ void add_edge_facets(SumSoup& soup, const Cycle& q, const ConvexPolyhedron& p, c
       normal.small = primitive_cross(*q.direction(i), *d);
       if (!h0_on_q_i_side) normal.small->negate();
     }
-    soup.add_face({soup.vertex(i, w), soup.vertex(i, u), soup.vertex(i + 1, u), soup.vertex(i + 1, w)}, normal);
+    soup.add_face({soup.vertex(i, w), soup.vertex(i, u), soup.vertex(i + 1, u), soup.vertex(i + 1, w)},
+                  normal);
   }
 }
 
 }  // namespace
 
-ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
-                                        const std::string& what) {
+ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p,
+                                        const OutputBudget& budget, const std::string& what) {
   const Cycle q(polygon);
   const Mesh& m = p.mesh();
   const GaussPlacement placement = place(q, p);
@@ -433,7 +441,8 @@ ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPo
   std::uint64_t facets = 2;
   for (FaceId f : m.faces()) facets += placement.facet[f.index()] ? 1 : 0;
   for (EdgeId e : m.edges()) facets = saturating_sum(facets, crossings(q, p, placement, e).second);
-  budget.check_count(facets, "minkowski_sum (" + what + "): the sum has " + std::to_string(facets) + " facets");
+  budget.check_count(facets,
+                     "minkowski_sum (" + what + "): the sum has " + std::to_string(facets) + " facets");
   SumSoup soup(q, p);
   add_pole_facet(soup, q, p, placement, false);
   add_pole_facet(soup, q, p, placement, true);

@@ -43,7 +43,7 @@ ConvexSet unswept(const ConvexPolyhedron& r, const Vec3& sweep);
 /// thousands of them: no copy out of a ConvexSet).
 /// \throw Error(limit) if its facets, counted first, exceed `budget`; the
 ///   message names the sum as `what` ("polygon + polyhedron").
-ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
-                                 const std::string& what);
+ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p,
+                                        const OutputBudget& budget, const std::string& what);
 
 }  // namespace cvms::detail
