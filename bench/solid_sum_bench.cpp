@@ -13,6 +13,10 @@
 //    union: minkowski_sum_pieces (decomposition and pairwise sums) when both
 //    operands are non-convex, and the convex sums of A's boundary triangles
 //    with B (sums of flat operands, cvms/set_sum.hpp) when B is convex.
+//  - BM_FaceSums/<pair>/<threads>: where one operand is convex, the pieces
+//    that road really sums: the other operand's facet polygons (A's
+//    triangles merged into convex polygons) each + the convex one, through
+//    the boundary layer's face sums (lib/boundary/face_sums.hpp).
 //  - BM_UnionOfPieces/<pair>/1: the other road where one operand is convex:
 //    the union of the pieces of both decompositions, so that the two roads
 //    are compared on the same pairs.
@@ -38,6 +42,8 @@
 #include "cvms/rational.hpp"
 #include "cvms/set_sum.hpp"
 #include "cvms/solid_sum.hpp"
+#include "face_sums.hpp"
+#include "facet_polygons.hpp"
 #include "solid_sum_operands.hpp"
 
 namespace {
@@ -159,6 +165,32 @@ void pieces_stage(benchmark::State& state, const SolidPair& pair, unsigned threa
   }
 }
 
+void face_sums_stage(benchmark::State& state, const SolidPair& pair, unsigned threads) {
+  const cvms::Solid& a = cvms_bench::solid_sum_operand(pair.a);
+  const cvms::Solid& b = cvms_bench::solid_sum_operand(pair.b);
+  if (!a.is_convex() && !b.is_convex()) {
+    state.SkipWithError("neither operand is convex");
+    return;
+  }
+  const cvms::Solid& flat = b.is_convex() ? a : b;
+  const cvms::ConvexPolyhedron convex = cvms::convex_hull((b.is_convex() ? b : a).vertices());
+  const std::vector<std::vector<cvms::Vec3>> polygons = cvms::detail::facet_polygons(flat);
+  double facets = 0;
+  try {
+    for (auto _ : state) {
+      const std::vector<cvms::ConvexPolyhedron> sums = cvms::detail::face_sums(polygons, convex, with_threads(threads));
+      facets = 0;
+      for (const cvms::ConvexPolyhedron& sum : sums) facets += sum.num_facets();
+      benchmark::DoNotOptimize(facets);
+    }
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  state.counters["out_pieces"] = static_cast<double>(polygons.size());
+  state.counters["piece_facets"] = facets;
+}
+
 void union_of_pieces(benchmark::State& state, const SolidPair& pair, unsigned threads) {
   const cvms::Solid& a = cvms_bench::solid_sum_operand(pair.a);
   const cvms::Solid& b = cvms_bench::solid_sum_operand(pair.b);
@@ -176,6 +208,7 @@ void union_of_pieces(benchmark::State& state, const SolidPair& pair, unsigned th
 }
 
 bool every_pair(const SolidPair& /*pair*/) { return true; }
+bool one_convex(const SolidPair& pair) { return pair.group != PairGroup::small_small; }
 bool one_convex_small(const SolidPair& pair) {
   return pair.group == PairGroup::small_cube || pair.group == PairGroup::comb;
 }
@@ -184,6 +217,7 @@ const bool registered = [] {
   cvms_bench::register_solid_rows("BM_SolidSum", solid_sum, every_pair, true);
   cvms_bench::register_solid_rows("BM_WriteResult", write_result, every_pair, false);
   cvms_bench::register_solid_rows("BM_PiecesStage", pieces_stage, every_pair, true);
+  cvms_bench::register_solid_rows("BM_FaceSums", face_sums_stage, one_convex, true);
   cvms_bench::register_solid_rows("BM_UnionOfPieces", union_of_pieces, one_convex_small, false);
   return true;
 }();

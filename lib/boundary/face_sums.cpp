@@ -13,10 +13,11 @@
 
 #include "cvms/convex_set.hpp"
 #include "cvms/error.hpp"
-#include "cvms/set_sum.hpp"
 #include "facet_budget.hpp"
 #include "ordered_work.hpp"
+#include "output_budget.hpp"
 #include "progress_reporter.hpp"
+#include "set_sum_parts.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -50,13 +51,15 @@ std::vector<ConvexPolyhedron> face_sums(std::span<const std::vector<Vec3>> polyg
                   options.limits);
   ProgressReporter progress(callback_of(options.progress));
   progress.begin("solid sum: faces", polygons.size());
-  // Each sum reads only the limits: the sets layer's polygon + polyhedron
-  // reports no progress and runs on its calling thread.
-  Options face_options;
-  face_options.limits = options.limits;
+  // Each sum is minkowski_sum(polygon, B) with only the limits, taken
+  // straight from the sets layer's polygon + polyhedron, which reports no
+  // progress, runs on its calling thread and hands over the polyhedron (a
+  // ConvexSet's would be copied, B converted to one copied too).
+  const OutputBudget sum_budget(options.limits, "sets");
   OrderedWork<ConvexPolyhedron> work(polygons.size(), budget);
   work.run(options.threads, [&](std::size_t k) {
-    ConvexPolyhedron sum = minkowski_sum(ConvexSet::polygon(polygons[k]), b, face_options).polyhedron();
+    ConvexPolyhedron sum =
+        polygon_polyhedron_sum(ConvexSet::polygon(polygons[k]), b, sum_budget, "polygon + polyhedron");
     progress.advance(1);
     const std::uint64_t facets = sum.num_facets();
     return std::pair{std::move(sum), facets};

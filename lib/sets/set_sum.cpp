@@ -50,7 +50,7 @@ ConvexSet polygon_polygon_sum(const ConvexSet& a, const ConvexSet& b, const deta
   // silhouette along the sweep (at most |a| + |b| more).
   const ConvexPolyhedron swept = detail::prism(b, Vec3{0, 0, 0}, b.normal());
   return detail::unswept(
-      detail::polygon_polyhedron_sum(a, swept, budget, "polygon + polygon, through the second one's prism").polyhedron(),
+      detail::polygon_polyhedron_sum(a, swept, budget, "polygon + polygon, through the second one's prism"),
       b.normal());
 }
 
@@ -95,7 +95,7 @@ ConvexSet minkowski_sum(const ConvexSet& a, const ConvexSet& b, const Options& o
       return detail::segment_polyhedron_sum(low[0], low[1] - low[0], b.polyhedron(), budget);
     case 2:
       if (b.dimension() == 2) return polygon_polygon_sum(a, b, budget);
-      return detail::polygon_polyhedron_sum(a, b.polyhedron(), budget, "polygon + polyhedron");
+      return ConvexSet(detail::polygon_polyhedron_sum(a, b.polyhedron(), budget, "polygon + polyhedron"));
     default:
       return ConvexSet(minkowski_sum(a.polyhedron(), b.polyhedron(), options).polyhedron);
   }

@@ -38,10 +38,12 @@ ConvexPolyhedron prism(const ConvexSet& polygon, const Vec3& start, const Vec3& 
 /// facets of R below the sweep, those above moved back, the side facets shrunk.
 ConvexSet unswept(const ConvexPolyhedron& r, const Vec3& sweep);
 
-/// Q + P for a polygon Q and a polyhedron P, from the Gaussian maps (polygon_sum.cpp).
+/// Q + P for a polygon Q and a polyhedron P, from the Gaussian maps
+/// (polygon_sum.cpp), as the polyhedron itself (the face sums of a solid keep
+/// thousands of them: no copy out of a ConvexSet).
 /// \throw Error(limit) if its facets, counted first, exceed `budget`; the
 ///   message names the sum as `what` ("polygon + polyhedron").
-ConvexSet polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p, const OutputBudget& budget,
-                                 const std::string& what);
+ConvexPolyhedron polygon_polyhedron_sum(const ConvexSet& polygon, const ConvexPolyhedron& p,
+                                        const OutputBudget& budget, const std::string& what);
 
 }  // namespace cvms::detail
