@@ -11,7 +11,9 @@
 //    dA + B lies on the boundary of A + b: each fragment (connected) lies
 //    wholly in the interior of A + b, where it bounds nothing of the sum and
 //    is dropped, or wholly outside A + b, where it is kept. One exact locate
-//    of a point of its relative interior in A tells which.
+//    of a point of its relative interior in A tells which. The pieces'
+//    facets proven to lie inside A + B (interior_facets.hpp) give only such
+//    dropped fragments, so they are not clipped at all.
 //  - neither convex: the pairwise sums of both decompositions, united.
 // Proof of A + B = (A + b) u (dA + B): let x = a + c with a in A, c in B.
 // If x - b is in A, x is in A + b. Otherwise the segment from a (in A) to
@@ -31,6 +33,7 @@
 #include "cvms/error.hpp"
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
+#include "interior_facets.hpp"
 #include "progress_reporter.hpp"
 #include "worker.hpp"
 
@@ -102,8 +105,9 @@ Solid sum_with_convex(const Solid& a, const ConvexPolyhedron& b, const Options& 
   const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
   const std::vector<ConvexPolyhedron> pieces = detail::face_sums(polygons, b, options);
   const Vec3 inside_b = interior_point(b);
+  const detail::FacetMask interior = detail::interior_facets(polygons, pieces, options);
   return detail::assemble_boundary(
-      outside(detail::union_boundary_fragments(pieces, options), a, inside_b, options), options);
+      outside(detail::union_boundary_fragments(pieces, options, interior), a, inside_b, options), options);
 }
 
 }  // namespace
