@@ -6,7 +6,8 @@
 // piece or in A + b, by exact containment in each convex piece and one
 // locate in A. Operands: the test solids, polycubes (random ones with fixed
 // seeds, mapped by a rational rotation for decimal coordinates), a star
-// prism, and face polygons that do not meet edge to edge.
+// prism, and face polygons that do not meet edge to edge; and, with neither
+// operand convex, the pairwise sums of their decompositions.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -16,6 +17,7 @@
 
 #include "boundary_fragments.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
@@ -50,28 +52,49 @@ bool piece_contains(const ConvexPolyhedron& piece, const Vec3& p) {
   return true;
 }
 
-// The sum's pieces and what the brute force needs of them.
+// The sum's pieces, their facets' mask, and what the brute force needs.
 struct SumParts {
-  Solid a;
-  ConvexPolyhedron b;
-  std::vector<std::vector<Vec3>> polygons;
   std::vector<ConvexPolyhedron> pieces;
+  detail::FacetMask mask;
   std::vector<Box> boxes;
-  Vec3 b_point;  // inside B
+  const Solid* a = nullptr;  // with B convex, A + b_point is part of the sum
+  Vec3 b_point;
 
-  SumParts(Solid solid, ConvexPolyhedron convex, std::vector<std::vector<Vec3>> face_polygons)
-      : a(std::move(solid)), b(std::move(convex)), polygons(std::move(face_polygons)) {
-    pieces = detail::face_sums(polygons, b, {});
-    for (const ConvexPolyhedron& piece : pieces) boxes.push_back(box_of(piece));
+  // The pieces polygon + B of the sum of a with a convex b.
+  SumParts(const Solid& solid, const ConvexPolyhedron& b, const std::vector<std::vector<Vec3>>& polygons)
+      : pieces(detail::face_sums(polygons, b, {})), a(&solid) {
+    mask = detail::interior_facets(polygons, pieces, {});
     for (VertexId v : b.mesh().vertices()) b_point = b_point + b.vertex(v);
     b_point = Rational(Rational(1) / b.num_vertices()) * b_point;
+    boxes_of_pieces();
+  }
+
+  // The pairwise sums of the two decompositions.
+  SumParts(const ConvexUnion& a_parts, const ConvexUnion& b_parts) {
+    const ConvexUnion sums = minkowski_sum(a_parts, b_parts);
+    pieces.assign(sums.pieces().begin(), sums.pieces().end());
+    mask = detail::interior_facets_of_pairs(vertices_of(a_parts), vertices_of(b_parts), pieces, {});
+    boxes_of_pieces();
   }
 
   [[nodiscard]] bool contains(const Vec3& p) const {
-    if (a.contains(p - b_point)) return true;
+    if (a != nullptr && a->contains(p - b_point)) return true;
     for (std::size_t k = 0; k < pieces.size(); ++k)
       if (boxes[k].holds(p) && piece_contains(pieces[k], p)) return true;
     return false;
+  }
+
+ private:
+  void boxes_of_pieces() {
+    for (const ConvexPolyhedron& piece : pieces) boxes.push_back(box_of(piece));
+  }
+  static std::vector<std::vector<Vec3>> vertices_of(const ConvexUnion& parts) {
+    std::vector<std::vector<Vec3>> out;
+    for (const ConvexPolyhedron& part : parts.pieces()) {
+      std::vector<Vec3>& vertices = out.emplace_back();
+      for (VertexId v : part.mesh().vertices()) vertices.push_back(part.vertex(v));
+    }
+    return out;
   }
 };
 
@@ -104,7 +127,7 @@ std::vector<Vec3> relative_interior_points(const std::vector<Vec3>& corners, std
 // returns how many were skipped.
 std::size_t expect_skipped_inside(const SumParts& parts, std::uint64_t seed, std::size_t budget = 60) {
   SCOPED_TRACE("seed " + std::to_string(seed));
-  const detail::FacetMask mask = detail::interior_facets(parts.polygons, parts.pieces, {});
+  const detail::FacetMask& mask = parts.mask;
   EXPECT_EQ(mask.size(), parts.pieces.size());
   std::vector<std::pair<std::size_t, FaceId>> skipped;
   for (std::size_t k = 0; k < parts.pieces.size(); ++k) {
@@ -214,19 +237,36 @@ TEST(InteriorFacets, PolygonsNotEdgeToEdge) {
   EXPECT_GT(skipped, 0U);
 }
 
+// Both operands not convex: the pieces of their decompositions.
+TEST(InteriorFacets, PairsOfDecompositions) {
+  const Solid l_block = data_solid("l_block.off"), star = data_solid("star_prism.off");
+  const Solid hole = data_solid("box_with_hole.off"), cavity = data_solid("cavity_cube.off");
+  const Mapping rotated{rational_rotation(), Vec3{Rational(1, 10), Rational(-3, 10), Rational(7, 100)}};
+  const Solid turned_l = polycube(l_shape(), rotated);
+  const std::vector<std::pair<const Solid*, const Solid*>> pairs = {
+      {&l_block, &star}, {&hole, &l_block}, {&star, &turned_l}, {&cavity, &l_block}, {&turned_l, &hole}};
+  std::size_t skipped = 0;
+  std::uint64_t seed = 70;
+  for (const auto& [a, b] : pairs) {
+    const SumParts parts(convex_decomposition(*a), convex_decomposition(*b));
+    skipped += expect_skipped_inside(parts, ++seed, 40);
+  }
+  EXPECT_GT(skipped, 0U);
+}
+
 TEST(InteriorFacets, SameMaskOnAnyThreadCount) {
   const Solid a = data_solid("star_prism.off");
-  const SumParts parts(a, random_convex(11), detail::facet_polygons(a));
+  const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
+  const SumParts parts(a, random_convex(11), polygons);
   Options two;
   two.threads = 2;
-  EXPECT_EQ(detail::interior_facets(parts.polygons, parts.pieces, {}),
-            detail::interior_facets(parts.polygons, parts.pieces, two));
+  EXPECT_EQ(parts.mask, detail::interior_facets(polygons, parts.pieces, two));
 }
 
 TEST(InteriorFacets, MaskOfTheWrongShapeIsRejected) {
   const Solid a = data_solid("l_block.off");
   const SumParts parts(a, cube_of_side(Rational(1, 2)), detail::facet_polygons(a));
-  detail::FacetMask mask = detail::interior_facets(parts.polygons, parts.pieces, {});
+  detail::FacetMask mask = parts.mask;
   mask.back().pop_back();
   EXPECT_THROW(
       {

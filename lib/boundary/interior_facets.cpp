@@ -29,7 +29,16 @@
 // (|S| >= 3 is left alone: n is then +-Q's normal, or S holds a corner on
 // the line of two others.)
 //
-// Why skipping changes nothing (solid_sum.cpp's road for a convex B): the
+// Nothing above asks more of Q' than to be a convex subset of A holding
+// conv S, nor of B than to be convex and full-dimensional. So when the
+// pieces are P_i + Q_j for convex decompositions of both operands, the
+// same test certifies a facet from A's side (Q = P_i, Q' any piece of A's
+// decomposition, Q_j in B's role) or from B's (the roles swapped).
+//
+// Why skipping changes nothing. Pieces of two decompositions: the union is
+// A + B, so a facet whose relative interior lies inside the union has no
+// point of the union's boundary there and gives no fragment at all.
+// Pieces f + B (solid_sum.cpp's road for a convex B): the
 // pieces' covering regions are the same, so the only fragments lost are
 // F's own. Each is a convex polygon of the union U of the pieces whose
 // relative interior lies in F's, hence in the interior of A + B =
@@ -148,15 +157,36 @@ bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n) {
   return false;
 }
 
-std::vector<char> piece_mask(const CornerIncidence& incidence, std::size_t k, const ConvexPolyhedron& piece) {
+// The facets of one piece whose summand from A's side (parts of A) or,
+// when `b` is given, from B's side (parts of B) certifies them.
+std::vector<char> piece_mask(const ConvexPolyhedron& piece, const CornerIncidence& a, std::size_t a_part,
+                             const CornerIncidence* b, std::size_t b_part) {
   const FacetPlanes& planes = PolyhedronAccess::planes(piece);
   const std::span<const Vec3> normals = planes.exact_normals();
   std::vector<char> mask(piece.num_facets(), 0);
   for (std::size_t f = 0; f < mask.size(); ++f) {
     const Vec3Ref n{normals[f], planes.normal_approx[f]};
-    mask[f] = certified(incidence, extreme_corners(incidence, k, n), n) ? 1 : 0;
+    const bool inside = certified(a, extreme_corners(a, a_part, n), n) ||
+                        (b != nullptr && certified(*b, extreme_corners(*b, b_part, n), n));
+    mask[f] = inside ? 1 : 0;
   }
   return mask;
+}
+
+// mask_of(k) for every piece k, over options.threads threads, each piece's
+// mask in its own slot.
+template <class MaskOf>
+FacetMask masks_on_threads(std::size_t pieces, const Options& options, MaskOf&& mask_of) {
+  FacetMask masks(pieces);
+  constexpr std::size_t chunk = 64;
+  std::atomic<std::size_t> next{0};
+  run_on_threads(thread_count(options.threads, pieces / chunk + 1), [&](unsigned) {
+    for (std::size_t begin = next.fetch_add(chunk); begin < pieces; begin = next.fetch_add(chunk)) {
+      const std::size_t end = std::min(pieces, begin + chunk);
+      for (std::size_t k = begin; k < end; ++k) masks[k] = mask_of(k);
+    }
+  });
+  return masks;
 }
 
 }  // namespace
@@ -164,16 +194,17 @@ std::vector<char> piece_mask(const CornerIncidence& incidence, std::size_t k, co
 FacetMask interior_facets(std::span<const std::vector<Vec3>> polygons, std::span<const ConvexPolyhedron> pieces,
                           const Options& options) {
   const CornerIncidence incidence(polygons);
-  FacetMask masks(pieces.size());
-  constexpr std::size_t chunk = 64;
-  std::atomic<std::size_t> next{0};
-  run_on_threads(thread_count(options.threads, pieces.size() / chunk + 1), [&](unsigned) {
-    for (std::size_t begin = next.fetch_add(chunk); begin < pieces.size(); begin = next.fetch_add(chunk)) {
-      const std::size_t end = std::min(pieces.size(), begin + chunk);
-      for (std::size_t k = begin; k < end; ++k) masks[k] = piece_mask(incidence, k, pieces[k]);
-    }
-  });
-  return masks;
+  return masks_on_threads(pieces.size(), options,
+                          [&](std::size_t k) { return piece_mask(pieces[k], incidence, k, nullptr, 0); });
+}
+
+FacetMask interior_facets_of_pairs(std::span<const std::vector<Vec3>> a_parts,
+                                   std::span<const std::vector<Vec3>> b_parts,
+                                   std::span<const ConvexPolyhedron> pieces, const Options& options) {
+  const CornerIncidence a(a_parts), b(b_parts);
+  const std::size_t m = b_parts.size();
+  return masks_on_threads(pieces.size(), options,
+                          [&](std::size_t k) { return piece_mask(pieces[k], a, k / m, &b, k % m); });
 }
 
 }  // namespace cvms::detail

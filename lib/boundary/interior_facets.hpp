@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Facets of the pieces f + B (face_sums.hpp) that provably lie inside
-// A + B, so that the union's boundary need not clip them: a certificate from
-// A's face polygons alone, one exact comparison of dot products per corner
-// looked at. The proof is in interior_facets.cpp; skipping such a facet as
-// a candidate of union_boundary_fragments never changes the sum, because
-// every fragment it would give lies in the interior of A + b, which the sum
-// of a solid with a convex set drops (solid_sum.cpp).
+// Facets of the pieces of A + B that provably lie inside A + B, so that the
+// union's boundary need not clip them: a certificate from the convex parts
+// of A the pieces are made of (A's face polygons when B is convex, the
+// pieces of A's decomposition otherwise, and then those of B's as well),
+// one exact comparison of dot products per corner looked at. The proof is
+// in interior_facets.cpp; skipping such a facet as a candidate of
+// union_boundary_fragments never changes the sum.
 #pragma once
 
 #include <span>
@@ -29,5 +29,17 @@ namespace cvms::detail {
 ///   corners.
 FacetMask interior_facets(std::span<const std::vector<Vec3>> polygons, std::span<const ConvexPolyhedron> pieces,
                           const Options& options);
+
+/// The same for the pieces of A + B from convex decompositions of both:
+/// piece k is the sum of the convex hulls of a_parts[k / m] and
+/// b_parts[k % m], m = b_parts.size(), each part given by its vertices. A
+/// facet is certified from either side, the parts of the other side playing
+/// the face polygons' role (interior_facets.cpp); skipping it changes no
+/// fragment of the union, since its relative interior lies inside the union.
+/// \pre pieces.size() == a_parts.size() * b_parts.size(); the parts of each
+///   side are full-dimensional convex sets inside that operand.
+FacetMask interior_facets_of_pairs(std::span<const std::vector<Vec3>> a_parts,
+                                   std::span<const std::vector<Vec3>> b_parts,
+                                   std::span<const ConvexPolyhedron> pieces, const Options& options);
 
 }  // namespace cvms::detail

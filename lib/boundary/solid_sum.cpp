@@ -14,7 +14,8 @@
 //    of a point of its relative interior in A tells which. The pieces'
 //    facets proven to lie inside A + B (interior_facets.hpp) give only such
 //    dropped fragments, so they are not clipped at all.
-//  - neither convex: the pairwise sums of both decompositions, united.
+//  - neither convex: the pairwise sums of both decompositions, united, the
+//    pieces' facets proven inside A + B (interior_facets.hpp) skipped.
 // Proof of A + B = (A + b) u (dA + B): let x = a + c with a in A, c in B.
 // If x - b is in A, x is in A + b. Otherwise the segment from a (in A) to
 // x - b = a + (c - b) (not in A) meets dA at some a' = a + t (c - b),
@@ -30,6 +31,7 @@
 #include "boundary_assembly.hpp"
 #include "boundary_fragments.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
@@ -110,6 +112,30 @@ Solid sum_with_convex(const Solid& a, const ConvexPolyhedron& b, const Options& 
       outside(detail::union_boundary_fragments(pieces, options, interior), a, inside_b, options), options);
 }
 
+// Each convex piece's vertices.
+std::vector<std::vector<Vec3>> vertex_lists(const ConvexUnion& parts) {
+  std::vector<std::vector<Vec3>> out;
+  out.reserve(parts.size());
+  for (const ConvexPolyhedron& part : parts.pieces()) {
+    std::vector<Vec3>& vertices = out.emplace_back();
+    for (VertexId v : part.mesh().vertices()) vertices.push_back(part.vertex(v));
+  }
+  return out;
+}
+
+// A + B for neither convex: minkowski_sum_pieces (the pairwise sums of the
+// two decompositions, in pair order) united, the pieces' facets that the
+// decompositions prove inside the sum left out of the candidates.
+Solid sum_of_pieces(const Solid& a, const Solid& b, const Options& options,
+                    const DecompositionOptions& decomposition) {
+  const ConvexUnion a_parts = convex_decomposition(a, decomposition);
+  const ConvexUnion b_parts = convex_decomposition(b, decomposition);
+  const ConvexUnion pieces = minkowski_sum(a_parts, b_parts, options);
+  const detail::FacetMask interior =
+      detail::interior_facets_of_pairs(vertex_lists(a_parts), vertex_lists(b_parts), pieces.pieces(), options);
+  return detail::assemble_boundary(detail::union_boundary_fragments(pieces.pieces(), options, interior), options);
+}
+
 }  // namespace
 
 Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options,
@@ -122,7 +148,7 @@ Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options,
     return Solid::from_polyhedron(minkowski_sum(as_polyhedron(a), as_polyhedron(b), options).polyhedron);
   if (b.is_convex()) return sum_with_convex(a, as_polyhedron(b), options);
   if (a.is_convex()) return sum_with_convex(b, as_polyhedron(a), options);
-  return union_solid(minkowski_sum_pieces(a, b, options, decomposition), options);
+  return sum_of_pieces(a, b, options, decomposition);
 }
 
 }  // namespace cvms
