@@ -54,11 +54,11 @@ using FacetMask = std::vector<std::vector<char>>;
 /// A facet f of piece p with skip[p][f] nonzero gives no fragments (it still
 /// takes its part away from the other pieces' facets): the fragments are
 /// those of the other facets. An empty `skip` skips nothing.
-/// \pre skip is empty or has one entry per piece, one per facet.
 /// \throw Error(cancelled) if options.progress returns false.
 /// \throw Error(limit) if the corners made would pass
 ///   options.limits.max_memory_bytes (an estimate per corner).
-/// \throw Error(invalid_argument) for an empty piece.
+/// \throw Error(invalid_argument) for an empty piece, or a non-empty `skip`
+///   without one entry per piece holding one per facet.
 BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options,
                                            const FacetMask& skip = {});
 
