@@ -35,21 +35,20 @@
 // same test certifies a facet from A's side (Q = P_i, Q' any piece of A's
 // decomposition, Q_j in B's role) or from B's (the roles swapped).
 //
-// Why skipping changes nothing. Pieces of two decompositions: the union is
-// A + B, so a facet whose relative interior lies inside the union has no
-// point of the union's boundary there and gives no fragment at all.
-// Pieces f + B (solid_sum.cpp's road for a convex B): the
-// pieces' covering regions are the same, so the only fragments lost are
-// F's own. Each is a convex polygon of the union U of the pieces whose
-// relative interior lies in F's, hence in the interior of A + B =
-// (A + b) u U. A point x of dU inside A + B lies in A + b: the points near
-// x outside U lie in it, and it is closed. dU never meets d(A + b), so the
-// fragment, connected, lies wholly in the interior of A + b, where the sum
-// drops it: the kept fragments, and the solid assembled from them, are the
-// same.
+// Why skipping changes nothing. The pieces' covering regions are the same,
+// so the only fragments lost are F's own: convex polygons of the boundary
+// of the union U of the pieces, with relative interiors inside F's, hence
+// inside the interior of A + B. Pieces of two decompositions: U is A + B,
+// so F has no such fragment. Pieces f + B (solid_sum.cpp's road for a
+// convex B): A + B = (A + b) u U, and a point x of dU inside A + B lies in
+// A + b (the points near x outside U lie in it, and it is closed). dU never
+// meets d(A + b), so the fragment, connected, lies wholly in the interior
+// of A + b, where the sum drops it: the kept fragments, and the solid
+// assembled from them, are the same.
 //
-// The incidence is by exact point: the corners of all polygons sorted and
-// numbered, each number listing the polygons that have it as a corner.
+// The incidence is by exact point: the corners of all polygons (or the
+// vertices of all parts) sorted and numbered, each number listing the
+// polygons that have it as a corner.
 #include "interior_facets.hpp"
 
 #include <algorithm>
