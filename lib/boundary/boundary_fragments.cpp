@@ -9,6 +9,10 @@
 // of overlapping pieces are wholly inside one other piece, and a cut made
 // before that piece is seen would be thrown away.
 //
+// A facet its caller proves to lie inside the set it is after (a facet
+// mask) is no candidate: it gives no fragments, but its piece still covers
+// the other facets as before.
+//
 // Threads: workers take pieces from one atomic counter and write each
 // piece's fragments to its own slot; the regions of a facet are subtracted
 // in piece order whatever order they were found in. The slots are then
@@ -110,8 +114,14 @@ void sort_regions(FacetScratch& scratch) {
 
 class FragmentWork {
  public:
-  FragmentWork(std::span<const ConvexPolyhedron> pieces, std::uint64_t budget, ProgressReporter& progress)
-      : pieces_(pieces), progress_(progress), budget_(budget), geometry_(pieces.size()), slots_(pieces.size()) {}
+  FragmentWork(std::span<const ConvexPolyhedron> pieces, const FacetMask& skip, std::uint64_t budget,
+               ProgressReporter& progress)
+      : pieces_(pieces),
+        skip_(skip),
+        progress_(progress),
+        budget_(budget),
+        geometry_(pieces.size()),
+        slots_(pieces.size()) {}
 
   // The pieces' geometry (each made once, by whichever thread takes it),
   // their hierarchy, then the fragments.
@@ -158,7 +168,9 @@ class FragmentWork {
     });
     std::sort(near.begin(), near.end());
     scratch.recent_covers.fill(no_cover);
+    const std::vector<char>* skip = skip_.empty() ? nullptr : &skip_[p];
     for (std::uint32_t f = 0; f < g.planes.size(); ++f) {
+      if (skip != nullptr && (*skip)[f] != 0) continue;
       if (!find_regions(p, f, near, scratch)) continue;
       ClipPoints points;
       std::vector<ClipPolygon> polygons(1);
@@ -227,6 +239,7 @@ class FragmentWork {
   }
 
   std::span<const ConvexPolyhedron> pieces_;
+  const FacetMask& skip_;
   ProgressReporter& progress_;
   std::uint64_t budget_;
   std::atomic<std::uint64_t> bytes_{0};
@@ -263,17 +276,29 @@ BoundaryFragments collect(FragmentWork& work, std::size_t pieces) {
   return out;
 }
 
+// A mask that does not fit the pieces is a caller's error, named here
+// rather than read out of bounds.
+void check_mask(std::span<const ConvexPolyhedron> pieces, const FacetMask& skip) {
+  bool fits = skip.size() == pieces.size();
+  for (std::size_t p = 0; fits && p < pieces.size(); ++p) fits = skip[p].size() == pieces[p].num_facets();
+  if (!fits)
+    throw Error(ErrorCategory::invalid_argument,
+                "union_boundary_fragments: the facet mask does not have one entry per facet of each piece");
+}
+
 }  // namespace
 
-BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options) {
+BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options,
+                                           const FacetMask& skip) {
   for (std::size_t p = 0; p < pieces.size(); ++p) {
     if (pieces[p].num_vertices() == 0)
       throw Error(ErrorCategory::invalid_argument,
                   "union_boundary_fragments: piece " + std::to_string(p) + " is empty");
   }
+  if (!skip.empty()) check_mask(pieces, skip);
   ProgressReporter progress(callback_of(options.progress));
   progress.begin("union: boundary", pieces.size());
-  FragmentWork work(pieces, options.limits.max_memory_bytes, progress);
+  FragmentWork work(pieces, skip, options.limits.max_memory_bytes, progress);
   work.run(thread_count(options.threads, pieces.size()));
   BoundaryFragments out = collect(work, pieces.size());
   progress.end();

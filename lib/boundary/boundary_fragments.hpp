@@ -44,13 +44,22 @@ struct BoundaryFragments {
   std::vector<BoundaryFragment> fragments;
 };
 
+/// Per piece, per facet in face order: nonzero to leave the facet out of the
+/// candidates (see union_boundary_fragments).
+using FacetMask = std::vector<std::vector<char>>;
+
 /// The boundary of the union of `pieces` (full-dimensional; they may overlap,
 /// touch or share facets). Deterministic: the same pieces in the same order
 /// give the same fragments in the same order, whatever options.threads.
+/// A facet f of piece p with skip[p][f] nonzero gives no fragments (it still
+/// takes its part away from the other pieces' facets): the fragments are
+/// those of the other facets. An empty `skip` skips nothing.
 /// \throw Error(cancelled) if options.progress returns false.
 /// \throw Error(limit) if the corners made would pass
 ///   options.limits.max_memory_bytes (an estimate per corner).
-/// \throw Error(invalid_argument) for an empty piece.
-BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options);
+/// \throw Error(invalid_argument) for an empty piece, or a non-empty `skip`
+///   without one entry per piece holding one per facet.
+BoundaryFragments union_boundary_fragments(std::span<const ConvexPolyhedron> pieces, const Options& options,
+                                           const FacetMask& skip = {});
 
 }  // namespace cvms::detail

@@ -11,8 +11,11 @@
 //    dA + B lies on the boundary of A + b: each fragment (connected) lies
 //    wholly in the interior of A + b, where it bounds nothing of the sum and
 //    is dropped, or wholly outside A + b, where it is kept. One exact locate
-//    of a point of its relative interior in A tells which.
-//  - neither convex: the pairwise sums of both decompositions, united.
+//    of a point of its relative interior in A tells which. The pieces'
+//    facets proven to lie inside A + B (interior_facets.hpp) give only such
+//    dropped fragments, so they are not clipped at all.
+//  - neither convex: the pairwise sums of both decompositions, united, the
+//    pieces' facets proven inside A + B (interior_facets.hpp) skipped.
 // Proof of A + B = (A + b) u (dA + B): let x = a + c with a in A, c in B.
 // If x - b is in A, x is in A + b. Otherwise the segment from a (in A) to
 // x - b = a + (c - b) (not in A) meets dA at some a' = a + t (c - b),
@@ -28,9 +31,11 @@
 #include "boundary_assembly.hpp"
 #include "boundary_fragments.hpp"
 #include "cvms/convex_hull.hpp"
+#include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
+#include "interior_facets.hpp"
 #include "progress_reporter.hpp"
 #include "worker.hpp"
 
@@ -102,8 +107,33 @@ Solid sum_with_convex(const Solid& a, const ConvexPolyhedron& b, const Options& 
   const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
   const std::vector<ConvexPolyhedron> pieces = detail::face_sums(polygons, b, options);
   const Vec3 inside_b = interior_point(b);
+  const detail::FacetMask interior = detail::interior_facets(polygons, pieces, options);
   return detail::assemble_boundary(
-      outside(detail::union_boundary_fragments(pieces, options), a, inside_b, options), options);
+      outside(detail::union_boundary_fragments(pieces, options, interior), a, inside_b, options), options);
+}
+
+// Each convex piece's vertices.
+std::vector<std::vector<Vec3>> vertex_lists(const ConvexUnion& parts) {
+  std::vector<std::vector<Vec3>> out;
+  out.reserve(parts.size());
+  for (const ConvexPolyhedron& part : parts.pieces()) {
+    std::vector<Vec3>& vertices = out.emplace_back();
+    for (VertexId v : part.mesh().vertices()) vertices.push_back(part.vertex(v));
+  }
+  return out;
+}
+
+// A + B for neither convex: minkowski_sum_pieces (the pairwise sums of the
+// two decompositions, in pair order) united, the pieces' facets that the
+// decompositions prove inside the sum left out of the candidates.
+Solid sum_of_pieces(const Solid& a, const Solid& b, const Options& options,
+                    const DecompositionOptions& decomposition) {
+  const ConvexUnion a_parts = convex_decomposition(a, decomposition);
+  const ConvexUnion b_parts = convex_decomposition(b, decomposition);
+  const ConvexUnion pieces = minkowski_sum(a_parts, b_parts, options);
+  const detail::FacetMask interior =
+      detail::interior_facets_of_pairs(vertex_lists(a_parts), vertex_lists(b_parts), pieces.pieces(), options);
+  return detail::assemble_boundary(detail::union_boundary_fragments(pieces.pieces(), options, interior), options);
 }
 
 }  // namespace
@@ -118,7 +148,7 @@ Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options,
     return Solid::from_polyhedron(minkowski_sum(as_polyhedron(a), as_polyhedron(b), options).polyhedron);
   if (b.is_convex()) return sum_with_convex(a, as_polyhedron(b), options);
   if (a.is_convex()) return sum_with_convex(b, as_polyhedron(a), options);
-  return union_solid(minkowski_sum_pieces(a, b, options, decomposition), options);
+  return sum_of_pieces(a, b, options, decomposition);
 }
 
 }  // namespace cvms

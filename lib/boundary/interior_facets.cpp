@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: MIT
+// See interior_facets.hpp. Notation: for a convex polytope X and y in X,
+// N_X(y) = {v : dot(v, w - y) <= 0 for all w in X} is X's normal cone at
+// y; N_{X+Y}(y + z) = N_X(y) n N_Y(z), and a point whose normal cone is
+// {0} is interior (a boundary point has a supporting plane, whose normal
+// lies in the cone).
+//
+// The certificate. Let F be a facet of P = Q + B with outward normal n, S
+// the corners of Q extreme in n and B_n the face of B extreme in n; then
+// F = conv S + B_n and each x in the relative interior of F is y + z with
+// y in relint conv S and z in relint B_n. Suppose |S| <= 2 and some face
+// polygon Q' of A (Q' in dA, possibly Q) has every point of S among its
+// corners, so y is in Q', and a corner w with dot(n, w - s) > 0 (s in S).
+// Let v be in N_{Q'}(y) n N_B(z).
+//  - |S| = 1: F = s + B_n is two-dimensional, so B_n is B's facet with
+//    normal n and N_B(z) is the ray {t n : t >= 0}.
+//  - |S| = 2: conv S is a segment e and y lies inside it, so v, making a
+//    non-positive dot product with the two opposite vectors from y to e's
+//    ends, is orthogonal to e. B_n is B's facet with normal n (as before)
+//    or an edge e_B not parallel to e (F is two-dimensional; a vertex B_n
+//    would make it a segment), with N_B(z) orthogonal to e_B. Then v is
+//    orthogonal to e and e_B, so v = t n; and N_B(z) holds n but no line
+//    (B is full-dimensional), so t >= 0.
+// Either way v = t n with t >= 0, and dot(v, w - y) <= 0 with
+// dot(n, w - y) = dot(n, w - s) > 0 forces t = 0. So x is interior to
+// Q' + B, which lies in A + B. When the polygons do not meet edge to edge,
+// a polygon may hold a point of S without having it as a corner: the
+// certificate misses it there and is only found less often, never wrong.
+// (|S| >= 3 is left alone: n is then +-Q's normal, or S holds a corner on
+// the line of two others.)
+//
+// Nothing above asks more of Q' than to be a convex subset of A holding
+// conv S, nor of B than to be convex and full-dimensional. So when the
+// pieces are P_i + Q_j for convex decompositions of both operands, the
+// same test certifies a facet from A's side (Q = P_i, Q' any piece of A's
+// decomposition, Q_j in B's role) or from B's (the roles swapped).
+//
+// Why skipping changes nothing. The pieces' covering regions are the same,
+// so the only fragments lost are F's own: convex polygons of the boundary
+// of the union U of the pieces, with relative interiors inside F's, hence
+// inside the interior of A + B. Pieces of two decompositions: U is A + B,
+// so F has no such fragment. Pieces f + B (solid_sum.cpp's road for a
+// convex B): A + B = (A + b) u U, and a point x of dU inside A + B lies in
+// A + b (the points near x outside U lie in it, and it is closed). dU never
+// meets d(A + b), so the fragment, connected, lies wholly in the interior
+// of A + b, where the sum drops it: the kept fragments, and the solid
+// assembled from them, are the same.
+//
+// The incidence is by exact point: the corners of all polygons (or the
+// vertices of all parts) sorted and numbered, each number listing the
+// polygons that have it as a corner.
+#include "interior_facets.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <numeric>
+
+#include "approx.hpp"
+#include "filtered_predicates.hpp"
+#include "polyhedron_access.hpp"
+#include "worker.hpp"
+
+namespace cvms::detail {
+namespace {
+
+// The polygons' corners numbered by exact point, and the polygons at each.
+class CornerIncidence {
+ public:
+  explicit CornerIncidence(std::span<const std::vector<Vec3>> polygons) {
+    start_.push_back(0);
+    std::vector<const Vec3*> all;
+    for (const std::vector<Vec3>& polygon : polygons) {
+      for (const Vec3& p : polygon) all.push_back(&p);
+      start_.push_back(static_cast<std::uint32_t>(all.size()));
+    }
+    std::vector<std::uint32_t> order(all.size());
+    std::iota(order.begin(), order.end(), 0U);
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return *all[a] < *all[b]; });
+    ids_.resize(all.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k == 0 || *all[order[k]] != *all[order[k - 1]]) {
+        points_.push_back(all[order[k]]);
+        approx_.push_back(ApproxVec3::of(*all[order[k]]));
+      }
+      ids_[order[k]] = static_cast<std::uint32_t>(points_.size() - 1);
+    }
+    polygons_at(polygons.size());
+  }
+
+  [[nodiscard]] std::span<const std::uint32_t> corners(std::size_t polygon) const {
+    return {ids_.data() + start_[polygon], ids_.data() + start_[polygon + 1]};
+  }
+  [[nodiscard]] std::span<const std::uint32_t> polygons(std::uint32_t point) const {
+    return {around_.data() + around_start_[point], around_.data() + around_start_[point + 1]};
+  }
+  [[nodiscard]] Vec3Ref point(std::uint32_t id) const { return {*points_[id], approx_[id]}; }
+
+ private:
+  // around_ lists the polygons at each point, in polygon order.
+  void polygons_at(std::size_t count) {
+    around_start_.assign(points_.size() + 1, 0);
+    for (const std::uint32_t id : ids_) ++around_start_[id + 1];
+    std::partial_sum(around_start_.begin(), around_start_.end(), around_start_.begin());
+    std::vector<std::uint32_t> fill(around_start_.begin(), around_start_.end() - 1);
+    around_.resize(ids_.size());
+    for (std::uint32_t k = 0; k < count; ++k)
+      for (const std::uint32_t id : corners(k)) around_[fill[id]++] = k;
+  }
+
+  std::vector<const Vec3*> points_;
+  std::vector<ApproxVec3> approx_;
+  std::vector<std::uint32_t> start_, ids_;
+  std::vector<std::uint32_t> around_start_, around_;
+};
+
+// The corners of polygon k extreme in n, if at most two (else count 3).
+struct Extreme {
+  std::array<std::uint32_t, 2> ids{};
+  std::size_t count = 0;
+};
+
+Extreme extreme_corners(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
+  Extreme out;
+  for (const std::uint32_t id : incidence.corners(k)) {
+    if (out.count == 0) {
+      out.ids[0] = id;
+      out.count = 1;
+      continue;
+    }
+    const Sign farther = compare_dot(incidence.point(id), incidence.point(out.ids[0]), n);
+    if (farther == Sign::positive) {
+      out.ids[0] = id;
+      out.count = 1;
+    } else if (farther == Sign::zero) {
+      if (out.count < 2) out.ids[out.count] = id;
+      out.count = std::min<std::size_t>(out.count + 1, 3);
+    }
+  }
+  return out;
+}
+
+// Whether some polygon has all of s among its corners and a corner farther
+// than them in n (the certificate of the header).
+bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n) {
+  if (s.count > 2) return false;
+  const Vec3Ref first = incidence.point(s.ids[0]);
+  for (const std::uint32_t q : incidence.polygons(s.ids[0])) {
+    const std::span<const std::uint32_t> corners = incidence.corners(q);
+    if (s.count == 2 && std::find(corners.begin(), corners.end(), s.ids[1]) == corners.end()) continue;
+    for (const std::uint32_t w : corners) {
+      if (compare_dot(incidence.point(w), first, n) == Sign::positive) return true;
+    }
+  }
+  return false;
+}
+
+// The facets of one piece whose summand from A's side (parts of A) or,
+// when `b` is given, from B's side (parts of B) certifies them.
+std::vector<char> piece_mask(const ConvexPolyhedron& piece, const CornerIncidence& a, std::size_t a_part,
+                             const CornerIncidence* b, std::size_t b_part) {
+  const FacetPlanes& planes = PolyhedronAccess::planes(piece);
+  const std::span<const Vec3> normals = planes.exact_normals();
+  std::vector<char> mask(piece.num_facets(), 0);
+  for (std::size_t f = 0; f < mask.size(); ++f) {
+    const Vec3Ref n{normals[f], planes.normal_approx[f]};
+    const bool inside = certified(a, extreme_corners(a, a_part, n), n) ||
+                        (b != nullptr && certified(*b, extreme_corners(*b, b_part, n), n));
+    mask[f] = inside ? 1 : 0;
+  }
+  return mask;
+}
+
+// mask_of(k) for every piece k, over options.threads threads, each piece's
+// mask in its own slot.
+template <class MaskOf>
+FacetMask masks_on_threads(std::size_t pieces, const Options& options, MaskOf&& mask_of) {
+  FacetMask masks(pieces);
+  constexpr std::size_t chunk = 64;
+  std::atomic<std::size_t> next{0};
+  run_on_threads(thread_count(options.threads, pieces / chunk + 1), [&](unsigned) {
+    for (std::size_t begin = next.fetch_add(chunk); begin < pieces; begin = next.fetch_add(chunk)) {
+      const std::size_t end = std::min(pieces, begin + chunk);
+      for (std::size_t k = begin; k < end; ++k) masks[k] = mask_of(k);
+    }
+  });
+  return masks;
+}
+
+}  // namespace
+
+FacetMask interior_facets(std::span<const std::vector<Vec3>> polygons, std::span<const ConvexPolyhedron> pieces,
+                          const Options& options) {
+  const CornerIncidence incidence(polygons);
+  return masks_on_threads(pieces.size(), options,
+                          [&](std::size_t k) { return piece_mask(pieces[k], incidence, k, nullptr, 0); });
+}
+
+FacetMask interior_facets_of_pairs(std::span<const std::vector<Vec3>> a_parts,
+                                   std::span<const std::vector<Vec3>> b_parts,
+                                   std::span<const ConvexPolyhedron> pieces, const Options& options) {
+  const CornerIncidence a(a_parts), b(b_parts);
+  const std::size_t m = b_parts.size();
+  return masks_on_threads(pieces.size(), options,
+                          [&](std::size_t k) { return piece_mask(pieces[k], a, k / m, &b, k % m); });
+}
+
+}  // namespace cvms::detail

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Facets of the pieces of A + B that provably lie inside A + B, so that the
+// union's boundary need not clip them: a certificate from the convex parts
+// of A the pieces are made of (A's face polygons when B is convex, the
+// pieces of A's decomposition otherwise, and then those of B's as well),
+// one exact comparison of dot products per corner looked at. The proof is
+// in interior_facets.cpp; skipping such a facet as a candidate of
+// union_boundary_fragments never changes the sum.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "boundary_fragments.hpp"
+#include "cvms/convex_polyhedron.hpp"
+#include "cvms/minkowski.hpp"
+#include "cvms/vec.hpp"
+
+namespace cvms::detail {
+
+/// For each piece k = polygons[k] + B, for each of its facets in face order,
+/// nonzero iff the facet's relative interior is proven to lie in the interior
+/// of A + B, where the polygons are convex polygons inside A's boundary
+/// (face polygons of A, facet_polygons.hpp; they need not meet edge to edge,
+/// the certificate is then only found less often). Deterministic; the
+/// pieces are shared over options.threads threads.
+/// \pre pieces.size() == polygons.size(), pieces[k] == polygons[k] + B for
+///   one full-dimensional convex B, every polygon convex with at least three
+///   corners.
+FacetMask interior_facets(std::span<const std::vector<Vec3>> polygons, std::span<const ConvexPolyhedron> pieces,
+                          const Options& options);
+
+/// The same for the pieces of A + B from convex decompositions of both:
+/// piece k is the sum of the convex hulls of a_parts[k / m] and
+/// b_parts[k % m], m = b_parts.size(), each part given by its vertices. A
+/// facet is certified from either side, the parts of the other side playing
+/// the face polygons' role (interior_facets.cpp); skipping it changes no
+/// fragment of the union, since its relative interior lies inside the union.
+/// \pre pieces.size() == a_parts.size() * b_parts.size(); the parts of each
+///   side are full-dimensional convex sets inside that operand.
+FacetMask interior_facets_of_pairs(std::span<const std::vector<Vec3>> a_parts,
+                                   std::span<const std::vector<Vec3>> b_parts,
+                                   std::span<const ConvexPolyhedron> pieces, const Options& options);
+
+}  // namespace cvms::detail
