@@ -106,13 +106,22 @@ RayEnclosure enclose(const Vec3& p, const Vec3& d) {
 double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
 double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
 
-// Bounds on (bound - p) / d for p in [p_lo, p_hi] and d in [d_lo, d_hi]
-// (zero not in it): interval arithmetic, each rounded result moved one step
-// outward (round to nearest errs by at most half a step).
-std::pair<double, double> quotient_bounds(double bound, double p_lo, double p_hi, double d_lo, double d_hi) {
-  const double n_lo = down(bound - p_hi), n_hi = up(bound - p_lo);
-  const double q[4] = {n_lo / d_lo, n_lo / d_hi, n_hi / d_lo, n_hi / d_hi};
-  return {down(std::min({q[0], q[1], q[2], q[3]})), up(std::max({q[0], q[1], q[2], q[3]}))};
+// A lower and an upper bound on (bound - p) / d for p in [p_lo, p_hi] and
+// d in [d_lo, d_hi] (zero not in it): interval arithmetic, each rounded
+// result moved one step outward (round to nearest errs by at most half a
+// step). For d > 0 the quotient grows with the numerator and takes its
+// extremes at the divisor's far end for a nonnegative numerator and at its
+// near end otherwise; d < 0 is the same after negating numerator and
+// divisor.
+double quotient_below(double bound, double p_lo, double p_hi, double d_lo, double d_hi) {
+  if (d_hi < 0) return quotient_below(-bound, -p_hi, -p_lo, -d_hi, -d_lo);
+  const double n = down(bound - p_hi);
+  return down(n / (n >= 0 ? d_hi : d_lo));
+}
+double quotient_above(double bound, double p_lo, double p_hi, double d_lo, double d_hi) {
+  if (d_hi < 0) return quotient_above(-bound, -p_hi, -p_lo, -d_hi, -d_lo);
+  const double n = up(bound - p_lo);
+  return up(n / (n >= 0 ? d_lo : d_hi));
 }
 
 // The slab test of ray_meets_box on the enclosures: false only when the ray
@@ -131,8 +140,8 @@ bool ray_may_meet_box(const RayEnclosure& e, const Box& box) {
     }
     const bool forward = e.d_lo[i] > 0;
     const double near = forward ? lo : hi, far = forward ? hi : lo;
-    if (std::isfinite(near)) enter = std::max(enter, quotient_bounds(near, e.p_lo[i], e.p_hi[i], e.d_lo[i], e.d_hi[i]).first);
-    if (std::isfinite(far)) leave = std::min(leave, quotient_bounds(far, e.p_lo[i], e.p_hi[i], e.d_lo[i], e.d_hi[i]).second);
+    if (std::isfinite(near)) enter = std::max(enter, quotient_below(near, e.p_lo[i], e.p_hi[i], e.d_lo[i], e.d_hi[i]));
+    if (std::isfinite(far)) leave = std::min(leave, quotient_above(far, e.p_lo[i], e.p_hi[i], e.d_lo[i], e.d_hi[i]));
     if (enter > leave) return false;
   }
   return true;
