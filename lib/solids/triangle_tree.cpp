@@ -4,6 +4,7 @@
 #include "triangle_tree.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -73,6 +74,75 @@ bool ray_meets_box(const Vec3& p, const Vec3& d, const Box& box) {
       }
     }
     if (bounded && enter > leave) return false;
+  }
+  return true;
+}
+
+// The ray's start and direction enclosed in doubles, once per ray, for the
+// box filter below. Usable when every bound is finite and no direction
+// interval holds zero (then no quotient below is NaN).
+struct RayEnclosure {
+  std::array<double, 3> p_lo, p_hi, d_lo, d_hi;
+  bool usable = true;
+};
+
+RayEnclosure enclose(const Vec3& p, const Vec3& d) {
+  RayEnclosure e;
+  for (int k = 0; k < 3; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    e.p_lo[i] = double_below(p[k]);
+    e.p_hi[i] = double_above(p[k]);
+    const int dir = sgn(d[k]);
+    e.d_lo[i] = dir == 0 ? 0.0 : double_below(d[k]);
+    e.d_hi[i] = dir == 0 ? 0.0 : double_above(d[k]);
+    const bool finite = std::isfinite(e.p_lo[i]) && std::isfinite(e.p_hi[i]) && std::isfinite(e.d_lo[i]) &&
+                        std::isfinite(e.d_hi[i]);
+    const bool signed_interval = dir == 0 || (dir > 0 ? e.d_lo[i] > 0 : e.d_hi[i] < 0);
+    e.usable = e.usable && finite && signed_interval;
+  }
+  return e;
+}
+
+double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+
+// A lower and an upper bound on (bound - p) / d for p in [p_lo, p_hi] and
+// d in [d_lo, d_hi] (zero not in it): interval arithmetic, each rounded
+// result moved one step outward (round to nearest errs by at most half a
+// step). For d > 0 the quotient grows with the numerator and takes its
+// extremes at the divisor's far end for a nonnegative numerator and at its
+// near end otherwise; d < 0 is the same after negating numerator and
+// divisor.
+double quotient_below(double bound, double p_lo, double p_hi, double d_lo, double d_hi) {
+  if (d_hi < 0) return quotient_below(-bound, -p_hi, -p_lo, -d_hi, -d_lo);
+  const double n = down(bound - p_hi);
+  return down(n / (n >= 0 ? d_hi : d_lo));
+}
+double quotient_above(double bound, double p_lo, double p_hi, double d_lo, double d_hi) {
+  if (d_hi < 0) return quotient_above(-bound, -p_hi, -p_lo, -d_hi, -d_lo);
+  const double n = up(bound - p_lo);
+  return up(n / (n >= 0 ? d_lo : d_hi));
+}
+
+// The slab test of ray_meets_box on the enclosures: false only when the ray
+// certainly misses the box (the latest entry's lower bound exceeds the
+// earliest exit's upper bound, or a slab along which the ray does not move
+// certainly excludes p). A true answer may be wrong near the box's surface;
+// the caller's exact test of the triangle decides those.
+bool ray_may_meet_box(const RayEnclosure& e, const Box& box) {
+  double enter = 0;
+  double leave = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double lo = box.lo[i], hi = box.hi[i];
+    if (e.d_lo[i] == 0 && e.d_hi[i] == 0) {
+      if (e.p_hi[i] < lo || e.p_lo[i] > hi) return false;
+      continue;
+    }
+    const bool forward = e.d_lo[i] > 0;
+    const double near = forward ? lo : hi, far = forward ? hi : lo;
+    if (std::isfinite(near)) enter = std::max(enter, quotient_below(near, e.p_lo[i], e.p_hi[i], e.d_lo[i], e.d_hi[i]));
+    if (std::isfinite(far)) leave = std::min(leave, quotient_above(far, e.p_lo[i], e.p_hi[i], e.d_lo[i], e.d_hi[i]));
+    if (enter > leave) return false;
   }
   return true;
 }
@@ -205,15 +275,21 @@ void TriangleTree::for_each_overlapping(const Box& box,
 void TriangleTree::for_each_on_ray(const Vec3& p, const Vec3& d,
                                    const std::function<bool(std::uint32_t)>& visit) const {
   if (nodes_.empty()) return;
+  // The double filter answers most boxes; a ray beyond the doubles' range
+  // (or with a direction coordinate too small for them) takes the exact test.
+  const RayEnclosure enclosure = enclose(p, d);
+  auto meets = [&](const Box& box) {
+    return enclosure.usable ? ray_may_meet_box(enclosure, box) : ray_meets_box(p, d, box);
+  };
   std::vector<std::uint32_t> stack{0};
   while (!stack.empty()) {
     const std::uint32_t index = stack.back();
     const Node& n = nodes_[index];
     stack.pop_back();
-    if (!ray_meets_box(p, d, n.box)) continue;
+    if (!meets(n.box)) continue;
     if (is_leaf(n)) {
       for (std::uint32_t i = n.begin; i < n.end; ++i)
-        if (ray_meets_box(p, d, boxes_[order_[i]]) && visit(order_[i])) return;
+        if (meets(boxes_[order_[i]]) && visit(order_[i])) return;
     } else {
       stack.push_back(n.right);
       stack.push_back(index + 1);

@@ -47,7 +47,10 @@ class TriangleTree {
   /// Calls visit(t) for every triangle whose box overlaps `box`.
   void for_each_overlapping(const Box& box, const std::function<void(std::uint32_t)>& visit) const;
   /// Calls visit(t) for every triangle whose box the ray {p + s d : s >= 0}
-  /// meets (decided exactly), until visit returns true.
+  /// meets, until visit returns true. It may also call it for a triangle
+  /// whose box the ray only passes within rounding of (the boxes are
+  /// filtered in doubles, outward-rounded): the caller's exact test of the
+  /// triangle decides; no box the ray meets is ever skipped.
   void for_each_on_ray(const Vec3& p, const Vec3& d, const std::function<bool(std::uint32_t)>& visit) const;
 
  private:
