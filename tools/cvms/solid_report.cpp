@@ -33,8 +33,8 @@ void report_solid(const std::string& name, const Solid& solid, std::size_t piece
          << solid.num_reflex_edges() << "\nvolume " << to_string(solid.volume()) << "\nconvex pieces " << pieces
          << "\n";
   if (const std::size_t touching = touching_points(solid); touching > 0)
-    report << "parts touch at " << touching << (touching == 1 ? " point" : " points")
-           << " (each a vertex per fan, V counts them all)\n";
+    report << "parts touch: " << touching << (touching == 1 ? " point is" : " points are")
+           << " held by several vertices, one per part meeting there\n";
 }
 
 void add_solid_members(JsonObject& o, const std::string& name, const Solid& solid, std::size_t pieces) {
