@@ -10,7 +10,8 @@
 //    accepts (a 2-manifold set), with the hand-derived volume and vertices;
 //  - --float writes each vertex as its nearest double;
 //  - the placement options act as on a file placed by the test;
-//  - --threads gives the same bytes;
+//  - --threads gives the same bytes; an operand on standard input gives the
+//    bytes of the same file;
 //  - two lobes touching at a point give a closed shell per lobe, which
 //    `cvms check` reads back and sums again (volumes by hand); solids whose
 //    cubes share an edge or a corner by index are read, checked and summed;
@@ -237,6 +238,12 @@ TEST_F(CliSolidSum, SolidsGivenWithSharedIndicesWhereCubesTouch) {
     const test::CliOutcome sum = run("check s.off");
     EXPECT_NE(sum.out.find(std::string("volume ") + volume + "\n"), std::string::npos) << name << sum.out;
   }
+}
+
+TEST_F(CliSolidSum, AnOperandOnStandardInputIsReadOnceAsASolid) {
+  ok("sum " + solid_path("l_block") + " " + cube_path() + " -o file.off");
+  ok("sum - " + cube_path() + " -o stdin.off < " + solid_path("l_block"));
+  EXPECT_EQ(read("stdin.off"), read("file.off"));
 }
 
 TEST_F(CliSolidSum, CrossingShellsAreRefusedWithTheirFaces) {
