@@ -22,9 +22,16 @@ std::string solid_counts(const Solid& s) {
          ", facets " + std::to_string(s.num_facets()) + ", shells " + std::to_string(s.num_shells());
 }
 
+// The road as the library took it (solid_sum_road).
 const char* road(const Solid& a, const Solid& b) {
-  if (a.is_convex() && b.is_convex()) return "convex sum";
-  if (a.is_convex() || b.is_convex()) return "faces of the solid + the convex operand, united";
+  switch (solid_sum_road(a, b)) {
+    case SolidSumRoad::convex:
+      return "convex sum";
+    case SolidSumRoad::faces_with_convex:
+      return "faces of the solid + the convex operand, united";
+    case SolidSumRoad::pieces:
+      break;
+  }
   return "pairwise sums of convex pieces, united";
 }
 
