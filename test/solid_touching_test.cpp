@@ -140,6 +140,25 @@ TEST(TouchingSolid, SumsWithBoxesAndWithEachOtherAreTheVoxelSums) {
     }
 }
 
+// Random subsets of a 3 x 3 x 2 grid (fixed seeds): cubes touching in every
+// way, rings whose ends meet along an edge among them. Each is a solid with
+// the cubes' volume, facets and containment; some are summed with a box.
+TEST(TouchingSolid, RandomPolycubesAreSolidsAndSumToTheirVoxels) {
+  for (std::uint64_t seed = 1; seed <= 120; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937_64 rng(seed);
+    const Cubes cubes = cubes_where(3, 3, 2, [&](int, int, int) { return rng() % 2 == 0; });
+    if (cubes.empty()) continue;
+    const Solid solid = touching_polycube(cubes);
+    EXPECT_EQ(solid.volume(), Rational(static_cast<long>(cubes.size())));
+    EXPECT_EQ(solid.num_facets(), voxel_facets(cubes));
+    expect_containment(solid, cubes, {}, seed);
+    if (seed % 4 != 0) continue;
+    const Cubes box = box_cubes(1, 1 + static_cast<int>(seed % 3), 1);
+    expect_voxels(minkowski_sum(solid, touching_polycube(box)), polycube_sum(cubes, box));
+  }
+}
+
 // The soup written as OFF and read back.
 Solid written_and_read(const PolygonSoup& soup) {
   std::ostringstream out;
