@@ -154,8 +154,8 @@ TEST(TouchingSolid, RandomPolycubesAreSolidsAndSumToTheirVoxels) {
     EXPECT_EQ(solid.num_facets(), voxel_facets(cubes));
     expect_containment(solid, cubes, {}, seed);
     if (seed % 4 != 0) continue;
-    const Cubes box = box_cubes(1, 1 + static_cast<int>(seed % 3), 1);
-    expect_voxels(minkowski_sum(solid, touching_polycube(box)), polycube_sum(cubes, box));
+    // Voxels, brute force over the pieces and their planes, as the soak run.
+    expect_polycube_sum(cubes, box_cubes(1, 1 + static_cast<int>(seed % 3), 1), {}, seed);
   }
 }
 
