@@ -179,7 +179,9 @@ void check_orientation(const SolidAccess::Impl& impl, const detail::Shells& shel
 }
 
 // Steps 5 and 6 on the triangles (of merged points): the copies of split
-// vertices are appended to impl.vertices.
+// vertices are appended to impl.vertices. The hierarchy built for step 5
+// stays the solid's: the split renumbers corners only, so every triangle
+// keeps its index and its box.
 void split_touching_parts(SolidAccess::Impl& impl, std::span<const std::uint32_t> face_of,
                           std::span<const std::uint32_t> names) {
   const detail::SelfIntersection crossing =
