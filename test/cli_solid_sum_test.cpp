@@ -10,9 +10,12 @@
 //    accepts (a 2-manifold set), with the hand-derived volume and vertices;
 //  - --float writes each vertex as its nearest double;
 //  - the placement options act as on a file placed by the test;
-//  - --threads gives the same bytes;
+//  - --threads gives the same bytes; an operand on standard input gives the
+//    bytes of the same file;
 //  - two lobes touching at a point give a closed shell per lobe, which
-//    `cvms check` (it joins equal points) refuses as non-manifold;
+//    `cvms check` reads back and sums again (volumes by hand); solids whose
+//    cubes share an edge or a corner by index are read, checked and summed;
+//    shells whose wedges overlap along an edge are refused, located;
 //  - limits name their option and leave an existing output untouched;
 //    refusals: three operands, a flat operand, --float outer, a pieces file.
 #include <gtest/gtest.h>
@@ -207,10 +210,51 @@ TEST_F(CliSolidSum, LobesTouchingAtAPointAreOneClosedShellEach) {
   const PolygonSoup soup = read_file(at("s.off"));
   EXPECT_EQ(soup.points.size(), 16u);
   EXPECT_EQ(std::count(soup.points.begin(), soup.points.end(), v(2, 2, 2)), 2);
-  // cvms check joins equal points, and then the point is not a 2-manifold one.
+  // cvms check reads it back: two shells touching at one point.
   const test::CliOutcome o = run("check s.off");
-  EXPECT_EQ(o.code, 1);
-  EXPECT_NE(o.err.find("more than one fan (non-manifold vertex)"), std::string::npos) << o.err;
+  EXPECT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.out.find("shells 2, cavities 0, genus 0"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("volume 16"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("parts touch: 1 point is held by several vertices"), std::string::npos) << o.out;
+  // Summed again with the unit cube: [0,3]^3 and [2,5]^3, one shell of
+  // volume 27 + 27 - 1 (by hand), read back once more.
+  ok("sum s.off " + cube_path() + " -o again.off");
+  const test::CliOutcome again = run("check again.off");
+  EXPECT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.out.find("shells 1,"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("volume 53"), std::string::npos) << again.out;
+  EXPECT_EQ(again.out.find("parts touch"), std::string::npos) << again.out;
+}
+
+TEST_F(CliSolidSum, SolidsGivenWithSharedIndicesWhereCubesTouch) {
+  // Two unit cubes sharing an edge, then a corner, given with shared indices:
+  // check reports both shells; each plus the unit cube is one shell of
+  // volume 8 + 8 - 2 and 8 + 8 - 1 (by hand).
+  for (const auto& [name, volume] : {std::pair{"cubes_sharing_edge", "14"}, std::pair{"cubes_sharing_corner", "15"}}) {
+    const test::CliOutcome o = run("check " + solid_path(name));
+    EXPECT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.out.find("shells 2, cavities 0, genus 0"), std::string::npos) << o.out;
+    ok("sum " + solid_path(name) + " " + cube_path() + " -o s.off");
+    const test::CliOutcome sum = run("check s.off");
+    EXPECT_NE(sum.out.find(std::string("volume ") + volume + "\n"), std::string::npos) << name << sum.out;
+  }
+}
+
+TEST_F(CliSolidSum, AnOperandOnStandardInputIsReadOnceAsASolid) {
+  ok("sum " + solid_path("l_block") + " " + cube_path() + " -o file.off");
+  ok("sum - " + cube_path() + " -o stdin.off < " + solid_path("l_block"));
+  EXPECT_EQ(read("stdin.off"), read("file.off"));
+}
+
+TEST_F(CliSolidSum, CrossingShellsAreRefusedWithTheirFaces) {
+  // An inward unit cube along an outward one's edge: their wedges overlap.
+  dir_.write("crossing.off",
+             "OFF\n16 12 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+             "1 1 0\n2 1 0\n1 2 0\n2 2 0\n1 1 1\n2 1 1\n1 2 1\n2 2 1\n"
+             "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n"
+             "4 9 11 10 8\n4 14 15 13 12\n4 12 13 9 8\n4 11 15 14 10\n4 10 14 12 8\n4 13 15 11 9\n");
+  expect_failure("check crossing.off", "crossing.off: the faces on edge (3, 7) do not alternate in direction");
+  expect_failure("sum crossing.off " + cube_path() + " -o s.off", "do not alternate in direction");
 }
 
 TEST_F(CliSolidSum, LimitsNameTheirOptionAndKeepTheOutput) {

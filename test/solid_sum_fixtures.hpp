@@ -26,7 +26,17 @@
 namespace cvms::test {
 
 // A polycube as a solid (GridSolid's triangles), mapped by m (det > 0).
+// Cubes that meet only along an edge or at a corner need their shells
+// split there, which assume_valid does not do: such a polycube is validated
+// from its squares (Solid::from_soup), which gives each shell its vertices.
 inline Solid polycube(const Cubes& cubes, const Mapping& m = {}) {
+  {
+    PolygonSoup soup = polycube_soup(cubes);
+    const std::size_t corners = soup.points.size();
+    for (Vec3& p : soup.points) p = m(p);
+    Solid split = Solid::from_soup(std::move(soup));
+    if (split.vertices().size() != corners) return split;
+  }
   int n = 1;
   for (const Cube& c : cubes) n = std::max({n, c[0] + 1, c[1] + 1, c[2] + 1});
   GridSolid grid{{units(n), units(n), units(n)}, Cells(cubes.begin(), cubes.end())};

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Soak run of minkowski_sum of solids: random polycubes (cubes of a small
-// grid kept at random, only those that make a valid solid) summed with
+// grid kept at random, touching ones included) summed with
 // random integer boxes (the one-convex road) and with other random
 // polycubes (both decomposed), some turned by a rational rotation, each
 // result checked against the voxel oracle, brute force over the pieces and
@@ -12,23 +12,17 @@
 #include <random>
 #include <string>
 
-#include "cvms/error.hpp"
 #include "solid_sum_fixtures.hpp"
 
 namespace cvms::test {
 namespace {
 
-// Random cubes of a 4 x 4 x 3 grid until they make a valid solid (no two
-// cubes meeting only along an edge or at a corner).
+// Random cubes of a 4 x 4 x 3 grid, not none: every such polycube is a
+// solid, cubes meeting only along an edge or at a corner too.
 Cubes random_polycube(std::mt19937_64& rng) {
   for (;;) {
     const Cubes cubes = cubes_where(4, 4, 3, [&](int, int, int) { return rng() % 3 == 0; });
-    if (cubes.empty()) continue;
-    try {
-      (void)Solid::from_soup(polycube(cubes).to_soup());
-      return cubes;
-    } catch (const Error&) {
-    }
+    if (!cubes.empty()) return cubes;
   }
 }
 

@@ -10,13 +10,21 @@
 /// (together they form one facet); several shells, each a closed 2-manifold
 /// surface of any genus, where an outer shell faces outward and a cavity (a
 /// shell inside another) faces inward, so that the inside is always on the
-/// back of every face.
+/// back of every face. Parts of the solid may touch along edges or at points
+/// (two cubes sharing an edge or a corner), given with shared indices (an
+/// edge on four faces, a vertex whose faces form several fans) or with a
+/// point repeated per part, as cvms writes them: the solid is then the
+/// regular closed set those faces bound, its boundary split into closed
+/// 2-manifold shells by pairing the faces around such an edge in their
+/// angular order and giving each fan around a vertex its own vertex (the
+/// same point), so vertices() may hold a point more than once.
 /// What it rejects, each with a located error (0-based face and vertex
-/// indices of the input): an open surface, an edge with more than two faces
-/// or a vertex whose faces form several fans (topology); inconsistent or
-/// inverted orientation (topology); a face that is not planar, not simple or
-/// has zero area (degenerate); two faces that intersect other than in a
-/// shared edge or vertex (topology, naming both faces); zero volume
+/// indices of the input): an open surface, an edge with an odd number of
+/// faces or not as many each way, faces around an edge whose directions do
+/// not alternate (topology); inconsistent or inverted orientation
+/// (topology); a face that is not planar, not simple or has zero area
+/// (degenerate); two faces that intersect other than in a shared edge or
+/// vertex (at equal points; topology, naming both faces); zero volume
 /// (degenerate).
 #pragma once
 
@@ -64,7 +72,8 @@ class Solid {
   Solid& operator=(Solid&&) noexcept;
 
   /// Validates a soup exactly (see the file comment). Points that no face
-  /// uses are ignored; equal points with different indices are one vertex.
+  /// uses are ignored; equal points with different indices are one vertex,
+  /// except where parts touch: one vertex per fan there.
   /// \throw Error(topology), Error(degenerate) naming the faces, edges or
   ///   vertices at fault (0-based, input numbering); Error(limit) if the
   ///   validation would need more memory than the soup's size allows.

@@ -29,6 +29,17 @@ namespace cvms {
 /// \throw Error(cancelled) if options.progress returns false.
 Solid union_solid(const ConvexUnion& pieces, const Options& options = {});
 
+/// The way minkowski_sum of two solids computes A + B.
+enum class SolidSumRoad {
+  convex,             ///< both operands convex: their convex sum
+  faces_with_convex,  ///< one operand convex: the other's faces summed with it, united
+  pieces,             ///< neither convex: pairwise sums of both decompositions' pieces, united
+};
+
+/// The road minkowski_sum(a, b) takes (it decides by this function), so
+/// that a caller can report it without deciding it again.
+[[nodiscard]] SolidSumRoad solid_sum_road(const Solid& a, const Solid& b) noexcept;
+
 /// A + B for solids that need not be convex, as one solid, exactly. When
 /// one operand is convex the other is not decomposed: A + B is the union of
 /// A + b (b a point inside B) and of the sums of A's boundary faces with B.

@@ -144,10 +144,15 @@ Solid minkowski_sum(const Solid& a, const Solid& b, const Options& options,
     throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: A is empty");
   if (b.triangles().empty())
     throw Error(ErrorCategory::invalid_argument, "minkowski_sum of solids: B is empty");
-  if (a.is_convex() && b.is_convex())
-    return Solid::from_polyhedron(minkowski_sum(as_polyhedron(a), as_polyhedron(b), options).polyhedron);
-  if (b.is_convex()) return sum_with_convex(a, as_polyhedron(b), options);
-  if (a.is_convex()) return sum_with_convex(b, as_polyhedron(a), options);
+  switch (solid_sum_road(a, b)) {
+    case SolidSumRoad::convex:
+      return Solid::from_polyhedron(minkowski_sum(as_polyhedron(a), as_polyhedron(b), options).polyhedron);
+    case SolidSumRoad::faces_with_convex:
+      if (b.is_convex()) return sum_with_convex(a, as_polyhedron(b), options);
+      return sum_with_convex(b, as_polyhedron(a), options);
+    case SolidSumRoad::pieces:
+      break;
+  }
   return sum_of_pieces(a, b, options, decomposition);
 }
 

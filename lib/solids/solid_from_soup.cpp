@@ -5,18 +5,29 @@
 //  2. equal points merged into one vertex (by sorting, first_use.hpp);
 //  3. each face planar, simple, of positive area, and triangulated
 //     (face_triangulation.hpp);
-//  4. every edge on two faces in opposite directions, every vertex one fan
-//     (surface_topology.hpp);
-//  5. facets, shells, genus and signed volumes (solid_properties.hpp);
-//  6. no two faces meet other than in shared edges and vertices
-//     (self_intersection.hpp, pairs pruned by the hierarchy);
-//  7. orientation: shells are now disjoint closed surfaces, so those around
-//     a point are nested; a shell must face outward at even depth (inside an
-//     even number of others) and inward at odd depth, and then every point
-//     is inside at most one more outward than inward shell. The depth's
-//     parity is that of the crossings of a ray from a vertex of the shell
-//     with the other shells (ray_parity.hpp);
-//  8. positive total volume.
+//  4. every edge on as many faces one way as the other (surface_topology.hpp);
+//  5. no two faces meet other than in shared edges and vertices
+//     (self_intersection.hpp, pairs pruned by the hierarchy), shared meaning
+//     at equal points: faces of parts that touch only share those;
+//  6. where parts touch (four or more faces on an edge, several fans around
+//     a vertex), the faces paired around the edge by their angular order and
+//     each fan given its own copy of the vertex (manifold_split.hpp), so every
+//     shell is a closed 2-manifold. This is sound: after step 5 the faces
+//     around an edge are distinct half-planes, so the pairing exists iff
+//     their directions alternate around it, and the solid near the edge is
+//     then the union of the wedges between paired faces, with disjoint
+//     interiors; the shells touch there but cannot cross;
+//  7. facets, shells, genus and signed volumes (solid_properties.hpp);
+//  8. orientation: shells are now closed surfaces meeting at most where
+//     they touch, so those around a point are nested; a shell must face
+//     outward at even depth (inside an even number of others) and inward at
+//     odd depth, and then every point is inside at most one more outward
+//     than inward shell: the set is regular and each face bounds its
+//     interior on one side only. The depth's parity is that of the
+//     crossings of a ray with the other shells from the centroid of a
+//     triangle of the shell, a point in a face's relative interior and so on
+//     no other shell (ray_parity.hpp);
+//  9. positive total volume.
 #include <algorithm>
 #include <functional>
 #include <memory>
@@ -29,6 +40,7 @@
 #include "element_names.hpp"
 #include "face_triangulation.hpp"
 #include "first_use.hpp"
+#include "manifold_split.hpp"
 #include "ray_parity.hpp"
 #include "self_intersection.hpp"
 #include "solid_access.hpp"
@@ -135,7 +147,8 @@ std::vector<bool> odd_depths(const SolidAccess::Impl& impl, const detail::Shells
   const detail::TriangleTree shell_tree(shell_boxes(impl, shells));
   std::vector<std::uint32_t> around(count, count);  // around[t] == s: t's box holds s's starting point
   for (std::uint32_t s = 0; s < count; ++s) {
-    const Vec3& p = impl.vertices[impl.triangles[shells.first_triangle[s]][0]];
+    const auto& tri = impl.triangles[shells.first_triangle[s]];
+    const Vec3 p = Rational(1, 3) * (impl.vertices[tri[0]] + impl.vertices[tri[1]] + impl.vertices[tri[2]]);
     bool any = false;
     shell_tree.for_each_overlapping(detail::point_box(p), [&](std::uint32_t t) {
       if (t == s) return;
@@ -165,6 +178,31 @@ void check_orientation(const SolidAccess::Impl& impl, const detail::Shells& shel
   }
 }
 
+// Steps 5 and 6 on the triangles (of merged points): the copies of split
+// vertices are appended to impl.vertices. The hierarchy built for step 5
+// stays the solid's: the split renumbers corners only, so every triangle
+// keeps its index and its box.
+void split_touching_parts(SolidAccess::Impl& impl, std::span<const std::uint32_t> face_of,
+                          std::span<const std::uint32_t> names) {
+  const detail::SelfIntersection crossing =
+      detail::find_self_intersection(impl.tree(), impl.vertices, impl.triangles, face_of);
+  if (crossing.faces)
+    topology("faces " + str(crossing.faces->first) + " and " + str(crossing.faces->second) +
+             " intersect (self-intersecting surface)");
+  const auto merged_count = static_cast<std::uint32_t>(names.size());
+  const auto bad = detail::try_split_non_manifold(impl.vertices, impl.triangles);
+  if (!bad) return;
+  // A copy made before the failure is named by the merged vertex at its point.
+  const auto name = [&](std::uint32_t v) {
+    if (v >= merged_count)
+      v = static_cast<std::uint32_t>(
+          std::find(impl.vertices.begin(), impl.vertices.end(), impl.vertices[v]) - impl.vertices.begin());
+    return names[v];
+  };
+  topology("the faces on " + detail::edge_name(name(bad->first), name(bad->second)) +
+           " do not alternate in direction around it, so the parts they bound overlap or do not close");
+}
+
 }  // namespace
 
 Solid Solid::from_soup(PolygonSoup soup) {
@@ -181,17 +219,13 @@ Solid Solid::from_soup(PolygonSoup soup) {
     detail::triangulate_face(merged.vertices, ids, merged.names, f, triangles, areas);
     face_of.resize(triangles.size(), f);
   }
-  detail::check_closed_manifold(
+  detail::check_closed_surface(
       {soup.face_offsets, merged.corners, static_cast<std::uint32_t>(merged.vertices.size())}, merged.names);
   auto impl = std::make_shared<Impl>();
   impl->vertices = std::move(merged.vertices);
   impl->triangles = std::move(triangles);
+  split_touching_parts(*impl, face_of, merged.names);
   const detail::Shells shells = detail::derive_properties(*impl, std::move(areas));
-  const detail::SelfIntersection crossing =
-      detail::find_self_intersection(impl->tree(), impl->vertices, impl->triangles, face_of);
-  if (crossing.faces)
-    topology("faces " + str(crossing.faces->first) + " and " + str(crossing.faces->second) +
-             " intersect (self-intersecting surface)");
   check_orientation(*impl, shells, face_of);
   if (sgn(impl->volume) <= 0) throw Error(ErrorCategory::degenerate, "the solid has zero volume");
   Solid solid;

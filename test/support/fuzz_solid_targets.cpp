@@ -39,15 +39,37 @@ test::Cubes decode_cubes(std::span<const std::uint8_t> data, std::size_t first, 
   return cubes;
 }
 
-// The polycube as a solid, or nothing when it is none (empty, or cubes
-// meeting only along an edge or at a corner).
+// The polycube as a solid (cubes meeting only along an edge or at a corner
+// too: their faces then share that edge or point by index), or nothing when
+// empty; every non-empty polycube is a solid, so a refusal is a finding.
 std::optional<Solid> polycube_solid(const test::Cubes& cubes) {
   if (cubes.empty()) return std::nullopt;
   try {
     return Solid::from_soup(test::polycube_soup(cubes));
-  } catch (const Error&) {
-    return std::nullopt;
+  } catch (const Error& e) {
+    finding(std::string("solid_sum: a polycube is refused as a solid: ") + e.what());
   }
+}
+
+// The sum written as OFF reads back as the same solid (touching parts keep
+// a vertex per shell).
+void expect_read_back(const Solid& sum) {
+  std::ostringstream out;
+  write_off(out, sum.to_soup());
+  std::istringstream in(out.str());
+  Solid back;
+  try {
+    back = Solid::from_soup(read_off(in, "<written sum>"));
+  } catch (const Error& e) {
+    finding(std::string("solid_sum: the written sum does not read back: ") + e.what());
+  }
+  std::vector<Vec3> written(sum.vertices().begin(), sum.vertices().end());
+  std::vector<Vec3> read(back.vertices().begin(), back.vertices().end());
+  std::sort(written.begin(), written.end());
+  std::sort(read.begin(), read.end());
+  if (back.volume() != sum.volume() || read != written || back.num_shells() != sum.num_shells() ||
+      back.num_facets() != sum.num_facets())
+    finding("solid_sum: the written sum reads back as another solid");
 }
 
 }  // namespace
@@ -80,6 +102,7 @@ void solid_sum_target(std::span<const std::uint8_t> data) {
   if (std::set<Vec3>(sum.vertices().begin(), sum.vertices().end()) != corners)
     finding("solid_sum: the vertices are not the voxels' corners");
   if (sum.num_facets() != test::voxel_facets(expected)) finding("solid_sum: the facets are not the voxels'");
+  expect_read_back(sum);
 }
 
 void read_pieces_target(std::span<const std::uint8_t> data) {

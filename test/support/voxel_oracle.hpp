@@ -151,8 +151,9 @@ inline bool voxel_contains(const Cubes& cubes, const Vec3& x) {
 
 /// The polycube's boundary as a soup of unit squares, outward (each square
 /// between a filled and an empty cube, counterclockwise seen from the empty
-/// one). Solid::from_soup accepts it exactly when no two cubes meet only
-/// along an edge or at a corner.
+/// one). Cubes that meet only along an edge or at a corner share that
+/// edge's or corner's index (an edge on four squares, a corner with several
+/// fans), which Solid::from_soup splits into touching shells.
 inline PolygonSoup polycube_soup(const Cubes& cubes) {
   PolygonSoup soup;
   std::map<Cube, std::uint32_t> index;

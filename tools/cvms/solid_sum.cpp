@@ -11,6 +11,7 @@
 #include "keep_until_exit.hpp"
 #include "pieces_files.hpp"
 #include "reports.hpp"
+#include "set_files.hpp"
 #include "usage_error.hpp"
 
 namespace cvms::cli {
@@ -21,24 +22,54 @@ std::string solid_counts(const Solid& s) {
          ", facets " + std::to_string(s.num_facets()) + ", shells " + std::to_string(s.num_shells());
 }
 
+// The road as the library took it (solid_sum_road).
 const char* road(const Solid& a, const Solid& b) {
-  if (a.is_convex() && b.is_convex()) return "convex sum";
-  if (a.is_convex() || b.is_convex()) return "faces of the solid + the convex operand, united";
+  switch (solid_sum_road(a, b)) {
+    case SolidSumRoad::convex:
+      return "convex sum";
+    case SolidSumRoad::faces_with_convex:
+      return "faces of the solid + the convex operand, united";
+    case SolidSumRoad::pieces:
+      break;
+  }
   return "pairwise sums of convex pieces, united";
 }
 
 }  // namespace
 
-std::optional<Solid> read_non_convex_solid(const Error& convex_error, const std::string& path,
-                                           const Placement& placement, const std::string& operand) {
-  const bool shape_error = convex_error.category() == ErrorCategory::not_convex ||
-                           convex_error.category() == ErrorCategory::topology;
-  if (!shape_error || is_std_stream(path) || !check_mesh_path(path).empty() || is_cdd_points_path(path) ||
-      is_pieces_path(path))
-    return std::nullopt;
-  PolygonSoup soup = read_soup(path);
-  if (!spans_space(soup)) return std::nullopt;
-  return solid_from_soup(placed(std::move(soup), placement, operand), input_name(path));
+SetOrSolid read_set_or_solid(const std::string& path, const Placement& placement, const std::string& operand) {
+  SetOrSolid read;
+  const bool mesh = is_std_stream(path) || (check_mesh_path(path).empty() && !is_cdd_points_path(path));
+  if (!mesh) {
+    try {
+      read.set = read_set(path);
+    } catch (const Error& e) {
+      read.convex_error = e;
+    }
+    return read;
+  }
+  PolygonSoup soup;
+  try {
+    soup = read_soup(path);
+  } catch (const Error& e) {
+    read.convex_error = e;
+    return read;
+  }
+  // Kept for the solid: a copy costs far less than parsing the file again.
+  PolygonSoup kept = soup;
+  try {
+    read.set = set_from_soup(std::move(soup), is_std_stream(path) ? input_name(path) : path);
+    return read;
+  } catch (const Error& e) {
+    const bool shape_error =
+        e.category() == ErrorCategory::not_convex || e.category() == ErrorCategory::topology;
+    if (!shape_error || is_pieces_path(path) || !spans_space(kept)) {
+      read.convex_error = e;
+      return read;
+    }
+  }
+  read.solid = solid_from_soup(placed(std::move(kept), placement, operand), input_name(path));
+  return read;
 }
 
 void check_solid_sum(const SolidSum& sum) {

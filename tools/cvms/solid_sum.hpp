@@ -2,9 +2,9 @@
 // `cvms sum A B` when an operand is a solid that is not convex: A + B as one
 // closed solid (minkowski_sum of solids, cvms/solid_sum.hpp), written as a
 // mesh of its facets' triangles in any output format. Convex operands never
-// come here (sum.cpp sums them as before, byte for byte); a solid that is
-// not convex is read from a file (the convex reader has already consumed
-// standard input) and placed point by point before it is validated.
+// come here (sum.cpp sums them as before, byte for byte); an operand file is
+// parsed once, and a solid that is not convex is placed point by point
+// before it is validated.
 #pragma once
 
 #include <iosfwd>
@@ -19,13 +19,22 @@
 
 namespace cvms::cli {
 
-/// After `convex_error` from reading `path` as a convex set: the file as a
-/// placed solid when it is one that is not convex (a mesh file, not a pieces
-/// file, whose points span space); nullopt when it is something else (the
-/// caller then explains `convex_error`). \throw Error naming the file with
-/// the solid's located defect for a mesh that spans space but is no solid.
-std::optional<Solid> read_non_convex_solid(const Error& convex_error, const std::string& path,
-                                           const Placement& placement, const std::string& operand);
+/// An operand of `cvms sum A B` as read: a convex set, or a placed solid
+/// that is not convex (the set then empty), or the error of reading it as
+/// a convex set when it is neither (for the caller to explain).
+struct SetOrSolid {
+  ConvexSet set;
+  std::optional<Solid> solid;
+  std::optional<Error> convex_error;
+};
+
+/// Reads `path` once: a mesh (a file or OFF on standard input) is parsed
+/// into one soup, tried as a convex set from a copy, and validated as a
+/// solid when it is none and its points span space (a pieces file is left
+/// to the caller); other forms are read as convex sets (read_set).
+/// \throw Error naming the file with the solid's located defect for a mesh
+///   that spans space but is no solid.
+SetOrSolid read_set_or_solid(const std::string& path, const Placement& placement, const std::string& operand);
 
 /// What a sum of solids writes, and how.
 struct SolidSum {

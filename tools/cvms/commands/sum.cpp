@@ -117,18 +117,19 @@ Operands read_operands(const SumArgs& args) {
   Operands operands;
   operands.sets.reserve(2 + args.more.size());
   auto read = [&](const std::string& path) {
-    try {
-      return read_set(path);
-    } catch (const Error& e) {
-      const std::size_t index = operands.sets.size();
-      if (!args.more.empty())
+    if (!args.more.empty()) {
+      try {
+        return read_set(path);
+      } catch (const Error& e) {
         rethrow_explaining_non_convex(e, path, "a sum of more than two operands takes convex sets only");
-      const Placement& placement = index == 0 ? args.place_a : args.place_b;
-      operands.solids[index] = read_non_convex_solid(e, path, placement, index == 0 ? "a" : "b");
-      if (!operands.solids[index])
-        rethrow_explaining_non_convex(e, path, "pass --pieces to sum it as a union of convex pieces");
-      return ConvexSet();
+      }
     }
+    const std::size_t index = operands.sets.size();
+    SetOrSolid read = read_set_or_solid(path, index == 0 ? args.place_a : args.place_b, index == 0 ? "a" : "b");
+    if (read.convex_error)
+      rethrow_explaining_non_convex(*read.convex_error, path, "pass --pieces to sum it as a union of convex pieces");
+    operands.solids[index] = std::move(read.solid);
+    return std::move(read.set);
   };
   operands.sets.push_back(read(args.a));
   operands.sets.push_back(read(args.b));

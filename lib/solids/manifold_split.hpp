@@ -10,6 +10,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "cvms/vec.hpp"
@@ -24,5 +26,13 @@ namespace cvms::detail {
 /// \throw Error(invalid_argument) if an edge's triangles do not alternate
 ///   in direction around it (the triangles do not bound a solid).
 void split_non_manifold(std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+/// The same split, reporting instead of throwing: the vertex indices (as
+/// given) of an edge whose triangles do not alternate in direction around
+/// it, or that a fan would cross more than the split can cut (the triangles
+/// are then left in an unspecified state), or nothing on success.
+/// \pre every edge has as many triangles one way as the other.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> try_split_non_manifold(
+    std::vector<Vec3>& vertices, std::vector<std::array<std::uint32_t, 3>>& triangles);
 
 }  // namespace cvms::detail

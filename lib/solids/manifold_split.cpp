@@ -32,9 +32,7 @@ namespace {
 
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
-[[noreturn]] void not_solid() {
-  throw Error(ErrorCategory::invalid_argument, "assemble_boundary: the triangles around an edge do not bound a solid");
-}
+using Edge = std::pair<std::uint32_t, std::uint32_t>;
 
 std::uint32_t from_of(const Triangles& t, std::uint32_t h) { return t[h / 3][h % 3]; }
 std::uint32_t to_of(const Triangles& t, std::uint32_t h) { return t[h / 3][(h % 3 + 1) % 3]; }
@@ -82,8 +80,10 @@ class EdgeAngles {
   Vec3 e_, r0_;
 };
 
-// partner[h] for every half-edge h = 3 t + i (corner i to corner i + 1 of t).
-std::vector<std::uint32_t> pair_half_edges(const std::vector<Vec3>& vertices, const Triangles& tris) {
+// partner[h] for every half-edge h = 3 t + i (corner i to corner i + 1 of t);
+// `bad` set to an edge whose triangles do not alternate in direction.
+std::vector<std::uint32_t> pair_half_edges(const std::vector<Vec3>& vertices, const Triangles& tris,
+                                           std::optional<Edge>& bad) {
   const auto n = static_cast<std::uint32_t>(tris.size() * 3);
   const auto keyed = edge_keys(tris);
   std::vector<std::uint32_t> partner(n);
@@ -93,9 +93,12 @@ std::vector<std::uint32_t> pair_half_edges(const std::vector<Vec3>& vertices, co
     group.clear();
     for (; e < n && keyed[e].first == keyed[k].first; ++e) group.push_back(keyed[e].second);
     k = e;
-    if (group.size() % 2 != 0) not_solid();
     const std::uint32_t u = from_of(tris, group[0]);
     const std::uint32_t v = to_of(tris, group[0]);
+    if (group.size() % 2 != 0) {
+      bad = Edge{u, v};
+      return partner;
+    }
     if (group.size() > 2) {
       const EdgeAngles angles(vertices, u, v, far_of(tris, group[0]));
       std::sort(group.begin() + 1, group.end(),
@@ -105,7 +108,10 @@ std::vector<std::uint32_t> pair_half_edges(const std::vector<Vec3>& vertices, co
       const std::uint32_t h = group[i];
       if (from_of(tris, h) != u) continue;
       const std::uint32_t g = group[(i + group.size() - 1) % group.size()];
-      if (from_of(tris, g) != v) not_solid();
+      if (from_of(tris, g) != v) {
+        bad = Edge{u, v};
+        return partner;
+      }
       partner[h] = g;
       partner[g] = h;
     }
@@ -169,14 +175,24 @@ std::vector<bool> crowded_edge_starts(const Triangles& tris) {
 // between two crossings closes on the edge from the copy of u to v, its
 // first triangle leaving along it and its last arriving along it, so every
 // edge then has two triangles in opposite directions.
-void split_non_manifold(std::vector<Vec3>& vertices, Triangles& triangles) {
-  const std::vector<std::uint32_t> partner = pair_half_edges(vertices, triangles);
+std::optional<Edge> try_split_non_manifold(std::vector<Vec3>& vertices, Triangles& triangles) {
+  std::optional<Edge> bad;
+  const std::vector<std::uint32_t> partner = pair_half_edges(vertices, triangles, bad);
+  if (bad) return bad;
   renumber(vertices, triangles, partner, std::vector<bool>(triangles.size() * 3, false));
   const std::vector<bool> cut = crowded_edge_starts(triangles);
-  if (std::find(cut.begin(), cut.end(), true) == cut.end()) return;
+  if (std::find(cut.begin(), cut.end(), true) == cut.end()) return std::nullopt;
   renumber(vertices, triangles, partner, cut);
   const std::vector<bool> left = crowded_edge_starts(triangles);
-  if (std::find(left.begin(), left.end(), true) != left.end()) not_solid();
+  const auto h = static_cast<std::uint32_t>(std::find(left.begin(), left.end(), true) - left.begin());
+  if (h == left.size()) return std::nullopt;
+  return Edge{from_of(triangles, h), to_of(triangles, h)};
+}
+
+void split_non_manifold(std::vector<Vec3>& vertices, Triangles& triangles) {
+  if (try_split_non_manifold(vertices, triangles))
+    throw Error(ErrorCategory::invalid_argument,
+                "assemble_boundary: the triangles around an edge do not bound a solid");
 }
 
 }  // namespace cvms::detail
