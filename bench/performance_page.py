@@ -713,7 +713,7 @@ def end_to_end_section(page, path):
               "process and the sum's own time inside it (`cvms sum --stats`).*")
     page.para("The sums also report (`--stats`) their read time (parsing and validating both operands) and "
               "write time (the exact output, replaced atomically: written to a temporary file, synchronised "
-              "to disk, renamed): \"work\" is read + sum + write, and what the wall time holds beyond it is "
+              "to disk, renamed), wall times inside the run like the sum's: \"work\" is read + sum + write, and what the wall time holds beyond it is "
               "the process's start and exit. The row into /dev/null writes without the temporary file and "
               "its synchronisation.")
     lines = ["| command | wall (ms) | sum in process (ms) | wall / sum | read (ms) | write (ms) "
