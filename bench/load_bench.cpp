@@ -24,7 +24,9 @@
 //
 // And what a user waits for after a sum: write/<input> writes the exact OFF
 // of Sphere6 and of Sphere6 + rotated Sphere6 (a 60,000-facet result) to
-// memory, next to sum/Sphere6+rotated_Sphere6, the in-process sum it is
+// memory, each from doubles and from decimals (Sphere6 read from its
+// shortest and its 6-digit decimals, the sum of both spheres read from
+// their shortest decimals), next to sum/Sphere6+rotated_Sphere6, the in-process sum it is
 // the output of (writing should cost a small fraction of computing).
 #include <benchmark/benchmark.h>
 
@@ -232,14 +234,38 @@ BENCHMARK(BM_validate)->DenseRange(0, num_inputs - 1)->Unit(benchmark::kMillisec
 void BM_validate_and_planes(benchmark::State& state) { validate(state, true); }
 BENCHMARK(BM_validate_and_planes)->DenseRange(0, num_inputs - 1)->Unit(benchmark::kMillisecond);
 
+// What is written: Sphere6 and Sphere6 + rotated Sphere6 from doubles
+// (dyadic coordinates), Sphere6 read from its shortest round-trip decimals
+// and from its 6-digit decimals, and the sum of Sphere6 and rotated Sphere6
+// both read from their shortest decimals (coordinates over powers of ten,
+// and their sums).
+constexpr int num_written = 5;
+
+ConvexPolyhedron read_text(const std::string& text) {
+  std::istringstream in(text);
+  return cvms::to_polyhedron(cvms::read_off(in, "text"), "text");
+}
+
 const ConvexPolyhedron& written(int which) {
   static const ConvexPolyhedron sphere6 = cvms::shapes::geodesic_sphere(6);
   static const ConvexPolyhedron sum =
       cvms::minkowski_sum(sphere6, cvms::shapes::rotated_geodesic_sphere(6)).polyhedron;
-  return which == 0 ? sphere6 : sum;
+  static const ConvexPolyhedron shortest = read_text(input(4));
+  static const ConvexPolyhedron six_digits = read_text(input(5));
+  static const ConvexPolyhedron shortest_sum =
+      cvms::minkowski_sum(shortest, read_text(cvms_bench::off_text(cvms::shapes::rotated_geodesic_sphere(6).to_soup(),
+                                                                   cvms_bench::TextForm::shortest)))
+          .polyhedron;
+  static const ConvexPolyhedron* const all[num_written] = {&sphere6, &sum, &shortest, &six_digits, &shortest_sum};
+  return *all[which];
 }
 
-const char* written_name(int which) { return which == 0 ? "Sphere6" : "Sphere6+rotated_Sphere6"; }
+const char* written_name(int which) {
+  static const char* const names[num_written] = {"Sphere6", "Sphere6+rotated_Sphere6", "Sphere6_shortest_decimals",
+                                                 "Sphere6_6_digits",
+                                                 "Sphere6+rotated_Sphere6_shortest_decimals"};
+  return names[which];
+}
 
 void BM_write(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
@@ -255,7 +281,7 @@ void BM_write(benchmark::State& state) {
   state.counters["facets"] = static_cast<double>(written(which).num_facets());
   state.SetLabel(written_name(which));
 }
-BENCHMARK(BM_write)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_write)->DenseRange(0, num_written - 1)->Unit(benchmark::kMillisecond);
 
 void BM_sum(benchmark::State& state) {
   const ConvexPolyhedron& a = written(0);

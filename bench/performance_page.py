@@ -693,6 +693,14 @@ def load_section(page, load_path, timings_path):
                 f"the same run: {100 * w / total[0]:.0f} % of computing it.")
         if w0:
             text += f" Sphere6's own OFF ({int(w0[1]['facets']):,} facets) takes {fmt_ms(w0[0])} ms."
+        decimal = [(label, rows.get(f"BM_write/{i}")) for label, i in
+                   (("Sphere6 read from its shortest round-trip decimals", 2),
+                    ("Sphere6 read from its 6-digit decimals", 3),
+                    ("the sum of Sphere6 and rotated Sphere6 both read from their shortest decimals", 4))]
+        if all(r for _, r in decimal):
+            text += (" Decimal coordinates are integers over a power of ten, printed from machine words: "
+                     + "; ".join(f"{label} ({int(r[1]['facets']):,} facets, {r[1]['bytes'] / 1e6:.1f} MB) "
+                                 f"{fmt_ms(r[0])} ms" for label, r in decimal) + ".")
         page.para(text)
 
 
@@ -703,11 +711,20 @@ def end_to_end_section(page, path):
     page.para(f"*`docs/bench/{os.path.basename(path)}` (`bench/end_to_end.py`): the minimum wall time over "
               "the rounds of each whole `cvms` run, from file to file, with the peak resident memory of that "
               "process and the sum's own time inside it (`cvms sum --stats`).*")
-    lines = ["| command | wall (ms) | sum in process (ms) | wall / sum | peak RSS (MiB) |", "|---|---:|---:|---:|---:|"]
+    page.para("The sums also report (`--stats`) their read time (parsing and validating both operands) and "
+              "write time (the exact output, replaced atomically: written to a temporary file, synchronised "
+              "to disk, renamed), wall times inside the run like the sum's: \"work\" is read + sum + write, and what the wall time holds beyond it is "
+              "the process's start and exit. The row into /dev/null writes without the temporary file and "
+              "its synchronisation.")
+    lines = ["| command | wall (ms) | sum in process (ms) | wall / sum | read (ms) | write (ms) "
+             "| wall / work | peak RSS (MiB) |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
     for name, r in results.items():
-        s = r.get("sum_ms")
+        s, read, write = r.get("sum_ms"), r.get("read_ms"), r.get("write_ms")
+        work = s + read + write if s and read is not None and write is not None else None
         lines.append(f"| `cvms {name}` | {fmt_ms(r['wall_ms'])} | {fmt_ms(s) if s else '—'} "
-                     f"| {ratio(r['wall_ms'], s) if s else '—'} | {r['peak_rss_bytes'] / 2**20:.1f} |")
+                     f"| {ratio(r['wall_ms'], s) if s else '—'} | {fmt_ms(read) if work else '—'} "
+                     f"| {fmt_ms(write) if work else '—'} | {ratio(r['wall_ms'], work) if work else '—'} "
+                     f"| {r['peak_rss_bytes'] / 2**20:.1f} |")
     page.block(lines)
 
 

@@ -207,7 +207,9 @@ TEST_F(Cli, SumStatsAndFloatOutput) {
   Outcome o = run("sum a.off b.off --algorithm chms --stats --float -o s.off");
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_NE(o.out.find("algorithm: chms"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("time: "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\ntime: "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\nread time: "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\nwrite time: "), std::string::npos) << o.out;
   ConvexPolyhedron exact = chms(load("a.off"), load("b.off"));
   EXPECT_NE(o.out.find("A+B: V " + std::to_string(exact.num_vertices()) + " E " +
                        std::to_string(exact.num_edges()) + " F " + std::to_string(exact.num_facets())),

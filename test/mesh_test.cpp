@@ -276,6 +276,34 @@ TEST(MeshBadInput, DuplicatePointsWrittenDifferently) {
   expect_error(t, ErrorCategory::topology, {"vertices 1 and 4", "same point"});
 }
 
+// Fractions over 2^a 5^b (decimals) as a caller may build them without
+// canonicalisation: the numerator shares a 2 (6/20), a 5 (15/10), both
+// (50/100) or neither (3/10, already canonical), and zero over 10. The
+// mesh holds them in lowest terms (hand-reduced values and denominators),
+// and an unreduced copy of a point is found as a duplicate.
+TEST(Mesh, DecimalFractionsAreKeptInLowestTerms) {
+  PolygonSoup s = test::tetrahedron();
+  s.points[1] = Vec3{Rational(6, 20), Rational(0, 10), Rational(0)};
+  s.points[2] = Vec3{Rational(0), Rational(15, 10), Rational(0)};
+  s.points[3] = Vec3{Rational(0), Rational(0), Rational(50, 100)};
+  s.points[0] = Vec3{Rational(0), Rational(0), Rational(-3, 10)};
+  const Mesh m = Mesh::from_soup(s);
+  const struct {
+    std::uint32_t vertex;
+    int axis;
+    long num, den;
+  } expected[] = {{1, 0, 3, 10}, {1, 1, 0, 1}, {2, 1, 3, 2}, {3, 2, 1, 2}, {0, 2, -3, 10}};
+  for (const auto& e : expected) {
+    const Rational& q = m.position(VertexId(e.vertex))[e.axis];
+    EXPECT_EQ(q.get_num(), e.num) << "vertex " << e.vertex << " axis " << e.axis;
+    EXPECT_EQ(q.get_den(), e.den) << "vertex " << e.vertex << " axis " << e.axis;
+  }
+  PolygonSoup t = s;
+  t.points.push_back(Vec3{Rational(0), Rational(300, 200), Rational(0, 1000)});  // equal to vertex 2
+  t.add_face({4, 1, 3});
+  expect_error(t, ErrorCategory::topology, {"vertices 2 and 4", "same point"});
+}
+
 // The duplicate check sorts on the coordinates' doubles first and tells
 // points with equal doubles apart exactly. Here a distinct point whose
 // doubles equal those of a duplicated one sits between its two copies in

@@ -704,5 +704,46 @@ TEST(RationalText, FastPrinterMatchesTheGeneralText) {
   }
 }
 
+// Decimals whose scaled integer is one or two machine words, at the bounds
+// of those words (2^64, 10^19, 2^128): hand-checked texts, then random
+// numerators of 1 to 128 bits over powers of ten against the general route.
+TEST(RationalText, DecimalsOfOneOrTwoWordsPrintExactly) {
+  const mpz_class two_64 = mpz_class(1) << 64;
+  const mpz_class two_128 = mpz_class(1) << 128;
+  const mpz_class ten_19("10000000000000000000");
+  const struct {
+    mpz_class numerator;
+    long places;
+    const char* text;
+  } cases[] = {
+      {two_64 - 1, 5, "184467440737095.51615"},
+      {two_64, 19, "1.8446744073709551616"},
+      {two_128 - 1, 38, "3.40282366920938463463374607431768211455"},
+      {two_128 - 1, 0, "340282366920938463463374607431768211455"},
+      {-ten_19, 3, "-10000000000000000"},
+      {ten_19 - 1, 19, "0.9999999999999999999"},
+      {ten_19 * ten_19, 40, "0.01"},
+      {ten_19 * ten_19 + 1, 45, "0.000000100000000000000000000000000000000000001"},
+      {mpz_class(-7), 20, "-0.00000000000000000007"},
+  };
+  for (const auto& c : cases) {
+    const Rational q = Rational(c.numerator) * power_of_ten(-c.places);
+    std::string text;
+    detail::append_exact_text(text, q);
+    EXPECT_EQ(text, c.text) << c.numerator.get_str() << " / 10^" << c.places;
+  }
+  const std::uint64_t seed = 5219;
+  test::Rng rng(seed);
+  for (int i = 0; i < 20000; ++i) {
+    const auto bits = 1 + static_cast<unsigned>(rng() % 128);
+    const long places = static_cast<long>(rng() % 45);
+    Rational q = Rational(test::random_integer(rng, bits)) * power_of_ten(-places);
+    q.canonicalize();
+    std::string text;
+    detail::append_exact_text(text, q);
+    ASSERT_EQ(text, detail::exact_text_general(q)) << "seed " << seed << ", case " << i;
+  }
+}
+
 }  // namespace
 }  // namespace cvms

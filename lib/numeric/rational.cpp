@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -373,24 +374,65 @@ NumberTextResult parse_fraction_into(std::string_view text, std::size_t slash, c
 // ---- Exact text, fast: integers and decimals of a few hundred digits -------
 // value = p / (2^a 5^b) is printed as the integer |p| 2^(n-a) 5^(n-b), n =
 // max(a, b), with a point n digits from its end. The integer is built in
-// limbs on the stack and its digits come from mpn_get_str straight into the
-// output: no mpz temporaries, no division, no intermediate strings. Other
+// limbs on the stack and its digits come from machine division when it is
+// one or two limbs, else from mpn_get_str: no mpz temporaries, no
+// intermediate strings. Other
 // values (p/q, or more limbs than the stack takes) go to exact_text_general,
 // whose text this matches byte for byte (test/rational_test.cpp).
 
 constexpr std::size_t print_limbs = 40;  // 2560 bits, about 770 digits
+
+// Writes part (below 10^19) as exactly 19 digits, zeros in front; returns
+// the end.
+char* nineteen_digits(char* at, std::uint64_t part) {
+  for (int i = 18; i >= 0; --i) {
+    at[i] = static_cast<char>('0' + part % 10);
+    part /= 10;
+  }
+  return at + 19;
+}
+
+// The decimal digits of {limbs, size} (size 1 or 2, so below 2^128 < 10^39)
+// into out, without leading zeros ("0" for zero); returns how many. A
+// k-digit decimal coordinate scaled to an integer is one or two words (a
+// 17-digit one is one, a sum of two is two), and machine division by 10^19
+// writes those directly, where mpn_get_str goes through its general base
+// conversion and a digit-value buffer.
+std::size_t word_digits(char* out, const mp_limb_t* limbs, mp_size_t size) {
+  static_assert(GMP_NUMB_BITS == 64 && sizeof(mp_limb_t) == sizeof(std::uint64_t));
+  constexpr std::uint64_t ten_19 = 10000000000000000000u;
+  Uint128 value = limbs[0];
+  if (size == 2) value |= Uint128{limbs[1]} << 64;
+  // value = top 10^38 + middle 10^19 + low, with top < 4 (2^128 < 3.5 10^38).
+  const auto low = static_cast<std::uint64_t>(value % ten_19);
+  const Uint128 rest = value / ten_19;
+  const auto middle = static_cast<std::uint64_t>(rest % ten_19);
+  const auto top = static_cast<std::uint64_t>(rest / ten_19);
+  // The leading group without zeros in front, the others as 19 digits each.
+  const std::uint64_t lead = top != 0 ? top : middle != 0 ? middle : low;
+  char* at = std::to_chars(out, out + 20, lead).ptr;
+  if (top != 0) at = nineteen_digits(at, middle);
+  if (top != 0 || middle != 0) at = nineteen_digits(at, low);
+  return static_cast<std::size_t>(at - out);
+}
 
 // Appends the decimal digits of {limbs, size} (size > 0, top limb nonzero;
 // destroyed) with a point `places` digits from the end, zero-padded to at
 // least one digit before the point; a few appends, no per-digit branches.
 void append_digits(std::string& out, mp_limb_t* limbs, mp_size_t size, std::size_t places) {
   unsigned char raw[print_limbs * 20 + 1];
-  std::size_t count = mpn_get_str(raw, 10, limbs, size);
-  std::size_t skip = 0;
-  while (skip + 1 < count && raw[skip] == 0) ++skip;
-  count -= skip;
-  char* digits = reinterpret_cast<char*>(raw + skip);
-  for (std::size_t i = 0; i < count; ++i) digits[i] = static_cast<char>('0' + raw[skip + i]);
+  char* digits = reinterpret_cast<char*>(raw);
+  std::size_t count = 0;
+  if (size <= 2) {
+    count = word_digits(digits, limbs, size);
+  } else {
+    count = mpn_get_str(raw, 10, limbs, size);
+    std::size_t skip = 0;
+    while (skip + 1 < count && raw[skip] == 0) ++skip;
+    count -= skip;
+    digits = reinterpret_cast<char*>(raw + skip);
+    for (std::size_t i = 0; i < count; ++i) digits[i] = static_cast<char>('0' + raw[skip + i]);
+  }
   if (places == 0) {
     out.append(digits, count);
   } else if (count <= places) {  // 0.000ddd

@@ -76,15 +76,22 @@ auto with_limit_hint(Sum&& sum) {
   }
 }
 
-void sum_polyhedra(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args, std::ostream& report) {
+// `read_time`: of reading and validating both operands, shown with --stats
+// beside the sum's and the write's, so that a whole run's wall time can be
+// told apart from the work inside it.
+void sum_polyhedra(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args,
+                   std::chrono::steady_clock::duration read_time, std::ostream& report) {
   Timed sum = with_limit_hint([&] { return timed_sum(a, b, args.options()); });
   // Written in an order of the set alone, so that A + B and B + A give the
   // same bytes.
+  const auto write_start = std::chrono::steady_clock::now();
   write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format,
                    VertexOrder::canonical);
+  const auto write_time = std::chrono::steady_clock::now() - write_start;
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
-           << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time) << "\n";
+           << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time)
+           << "\nread time: " << milliseconds(read_time) << "\nwrite time: " << milliseconds(write_time) << "\n";
     print_stats(report, sum.result.stats, sum.diagnostics);
   }
   keep_until_exit(std::move(sum.result.polyhedron));
@@ -169,7 +176,9 @@ void run_sum(const SumArgs& args, std::ostream& report) {
     throw UsageError("only one input can be read from stdin");
   check_placement(args.place_a, "a");
   check_placement(args.place_b, "b");
+  const auto read_start = std::chrono::steady_clock::now();
   Operands operands = read_operands(args);
+  const auto read_time = std::chrono::steady_clock::now() - read_start;
   if (operands.solids[0] || operands.solids[1]) return sum_solids(std::move(operands), args, report);
   std::vector<ConvexSet>& sets = operands.sets;
   sets[0] = placed(std::move(sets[0]), args.place_a, "a");
@@ -177,7 +186,7 @@ void run_sum(const SumArgs& args, std::ostream& report) {
   if (sets.size() > 2 || sets[0].dimension() != 3 || sets[1].dimension() != 3)
     sum_sets(sets, args, report);
   else
-    sum_polyhedra(sets[0].polyhedron(), sets[1].polyhedron(), args, report);
+    sum_polyhedra(sets[0].polyhedron(), sets[1].polyhedron(), args, read_time, report);
   keep_until_exit(std::move(sets));
 }
 
