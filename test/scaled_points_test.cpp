@@ -6,7 +6,9 @@
 // coordinates' denominators; points past the word-size bounds (a
 // denominator of 2^63 or more, a scaled numerator of 2^61 or more) are
 // refused; a stored coordinate is the canonical rational of its fraction;
-// an approximation's bound covers the exact value. Random cases use fixed
+// an approximation has Approx::of's double of the canonical value and a
+// bound at least Approx::of's that covers it, also for values that are
+// doubles or midpoints between two. Random cases use fixed
 // seeds, printed on failure.
 #include <gtest/gtest.h>
 
@@ -18,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "approx.hpp"
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
 #include "limb_arena.hpp"
@@ -151,11 +154,33 @@ TEST(ScaledPoints, SumsAreTheCanonicalRationalsWithinTheirBounds) {
           sum.store(j, axis, arena, stored);
           ASSERT_EQ(stored, expected) << "seed " << seed << " point " << i;
           ASSERT_EQ(fraction(from_i128(n), from_u128(sum.denominator())), expected);
-          const Approx x = sum.approx(n);
+          const Approx x = sum.approx(n), oracle = Approx::of(expected);
+          ASSERT_EQ(x.value, oracle.value) << "seed " << seed << " point " << i;
+          ASSERT_GE(x.error, oracle.error) << "seed " << seed << " point " << i;
           ASSERT_LE(abs(Rational(x.value) - expected), Rational(x.error)) << "seed " << seed << " point " << i;
           ASSERT_EQ(sum.point(j)[axis], expected);
         }
       }
+    }
+  }
+}
+
+// Values where the long double quotient cannot decide: doubles, midpoints
+// between two doubles, and fractions whose reduced terms are below 2^53
+// although the stored ones are not.
+TEST(ScaledPoints, ApproximationsOfDoublesAndMidpointsAreApproxOf) {
+  const Int128 ten17 = 100000000000000000;
+  const Uint128 denominators[] = {Uint128{100000000000000000}, Uint128{1} << 70, Uint128{300000000000000000}, 7};
+  const Int128 numerators[] = {ten17 / 2, ten17 / 4 * 3, ten17 + 1, -(ten17 / 8), Int128{1} << 69,
+                               (Int128{1} << 69) + 1, 3 * (Int128{1} << 60), 12345678901234567, 1, -7};
+  for (const Uint128 d : denominators) {
+    ScaledPoints points(d, KeptAllocator<Int128>{});
+    for (const Int128 n : numerators) {
+      const Rational q = fraction(from_i128(n), from_u128(d));
+      const Approx x = points.approx(n), oracle = Approx::of(q);
+      EXPECT_EQ(x.value, oracle.value) << q;
+      EXPECT_GE(x.error, oracle.error) << q;
+      EXPECT_LE(abs(Rational(x.value) - q), Rational(x.error)) << q;
     }
   }
 }

@@ -83,7 +83,8 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
 TEST(Stitch, DecimalOperandsGiveScaledVertices) {
   const ConvexPolyhedron third = shapes::cube().transformed(scaling(Rational(1, 3)), Vec3{0, 0, 0});
   std::vector<Vec3> six_digits;  // a sphere's vertices with 6 decimals, as scanners write them
-  for (const Vec3& v : shapes::geodesic_sphere(2).mesh().positions()) {
+  const ConvexPolyhedron round = shapes::geodesic_sphere(2);
+  for (const Vec3& v : round.mesh().positions()) {
     Vec3& w = six_digits.emplace_back();
     for (int k = 0; k < 3; ++k) w[k] = Rational(std::lround(v[k].get_d() * 1e6), 1000000);
     for (int k = 0; k < 3; ++k) w[k].canonicalize();

@@ -4,8 +4,12 @@
 
 #include <gmp.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
+
+#include "error_bounds.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -29,30 +33,56 @@ Uint128 gcd128(Uint128 m, Uint128 d) noexcept {
 
 }  // namespace
 
-// Both integers are below 2^126, so converting each to the nearest double
-// and dividing are three roundings of relative error at most u = 2^-53
-// (Higham, 2.2): |v - n/d| <= ((1 + u)^2 / (1 - u) - 1) |n/d| < 3.01 u (1 +
-// 3.01 u) |v| < 4 u |v| = |v| 2^-51, as for Approx::of_quotient. When both
-// are below 2^53 they convert exactly and the one rounding of the quotient
-// gives u |v|. (An integer value gets a bound too, not error 0: finding
-// it would cost a 128-bit division per coordinate.) |n/d| >= 2^-126 for n != 0, so v and the bound are normal
-// and computed exactly.
-Approx ScaledPoints::approx(Int128 numerator) const noexcept {
+// Approx::of of the canonical fraction, without making it. Approx::of
+// gives the nearest double with the bound u |v| when the reduced numerator
+// and denominator are both below 2^53, else the truncation t toward zero
+// with truncation_error(t) (error 0 only for a double, which a fraction
+// strictly between two doubles is not). The quotient is first worked out in
+// long double: each of the two conversions and the division is within
+// 2^-64 relative, so |ld - q| < 2^-62 |ld| =: e. When no double and no
+// midpoint between two doubles lies within e of ld, q lies strictly
+// between the same two doubles t < q < t' as ld, on the same side of their
+// midpoint, so its truncation is t and its nearest double the one ld
+// rounds to. Otherwise (q within e of a double or a midpoint: rare, apart
+// from values that are doubles) the canonical rational is made and
+// Approx::of called. Whether the reduced integers are below 2^53 (which
+// needs their gcd) is asked only when the nearest double is not t; when it
+// is t, the bound is truncation_error(t) >= u |t|, which covers both cases.
+Approx ScaledPoints::approx(Int128 numerator) const {
   if (numerator == 0) return {0.0, 0.0};
+  const bool negative = numerator < 0;
   const Uint128 m = magnitude_of(numerator);
-  // Through a 64-bit integer when it fits: one instruction, where the
-  // 128-bit conversion is a library call (the same nearest double).
-  constexpr Uint128 word_limit = Uint128{1} << 63;
-  const double n = m < word_limit ? static_cast<double>(static_cast<std::int64_t>(numerator))
-                                  : static_cast<double>(numerator);
-  const double v = n / denominator_value_;
-  const double size = v < 0 ? -v : v;
   constexpr Uint128 exact_limit = Uint128{1} << 53;
-  return {v, m < exact_limit && denominator_ < exact_limit ? size * 0x1p-53 : size * 0x1p-51};
+  const auto sign = [negative](double v) { return negative ? -v : v; };
+  if (m < exact_limit && denominator_ < exact_limit) {  // so are the reduced ones
+    const double v = static_cast<double>(static_cast<std::uint64_t>(m)) / denominator_value_;
+    return {sign(v), v * filtered::unit_roundoff};
+  }
+  const long double n = (m >> 64) == 0 ? static_cast<long double>(static_cast<std::uint64_t>(m))
+                                       : static_cast<long double>(m);
+  const long double ld = n / denominator_long_;
+  const long double e = ld * 0x1p-62L;
+  double t = static_cast<double>(ld);  // nearest
+  if (static_cast<long double>(t) > ld) t = std::nextafter(t, 0.0);
+  const double next = std::nextafter(t, std::numeric_limits<double>::infinity());
+  const long double middle = (static_cast<long double>(t) + static_cast<long double>(next)) / 2;
+  if (ld - e > t && ld + e < next && (ld + e < middle || ld - e > middle)) {
+    if (ld + e < middle) return {sign(t), filtered::truncation_error(t)};  // nearest is t too
+    const Uint128 g = gcd128(m, denominator_);
+    if (m / g < exact_limit && denominator_ / g < exact_limit) return {sign(next), next * filtered::unit_roundoff};
+    return {sign(t), filtered::truncation_error(t)};
+  }
+  LimbArena scratch;
+  Rational q;
+  store_fraction(numerator, scratch, q);
+  return Approx::of(q);
 }
 
 void ScaledPoints::store(std::size_t j, int axis, LimbArena& arena, Rational& out) const {
-  const Int128 n = numerator(j, axis);
+  store_fraction(numerator(j, axis), arena, out);
+}
+
+void ScaledPoints::store_fraction(Int128 n, LimbArena& arena, Rational& out) const {
   const Uint128 m = magnitude_of(n);
   const Uint128 g = gcd128(m, denominator_);
   const Uint128 reduced = m / g, den = denominator_ / g;

@@ -30,11 +30,15 @@ class ScaledPoints {
   /// No points yet, over `denominator` (positive, below 2^126); coordinates
   /// carved from allocator's slab, if any.
   ScaledPoints(Uint128 denominator, const KeptAllocator<Int128>& allocator)
-      : denominator_(denominator), denominator_value_(static_cast<double>(denominator)), numerators_(allocator) {}
+      : denominator_(denominator),
+        denominator_value_(static_cast<double>(denominator)),
+        denominator_long_(static_cast<long double>(denominator)),
+        numerators_(allocator) {}
   /// count points at the origin, as above.
   ScaledPoints(std::size_t count, Uint128 denominator, const KeptAllocator<Int128>& allocator = {})
       : denominator_(denominator),
         denominator_value_(static_cast<double>(denominator)),
+        denominator_long_(static_cast<long double>(denominator)),
         numerators_(3 * count, allocator) {}
   /// Adds to plan the room for count points (result_slab.hpp).
   static void plan(SlabPlan& plan, std::size_t count) { plan.add<Int128>(3 * count); }
@@ -55,17 +59,22 @@ class ScaledPoints {
   [[nodiscard]] Int128& numerator(std::size_t j, int axis) noexcept {
     return numerators_[3 * j + static_cast<std::size_t>(axis)];
   }
-  /// A double within the returned error of numerator / denominator(), read
-  /// off the integers (no gcd, no GMP value; the bound in the source).
-  [[nodiscard]] Approx approx(Int128 numerator) const noexcept;
+  /// The double of Approx::of(numerator / denominator()), read off the
+  /// integers (no GMP value, and a gcd only when the nearest double is not
+  /// the truncation), with Approx::of's bound or, where telling which bound
+  /// applies would take a gcd, the larger one (the proof in the source).
+  [[nodiscard]] Approx approx(Int128 numerator) const;
   /// Coordinate `axis` of point j, canonical, its limbs in arena.
   void store(std::size_t j, int axis, LimbArena& arena, Rational& out) const;
   /// Point j as exact rationals (each owning its limbs).
   [[nodiscard]] Vec3 point(std::size_t j) const;
+  /// n / denominator(), canonical, its limbs in arena.
+  void store_fraction(Int128 n, LimbArena& arena, Rational& out) const;
 
  private:
   Uint128 denominator_ = 1;
-  double denominator_value_ = 1.0;  // the nearest double of denominator_
+  double denominator_value_ = 1.0;  // denominator_ as a double (exact when below 2^53)
+  long double denominator_long_ = 1.0L;  // and as a long double (within 2^-64 relative)
   KeptVector<Int128> numerators_;  // 3 per point
 };
 
