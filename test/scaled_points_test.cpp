@@ -10,6 +10,8 @@
 // bound at least Approx::of's that covers it, also for values that are
 // doubles or midpoints between two. Random cases use fixed
 // seeds, printed on failure.
+#include "scaled_points.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,7 +26,6 @@
 #include "cvms/rational.hpp"
 #include "cvms/vec.hpp"
 #include "limb_arena.hpp"
-#include "scaled_points.hpp"
 #include "word_scaled.hpp"
 
 namespace cvms::detail {
@@ -88,12 +89,12 @@ std::string check_scaled(const std::vector<Vec3>& points, const WordScaledPoints
 
 TEST(WordScaled, DecimalsAndSmallRationalsScaleExactly) {
   const std::vector<std::vector<std::uint64_t>> families = {
-      {1},                                                     // integers
+      {1},                                                        // integers
       {10, 100, 1000000, 10000000000000000, 100000000000000000},  // decimals, as files write them
-      {1000000000000000000},                                   // 10^18, the largest power of ten below 2^63
-      {std::uint64_t{1} << 62},                                // 2^62
-      {(std::uint64_t{1} << 63) - 1},                          // 2^63 - 1
-      {3, 7, 9, 21},                                           // small rationals
+      {1000000000000000000},           // 10^18, the largest power of ten below 2^63
+      {std::uint64_t{1} << 62},        // 2^62
+      {(std::uint64_t{1} << 63) - 1},  // 2^63 - 1
+      {3, 7, 9, 21},                   // small rationals
   };
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     std::mt19937_64 rng(seed);
@@ -110,11 +111,12 @@ TEST(WordScaled, PastTheWordBoundsIsRefused) {
     return std::vector<Vec3>{Vec3{fraction(n, d), Rational(0), Rational(0)}};
   };
   const mpz_class two63 = mpz_class(1) << 63;
-  EXPECT_FALSE(scale_to_words(point_over(1, two63)));                   // a denominator of 2^63
-  EXPECT_FALSE(scale_to_words(point_over(1, two63 + 1)));               // just past it
+  EXPECT_FALSE(scale_to_words(point_over(1, two63)));                              // a denominator of 2^63
+  EXPECT_FALSE(scale_to_words(point_over(1, two63 + 1)));                          // just past it
   EXPECT_FALSE(scale_to_words(point_over(1, mpz_class("10000000000000000000"))));  // 10^19
   // lcm(2^62, 3) > 2^63: each fits, their common denominator does not.
-  EXPECT_FALSE(scale_to_words(std::vector<Vec3>{Vec3{fraction(1, mpz_class(1) << 62), Rational(1, 3), Rational(0)}}));
+  EXPECT_FALSE(
+      scale_to_words(std::vector<Vec3>{Vec3{fraction(1, mpz_class(1) << 62), Rational(1, 3), Rational(0)}}));
   // A scaled numerator of 2^61, and one just below.
   EXPECT_FALSE(scale_to_words(point_over(mpz_class(1) << 61, 1)));
   EXPECT_TRUE(scale_to_words(point_over((mpz_class(1) << 61) - 1, 1)));
@@ -126,12 +128,12 @@ TEST(WordScaled, PastTheWordBoundsIsRefused) {
 // A sum of two scaled operands as the stitch builds it, against mpq sums.
 TEST(ScaledPoints, SumsAreTheCanonicalRationalsWithinTheirBounds) {
   const std::vector<std::pair<std::uint64_t, std::uint64_t>> denominators = {
-      {100000000000000000, 100000000000000000},  // shortest decimals, both operands
-      {1000000, 100000000000000000},             // 6 digits and shortest
+      {100000000000000000, 100000000000000000},      // shortest decimals, both operands
+      {1000000, 100000000000000000},                 // 6 digits and shortest
       {std::uint64_t{1} << 61, 100000000000000000},  // dyadic 2^61 and decimal 10^17: about 120 bits
       {(std::uint64_t{1} << 63) - 1, (std::uint64_t{1} << 63) - 25},  // two denominators just below 2^63
-      {3, 1},                                                            // thirds and integers
-      {7, 9},                                                            // sevenths and ninths
+      {3, 1},                                                         // thirds and integers
+      {7, 9},                                                         // sevenths and ninths
   };
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     for (const auto& [da, db] : denominators) {
@@ -157,7 +159,8 @@ TEST(ScaledPoints, SumsAreTheCanonicalRationalsWithinTheirBounds) {
           const Approx x = sum.approx(n), oracle = Approx::of(expected);
           ASSERT_EQ(x.value, oracle.value) << "seed " << seed << " point " << i;
           ASSERT_GE(x.error, oracle.error) << "seed " << seed << " point " << i;
-          ASSERT_LE(abs(Rational(x.value) - expected), Rational(x.error)) << "seed " << seed << " point " << i;
+          ASSERT_LE(abs(Rational(x.value) - expected), Rational(x.error))
+              << "seed " << seed << " point " << i;
           ASSERT_EQ(sum.point(j)[axis], expected);
         }
       }
@@ -170,9 +173,18 @@ TEST(ScaledPoints, SumsAreTheCanonicalRationalsWithinTheirBounds) {
 // although the stored ones are not.
 TEST(ScaledPoints, ApproximationsOfDoublesAndMidpointsAreApproxOf) {
   const Int128 ten17 = 100000000000000000;
-  const Uint128 denominators[] = {Uint128{100000000000000000}, Uint128{1} << 70, Uint128{300000000000000000}, 7};
-  const Int128 numerators[] = {ten17 / 2, ten17 / 4 * 3, ten17 + 1, -(ten17 / 8), Int128{1} << 69,
-                               (Int128{1} << 69) + 1, 3 * (Int128{1} << 60), 12345678901234567, 1, -7};
+  const Uint128 denominators[] = {Uint128{100000000000000000}, Uint128{1} << 70, Uint128{300000000000000000},
+                                  7};
+  const Int128 numerators[] = {ten17 / 2,
+                               ten17 / 4 * 3,
+                               ten17 + 1,
+                               -(ten17 / 8),
+                               Int128{1} << 69,
+                               (Int128{1} << 69) + 1,
+                               3 * (Int128{1} << 60),
+                               12345678901234567,
+                               1,
+                               -7};
   for (const Uint128 d : denominators) {
     ScaledPoints points(d, KeptAllocator<Int128>{});
     for (const Int128 n : numerators) {

@@ -481,7 +481,8 @@ void SumFacetBuilder::write_scaled_vertex(const VertexPair& p, const ScaledSum& 
   using Int128 = ScaledPoints::Int128;
   for (int i = 0; i < 3; ++i) {
     // Each term is below 2^61 2^63 = 2^124 in magnitude (word_scaled.hpp).
-    const Int128 n = Int128{sum.a->at(p.a, i)} * Int128{sum.factor_a} + Int128{sum.b->at(p.b, i)} * Int128{sum.factor_b};
+    const Int128 n =
+        Int128{sum.a->at(p.a, i)} * Int128{sum.factor_a} + Int128{sum.b->at(p.b, i)} * Int128{sum.factor_b};
     points.numerator(j, i) = n;
     axis_of(approx[j], i) = points.approx(n);
   }

@@ -58,8 +58,8 @@ Approx ScaledPoints::approx(Int128 numerator) const {
     const double v = static_cast<double>(static_cast<std::uint64_t>(m)) / denominator_value_;
     return {sign(v), v * filtered::unit_roundoff};
   }
-  const long double n = (m >> 64) == 0 ? static_cast<long double>(static_cast<std::uint64_t>(m))
-                                       : static_cast<long double>(m);
+  const long double n =
+      (m >> 64) == 0 ? static_cast<long double>(static_cast<std::uint64_t>(m)) : static_cast<long double>(m);
   const long double ld = n / denominator_long_;
   const long double e = ld * 0x1p-62L;
   double t = static_cast<double>(ld);  // nearest
@@ -69,7 +69,8 @@ Approx ScaledPoints::approx(Int128 numerator) const {
   if (ld - e > t && ld + e < next && (ld + e < middle || ld - e > middle)) {
     if (ld + e < middle) return {sign(t), filtered::truncation_error(t)};  // nearest is t too
     const Uint128 g = gcd128(m, denominator_);
-    if (m / g < exact_limit && denominator_ / g < exact_limit) return {sign(next), next * filtered::unit_roundoff};
+    if (m / g < exact_limit && denominator_ / g < exact_limit)
+      return {sign(next), next * filtered::unit_roundoff};
     return {sign(t), filtered::truncation_error(t)};
   }
   LimbArena scratch;

@@ -73,9 +73,9 @@ class ScaledPoints {
 
  private:
   Uint128 denominator_ = 1;
-  double denominator_value_ = 1.0;  // denominator_ as a double (exact when below 2^53)
+  double denominator_value_ = 1.0;       // denominator_ as a double (exact when below 2^53)
   long double denominator_long_ = 1.0L;  // and as a long double (within 2^-64 relative)
-  KeptVector<Int128> numerators_;  // 3 per point
+  KeptVector<Int128> numerators_;        // 3 per point
 };
 
 }  // namespace cvms::detail

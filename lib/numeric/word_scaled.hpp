@@ -27,7 +27,7 @@ namespace cvms::detail {
 
 /// Points as integers over one positive common denominator in machine words.
 struct WordScaledPoints {
-  std::uint64_t denominator = 1;        ///< D: the lcm of every coordinate's denominator, below 2^63
+  std::uint64_t denominator = 1;         ///< D: the lcm of every coordinate's denominator, below 2^63
   std::vector<std::int64_t> numerators;  ///< coordinate `axis` of point j times D at 3 j + axis, below 2^61
 
   /// The scaled coordinate `axis` (0, 1, 2) of point j.
