@@ -9,8 +9,8 @@
 #include <tuple>
 
 #include "cvms/predicates.hpp"
-#include "plane_chart.hpp"
 #include "planar_tests.hpp"
+#include "plane_chart.hpp"
 #include "triangle_tree.hpp"
 #include "union_find.hpp"
 
@@ -132,7 +132,8 @@ PlanarFacets::PlanarFacets(std::span<const Vec3> points, std::span<const Triangl
     edges_.push_back({f, uses[i].lo, uses[i].hi});
     const Triangle& t = triangles[uses[i].triangle];
     vertices_.push_back({f, corner(t, uses[i].corner)});
-    if (!joined[i] && size_[f] > 1) boundary[f].push_back({corner(t, uses[i].corner), corner(t, uses[i].corner + 1)});
+    if (!joined[i] && size_[f] > 1)
+      boundary[f].push_back({corner(t, uses[i].corner), corner(t, uses[i].corner + 1)});
   }
   std::sort(edges_.begin(), edges_.end());
   edges_.erase(std::unique(edges_.begin(), edges_.end()), edges_.end());
@@ -141,7 +142,8 @@ PlanarFacets::PlanarFacets(std::span<const Vec3> points, std::span<const Triangl
   certified_.assign(count, true);
   for (std::uint32_t f = 0; f < count; ++f)
     if (size_[f] > 1)
-      certified_[f] = simple_cycle(points, chart_of(points, triangles[first_triangle_[f]]), std::move(boundary[f]));
+      certified_[f] =
+          simple_cycle(points, chart_of(points, triangles[first_triangle_[f]]), std::move(boundary[f]));
 }
 
 bool PlanarFacets::has_vertex(std::uint32_t f, std::uint32_t v) const {
