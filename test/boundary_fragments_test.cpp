@@ -306,6 +306,33 @@ TEST(PlaneClip, SplitAndSubtractOnASquare) {
   EXPECT_TRUE(pieces.empty());
 }
 
+TEST(PlaneClip, RegionMeetingInZeroAreaLeavesThePieceWhole) {
+  // The square [0, 2]^2 of the plane z = 0.
+  cvms::detail::ClipPoints points;
+  for (const auto& [x, y] : {std::pair{0, 0}, {2, 0}, {2, 2}, {0, 2}}) {
+    const Vec3 p{x, y, 0};
+    points.push_back({p, cvms::ApproxVec3::of(p)});
+  }
+  const cvms::detail::ClipPolygon square = {0, 1, 2, 3};
+  std::deque<TestPlane> store;
+  // x <= 1 and y <= 1 cut it, x >= 2 holds none of its interior: the piece
+  // stays whole, and no crossing point is made.
+  const std::vector<cvms::detail::ClipPlane> last_misses = {
+      clip_plane(store, {1, 0, 0}, 1), clip_plane(store, {0, 1, 0}, 1), clip_plane(store, {-1, 0, 0}, -2)};
+  std::vector<cvms::detail::ClipPolygon> pieces = {square};
+  cvms::detail::subtract_region(points, pieces, last_misses);
+  ASSERT_EQ(pieces.size(), 1U);
+  EXPECT_EQ(pieces[0], square);
+  EXPECT_EQ(points.size(), 4U);
+  // x >= 1, y >= 1 and x + y <= 2 each cut it, but meet only in the point
+  // (1, 1): the piece stays whole.
+  const std::vector<cvms::detail::ClipPlane> point = {
+      clip_plane(store, {-1, 0, 0}, -1), clip_plane(store, {0, -1, 0}, -1), clip_plane(store, {1, 1, 0}, 2)};
+  cvms::detail::subtract_region(points, pieces, point);
+  ASSERT_EQ(pieces.size(), 1U);
+  EXPECT_EQ(pieces[0], square);
+}
+
 TEST(BoundaryFragments, CubeAlone) {
   const ConvexUnion u({box(0, 0, 0, 1, 2, 3)});
   const BoundaryFragments b = fragments_of(u);
