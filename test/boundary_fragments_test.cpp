@@ -2,6 +2,9 @@
 // The union's boundary as fragments (lib/boundary/boundary_fragments.hpp),
 // checked against independent answers:
 //  - the convex clipping underneath (plane_clip.hpp) on a square, by areas;
+//  - the region one piece takes from a plane (covering_region.hpp) against
+//    its definition, evaluated on every vertex by plain Rational arithmetic,
+//    for planes through facets, edges and vertices and beside them;
 //  - hand-computed areas per oriented plane for unions of boxes that share
 //    facets, overlap, nest, coincide, or touch along an edge or at a vertex;
 //  - exact points: random points of every piece's facets (exact rational
@@ -22,11 +25,14 @@
 #include <deque>
 #include <utility>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "boundary_fragments.hpp"
+#include "covering_region.hpp"
+#include "piece_geometry.hpp"
 #include "plane_clip.hpp"
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
@@ -331,6 +337,73 @@ TEST(PlaneClip, RegionMeetingInZeroAreaLeavesThePieceWhole) {
   cvms::detail::subtract_region(points, pieces, point);
   ASSERT_EQ(pieces.size(), 1U);
   EXPECT_EQ(pieces[0], square);
+}
+
+// The facets of Q that the region C_Q of covering_region.hpp is made of, by
+// its definition with plain Rational arithmetic on every vertex: with Q
+// crossing the plane, or with a facet on it (Q on the outer side, or on
+// the inner side and before P), the facets with corners strictly on both
+// sides or two or more corners, but not all, on the plane; else none
+// (nothing when C_Q is empty).
+std::optional<std::vector<std::uint32_t>> region_by_definition(const ConvexPolyhedron& q, const Vec3& normal,
+                                                              const Rational& offset, bool q_before_p) {
+  const cvms::Mesh& mesh = q.mesh();
+  std::vector<int> sides;
+  for (cvms::VertexId v : mesh.vertices()) sides.push_back(cmp(dot(normal, q.vertex(v)), offset));
+  const bool outer = std::any_of(sides.begin(), sides.end(), [](int s) { return s > 0; });
+  const bool inner = std::any_of(sides.begin(), sides.end(), [](int s) { return s < 0; });
+  const auto on = static_cast<std::size_t>(std::count(sides.begin(), sides.end(), 0));
+  if (!(outer && inner) && !(on >= 3 && (outer || q_before_p))) return std::nullopt;
+  std::vector<std::uint32_t> facets;
+  for (cvms::FaceId f : mesh.faces()) {
+    bool out = false, in = false;
+    std::size_t zeros = 0, corners = 0;
+    for (cvms::HalfedgeId h : mesh.face_halfedges(f)) {
+      const int s = sides[mesh.to(h).index()];
+      out = out || s > 0;
+      in = in || s < 0;
+      zeros += s == 0 ? 1 : 0;
+      ++corners;
+    }
+    if ((out && in) || (zeros >= 2 && zeros < corners)) facets.push_back(f.index());
+  }
+  return facets;
+}
+
+TEST(CoveringRegion, AgreesWithItsDefinition) {
+  // Every facet normal of Q, both ways, with the plane through each vertex
+  // of Q (so through its facets, edges and vertices) and just beside it.
+  for (const ConvexPolyhedron& q : {cvms::shapes::geodesic_sphere(1), cvms::shapes::truncated_cube(),
+                                    cvms::shapes::random_hull(7, 30), cvms::shapes::prism(7, 2)}) {
+    const cvms::detail::PieceGeometry geometry = cvms::detail::piece_geometry(q);
+    std::vector<cvms::Sign> sides;
+    cvms::detail::SectionScratch section;
+    section.start.assign(1, 0);
+    std::vector<cvms::detail::ClipPlane> region;
+    std::deque<TestPlane> store;
+    for (std::uint32_t g = 0; g < geometry.planes.size(); ++g) {
+      for (const int way : {1, -1}) {
+        const Vec3 normal = *geometry.planes[g].normal * Rational(way);
+        for (cvms::VertexId v : q.mesh().vertices()) {
+          for (const Rational& shift : {Rational(0), Rational(1, 1000)}) {
+            const Rational offset = dot(normal, q.vertex(v)) + shift;
+            const cvms::detail::ClipPlane plane = clip_plane(store, normal, offset);
+            for (const bool before : {false, true}) {
+              const auto expected = region_by_definition(q, normal, offset, before);
+              const bool found = cvms::detail::covering_region(geometry, 0, before, plane, sides, section, region);
+              ASSERT_EQ(found, expected.has_value()) << "facet " << g << " way " << way << " vertex " << v.index();
+              std::vector<std::uint32_t> facets;
+              for (const cvms::detail::ClipPlane& r : region)
+                facets.push_back(static_cast<std::uint32_t>(r.normal - geometry.planes[0].normal));
+              if (expected) {
+                EXPECT_EQ(facets, *expected) << "facet " << g << " way " << way << " vertex " << v.index();
+              }
+            }
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST(BoundaryFragments, CubeAlone) {
