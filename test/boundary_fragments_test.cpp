@@ -268,13 +268,18 @@ Rational polygon_area(const cvms::detail::ClipPoints& points, const cvms::detail
   return twice / 2;
 }
 
-TEST(PlaneClip, SplitAndSubtractOnASquare) {
-  // The square [0, 2]^2 of the plane z = 0.
+// The corners of the square [0, 2]^2 of the plane z = 0, counterclockwise.
+cvms::detail::ClipPoints square_corners() {
   cvms::detail::ClipPoints points;
   for (const auto& [x, y] : {std::pair{0, 0}, {2, 0}, {2, 2}, {0, 2}}) {
     const Vec3 p{x, y, 0};
     points.push_back({p, cvms::ApproxVec3::of(p)});
   }
+  return points;
+}
+
+TEST(PlaneClip, SplitAndSubtractOnASquare) {
+  cvms::detail::ClipPoints points = square_corners();
   const cvms::detail::ClipPolygon square = {0, 1, 2, 3};
   std::deque<TestPlane> store;
   // x <= 1/2 cuts it into 1 and 3; x <= 2 leaves it whole inside; x <= 0 has zero area inside.
@@ -313,12 +318,7 @@ TEST(PlaneClip, SplitAndSubtractOnASquare) {
 }
 
 TEST(PlaneClip, RegionMeetingInZeroAreaLeavesThePieceWhole) {
-  // The square [0, 2]^2 of the plane z = 0.
-  cvms::detail::ClipPoints points;
-  for (const auto& [x, y] : {std::pair{0, 0}, {2, 0}, {2, 2}, {0, 2}}) {
-    const Vec3 p{x, y, 0};
-    points.push_back({p, cvms::ApproxVec3::of(p)});
-  }
+  cvms::detail::ClipPoints points = square_corners();
   const cvms::detail::ClipPolygon square = {0, 1, 2, 3};
   std::deque<TestPlane> store;
   // x <= 1 and y <= 1 cut it, x >= 2 holds none of its interior: the piece
