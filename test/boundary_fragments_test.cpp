@@ -370,33 +370,55 @@ std::optional<std::vector<std::uint32_t>> region_by_definition(const ConvexPolyh
   return facets;
 }
 
+// The directions of Q's facets, edges and vertices: each facet's normal,
+// and the sums of the normals of the facets at each edge and at each vertex
+// (inside the edge's or vertex's normal cone, so the supporting plane in
+// that direction touches Q in just that edge or vertex).
+std::vector<Vec3> face_directions(const cvms::detail::PieceGeometry& geometry) {
+  const cvms::Mesh& mesh = geometry.piece->mesh();
+  auto normal = [&](cvms::HalfedgeId h) { return *geometry.planes[mesh.face(h).index()].normal; };
+  std::vector<Vec3> directions;
+  for (const cvms::detail::ClipPlane& plane : geometry.planes) directions.push_back(*plane.normal);
+  for (cvms::FaceId f : mesh.faces())
+    for (cvms::HalfedgeId h : mesh.face_halfedges(f)) directions.push_back(normal(h) + normal(cvms::Mesh::twin(h)));
+  for (cvms::VertexId v : mesh.vertices()) {
+    Vec3 sum{0, 0, 0};
+    for (cvms::HalfedgeId h : mesh.outgoing_halfedges(v)) sum += normal(h);
+    directions.push_back(sum);
+  }
+  return directions;
+}
+
 TEST(CoveringRegion, AgreesWithItsDefinition) {
-  // Every facet normal of Q, both ways, with the plane through each vertex
-  // of Q (so through its facets, edges and vertices) and just beside it.
+  // Every facet, edge and vertex direction of Q, both ways, with the plane
+  // through each vertex of Q (so through its facets, edges and vertices,
+  // crossing Q or touching it) and, for facet normals, just beside it.
   for (const ConvexPolyhedron& q : {cvms::shapes::geodesic_sphere(1), cvms::shapes::truncated_cube(),
                                     cvms::shapes::random_hull(7, 30), cvms::shapes::prism(7, 2)}) {
     const cvms::detail::PieceGeometry geometry = cvms::detail::piece_geometry(q);
+    const std::vector<Vec3> directions = face_directions(geometry);
     std::vector<cvms::Sign> sides;
     cvms::detail::SectionScratch section;
     section.start.assign(1, 0);
     std::vector<cvms::detail::ClipPlane> region;
     std::deque<TestPlane> store;
-    for (std::uint32_t g = 0; g < geometry.planes.size(); ++g) {
+    for (std::size_t d = 0; d < directions.size(); ++d) {
       for (const int way : {1, -1}) {
-        const Vec3 normal = *geometry.planes[g].normal * Rational(way);
+        const Vec3 normal = directions[d] * Rational(way);
         for (cvms::VertexId v : q.mesh().vertices()) {
           for (const Rational& shift : {Rational(0), Rational(1, 1000)}) {
+            if (shift != 0 && d >= geometry.planes.size()) continue;
             const Rational offset = dot(normal, q.vertex(v)) + shift;
             const cvms::detail::ClipPlane plane = clip_plane(store, normal, offset);
             for (const bool before : {false, true}) {
               const auto expected = region_by_definition(q, normal, offset, before);
               const bool found = cvms::detail::covering_region(geometry, 0, before, plane, sides, section, region);
-              ASSERT_EQ(found, expected.has_value()) << "facet " << g << " way " << way << " vertex " << v.index();
+              ASSERT_EQ(found, expected.has_value()) << "direction " << d << " way " << way << " vertex " << v.index();
               std::vector<std::uint32_t> facets;
               for (const cvms::detail::ClipPlane& r : region)
                 facets.push_back(static_cast<std::uint32_t>(r.normal - geometry.planes[0].normal));
               if (expected) {
-                EXPECT_EQ(facets, *expected) << "facet " << g << " way " << way << " vertex " << v.index();
+                EXPECT_EQ(facets, *expected) << "direction " << d << " way " << way << " vertex " << v.index();
               }
             }
           }

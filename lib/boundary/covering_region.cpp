@@ -61,6 +61,22 @@ bool region_of_facet_in_plane(const PieceGeometry& q_geometry, FaceId g, bool q_
   return true;
 }
 
+// Whether Q has vertices strictly on both sides of the plane, decided at
+// its vertex v on the plane: Q lies in v + the cone of the edges leaving v
+// (the tangent cone of a convex polytope at a vertex is spanned by its
+// edges), so a vertex of Q strictly on one side makes some edge leaving v
+// go strictly to that side, and v has a neighbour there.
+bool crosses_at(SectionScratch& section, const ConvexPolyhedron& q, VertexId v, const ClipPlane& plane) {
+  bool outer = false;
+  bool inner = false;
+  for (HalfedgeId out : q.mesh().outgoing_halfedges(v)) {
+    const Sign s = walked_side(section, q, q.mesh().to(out), plane);
+    outer = outer || s == Sign::positive;
+    inner = inner || s == Sign::negative;
+  }
+  return outer && inner;
+}
+
 }  // namespace
 
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, bool q_before_p, const ClipPlane& plane,
@@ -84,6 +100,9 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
   if (section.met.is_valid()) {
     if (const std::optional<FaceId> g = facet_in_plane(section, q, section.met, plane))
       return region_of_facet_in_plane(q_geometry, *g, q_before_p, plane, section, region);
+    // Q on one side, touching the plane in no facet: in an edge or a
+    // vertex, which covers nothing.
+    if (!crosses_at(section, q, section.met, plane)) return false;
   }
   sides.resize(q.num_vertices());
   bool any_outer = false;
