@@ -2,6 +2,9 @@
 // The union's boundary as fragments (lib/boundary/boundary_fragments.hpp),
 // checked against independent answers:
 //  - the convex clipping underneath (plane_clip.hpp) on a square, by areas;
+//  - the region one piece takes from a plane (covering_region.hpp) against
+//    its definition, evaluated on every vertex by plain Rational arithmetic,
+//    for planes through facets, edges and vertices and beside them;
 //  - hand-computed areas per oriented plane for unions of boxes that share
 //    facets, overlap, nest, coincide, or touch along an edge or at a vertex;
 //  - exact points: random points of every piece's facets (exact rational
@@ -22,11 +25,14 @@
 #include <deque>
 #include <utility>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "boundary_fragments.hpp"
+#include "covering_region.hpp"
+#include "piece_geometry.hpp"
 #include "plane_clip.hpp"
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
@@ -262,13 +268,18 @@ Rational polygon_area(const cvms::detail::ClipPoints& points, const cvms::detail
   return twice / 2;
 }
 
-TEST(PlaneClip, SplitAndSubtractOnASquare) {
-  // The square [0, 2]^2 of the plane z = 0.
+// The corners of the square [0, 2]^2 of the plane z = 0, counterclockwise.
+cvms::detail::ClipPoints square_corners() {
   cvms::detail::ClipPoints points;
   for (const auto& [x, y] : {std::pair{0, 0}, {2, 0}, {2, 2}, {0, 2}}) {
     const Vec3 p{x, y, 0};
     points.push_back({p, cvms::ApproxVec3::of(p)});
   }
+  return points;
+}
+
+TEST(PlaneClip, SplitAndSubtractOnASquare) {
+  cvms::detail::ClipPoints points = square_corners();
   const cvms::detail::ClipPolygon square = {0, 1, 2, 3};
   std::deque<TestPlane> store;
   // x <= 1/2 cuts it into 1 and 3; x <= 2 leaves it whole inside; x <= 0 has zero area inside.
@@ -304,6 +315,117 @@ TEST(PlaneClip, SplitAndSubtractOnASquare) {
       clip_plane(store, {0, 1, 0}, 3)};
   cvms::detail::subtract_region(points, pieces, around);
   EXPECT_TRUE(pieces.empty());
+}
+
+TEST(PlaneClip, RegionMeetingInZeroAreaLeavesThePieceWhole) {
+  cvms::detail::ClipPoints points = square_corners();
+  const cvms::detail::ClipPolygon square = {0, 1, 2, 3};
+  std::deque<TestPlane> store;
+  // x <= 1 and y <= 1 cut it, x >= 2 holds none of its interior: the piece
+  // stays whole, and no crossing point is made.
+  const std::vector<cvms::detail::ClipPlane> last_misses = {
+      clip_plane(store, {1, 0, 0}, 1), clip_plane(store, {0, 1, 0}, 1), clip_plane(store, {-1, 0, 0}, -2)};
+  std::vector<cvms::detail::ClipPolygon> pieces = {square};
+  cvms::detail::subtract_region(points, pieces, last_misses);
+  ASSERT_EQ(pieces.size(), 1U);
+  EXPECT_EQ(pieces[0], square);
+  EXPECT_EQ(points.size(), 4U);
+  // x >= 1, y >= 1 and x + y <= 2 each cut it, but meet only in the point
+  // (1, 1): the piece stays whole.
+  const std::vector<cvms::detail::ClipPlane> point = {
+      clip_plane(store, {-1, 0, 0}, -1), clip_plane(store, {0, -1, 0}, -1), clip_plane(store, {1, 1, 0}, 2)};
+  cvms::detail::subtract_region(points, pieces, point);
+  ASSERT_EQ(pieces.size(), 1U);
+  EXPECT_EQ(pieces[0], square);
+}
+
+// The facets of Q that the region C_Q of covering_region.hpp is made of, by
+// its definition with plain Rational arithmetic on every vertex: with Q
+// crossing the plane, or with a facet on it (Q on the outer side, or on
+// the inner side and before P), the facets with corners strictly on both
+// sides or two or more corners, but not all, on the plane; else none
+// (nothing when C_Q is empty).
+std::optional<std::vector<std::uint32_t>> region_by_definition(const ConvexPolyhedron& q, const Vec3& normal,
+                                                              const Rational& offset, bool q_before_p) {
+  const cvms::Mesh& mesh = q.mesh();
+  std::vector<int> sides;
+  for (cvms::VertexId v : mesh.vertices()) sides.push_back(cmp(dot(normal, q.vertex(v)), offset));
+  const bool outer = std::any_of(sides.begin(), sides.end(), [](int s) { return s > 0; });
+  const bool inner = std::any_of(sides.begin(), sides.end(), [](int s) { return s < 0; });
+  const auto on = static_cast<std::size_t>(std::count(sides.begin(), sides.end(), 0));
+  if (!(outer && inner) && !(on >= 3 && (outer || q_before_p))) return std::nullopt;
+  std::vector<std::uint32_t> facets;
+  for (cvms::FaceId f : mesh.faces()) {
+    bool out = false, in = false;
+    std::size_t zeros = 0, corners = 0;
+    for (cvms::HalfedgeId h : mesh.face_halfedges(f)) {
+      const int s = sides[mesh.to(h).index()];
+      out = out || s > 0;
+      in = in || s < 0;
+      zeros += s == 0 ? 1 : 0;
+      ++corners;
+    }
+    if ((out && in) || (zeros >= 2 && zeros < corners)) facets.push_back(f.index());
+  }
+  return facets;
+}
+
+// The directions of Q's facets, edges and vertices: each facet's normal,
+// and the sums of the normals of the facets at each edge and at each vertex
+// (inside the edge's or vertex's normal cone, so the supporting plane in
+// that direction touches Q in just that edge or vertex).
+std::vector<Vec3> face_directions(const cvms::detail::PieceGeometry& geometry) {
+  const cvms::Mesh& mesh = geometry.piece->mesh();
+  auto normal = [&](cvms::HalfedgeId h) { return *geometry.planes[mesh.face(h).index()].normal; };
+  std::vector<Vec3> directions;
+  for (const cvms::detail::ClipPlane& plane : geometry.planes) directions.push_back(*plane.normal);
+  for (cvms::FaceId f : mesh.faces())
+    for (cvms::HalfedgeId h : mesh.face_halfedges(f)) directions.push_back(normal(h) + normal(cvms::Mesh::twin(h)));
+  for (cvms::VertexId v : mesh.vertices()) {
+    Vec3 sum{0, 0, 0};
+    for (cvms::HalfedgeId h : mesh.outgoing_halfedges(v)) sum += normal(h);
+    directions.push_back(sum);
+  }
+  return directions;
+}
+
+TEST(CoveringRegion, AgreesWithItsDefinition) {
+  // Every facet, edge and vertex direction of Q, both ways, with the plane
+  // through each vertex of Q (so through its facets, edges and vertices,
+  // crossing Q or touching it) and, for facet normals, just beside it.
+  for (const ConvexPolyhedron& q : {cvms::shapes::geodesic_sphere(1), cvms::shapes::truncated_cube(),
+                                    cvms::shapes::random_hull(7, 30), cvms::shapes::prism(7, 2)}) {
+    const cvms::detail::PieceGeometry geometry = cvms::detail::piece_geometry(q);
+    const std::vector<Vec3> directions = face_directions(geometry);
+    std::vector<cvms::Sign> sides;
+    cvms::detail::SectionScratch section;
+    section.start.assign(1, 0);
+    std::vector<cvms::detail::ClipPlane> region;
+    std::deque<TestPlane> store;
+    for (std::size_t d = 0; d < directions.size(); ++d) {
+      for (const int way : {1, -1}) {
+        const Vec3 normal = directions[d] * Rational(way);
+        for (cvms::VertexId v : q.mesh().vertices()) {
+          for (const Rational& shift : {Rational(0), Rational(1, 1000)}) {
+            if (shift != 0 && d >= geometry.planes.size()) continue;
+            const Rational offset = dot(normal, q.vertex(v)) + shift;
+            const cvms::detail::ClipPlane plane = clip_plane(store, normal, offset);
+            for (const bool before : {false, true}) {
+              const auto expected = region_by_definition(q, normal, offset, before);
+              const bool found = cvms::detail::covering_region(geometry, 0, before, plane, sides, section, region);
+              ASSERT_EQ(found, expected.has_value()) << "direction " << d << " way " << way << " vertex " << v.index();
+              std::vector<std::uint32_t> facets;
+              for (const cvms::detail::ClipPlane& r : region)
+                facets.push_back(static_cast<std::uint32_t>(r.normal - geometry.planes[0].normal));
+              if (expected) {
+                EXPECT_EQ(facets, *expected) << "direction " << d << " way " << way << " vertex " << v.index();
+              }
+            }
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST(BoundaryFragments, CubeAlone) {

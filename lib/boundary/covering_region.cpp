@@ -2,12 +2,82 @@
 // See covering_region.hpp.
 #include "covering_region.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 
 #include "cvms/rational.hpp"
 
 namespace cvms::detail {
+namespace {
+
+// A facet of Q around vertex v (on the plane) with every corner on the
+// plane, if there is one: then the plane is that facet's.
+std::optional<FaceId> facet_in_plane(SectionScratch& section, const ConvexPolyhedron& q, VertexId v,
+                                     const ClipPlane& plane) {
+  const Mesh& mesh = q.mesh();
+  for (HalfedgeId out : mesh.outgoing_halfedges(v)) {
+    const FaceId g = mesh.face(out);
+    bool all_on = true;
+    for (HalfedgeId h : mesh.face_halfedges(g)) {
+      if (walked_side(section, q, mesh.to(h), plane) != Sign::zero) {
+        all_on = false;
+        break;
+      }
+    }
+    if (all_on) return g;
+  }
+  return std::nullopt;
+}
+
+// covering_region when the plane h is that of a facet g of Q, found with no
+// test of Q's other vertices. Q lies on one side of h, the side of any vertex
+// off h; the vertices on h are exactly g's corners (each is a point of
+// Q ∩ h = g and extreme in Q, so extreme in g); a facet other than g with
+// two corners on h holds the segment between them, a common edge with g,
+// and none has three (it would lie in h). So the facets with corners
+// strictly on both sides or two or more on h, short of all, are those
+// across g's edges: the region the full test finds.
+bool region_of_facet_in_plane(const PieceGeometry& q_geometry, FaceId g, bool q_before_p, const ClipPlane& plane,
+                              SectionScratch& section, std::vector<ClipPlane>& region) {
+  const ConvexPolyhedron& q = *q_geometry.piece;
+  const Mesh& mesh = q.mesh();
+  // The corner of g's first halfedge has an edge leaving g (every vertex
+  // has three or more), which ends off h.
+  const VertexId corner = mesh.to(mesh.halfedge(g));
+  Sign q_side = Sign::zero;
+  for (HalfedgeId out : mesh.outgoing_halfedges(corner)) {
+    q_side = walked_side(section, q, mesh.to(out), plane);
+    if (q_side != Sign::zero) break;
+  }
+  // On the inner side, g faces the same way as the facet on h: the piece
+  // of smaller index keeps that stretch of boundary.
+  if (q_side != Sign::positive && !q_before_p) return false;
+  std::vector<std::uint32_t>& across = section.facets;
+  across.clear();
+  for (HalfedgeId h : mesh.face_halfedges(g)) across.push_back(mesh.face(Mesh::twin(h)).index());
+  std::sort(across.begin(), across.end());
+  for (const std::uint32_t f : across) region.push_back(q_geometry.planes[f]);
+  return true;
+}
+
+// Whether Q has vertices strictly on both sides of the plane, decided at
+// its vertex v on the plane: Q lies in v + the cone of the edges leaving v
+// (the tangent cone of a convex polytope at a vertex is spanned by its
+// edges), so a vertex of Q strictly on one side makes some edge leaving v
+// go strictly to that side, and v has a neighbour there.
+bool crosses_at(SectionScratch& section, const ConvexPolyhedron& q, VertexId v, const ClipPlane& plane) {
+  bool outer = false;
+  bool inner = false;
+  for (HalfedgeId out : q.mesh().outgoing_halfedges(v)) {
+    const Sign s = walked_side(section, q, q.mesh().to(out), plane);
+    outer = outer || s == Sign::positive;
+    inner = inner || s == Sign::negative;
+  }
+  return outer && inner;
+}
+
+}  // namespace
 
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region) {
@@ -27,6 +97,13 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
     return true;
   }
   const ConvexPolyhedron& q = *q_geometry.piece;
+  if (section.met.is_valid()) {
+    if (const std::optional<FaceId> g = facet_in_plane(section, q, section.met, plane))
+      return region_of_facet_in_plane(q_geometry, *g, q_before_p, plane, section, region);
+    // Q on one side, touching the plane in no facet: in an edge or a
+    // vertex, which covers nothing.
+    if (!crosses_at(section, q, section.met, plane)) return false;
+  }
   sides.resize(q.num_vertices());
   bool any_outer = false;
   bool any_inner = false;

@@ -36,7 +36,12 @@ namespace cvms::detail {
 /// facet's own half-space) of a piece with index p, Q having index q != p,
 /// and returns true; false (region left empty) if C_Q is empty. The planes
 /// come in the order of Q's facets. Tries a walk round the section first
-/// (section_walk.hpp), and tests every vertex of Q when it gives up.
+/// (section_walk.hpp). When the walk gives up at a vertex on the plane that
+/// is a corner of a facet of Q lying in the plane (neighbouring pieces often
+/// share planes), C_Q is read off that facet: the facets across its edges;
+/// when no neighbour of that vertex is strictly on each side, Q does not
+/// cross the plane and touches it in no facet, so C_Q is empty. Otherwise
+/// every vertex of Q is tested.
 /// `sides` and `section` are scratch space.
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);

@@ -4,7 +4,10 @@
 
 #include "polyhedron_access.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 namespace cvms::detail {
 namespace {
@@ -24,6 +27,28 @@ std::vector<ClipPoint> box_corners(const unions::OutwardBox& box) {
   return corners;
 }
 
+// The box of vertex v from its cached approximation, with no exact
+// arithmetic: each coordinate lies within `error` of `value`, and value -
+// error and value + error, each rounded to nearest and then stepped one
+// double outward, bound that interval (a correctly rounded result r of x
+// has x between r's neighbours). Exact coordinates (error 0) give the same
+// box as point_box; the others a box a few units in the last place wider,
+// which only prunes a little less. An approximation that is not finite
+// falls back to point_box.
+unions::OutwardBox vertex_box(const ConvexPolyhedron& piece, VertexId v) {
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  const ApproxVec3& approx = PolyhedronAccess::vertex_approx(piece, v);
+  unions::OutwardBox box;
+  const std::array<const Approx*, 3> coordinates = {&approx.x, &approx.y, &approx.z};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Approx& c = *coordinates[k];
+    if (!std::isfinite(c.value) || !std::isfinite(c.error)) return unions::point_box(piece.vertex(v));
+    box.lo[k] = c.error == 0 ? c.value : std::nextafter(c.value - c.error, -infinity);
+    box.hi[k] = c.error == 0 ? c.value : std::nextafter(c.value + c.error, infinity);
+  }
+  return box;
+}
+
 }  // namespace
 
 PieceGeometry piece_geometry(const ConvexPolyhedron& piece) {
@@ -33,7 +58,7 @@ PieceGeometry piece_geometry(const ConvexPolyhedron& piece) {
   const std::span<const Vec3> normals = planes.exact_normals();
   std::vector<unions::OutwardBox> vertex_boxes;
   vertex_boxes.reserve(piece.num_vertices());
-  for (VertexId v : piece.mesh().vertices()) vertex_boxes.push_back(unions::point_box(piece.vertex(v)));
+  for (VertexId v : piece.mesh().vertices()) vertex_boxes.push_back(vertex_box(piece, v));
   g.box = vertex_boxes.front();
   for (const unions::OutwardBox& b : vertex_boxes) g.box = unions::merged(g.box, b);
   g.box_corners = box_corners(g.box);

@@ -2,7 +2,8 @@
 // What the union's boundary reads of each piece, gathered once before the
 // pieces are shared among threads: the facets' planes as cutting planes
 // (exact integer normal and offset, with their approximations), the facets'
-// corner cycles, and outward-rounded boxes of the piece and of each facet
+// corner cycles, and outward-rounded boxes of the piece and of each facet,
+// read off the vertices' cached approximations,
 // for the box hierarchy.
 #pragma once
 

@@ -75,11 +75,28 @@ SplitPolygon split(ClipPoints& points, const ClipPolygon& polygon, const ClipPla
 }
 
 namespace {
+// True if some half-space of the region has every corner of the piece on
+// or outside its plane: the region then meets the piece in zero area. Tested
+// on the whole piece before any cut, as a cut made before that half-space is
+// reached would be thrown away with its crossing points.
+bool misses_region(const ClipPoints& points, const ClipPolygon& piece, const std::vector<ClipPlane>& region) {
+  for (const ClipPlane& plane : region) {
+    bool any_inside = false;
+    for (std::size_t i = 0; i < piece.size() && !any_inside; ++i)
+      any_inside = side(points[piece[i]], plane) == Sign::negative;
+    if (!any_inside) return true;
+  }
+  return false;
+}
 
 // Appends to `out` the parts of `piece` outside the region, or the piece
 // itself if it meets the region in zero area. `sides` is scratch space.
 void subtract_from(ClipPoints& points, ClipPolygon&& piece, const std::vector<ClipPlane>& region,
                    std::vector<ClipPolygon>& out, std::vector<Sign>& sides) {
+  if (misses_region(points, piece, region)) {
+    out.push_back(std::move(piece));
+    return;
+  }
   const std::size_t first = out.size();
   ClipPolygon left;  // the part inside the planes seen so far, once cut
   bool cut = false;

@@ -22,6 +22,7 @@ class SectionWalk {
       std::fill(scratch_.stamps.begin(), scratch_.stamps.end(), 0);
       scratch_.stamp = 1;
     }
+    scratch_.met = VertexId();
   }
 
   // The side of v, evaluated once per walk.
@@ -32,14 +33,14 @@ class SectionWalk {
   // nothing if a vertex on the plane was met.
   std::optional<HalfedgeId> crossing_edge(VertexId v) {
     const int sv = side_of(v);
-    if (sv == 0) return std::nullopt;
+    if (sv == 0) return met(v);
     const Vec3Ref normal{*plane_.normal, *plane_.normal_approx};
     for (std::uint32_t steps = 0; steps <= q_.num_vertices(); ++steps) {
       VertexId nearer;
       for (HalfedgeId h : mesh_.outgoing_halfedges(v)) {
         const VertexId u = mesh_.to(h);
         const int su = side_of(u);
-        if (su == 0) return std::nullopt;
+        if (su == 0) return met(u);
         if (su != sv) return sv < 0 ? h : Mesh::twin(h);
         // Inside (sv < 0): nearer means farther along the normal.
         if (!nearer.is_valid() &&
@@ -63,7 +64,10 @@ class SectionWalk {
       for (HalfedgeId h = mesh_.next(e); h != e; h = mesh_.next(h)) {
         const int from = side_of(mesh_.from(h));
         const int to = side_of(mesh_.to(h));
-        if (from == 0 || to == 0) return false;
+        if (from == 0 || to == 0) {
+          met(from == 0 ? mesh_.from(h) : mesh_.to(h));
+          return false;
+        }
         if (from > 0 && to < 0) out = h;
       }
       if (!out.is_valid()) return false;
@@ -77,6 +81,12 @@ class SectionWalk {
   }
 
  private:
+  // Remembers v, a vertex on the plane, for the caller; gives up the walk.
+  std::nullopt_t met(VertexId v) {
+    scratch_.met = v;
+    return std::nullopt;
+  }
+
   const ConvexPolyhedron& q_;
   const Mesh& mesh_;
   const ClipPlane& plane_;

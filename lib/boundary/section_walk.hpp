@@ -34,12 +34,14 @@ struct SectionScratch {
   std::uint32_t stamp = 0;
   std::vector<std::uint32_t> start;    // per piece: a vertex next to its last section
   std::vector<std::uint32_t> facets;   // the answer
+  VertexId met;                        // a vertex on the plane that made the walk give up, if one did
 };
 
 /// For piece `piece_index` (q_geometry): false if every vertex is strictly
 /// on one side of the plane; true if the plane cuts through it, with the
 /// facets that have corners strictly on both sides in scratch.facets, in
-/// increasing order; nothing if the walk met a vertex on the plane.
+/// increasing order; nothing if the walk met a vertex on the plane (then
+/// in scratch.met) or gave up otherwise (scratch.met invalid).
 std::optional<bool> walk_section(const PieceGeometry& q_geometry, std::uint32_t piece_index, const ClipPlane& plane,
                                  SectionScratch& scratch);
 
