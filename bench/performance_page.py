@@ -622,6 +622,17 @@ def profile_section(page, path, table):
         "in every form (the rows' `exact_share` counter is the same for the three forms). GMP's own code "
         f"is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's samples, "
         f"against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
+    page.para(
+        "6-digit decimals share one denominator, 10^6: each operand is scaled once, on first use, to machine "
+        "integers over it (`lib/numeric/word_scaled.cpp`, whenever the common denominator is below 2^63 and the "
+        "scaled coordinates below 2^61), the sum's vertices are 128-bit integers over the product or common "
+        "denominator (`ScaledPoints`, `lib/numeric/scaled_points.cpp`, with `Approx::of`'s doubles read off the "
+        "integers; the canonical rationals are made only when read) and the edge directions differences of the "
+        f"operands' integers: {forms[2][0] / forms[0][0]:.2f}× the dyadic sum, the output build "
+        f"{fmt_ms(ms[(build, 'six_digits')])} ms against {fmt_ms(ms[(build, 'dyadic')])} ms. Shortest "
+        "round-trip decimals do not fit: a coordinate below 0.01 in magnitude keeps 17 significant digits, "
+        "so its denominator is 10^19 or more, beyond 2^63, and the operand's common denominator with it; "
+        "such operands keep the paths above until fixed two-word integers carry them.")
 
 
 def load_forms_section(page, path):

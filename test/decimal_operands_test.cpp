@@ -4,7 +4,8 @@
 // decimals, 6 decimals, 18 decimals (a common denominator 10^18, just below
 // 2^63, where machine-word directions still apply) and 19 (10^19, just
 // beyond, where the general rational path takes over), and one operand of
-// each kind mixed. Each sum is checked against an independent oracle: the
+// each kind mixed, and rationals over denominators at the word-size bounds
+// of the integer paths. Each sum is checked against an independent oracle: the
 // exact hull of the pairwise vertex sums (vertices and facet planes), the
 // sum's stored facet normals against primitive normals worked out here in
 // plain rationals from each facet's vertices, and the written bytes against
@@ -135,6 +136,43 @@ TEST(DecimalOperands, MixedDyadicAndDecimalOperands) {
     check_sum(in_form(a, form), b, std::string(name(form)) + " + dyadic");
   }
   check_sum(in_form(a, Form::shortest), in_form(b, Form::six_digits), "shortest + 6 digits");
+}
+
+// The vertices of p times s, each coordinate rounded to the nearest multiple
+// of 1 / q (ties up).
+std::vector<Vec3> on_grid(const ConvexPolyhedron& p, const Rational& s, const mpz_class& q) {
+  std::vector<Vec3> out;
+  for (const Vec3& v : points(p)) {
+    Vec3& w = out.emplace_back();
+    for (int k = 0; k < 3; ++k) {
+      const Rational x = v[k] * s;
+      mpz_class n = 2 * x.get_num() * q + x.get_den();
+      mpz_fdiv_q(n.get_mpz_t(), n.get_mpz_t(), mpz_class(2 * x.get_den()).get_mpz_t());
+      w[k] = Rational(n, q);
+      w[k].canonicalize();
+    }
+  }
+  return out;
+}
+
+// Operands whose coordinates are rationals over denominators at the
+// word-size bounds of the integer paths and just past them: the common
+// denominator below 2^63 (10^18, 2^62, 2^63 - 1) and not (2^63, 2^63 + 1,
+// 10^19), alone and mixed (2^61 with 10^17: sums of about 120 bits), and
+// small rationals (thirds, 1 / 231).
+TEST(DecimalOperands, RationalGridsAtTheWordSizeBounds) {
+  const mpz_class two = 2;
+  const mpz_class ten18("1000000000000000000"), ten17("100000000000000000"), ten19("10000000000000000000");
+  const mpz_class two61 = two << 60, two62 = two << 61, two63 = two << 62;
+  const std::pair<mpz_class, mpz_class> denominators[] = {
+      {ten18, ten18},         {two62, ten18}, {two63 - 1, two63 - 1}, {two63 - 1, ten17}, {two63, ten17},
+      {two63 + 1, two63 + 1}, {ten19, 1000000}, {two61, ten17},      {3, 231},           {231, 1000000}};
+  const ConvexPolyhedron a = shapes::geodesic_sphere(2), b = shapes::rotated_geodesic_sphere(2);
+  const Rational fifth(1, 5);  // coordinates below 2^61 / 2^63 in magnitude
+  for (const auto& [qa, qb] : denominators) {
+    const ConvexPolyhedron ga = convex_hull(on_grid(a, fifth, qa)), gb = convex_hull(on_grid(b, fifth, qb));
+    check_sum(ga, gb, "grids 1/" + qa.get_str() + " and 1/" + qb.get_str());
+  }
 }
 
 // Loaded operands make their facet planes on first use; the fast path for

@@ -8,14 +8,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <system_error>
 #include <thread>
 
+#include "cvms/convex_hull.hpp"
 #include "cvms/minkowski.hpp"
 #include "cvms/shapes.hpp"
 #include "cvms_algorithm.hpp"
+#include "packed_vectors.hpp"
 #include "polyhedron_builder.hpp"
 #include "research_options.hpp"
 #include "support/oracle.hpp"
@@ -70,6 +74,39 @@ TEST(Stitch, OutputApproximationsAndPlanesAreExact) {
         ASSERT_EQ(dot(n, s.vertex(s.mesh().from(h))), s.plane_offset(f)) << "facet " << f.index();
     }
     EXPECT_TRUE(s.is_convex()) << "case " << (&a - &cases[0].first);
+  }
+}
+
+// Operands of decimals or small rationals give a sum whose vertices are
+// integers over one denominator (scaled_points.hpp); operands of doubles
+// keep the packed dyadic vertices. The values are the exact pairwise sums.
+TEST(Stitch, DecimalOperandsGiveScaledVertices) {
+  const ConvexPolyhedron third = shapes::cube().transformed(scaling(Rational(1, 3)), Vec3{0, 0, 0});
+  std::vector<Vec3> six_digits;  // a sphere's vertices with 6 decimals, as scanners write them
+  const ConvexPolyhedron round = shapes::geodesic_sphere(2);
+  for (const Vec3& v : round.mesh().positions()) {
+    Vec3& w = six_digits.emplace_back();
+    for (int k = 0; k < 3; ++k) w[k] = Rational(std::lround(v[k].get_d() * 1e6), 1000000);
+    for (int k = 0; k < 3; ++k) w[k].canonicalize();
+  }
+  const ConvexPolyhedron tenth = convex_hull(six_digits);
+  const ConvexPolyhedron sphere = shapes::rotated_geodesic_sphere(2);
+  const auto kept_scaled = [](const ConvexPolyhedron& p) {
+    const MeshAccess::Storage* s = MeshAccess::storage(p.mesh());
+    return s != nullptr && s->packed_positions != nullptr && s->packed_positions->is_scaled();
+  };
+  for (unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(threads);
+    Options options;
+    options.threads = threads;
+    EXPECT_TRUE(kept_scaled(minkowski_sum(third, tenth, options).polyhedron));
+    EXPECT_TRUE(kept_scaled(minkowski_sum(tenth, sphere, options).polyhedron) ||
+                PolyhedronAccess::scaled_vertices(sphere) == nullptr);
+    EXPECT_FALSE(kept_scaled(minkowski_sum(sphere, shapes::geodesic_sphere(2), options).polyhedron));
+    const ConvexPolyhedron s = minkowski_sum(third, tenth, options).polyhedron;
+    const std::vector<Vec3> expected = test::pairwise_sums(third.mesh().positions(), tenth.mesh().positions());
+    for (VertexId v : s.mesh().vertices())
+      ASSERT_NE(std::find(expected.begin(), expected.end(), s.vertex(v)), expected.end()) << v.index();
   }
 }
 

@@ -416,7 +416,7 @@ Mesh MeshAccess::from_distinct_points(PolygonSoup faces, std::shared_ptr<const d
                                       const std::shared_ptr<detail::ResultSlab>& slab) {
   if (!faces.points.empty())
     throw Error(ErrorCategory::invalid_argument, "from_soup: packed positions come with a soup without points");
-  const std::size_t n = positions->packed().size();
+  const std::size_t n = positions->size();
   return build(std::move(faces), false, n, std::move(positions), slab);
 }
 
@@ -520,7 +520,7 @@ void Mesh::validate() const {
   if (nh % 2 != 0 || s.he_next.size() != nh || s.he_prev.size() != nh || s.he_face.size() != nh)
     fail("validate: halfedge arrays have inconsistent sizes");
   const std::size_t num_points =
-      s.packed_positions == nullptr ? s.positions.size() : s.packed_positions->packed().size();
+      s.packed_positions == nullptr ? s.positions.size() : s.packed_positions->size();
   if (s.vertex_he.size() != num_points) fail("validate: vertex arrays have inconsistent sizes");
   if (nh >= no_index || num_points >= no_index || s.face_he.size() >= no_index)
     fail("validate: element counts exceed 32-bit handles");

@@ -91,7 +91,9 @@ struct MeshAccess {
   /// what the library's own readers take instead of making Vec3s.
   [[nodiscard]] static const detail::DyadicPoints* packed_positions(const Mesh& m) noexcept {
     const Mesh::Storage* s = m.storage_.get();
-    return s == nullptr || s->packed_positions == nullptr ? nullptr : &s->packed_positions->packed();
+    return s == nullptr || s->packed_positions == nullptr || s->packed_positions->is_scaled()
+               ? nullptr
+               : &s->packed_positions->packed();
   }
   /// to(h) is halfedge_targets(m)[h]: for loops that fetch it ahead.
   [[nodiscard]] static const VertexId* halfedge_targets(const Mesh& m) noexcept { return m.he_to_; }

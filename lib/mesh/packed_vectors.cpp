@@ -10,8 +10,14 @@ void PackedVectors::make_vectors() const {
   // allocates), each denominator's heap limb given back as soon as it is
   // made, so that the whole array reuses one heap block.
   std::vector<Vec3> vectors;
-  vectors.reserve(packed_.size());
+  vectors.reserve(size());
   LimbArena limbs;
+  if (is_scaled_) {
+    for (std::size_t j = 0; j < scaled_.size(); ++j) {
+      Vec3& v = vectors.emplace_back();
+      for (int axis = 0; axis < 3; ++axis) scaled_.store(j, axis, limbs, v[axis]);
+    }
+  }
   for (std::size_t j = 0; j < packed_.size(); ++j) {
     Vec3& v = vectors.emplace_back();
     for (int axis = 0; axis < 3; ++axis) {

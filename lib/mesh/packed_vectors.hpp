@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Exact vectors kept packed (dyadic_points.hpp) and made into Vec3s only when
+// Exact vectors kept packed (dyadic_points.hpp, or integers over one common
+// denominator: scaled_points.hpp) and made into Vec3s only when
 // a caller first asks for them: a sum's vertex positions (Mesh) and facet normals
 // (FacetPlanes).
 //
@@ -17,18 +18,28 @@
 
 #include "cvms/vec.hpp"
 #include "dyadic_points.hpp"
+#include "scaled_points.hpp"
 
 namespace cvms::detail {
 
 class PackedVectors {
  public:
   explicit PackedVectors(DyadicPoints vectors) noexcept : packed_(std::move(vectors)) {}
+  /// Vectors kept as integers over one common denominator.
+  explicit PackedVectors(ScaledPoints vectors) noexcept : scaled_(std::move(vectors)), is_scaled_(true) {}
   PackedVectors(const PackedVectors&) = delete;
   PackedVectors& operator=(const PackedVectors&) = delete;
 
+  /// The number of vectors, in either form.
+  [[nodiscard]] std::size_t size() const noexcept { return is_scaled_ ? scaled_.size() : packed_.size(); }
+  /// Whether the vectors are kept as ScaledPoints (then packed() is empty).
+  [[nodiscard]] bool is_scaled() const noexcept { return is_scaled_; }
   [[nodiscard]] const DyadicPoints& packed() const noexcept { return packed_; }
   /// For the builder that sized the points, before any reader sees them.
   [[nodiscard]] DyadicPoints& packed_for_writing() noexcept { return packed_; }
+  /// The scaled form, as packed() and packed_for_writing().
+  [[nodiscard]] const ScaledPoints& scaled() const noexcept { return scaled_; }
+  [[nodiscard]] ScaledPoints& scaled_for_writing() noexcept { return scaled_; }
   /// The positions as Vec3s, made on the first call.
   /// \throw std::bad_alloc then, if memory runs out (a later call tries again).
   /// Their numerators, and their denominators past one limb, are views of
@@ -45,6 +56,8 @@ class PackedVectors {
   void make_vectors() const;
 
   DyadicPoints packed_;
+  ScaledPoints scaled_;
+  bool is_scaled_ = false;
   mutable std::once_flag made_;
   // Declared before the values so that it outlives them.
   mutable LimbArena made_limbs_;

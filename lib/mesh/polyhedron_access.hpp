@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 #include "approx.hpp"
@@ -16,6 +17,7 @@
 #include "facet_planes.hpp"
 #include "limb_arena.hpp"
 #include "mesh_access.hpp"
+#include "word_scaled.hpp"
 
 namespace cvms {
 
@@ -57,6 +59,11 @@ struct ConvexPolyhedron::Impl {
   /// without a call or a lock. Written by whichever reader made them; every
   /// writer writes the same pointer.
   std::atomic<const detail::FacetPlanes*> planes_made{nullptr};
+  /// The vertices as integers over their common denominator
+  /// (word_scaled.hpp), made on first use by whichever reader asks first;
+  /// nullopt when they do not fit machine words.
+  std::optional<detail::WordScaledPoints> scaled;
+  std::once_flag scaled_made;
 };
 
 /// The library's access to ConvexPolyhedron's private parts (see the file
@@ -86,6 +93,14 @@ struct PolyhedronAccess {
   /// The offsets if they are made already (one per facet), else null: what a
   /// derived polyhedron can reuse without making them.
   [[nodiscard]] static const Rational* made_offsets(const ConvexPolyhedron& p) noexcept;
+  /// The vertices as machine integers over their common denominator, made
+  /// on the first call; null when they do not fit (or p is empty).
+  [[nodiscard]] static const detail::WordScaledPoints* scaled_vertices(const ConvexPolyhedron& p) {
+    ConvexPolyhedron::Impl* impl = p.impl_.get();
+    if (impl == nullptr) return nullptr;
+    std::call_once(impl->scaled_made, [&] { impl->scaled = detail::scale_to_words(p.mesh().positions()); });
+    return impl->scaled ? &*impl->scaled : nullptr;
+  }
 
  private:
   static const detail::FacetPlanes& make_planes(const ConvexPolyhedron& p);

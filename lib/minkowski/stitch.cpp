@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <latch>
+#include <numeric>
 #include <limits>
 #include <span>
 #include <system_error>
@@ -20,7 +21,9 @@
 #include "first_use.hpp"
 #include "polyhedron_builder.hpp"
 #include "prefetch_exact.hpp"
+#include "scaled_points.hpp"
 #include "small_direction.hpp"
+#include "word_scaled.hpp"
 #include "worker.hpp"
 
 namespace cvms::detail {
@@ -160,10 +163,24 @@ class EdgeDirections {
   }
 
   // The direction of e's even halfedge from the exact ends, as fractions over
-  // their common denominator, when that fits machine words.
-  [[nodiscard]] std::optional<SmallDirection> fraction_direction(EdgeId e) const {
+  // their common denominator, when that fits machine words: the difference
+  // of the ends' integers over the operand's common denominator
+  // (word_scaled.hpp, made once per operand), else over the two ends'.
+  [[nodiscard]] std::optional<SmallDirection> fraction_direction(EdgeId e) {
     const Mesh& m = p_.mesh();
     const HalfedgeId even = Mesh::halfedge(e);
+    if (!scaled_asked_) {
+      scaled_ = PolyhedronAccess::scaled_vertices(p_);
+      scaled_asked_ = true;
+    }
+    if (scaled_ != nullptr) {
+      const std::size_t from = m.from(even).index(), to = m.to(even).index();
+      SmallDirection d{};
+      for (int axis = 0; axis < 3; ++axis)
+        d.c[static_cast<std::size_t>(axis)] = scaled_->at(to, axis) - scaled_->at(from, axis);  // below 2^62
+      if (d.c[0] == 0 && d.c[1] == 0 && d.c[2] == 0) return std::nullopt;
+      return d;
+    }
     return small_fraction_direction(p_.vertex(m.from(even)), p_.vertex(m.to(even)));
   }
 
@@ -183,6 +200,8 @@ class EdgeDirections {
  private:
   enum class State : std::uint8_t { unknown, small, general };
   const ConvexPolyhedron& p_;
+  const WordScaledPoints* scaled_ = nullptr;  // p_'s, once asked for
+  bool scaled_asked_ = false;
   std::vector<State> state_;
   // On huge pages when large: fresh memory at every sum (huge_page_blocks.hpp).
   std::optional<HugePageArray<SmallDirection, BlockLife::scratch>> small_;
@@ -430,6 +449,71 @@ bool SumFacetBuilder::write_packed_vertices(std::span<const VertexPair> pairs, s
   return true;
 }
 
+namespace {
+
+// Whether a few vertices spread over p are all doubles (exact
+// approximations): what operands read from doubles show, and decimals do not.
+bool looks_like_doubles(const ConvexPolyhedron& p) {
+  constexpr std::size_t probes = 8;
+  const std::size_t n = p.num_vertices();
+  for (std::size_t k = 0; k < probes && k < n; ++k) {
+    const ApproxVec3& x = detail::vertex_approx(p, VertexId(static_cast<std::uint32_t>(k * n / probes)));
+    if (x.x.error != 0.0 || x.y.error != 0.0 || x.z.error != 0.0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::scaled_sum() const {
+  if (looks_like_doubles(a_) && looks_like_doubles(b_)) return std::nullopt;
+  const WordScaledPoints* sa = PolyhedronAccess::scaled_vertices(a_);
+  const WordScaledPoints* sb = sa != nullptr ? PolyhedronAccess::scaled_vertices(b_) : nullptr;
+  if (sb == nullptr || (sa->dyadic() && sb->dyadic())) return std::nullopt;
+  // L = (D_A / g) D_B < 2^126 for g = gcd(D_A, D_B); the factors are below 2^63.
+  const std::uint64_t g = std::gcd(sa->denominator, sb->denominator);
+  const std::uint64_t factor_a = sb->denominator / g, factor_b = sa->denominator / g;
+  return ScaledSum{sa, sb, ScaledPoints::Uint128{sa->denominator} * factor_a, factor_a, factor_b};
+}
+
+void SumFacetBuilder::write_scaled_vertex(const VertexPair& p, const ScaledSum& sum, ScaledPoints& points,
+                                          ApproxVec3* approx, std::size_t j) const {
+  using Int128 = ScaledPoints::Int128;
+  for (int i = 0; i < 3; ++i) {
+    // Each term is below 2^61 2^63 = 2^124 in magnitude (word_scaled.hpp).
+    const Int128 n =
+        Int128{sum.a->at(p.a, i)} * Int128{sum.factor_a} + Int128{sum.b->at(p.b, i)} * Int128{sum.factor_b};
+    points.numerator(j, i) = n;
+    axis_of(approx[j], i) = points.approx(n);
+  }
+}
+
+void SumFacetBuilder::write_scaled_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
+                                            const ScaledSum& sum, ScaledPoints& points, ApproxVec3* approx) const {
+  for (std::size_t j = begin; j < end; ++j) {
+    if (j + prefetch_far < end) {  // the pairs are met out of memory order
+      __builtin_prefetch(&sum.a->numerators[3 * std::size_t{pairs[j + prefetch_far].a}]);
+      __builtin_prefetch(&sum.b->numerators[3 * std::size_t{pairs[j + prefetch_far].b}]);
+    }
+    write_scaled_vertex(pairs[j], sum, points, approx, j);
+  }
+}
+
+Mesh SumFacetBuilder::scaled_mesh(PolygonSoup faces, VertexApproximations& approx,
+                                  const std::shared_ptr<ResultSlab>& slab, const ScaledSum& sum) const {
+  const std::size_t count = euler_vertex_count(faces);
+  ScaledPoints points(sum.denominator, carving_from<ScaledPoints::Int128>(slab));
+  points.reserve(count);
+  approx.reserve(count);
+  number_corners(faces, false, [&](const VertexPair& p) {
+    const std::size_t j = points.append();
+    approx.emplace_back();
+    write_scaled_vertex(p, sum, points, approx.data(), j);
+    return static_cast<std::uint32_t>(j);
+  });
+  return output_mesh(std::move(faces), std::make_shared<const PackedVectors>(std::move(points)), slab);
+}
+
 std::shared_ptr<ResultSlab> SumFacetBuilder::output_slab(const PolygonSoup& faces) const {
   const std::size_t vertices = euler_vertex_count(faces);
   SlabPlan plan;
@@ -441,6 +525,7 @@ std::shared_ptr<ResultSlab> SumFacetBuilder::output_slab(const PolygonSoup& face
 
 std::optional<Mesh> SumFacetBuilder::packed_mesh(PolygonSoup faces, VertexApproximations& approx,
                                                  const std::shared_ptr<ResultSlab>& slab) const {
+  if (const std::optional<ScaledSum> sum = scaled_sum()) return scaled_mesh(std::move(faces), approx, slab, *sum);
   const std::size_t count = euler_vertex_count(faces);
   DyadicPoints points(carving_from<PackedDyadic>(slab));
   points.reserve(count);
@@ -662,6 +747,7 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads(ProgressReporter& progres
   ScratchVector<VertexPair> pairs;  // by output vertex
   VertexApproximations vertex_approx(carving_from<ApproxVec3>(slab));
   std::shared_ptr<PackedVectors> positions;
+  const std::optional<ScaledSum> scaled = scaled_sum();
   std::atomic<bool> not_dyadic{false};
   std::latch sized(1), meshed(1);
   auto take_normals = [&](LimbArena& arena) {
@@ -676,6 +762,12 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads(ProgressReporter& progres
   };
   auto take_vertices = [&](LimbArena& arena) {
     if (positions == nullptr) return;  // the calling thread failed before sizing them
+    if (scaled) {
+      vertices.take([&](std::size_t begin, std::size_t end) {
+        write_scaled_vertices(pairs, begin, end, *scaled, positions->scaled_for_writing(), vertex_approx.data());
+      });
+      return;
+    }
     Vec3 scratch;  // for the sums that do not fit machine words
     const PackedOutput out{&positions->packed_for_writing(), vertex_approx.data(), &arena};
     vertices.take([&](std::size_t begin, std::size_t end) {
@@ -717,8 +809,10 @@ ConvexPolyhedron SumFacetBuilder::build_on_two_threads(ProgressReporter& progres
       // The topology reads only the number of points: both threads pack
       // their values into the mesh's points once it stands. (The mesh is
       // this function's until it returns: nothing reads them before.)
-      positions =
-          std::make_shared<PackedVectors>(DyadicPoints(pairs.size(), carving_from<PackedDyadic>(slab)));
+      positions = scaled ? std::make_shared<PackedVectors>(ScaledPoints(pairs.size(), scaled->denominator,
+                                                                        carving_from<ScaledPoints::Int128>(slab)))
+                         : std::make_shared<PackedVectors>(
+                               DyadicPoints(pairs.size(), carving_from<PackedDyadic>(slab)));
       mesh = output_mesh(std::move(soup), positions, slab);
       vertices.set_size(pairs.size());
       meshed_done();

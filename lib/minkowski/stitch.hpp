@@ -22,6 +22,8 @@
 #include "polyhedron_builder.hpp"
 #include "progress_reporter.hpp"
 #include "realloc_vector.hpp"
+#include "scaled_points.hpp"
+#include "word_scaled.hpp"
 
 namespace cvms::detail {
 
@@ -145,6 +147,31 @@ class SumFacetBuilder {
   // write_packed_vertex for the vertices [begin, end) of pairs; false as soon as one fails.
   bool write_packed_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
                              const PackedOutput& out, Vec3& scratch) const;
+  // Both operands' vertices as integers over their common denominators
+  // (word_scaled.hpp), and the output's denominator L = lcm(D_A, D_B) with
+  // each operand's factor to it (scaled_points.hpp).
+  struct ScaledSum {
+    const WordScaledPoints* a;
+    const WordScaledPoints* b;
+    ScaledPoints::Uint128 denominator;
+    std::uint64_t factor_a;  // L / D_A
+    std::uint64_t factor_b;  // L / D_B
+  };
+  // The scaled operands when both have them and some coordinate is not a
+  // double (operands of doubles keep the dyadic path); nullopt otherwise.
+  [[nodiscard]] std::optional<ScaledSum> scaled_sum() const;
+  // Output vertex j, the sum of the vertices of pair p, as integers over
+  // sum.denominator into points, with its approximation into approx[j].
+  void write_scaled_vertex(const VertexPair& p, const ScaledSum& sum, ScaledPoints& points, ApproxVec3* approx,
+                           std::size_t j) const;
+  // write_scaled_vertex for the vertices [begin, end) of pairs. Threads may
+  // write disjoint ranges.
+  void write_scaled_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
+                             const ScaledSum& sum, ScaledPoints& points, ApproxVec3* approx) const;
+  // The output's mesh of faces with its points as ScaledPoints, and their
+  // approximations; points and connectivity carved from slab.
+  [[nodiscard]] Mesh scaled_mesh(PolygonSoup faces, VertexApproximations& approx,
+                                 const std::shared_ptr<ResultSlab>& slab, const ScaledSum& sum) const;
   // The output's mesh of faces (faces_without_points()) with its points
   // packed, and their approximations; or nullopt when a vertex is not dyadic.
   // Points and connectivity are carved from slab.

@@ -456,7 +456,9 @@ void from_soup_target(std::span<const std::uint8_t> data) {
 void minkowski_target(std::span<const std::uint8_t> data) {
   ByteStream in(data);
   // mode: bit 0 grid coordinates, bits 1-2 how B relates to A, bit 3 tiny
-  // moves and an extreme scale.
+  // moves and an extreme scale, bit 4 B divided by 10^k (k < 21: decimals
+  // whose common denominator is below 2^63 up to 10^18 and beyond it from
+  // 10^19, for the sum's integer paths over a common denominator).
   const std::uint8_t mode = in.next();
   const bool grid = (mode & 1) != 0;
   std::vector<Vec3> pa = decode_cloud(in, 4 + in.next() % 27, grid);
@@ -490,6 +492,12 @@ void minkowski_target(std::span<const std::uint8_t> data) {
     scale_extreme(pa, in);
     pb.assign(pa.begin() + static_cast<std::ptrdiff_t>(at), pa.end());
     pa.resize(at);
+  }
+  if ((mode & 16) != 0) {
+    mpz_class power;
+    mpz_ui_pow_ui(power.get_mpz_t(), 10, in.next() % 21);
+    const Rational scale(mpz_class(1), power);
+    for (Vec3& p : pb) p = scale * p;
   }
   ConvexPolyhedron a, b;
   try {
