@@ -357,6 +357,58 @@ TEST(Solid, LocateAgreesWithMembershipOfBoxes) {
   }
 }
 
+// The prism z in [0, 1] over a comb of k teeth: a base [0, 3k - 2] x [0, 1]
+// and teeth [3i, 3i + 1] x [1, 4]. Its caps are polygons of 4k corners
+// whose triangulations hold long thin triangles spanning the base, the case
+// where the ray search must keep its boxes apart.
+Solid comb_prism(int k) {
+  std::vector<std::pair<int, int>> cycle = {{0, 0}, {3 * k - 2, 0}, {3 * k - 2, 4}, {3 * k - 3, 4}, {3 * k - 3, 1}};
+  for (int i = k - 2; i >= 1; --i)
+    for (const auto& c : {std::pair{3 * i + 1, 1}, std::pair{3 * i + 1, 4}, std::pair{3 * i, 4}, std::pair{3 * i, 1}})
+      cycle.push_back(c);
+  for (const auto& c : {std::pair{1, 1}, std::pair{1, 4}, std::pair{0, 4}}) cycle.push_back(c);
+  const auto n = static_cast<std::uint32_t>(cycle.size());
+  cvms::PolygonSoup soup;
+  for (int z = 0; z < 2; ++z)
+    for (const auto& [x, y] : cycle) soup.points.push_back({x, y, z});
+  std::vector<std::uint32_t> bottom, top;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    bottom.push_back(n - 1 - i);
+    top.push_back(n + i);
+  }
+  soup.add_face(bottom);
+  soup.add_face(top);
+  for (std::uint32_t i = 0; i < n; ++i) soup.add_face(std::vector<std::uint32_t>{i, (i + 1) % n, n + (i + 1) % n, n + i});
+  return Solid::from_soup(std::move(soup));
+}
+
+TEST(Solid, LocateInACombPrismAgreesWithItsTeeth) {
+  constexpr int k = 24;
+  const Solid comb = comb_prism(k);
+  const auto in = [](const Vec3& p) {
+    if (!in_box(p, {0, 0, 0}, {3 * k - 2, 1, 1})) {
+      if (p.x < 0 || p.x > 3 * k - 2) return false;
+      const Rational tooth = p.x / 3;  // in a tooth iff x - 3 floor(x / 3) <= 1 (or x = 3i)
+      const Rational base(tooth.get_num() / tooth.get_den());
+      return in_box(p, {3 * base, 1, 0}, {3 * base + 1, 4, 1});
+    }
+    return true;
+  };
+  const unsigned seed = 5011;
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> x_quarter(-2, 4 * (3 * k - 1)), y_quarter(-2, 18), z_quarter(-2, 6);
+  int counts[3] = {0, 0, 0};
+  for (int i = 0; i < 1500; ++i) {
+    const Vec3 p{Rational(x_quarter(rng), 4), Rational(y_quarter(rng), 4), Rational(z_quarter(rng), 4)};
+    const Location expected = local_location(in, p);
+    ++counts[static_cast<int>(expected)];
+    ASSERT_EQ(comb.locate(p), expected) << "seed " << seed << ", p = (" << p.x << ", " << p.y << ", " << p.z << ")";
+  }
+  EXPECT_GT(counts[0], 0);
+  EXPECT_GT(counts[1], 0);
+  EXPECT_GT(counts[2], 0);
+}
+
 TEST(Solid, LocateOnTheStarPrismAndDecimalBox) {
   const Solid star = cvms::read_solid(data("star_prism.off"));
   EXPECT_EQ(star.locate({0, 0, 1}), Location::inside);

@@ -96,6 +96,28 @@ TEST(TriangleTreeRay, BeyondTheDoubles) {
 // Random boxes on a small grid (so rays often start on their faces and run
 // along them) and rays from grid points and halves in small integer
 // directions.
+// A fan of long boxes sharing one end (the caps of a comb prism) among short
+// ones, and boxes with equal centres: the area split gathers the long boxes,
+// the median fallback takes the equal ones; no box the ray meets is lost.
+TEST(TriangleTreeRay, FanOfLongBoxesAmongShortOnes) {
+  std::vector<Box> boxes;
+  for (int i = 0; i < 64; ++i) {
+    boxes.push_back(box_of(i, 0, 1, 64, 1, 1));                // long and flat, one end at x = 64
+    boxes.push_back(box_of(i, 1, 0, i, 4, 1));                 // a short wall
+    boxes.push_back(box_of(i + 0.5, 1.5, 0.25, i + 0.5, 3, 0.75));  // inside the teeth region
+  }
+  for (int i = 0; i < 9; ++i) boxes.push_back(box_of(3, 3, 3, 5, 5, 5));  // equal centres
+  const unsigned seed = 77;
+  std::mt19937 rng(seed);
+  auto coordinate = [&rng](int range) { return Rational(static_cast<int>(rng() % (4 * range)) - 4, 4); };
+  for (int r = 0; r < 300; ++r) {
+    const Vec3 p{coordinate(66), coordinate(6), coordinate(6)};
+    Vec3 d{static_cast<int>(rng() % 7) - 3, static_cast<int>(rng() % 7) - 3, static_cast<int>(rng() % 7) - 3};
+    if (d == Vec3{}) d.z = 1;
+    expect_no_box_skipped(boxes, p, d, seed);
+  }
+}
+
 TEST(TriangleTreeRay, RandomAgainstOracle) {
   for (unsigned seed = 1; seed <= 60; ++seed) {
     std::mt19937 rng(seed);

@@ -20,10 +20,15 @@
 // of the inside around it, so that corner is reflex or straight. Only the
 // two neighbours of a clipped ear change status (convexity and ear); the
 // others are re-examined before giving up, so a polygon is never rejected
-// for a stale status. Quadratic in the polygon's size.
+// for a stale status. Quadratic in the polygon's size; the point-in-triangle
+// tests are first filtered by outward-rounded double boxes, which never
+// exclude a point that the exact test would find in the triangle.
 #include "ear_clipping.hpp"
 
+#include <algorithm>
+
 #include "planar_tests.hpp"
+#include "triangle_tree.hpp"
 
 namespace cvms::detail {
 
@@ -31,6 +36,9 @@ EarClipper::EarClipper(std::span<const Vec2> points, std::vector<std::uint32_t> 
     : points_(points), corners_(std::move(corners)), turn_(turn), prev_(corners_.size()), next_(corners_.size()),
       convex_(corners_.size()), ear_(corners_.size()) {
   const std::size_t k = corners_.size();
+  box_.reserve(k);
+  for (std::size_t i = 0; i < k; ++i)
+    box_.push_back({double_below(at(i).x), double_above(at(i).x), double_below(at(i).y), double_above(at(i).y)});
   for (std::size_t i = 0; i < k; ++i) {
     prev_[i] = (i + k - 1) % k;
     next_[i] = (i + 1) % k;
@@ -95,6 +103,17 @@ bool EarClipper::is_ear(std::size_t i) const {
   const Vec2& pi = at(i);
   const Vec2& pb = at(b);
   if (!convex_[i]) return false;
+  std::array<double, 4> around = box_[i];
+  for (std::size_t k : {a, b}) {
+    around[0] = std::min(around[0], box_[k][0]);
+    around[1] = std::max(around[1], box_[k][1]);
+    around[2] = std::min(around[2], box_[k][2]);
+    around[3] = std::max(around[3], box_[k][3]);
+  }
+  auto may_lie_in = [&](std::size_t j) {
+    const std::array<double, 4>& p = box_[j];
+    return p[1] >= around[0] && p[0] <= around[1] && p[3] >= around[2] && p[2] <= around[3];
+  };
   for (std::size_t j = next_[b]; j != a; j = next_[j]) {
     const std::uint32_t c = corners_[j];
     if (c == corners_[a]) {
@@ -103,7 +122,7 @@ bool EarClipper::is_ear(std::size_t i) const {
       if (passage_enters(j, pi, pa, pb)) return false;
     } else if (c == corners_[b]) {
       if (passage_enters(j, pb, pa, pi)) return false;
-    } else if (!convex_[j] && point_in_triangle(at(j), pa, pi, pb)) {
+    } else if (!convex_[j] && may_lie_in(j) && point_in_triangle(at(j), pa, pi, pb)) {
       return false;
     }
   }

@@ -43,6 +43,10 @@ class EarClipper {
   std::vector<std::size_t> prev_, next_;
   std::vector<bool> convex_;  // turns strictly as the polygon does
   std::vector<bool> ear_;
+  // Each corner's point enclosed in doubles (x low, x high, y low, y high,
+  // rounded outward): a corner outside a triangle's enclosing box is not in
+  // the triangle, decided without exact arithmetic.
+  std::vector<std::array<double, 4>> box_;
 };
 
 }  // namespace cvms::detail

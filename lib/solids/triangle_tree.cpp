@@ -180,8 +180,8 @@ void TriangleTree::build_all() {
   }
   order_.resize(boxes_.size());
   for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
-  // A binary tree with leaves of 1 to 4 boxes has fewer than n nodes.
-  nodes_.reserve(boxes_.size());
+  // A binary tree whose leaves hold at least one box has fewer than 2n nodes.
+  nodes_.reserve(2 * boxes_.size());
   if (!boxes_.empty()) build(0, static_cast<std::uint32_t>(boxes_.size()), centres);
 }
 
@@ -193,6 +193,16 @@ std::uint32_t TriangleTree::build(std::uint32_t begin, std::uint32_t end,
   nodes_.push_back({box, begin, end, 0});
   constexpr std::uint32_t leaf_size = 4;
   if (end - begin <= leaf_size) return index;
+  std::uint32_t mid = area_split(begin, end, centres);
+  if (mid == begin) mid = median_split(begin, end, box, centres);
+  build(begin, mid, centres);
+  const std::uint32_t right = build(mid, end, centres);
+  nodes_[index].right = right;
+  return index;
+}
+
+std::uint32_t TriangleTree::median_split(std::uint32_t begin, std::uint32_t end, const Box& box,
+                                         std::span<const std::array<double, 3>> centres) {
   std::size_t axis = 0;
   for (std::size_t k = 1; k < 3; ++k)
     if (box.hi[k] - box.lo[k] > box.hi[axis] - box.lo[axis]) axis = k;
@@ -201,10 +211,92 @@ std::uint32_t TriangleTree::build(std::uint32_t begin, std::uint32_t end,
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                    [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
-  build(begin, mid, centres);
-  const std::uint32_t right = build(mid, end, centres);
-  nodes_[index].right = right;
-  return index;
+  return mid;
+}
+
+namespace {
+
+constexpr std::size_t kBins = 16;
+
+// Half the surface area of a box: the cost weight of the split below.
+double half_area(const Box& b) {
+  std::array<double, 3> e{};
+  for (std::size_t k = 0; k < 3; ++k) e[k] = finite_part(b.hi[k]) - finite_part(b.lo[k]);
+  return e[0] * e[1] + e[1] * e[2] + e[2] * e[0];
+}
+
+// The bin of centre c among kBins equal bins over [lo, lo + width].
+std::size_t bin_of(double c, double lo, double width) {
+  const double t = (c - lo) / width * static_cast<double>(kBins);
+  return std::min(kBins - 1, static_cast<std::size_t>(std::max(0.0, t)));
+}
+
+struct AreaSplit {
+  double cost = std::numeric_limits<double>::infinity();
+  std::size_t axis = 0, last_left_bin = 0;
+  double lo = 0, width = 0;
+};
+
+}  // namespace
+
+// The boxes' centres binned along each axis; the split between bins that
+// minimises area(left) * |left| + area(right) * |right| (a ray meets a box
+// with a chance about proportional to its area), each side holding at least
+// an eighth of the boxes. Overlapping long boxes (a fan of thin triangles)
+// then gather in one node instead of widening every node along their span.
+// Returns the split position after partitioning order_, or begin if no
+// split qualifies.
+std::uint32_t TriangleTree::area_split(std::uint32_t begin, std::uint32_t end,
+                                       std::span<const std::array<double, 3>> centres) {
+  const std::uint32_t n = end - begin;
+  const std::uint32_t least = std::max<std::uint32_t>(1, n / 8);
+  AreaSplit best;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      lo = std::min(lo, centres[order_[i]][axis]);
+      hi = std::max(hi, centres[order_[i]][axis]);
+    }
+    const double width = hi - lo;
+    if (!(width > 0) || !std::isfinite(width)) continue;
+    std::array<std::uint32_t, kBins> count{};
+    std::array<Box, kBins> bin_box{};
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const std::size_t b = bin_of(centres[order_[i]][axis], lo, width);
+      if (count[b]++ == 0) bin_box[b] = boxes_[order_[i]];
+      else extend(bin_box[b], boxes_[order_[i]]);
+    }
+    // Right-side areas by suffix, then the left side grown bin by bin.
+    std::array<double, kBins> right_area{};
+    std::array<std::uint32_t, kBins> right_count{};
+    Box grown{};
+    std::uint32_t seen = 0;
+    for (std::size_t b = kBins; b-- > 1;) {
+      if (count[b] > 0) {
+        if (seen == 0) grown = bin_box[b];
+        else extend(grown, bin_box[b]);
+        seen += count[b];
+      }
+      right_count[b] = seen;
+      right_area[b] = seen == 0 ? 0 : half_area(grown);
+    }
+    seen = 0;
+    for (std::size_t b = 0; b + 1 < kBins; ++b) {
+      if (count[b] > 0) {
+        if (seen == 0) grown = bin_box[b];
+        else extend(grown, bin_box[b]);
+        seen += count[b];
+      }
+      if (seen < least || right_count[b + 1] < least) continue;
+      const double cost = half_area(grown) * seen + right_area[b + 1] * right_count[b + 1];
+      if (cost < best.cost) best = {cost, axis, b, lo, width};
+    }
+  }
+  if (!(best.cost < std::numeric_limits<double>::infinity())) return begin;
+  const auto middle = std::partition(order_.begin() + begin, order_.begin() + end, [&](std::uint32_t t) {
+    return bin_of(centres[t][best.axis], best.lo, best.width) <= best.last_left_bin;
+  });
+  return static_cast<std::uint32_t>(middle - order_.begin());
 }
 
 std::uint64_t TriangleTree::for_each_overlapping_pair(
