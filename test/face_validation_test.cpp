@@ -316,23 +316,6 @@ TEST(FaceValidation, PolygonFacesAgreeWithAnExactOracle) {
   EXPECT_GT(verdicts[static_cast<int>(FaceVerdict::not_convex)], 20);
 }
 
-// A prism over a 2D polygon, the big faces given as single polygons.
-PolygonSoup prism_over(const std::vector<Vec2>& base, const Rational& half_height) {
-  PolygonSoup soup;
-  const auto m = static_cast<std::uint32_t>(base.size());
-  for (const Vec2& q : base) soup.points.push_back({q.x, q.y, -half_height});
-  for (const Vec2& q : base) soup.points.push_back({q.x, q.y, half_height});
-  std::vector<std::uint32_t> bottom, top;
-  for (std::uint32_t i = 0; i < m; ++i) {
-    bottom.push_back(m - 1 - i);
-    top.push_back(m + i);
-  }
-  soup.add_face(bottom);
-  soup.add_face(top);
-  for (std::uint32_t i = 0; i < m; ++i) soup.add_face({i, (i + 1) % m, m + (i + 1) % m, m + i});
-  return soup;
-}
-
 // Points (1 - t^2, 2t) / (1 + t^2) on the unit circle for t = p / q: every
 // vertex has its own denominator.
 std::vector<Vec2> rational_circle(int n) {
@@ -353,7 +336,7 @@ std::vector<Vec2> rational_circle(int n) {
 // CPU seconds of ConvexPolyhedron::from_soup on the prism over the n-gon
 // of rational_circle(n); its counts checked.
 double seconds_to_validate_prism(int n) {
-  const PolygonSoup soup = prism_over(rational_circle(n), 1);
+  const PolygonSoup soup = cvms::test::prism_over(rational_circle(n), -1, 1);
   const auto start = test::cpu_seconds();
   const ConvexPolyhedron p = ConvexPolyhedron::from_soup(soup);
   const double seconds = test::cpu_seconds() - start;
@@ -380,7 +363,7 @@ TEST(FaceValidation, BigNonConvexFaceIsReportedQuickly) {
   // failing big face is named as before without quadratic cost.
   std::vector<Vec2> circle = rational_circle(20000);
   std::swap(circle[100], circle[101]);  // a reflex corner (a bow tie of two neighbours)
-  const PolygonSoup soup = prism_over(circle, 1);
+  const PolygonSoup soup = cvms::test::prism_over(circle, -1, 1);
   const auto start = test::cpu_seconds();
   try {
     (void)ConvexPolyhedron::from_soup(soup);

@@ -28,6 +28,7 @@
 #include "cvms/error.hpp"
 #include "cvms/solid.hpp"
 #include "self_intersection.hpp"
+#include "support/hand_solids.hpp"
 #include "triangle_intersection.hpp"
 #include "triangle_tree.hpp"
 
@@ -205,24 +206,7 @@ namespace {
 
 // The prism over a comb of 16 teeth (z in [0, 1]), as polygons: its top and
 // bottom faces triangulate into long thin triangles.
-cvms::PolygonSoup comb_prism() {
-  std::vector<std::array<int, 2>> cycle = {{0, 0}, {46, 0}, {46, 4}, {45, 4}, {45, 1}};
-  for (int i = 14; i >= 1; --i)
-    for (const std::array<int, 2>& p : {std::array{3 * i + 1, 1}, {3 * i + 1, 4}, {3 * i, 4}, {3 * i, 1}})
-      cycle.push_back(p);
-  for (const std::array<int, 2>& p : {std::array{1, 1}, {1, 4}, {0, 4}}) cycle.push_back(p);
-  const auto n = static_cast<std::uint32_t>(cycle.size());
-  cvms::PolygonSoup soup;
-  for (int z = 0; z < 2; ++z)
-    for (const auto& [x, y] : cycle) soup.points.push_back({Rational(x), Rational(y), Rational(z)});
-  std::vector<std::uint32_t> bottom, top;
-  for (std::uint32_t i = n; i-- > 0;) bottom.push_back(i);
-  for (std::uint32_t i = 0; i < n; ++i) top.push_back(n + i);
-  soup.add_face(bottom);
-  soup.add_face(top);
-  for (std::uint32_t i = 0; i < n; ++i) soup.add_face(std::vector{i, (i + 1) % n, n + (i + 1) % n, n + i});
-  return soup;
-}
+cvms::PolygonSoup comb_prism() { return cvms::test::prism_over(cvms::test::comb_polygon(16), 0, 1); }
 
 // Written as triangles, each its own face, the comb is still accepted; with
 // one top corner of a tooth moved below the comb's base, within the top's

@@ -21,6 +21,7 @@
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/error.hpp"
 #include "cvms/io.hpp"
+#include "support/hand_solids.hpp"
 
 namespace {
 
@@ -362,24 +363,7 @@ TEST(Solid, LocateAgreesWithMembershipOfBoxes) {
 // whose triangulations hold long thin triangles spanning the base, the case
 // where the ray search must keep its boxes apart.
 Solid comb_prism(int k) {
-  std::vector<std::pair<int, int>> cycle = {{0, 0}, {3 * k - 2, 0}, {3 * k - 2, 4}, {3 * k - 3, 4}, {3 * k - 3, 1}};
-  for (int i = k - 2; i >= 1; --i)
-    for (const auto& c : {std::pair{3 * i + 1, 1}, std::pair{3 * i + 1, 4}, std::pair{3 * i, 4}, std::pair{3 * i, 1}})
-      cycle.push_back(c);
-  for (const auto& c : {std::pair{1, 1}, std::pair{1, 4}, std::pair{0, 4}}) cycle.push_back(c);
-  const auto n = static_cast<std::uint32_t>(cycle.size());
-  cvms::PolygonSoup soup;
-  for (int z = 0; z < 2; ++z)
-    for (const auto& [x, y] : cycle) soup.points.push_back({x, y, z});
-  std::vector<std::uint32_t> bottom, top;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    bottom.push_back(n - 1 - i);
-    top.push_back(n + i);
-  }
-  soup.add_face(bottom);
-  soup.add_face(top);
-  for (std::uint32_t i = 0; i < n; ++i) soup.add_face(std::vector<std::uint32_t>{i, (i + 1) % n, n + (i + 1) % n, n + i});
-  return Solid::from_soup(std::move(soup));
+  return Solid::from_soup(cvms::test::prism_over(cvms::test::comb_polygon(k), 0, 1));
 }
 
 TEST(Solid, LocateInACombPrismAgreesWithItsTeeth) {

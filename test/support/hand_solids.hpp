@@ -155,4 +155,37 @@ inline std::vector<Vec3> rhombic_dodecahedron_points() {
   return pts;
 }
 
+/// The prism z in [z0, z1] over the counterclockwise polygon `base`: its caps
+/// as single faces (bottom reversed, so both face outward), a quad per side.
+inline PolygonSoup prism_over(const std::vector<Vec2>& base, const Rational& z0, const Rational& z1) {
+  PolygonSoup soup;
+  const auto m = static_cast<std::uint32_t>(base.size());
+  for (const Vec2& q : base) soup.points.push_back({q.x, q.y, z0});
+  for (const Vec2& q : base) soup.points.push_back({q.x, q.y, z1});
+  std::vector<std::uint32_t> bottom, top;
+  for (std::uint32_t i = 0; i < m; ++i) {
+    bottom.push_back(m - 1 - i);
+    top.push_back(m + i);
+  }
+  soup.add_face(bottom);
+  soup.add_face(top);
+  for (std::uint32_t i = 0; i < m; ++i) soup.add_face({i, (i + 1) % m, m + (i + 1) % m, m + i});
+  return soup;
+}
+
+/// The comb of k >= 2 teeth, counterclockwise: a base [0, 3k - 2] x [0, 1]
+/// and teeth [3i, 3i + 1] x [1, 4]; 4k corners. Triangulated, it holds long
+/// thin triangles spanning the base.
+inline std::vector<Vec2> comb_polygon(int k) {
+  std::vector<std::pair<int, int>> cycle = {{0, 0}, {3 * k - 2, 0}, {3 * k - 2, 4}, {3 * k - 3, 4}, {3 * k - 3, 1}};
+  for (int i = k - 2; i >= 1; --i)
+    for (const auto& c : {std::pair{3 * i + 1, 1}, std::pair{3 * i + 1, 4}, std::pair{3 * i, 4}, std::pair{3 * i, 1}})
+      cycle.push_back(c);
+  for (const auto& c : {std::pair{1, 1}, std::pair{1, 4}, std::pair{0, 4}}) cycle.push_back(c);
+  std::vector<Vec2> out;
+  out.reserve(cycle.size());
+  for (const auto& [x, y] : cycle) out.push_back({Rational(x), Rational(y)});
+  return out;
+}
+
 }  // namespace cvms::test
