@@ -4,10 +4,13 @@
 // (its centroid and random exact interior points), and those points moved
 // by 2^-30 along each of the 26 axis and diagonal directions, all lie in a
 // piece or in A + b, by exact containment in each convex piece and one
-// locate in A. Operands: the test solids, polycubes (random ones with fixed
-// seeds, mapped by a rational rotation for decimal coordinates), a star
-// prism, and face polygons that do not meet edge to edge; and, with neither
-// operand convex, the pairwise sums of their decompositions.
+// locate in A. The inner translates (each face polygon's facet of its piece
+// facing into A) are found by the polygons' area vectors and all checked.
+// Operands: the test solids, polycubes (random ones with fixed seeds,
+// mapped by a rational rotation for decimal coordinates), a star prism,
+// and face polygons that do not meet edge to edge, each summed with a cube,
+// an octahedron, a random convex polyhedron and a box 2^-20 thin; and, with
+// neither operand convex, the pairwise sums of their decompositions.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -123,6 +126,20 @@ std::vector<Vec3> relative_interior_points(const std::vector<Vec3>& corners, std
   return points;
 }
 
+// Facet f of piece k lies inside the sum: its centroid and random points
+// of its relative interior, each moved by 2^-30 along the 26 axis and
+// diagonal directions (and not moved), lie in the sum.
+void expect_facet_inside(const SumParts& parts, std::size_t k, FaceId f, std::mt19937_64& rng) {
+  const Rational step(1, std::int64_t{1} << 30);
+  for (const Vec3& x : relative_interior_points(facet_corners(parts.pieces[k], f), rng))
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const Vec3 p = x + step * Vec3{Rational(dx), Rational(dy), Rational(dz)};
+          EXPECT_TRUE(parts.contains(p)) << "piece " << k << " facet " << f.index() << " point " << text(p);
+        }
+}
+
 // Every skipped facet checked (at most `budget` of them, spread over all);
 // returns how many were skipped.
 std::size_t expect_skipped_inside(const SumParts& parts, std::uint64_t seed, std::size_t budget = 60) {
@@ -136,19 +153,46 @@ std::size_t expect_skipped_inside(const SumParts& parts, std::uint64_t seed, std
       if (mask[k][f.index()] != 0) skipped.emplace_back(k, f);
   }
   std::mt19937_64 rng(seed);
-  const Rational step(1, std::int64_t{1} << 30);
   const std::size_t stride = std::max<std::size_t>(1, skipped.size() / budget);
-  for (std::size_t i = rng() % stride; i < skipped.size(); i += stride) {
-    const auto [k, f] = skipped[i];
-    for (const Vec3& x : relative_interior_points(facet_corners(parts.pieces[k], f), rng))
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const Vec3 p = x + step * Vec3{Rational(dx), Rational(dy), Rational(dz)};
-            EXPECT_TRUE(parts.contains(p)) << "piece " << k << " facet " << f.index() << " point " << text(p);
-          }
-  }
+  for (std::size_t i = rng() % stride; i < skipped.size(); i += stride)
+    expect_facet_inside(parts, skipped[i].first, skipped[i].second, rng);
   return skipped.size();
+}
+
+// A polygon's normal by Newell's sum of cross products: its area vector,
+// pointing to where its corners turn counterclockwise.
+Vec3 area_vector(const std::vector<Vec3>& polygon) {
+  Vec3 sum;
+  for (std::size_t i = 0; i < polygon.size(); ++i) sum = sum + cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+  return sum;
+}
+
+// The inner translates, found by their normals against the polygons' area
+// vectors (outward from A): each piece has one, it is skipped, and all of
+// them lie inside the sum by brute force. The outer translates (normal
+// along the area vector, facing out of A, where the sum often ends) are
+// never skipped.
+void expect_inner_translates(const SumParts& parts, const std::vector<std::vector<Vec3>>& polygons,
+                             std::uint64_t seed) {
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937_64 rng(seed);
+  ASSERT_EQ(parts.pieces.size(), polygons.size());
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const Vec3 outward = area_vector(polygons[k]);
+    std::size_t inner = 0;
+    for (FaceId f : parts.pieces[k].mesh().faces()) {
+      const Vec3& n = parts.pieces[k].normal(f);
+      if (cross(n, outward) != Vec3{}) continue;
+      if (dot(n, outward) > 0) {
+        EXPECT_EQ(parts.mask[k][f.index()], 0) << "outer translate of polygon " << k;
+        continue;
+      }
+      ++inner;
+      EXPECT_NE(parts.mask[k][f.index()], 0) << "inner translate of polygon " << k;
+      expect_facet_inside(parts, k, f, rng);
+    }
+    EXPECT_EQ(inner, 1U) << "polygon " << k;
+  }
 }
 
 ConvexPolyhedron cube_of_side(const Rational& side) {
@@ -181,14 +225,28 @@ Solid data_solid(const std::string& name) {
   return read_solid(std::string(CVMS_TEST_DATA_DIR) + "/solids/" + name);
 }
 
-// Some facets are skipped with one operand or another: a box's facets
-// summed with a cube's are all boxes, none of whose facets is certified
-// (each meets the sum's boundary), but the octahedron's slanted facets are.
+// The box [0, 1] x [0, 1] x [0, 2^-20]: B barely rises above its bottom,
+// the face of the inner translates of A's upward polygons.
+ConvexPolyhedron thin_box() {
+  const Rational height(1, std::int64_t{1} << 20);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 8; ++i)
+    points.push_back({Rational((i & 1) != 0 ? 1 : 0), Rational((i & 2) != 0 ? 1 : 0),
+                      (i & 4) != 0 ? height : Rational(0)});
+  return convex_hull(points);
+}
+
+// Some facets are skipped with every operand: at least the inner
+// translates, checked one by one, and a sample of all skipped facets.
 void expect_for(const Solid& a, std::uint64_t seed) {
-  std::size_t skipped = 0;
-  for (const ConvexPolyhedron& b : convex_operands(seed))
-    skipped += expect_skipped_inside(SumParts(a, b, detail::facet_polygons(a)), seed);
-  EXPECT_GT(skipped, 0U);
+  const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
+  std::vector<ConvexPolyhedron> operands = convex_operands(seed);
+  operands.push_back(thin_box());
+  for (const ConvexPolyhedron& b : operands) {
+    const SumParts parts(a, b, polygons);
+    EXPECT_GT(expect_skipped_inside(parts, seed), 0U);
+    expect_inner_translates(parts, polygons, seed);
+  }
 }
 
 TEST(InteriorFacets, TestSolids) {
@@ -232,9 +290,13 @@ TEST(InteriorFacets, PolygonsNotEdgeToEdge) {
       {p(0, 2, 0), p(0, 2, 2), p(2, 2, 2), p(2, 2, 0)}, {p(0, 0, 0), p(0, 0, 2), p(0, 2, 2), p(0, 2, 0)},
       {p(2, 0, 0), p(2, 2, 0), p(2, 2, 2), p(2, 0, 2)}};
   const Solid cube = polycube(cubes_where(2, 2, 2, [](int, int, int) { return true; }));
-  std::size_t skipped = 0;
-  for (const ConvexPolyhedron& b : convex_operands(7)) skipped += expect_skipped_inside(SumParts(cube, b, polygons), 7);
-  EXPECT_GT(skipped, 0U);
+  std::vector<ConvexPolyhedron> operands = convex_operands(7);
+  operands.push_back(thin_box());
+  for (const ConvexPolyhedron& b : operands) {
+    const SumParts parts(cube, b, polygons);
+    EXPECT_GT(expect_skipped_inside(parts, 7), 0U);
+    expect_inner_translates(parts, polygons, 7);
+  }
 }
 
 // Both operands not convex: the pieces of their decompositions.

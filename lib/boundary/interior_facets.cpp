@@ -35,16 +35,52 @@
 // same test certifies a facet from A's side (Q = P_i, Q' any piece of A's
 // decomposition, Q_j in B's role) or from B's (the roles swapped).
 //
+// The inner translate (face polygons Q only, B convex). Let n_A be the
+// outward normal of A where Q lies: Q's corners turn counterclockwise seen
+// from its tip (facet_polygons.hpp), so a normal n of P = Q + B with every
+// corner of Q extreme in it and the corners turning clockwise seen from n's
+// tip points along -n_A. Its facet is F = Q + G, G the face of B least in
+// n_A. Claim: x = y + z with z in G and y in relint Q on no side of A's
+// triangles is interior to A + B.
+//  - Near y, A is a closed half-ball on the side -n_A. y lies in A's
+//    boundary (Q does), so inside one of A's triangles T and on no other
+//    (A's triangles meet only along shared sides and at shared corners):
+//    near y the boundary of A is T, and Q, two-dimensional at y and in
+//    that boundary, lies in T's plane. Both open half-balls off that plane
+//    miss the boundary, so each lies wholly inside or wholly outside A,
+//    and A's outward normal there, n_A, puts A on the side -n_A. Nothing
+//    is asked of Q's sides (they may run inside A's facet, Q need not meet
+//    its neighbours edge to edge) nor of the sides and corners of A's
+//    triangles, where A's parts may touch: y avoids them. So some r > 0
+//    has y + a in A for every |a| < r with dot(a, n_A) <= 0.
+//  - B rises from G: P is a convex polyhedron, full-dimensional, and Q is
+//    flat, so B is not inside G's plane (a flat B would make P flat; the
+//    road of solid_sum.cpp only takes a solid B, of positive volume).
+//    Some p in B has u = p - z with dot(u, n_A) > 0, and z + t u is in B
+//    for t in [0, 1] (B convex).
+//  - For |d| small, t = max(0, dot(d, n_A) / dot(u, n_A)) is at most 1, and
+//    a = d - t u has dot(a, n_A) <= 0 and |a| <= |d| (1 + |u| / dot(u, n_A)),
+//    below r: x + d = (y + a) + (z + t u) lies in A + B.
+// The points of relint F with no such y lie on finitely many segments. A
+// point x of relint F is y + z for every y in the set Y = relint Q n
+// (x - relint G) (relint F = relint Q + relint G), and Y must lie on the
+// triangles' sides: it is open in Q's plane if G is a facet (never), an
+// open segment parallel to G if G is an edge (then x is on s + G for a
+// side s parallel to G), a point if G is a vertex (x on s + G for a side
+// s). The outer translate, with normal +n_A, is not certified: points just
+// above it lie outside A + B where both A and B end below them.
+//
 // Why skipping changes nothing. The pieces' covering regions are the same,
-// so the only fragments lost are F's own: convex polygons of the boundary
-// of the union U of the pieces, with relative interiors inside F's, hence
-// inside the interior of A + B. Pieces of two decompositions: U is A + B,
-// so F has no such fragment. Pieces f + B (solid_sum.cpp's road for a
-// convex B): A + B = (A + b) u U, and a point x of dU inside A + B lies in
-// A + b (the points near x outside U lie in it, and it is closed). dU never
-// meets d(A + b), so the fragment, connected, lies wholly in the interior
-// of A + b, where the sum drops it: the kept fragments, and the solid
-// assembled from them, are the same.
+// so the only fragments lost are F's own: convex polygons of positive area
+// in the boundary of the union U of the pieces, with relative interiors
+// inside F's, so each holds points of the interior of A + B (all of it, or
+// all but finitely many segments for an inner translate). Pieces of two
+// decompositions: U is A + B, so F has no such fragment. Pieces f + B
+// (solid_sum.cpp's road for a convex B): A + B = (A + b) u U, and a point x
+// of dU inside A + B lies in A + b (the points near x outside U lie in it,
+// and it is closed). dU never meets d(A + b), so the fragment, connected,
+// lies wholly in the interior of A + b, where the sum drops it: the kept
+// fragments, and the solid assembled from them, are the same.
 //
 // The incidence is by exact point: the corners of all polygons (or the
 // vertices of all parts) sorted and numbered, each number listing the
@@ -115,30 +151,50 @@ class CornerIncidence {
   std::vector<std::uint32_t> around_start_, around_;
 };
 
-// The corners of polygon k extreme in n, if at most two (else count 3).
+// The corners of polygon k extreme in n, if at most two (else count 3),
+// and whether every corner is extreme (n is normal to the polygon).
 struct Extreme {
   std::array<std::uint32_t, 2> ids{};
   std::size_t count = 0;
+  bool every = false;
 };
 
 Extreme extreme_corners(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
   Extreme out;
+  std::size_t tied = 0;
   for (const std::uint32_t id : incidence.corners(k)) {
     if (out.count == 0) {
       out.ids[0] = id;
-      out.count = 1;
+      out.count = tied = 1;
       continue;
     }
     const Sign farther = compare_dot(incidence.point(id), incidence.point(out.ids[0]), n);
     if (farther == Sign::positive) {
       out.ids[0] = id;
-      out.count = 1;
+      out.count = tied = 1;
     } else if (farther == Sign::zero) {
       if (out.count < 2) out.ids[out.count] = id;
       out.count = std::min<std::size_t>(out.count + 1, 3);
+      ++tied;
     }
   }
+  out.every = tied == incidence.corners(k).size();
   return out;
+}
+
+// Whether n, normal to polygon k (every corner extreme in it), points into
+// A: the polygon's corners turn clockwise seen from n's tip, where
+// facet_polygons.hpp gives them counterclockwise seen from outside. The
+// first corner c with c0, c1, c not on one line tells, c0 -> c1 being a
+// side of the convex polygon.
+bool points_into_solid(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
+  const std::span<const std::uint32_t> corners = incidence.corners(k);
+  const Vec3Ref c0 = incidence.point(corners[0]), c1 = incidence.point(corners[1]);
+  for (std::size_t i = 2; i < corners.size(); ++i) {
+    const Sign turn = sign_triple_in_plane(n, c0, c1, c0, incidence.point(corners[i]));
+    if (turn != Sign::zero) return turn == Sign::negative;
+  }
+  return false;
 }
 
 // Whether some polygon has all of s among its corners and a corner farther
@@ -157,7 +213,8 @@ bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n) {
 }
 
 // The facets of one piece whose summand from A's side (parts of A) or,
-// when `b` is given, from B's side (parts of B) certifies them.
+// when `b` is given, from B's side (parts of B) certifies them; without
+// `b`, A's parts are face polygons and the inner translate is certified too.
 std::vector<char> piece_mask(const ConvexPolyhedron& piece, const CornerIncidence& a, std::size_t a_part,
                              const CornerIncidence* b, std::size_t b_part) {
   const FacetPlanes& planes = PolyhedronAccess::planes(piece);
@@ -165,7 +222,8 @@ std::vector<char> piece_mask(const ConvexPolyhedron& piece, const CornerIncidenc
   std::vector<char> mask(piece.num_facets(), 0);
   for (std::size_t f = 0; f < mask.size(); ++f) {
     const Vec3Ref n{normals[f], planes.normal_approx[f]};
-    const bool inside = certified(a, extreme_corners(a, a_part, n), n) ||
+    const Extreme s = extreme_corners(a, a_part, n);
+    const bool inside = certified(a, s, n) || (b == nullptr && s.every && points_into_solid(a, a_part, n)) ||
                         (b != nullptr && certified(*b, extreme_corners(*b, b_part, n), n));
     mask[f] = inside ? 1 : 0;
   }

@@ -3,8 +3,12 @@
 // union's boundary need not clip them: a certificate from the convex parts
 // of A the pieces are made of (A's face polygons when B is convex, the
 // pieces of A's decomposition otherwise, and then those of B's as well),
-// one exact comparison of dot products per corner looked at. The proof is
-// in interior_facets.cpp; skipping such a facet as a candidate of
+// one exact comparison of dot products per corner looked at. With face
+// polygons, the inner translate of each polygon Q (the facet Q + G of
+// Q + B facing into A, G the face of B least along A's outward normal at
+// Q) is interior too, but for finitely many segments: A fills a half-ball
+// below almost every point of Q and B rises from G. The proofs are in
+// interior_facets.cpp; skipping such a facet as a candidate of
 // union_boundary_fragments never changes the sum.
 #pragma once
 
@@ -19,14 +23,16 @@
 namespace cvms::detail {
 
 /// For each piece k = polygons[k] + B, for each of its facets in face order,
-/// nonzero iff the facet's relative interior is proven to lie in the interior
-/// of A + B, where the polygons are convex polygons inside A's boundary
-/// (face polygons of A, facet_polygons.hpp; they need not meet edge to edge,
-/// the certificate is then only found less often). Deterministic; the
-/// pieces are shared over options.threads threads.
+/// nonzero iff the facet's relative interior, but for at most finitely many
+/// segments in it, is proven to lie in the interior of A + B (every
+/// fragment the facet could give is then dropped), where the polygons are
+/// convex polygons inside A's boundary (face polygons of A,
+/// facet_polygons.hpp; they need not meet edge to edge, the certificate is
+/// then only found less often). Deterministic; the pieces are shared over
+/// options.threads threads.
 /// \pre pieces.size() == polygons.size(), pieces[k] == polygons[k] + B for
 ///   one full-dimensional convex B, every polygon convex with at least three
-///   corners.
+///   corners, counterclockwise seen from outside A.
 FacetMask interior_facets(std::span<const std::vector<Vec3>> polygons, std::span<const ConvexPolyhedron> pieces,
                           const Options& options);
 
