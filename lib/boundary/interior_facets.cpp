@@ -67,8 +67,47 @@
 // triangles' sides: it is open in Q's plane if G is a facet (never), an
 // open segment parallel to G if G is an edge (then x is on s + G for a
 // side s parallel to G), a point if G is a vertex (x on s + G for a side
-// s). The outer translate, with normal +n_A, is not certified: points just
-// above it lie outside A + B where both A and B end below them.
+// s). The outer translate, with normal +n_A, is left alone: there A and B
+// both end on the side n_A, and the argument fails.
+//
+// The edge certificate (face polygons that are unions of A's triangles
+// with all their corners, PolygonTiling::of_triangles). Let F be a facet
+// of P = Q + B with outward normal n, S = {s0, s1} the corners of Q extreme
+// in n (exactly two), so e = [s0, s1] is a side of Q with no corner of Q
+// inside, and F = e + B_n; suppose exactly two polygons, Q and Q', have s0
+// and s1 among their corners, and n points to the back of both (dot(n, N)
+// < 0 for each one's outward normal N). Then relint F lies in the interior
+// of A + B:
+//  - Only two of A's triangles meet relint e, one in Q, one in Q', both
+//    with side e. A triangle t of Q has side e (no corner of Q, hence of
+//    its triangles, lies inside e). A's triangles (of positive area) meet
+//    only along shared sides and at shared corners, so any triangle
+//    meeting relint e there has side e, and its polygon has s0 and s1 among
+//    its corners: it is Q or Q'. Q holds one such triangle (e is its side);
+//    Q' one, or two if e were a diagonal of it; an edge of A has an even
+//    number of triangles, so Q' holds one, e is a side of Q' too.
+//  - So near y in relint e, A's boundary is two half-planes at the line of
+//    e, Q's and Q''s, and A is the closed wedge W of points y + v with v in
+//    one of the two sectors they bound (times the line of e), the one on
+//    the back of both. n is orthogonal to e (F holds e) and lies in W: if
+//    W is convex, it is the set of v behind both planes, and n is behind
+//    both; if not, the other sector is convex and lies in front of both,
+//    and n is not.
+//  - F is two-dimensional, so B_n is B's facet with normal n, or an edge
+//    not parallel to e (a vertex would make F a segment): with z in
+//    relint B_n, some g orthogonal to n and not parallel to e has z +- r g
+//    in B for small r; and B is full-dimensional with B_n its face extreme
+//    in n, so some w with dot(w, n) < 0 has z + r w in B (B convex).
+//  - In the basis e' (along e), g, n, a step d from x = y + z is
+//    a e' + b g + c n and w is w_e e' + w_g g + w_n n, w_n < 0. If c >= 0,
+//    x + d = (y + a e' + c n) + (z + b g). If c < 0, with l = c / w_n > 0,
+//    x + d = (y + (a - l w_e) e') + (z + (b - l w_g) g + l w). The steps
+//    from y and z are O(|d|), so for |d| small the first point is in W,
+//    hence in A, and the second in B (a convex combination of z, z +- r g
+//    and z + r w): x + d lies in A + B.
+// (Without the triangles' corners among the polygons' corners, a third
+// polygon could hold part of e, as a side longer than e, unseen: then A's
+// boundary near e is not known, and the certificate is not used.)
 //
 // Why skipping changes nothing. The pieces' covering regions are the same,
 // so the only fragments lost are F's own: convex polygons of positive area
@@ -182,49 +221,61 @@ Extreme extreme_corners(const CornerIncidence& incidence, std::size_t k, Vec3Ref
   return out;
 }
 
-// Whether n, normal to polygon k (every corner extreme in it), points into
-// A: the polygon's corners turn clockwise seen from n's tip, where
-// facet_polygons.hpp gives them counterclockwise seen from outside. The
-// first corner c with c0, c1, c not on one line tells, c0 -> c1 being a
-// side of the convex polygon.
-bool points_into_solid(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
+// Whether n points to the back of polygon k: dot(n, N) < 0 for its outward
+// normal N, the corners turning counterclockwise seen from N's tip
+// (facet_polygons.hpp). For the first corner c with c0, c, c1 not on one
+// line, det[n, c1 - c0, c - c0] has that sign (c0 -> c1 is a side of the
+// convex polygon, so cross(c1 - c0, c - c0) is a positive multiple of N).
+bool behind(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
   const std::span<const std::uint32_t> corners = incidence.corners(k);
   const Vec3Ref c0 = incidence.point(corners[0]), c1 = incidence.point(corners[1]);
   for (std::size_t i = 2; i < corners.size(); ++i) {
-    const Sign turn = sign_triple_in_plane(n, c0, c1, c0, incidence.point(corners[i]));
-    if (turn != Sign::zero) return turn == Sign::negative;
+    const Vec3Ref c = incidence.point(corners[i]);
+    if (!collinear(c0, c1, c)) return sign_triple_of_differences(n, c0, c1, c0, c) == Sign::negative;
   }
   return false;
 }
 
+// The certificates of the header that look at the polygons holding S.
+struct Rules {
+  bool at_edges = false;  // the edge certificate (polygons of A's triangles only)
+};
+
 // Whether some polygon has all of s among its corners and a corner farther
-// than them in n (the certificate of the header).
-bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n) {
+// than them in n or, with rules.at_edges and |S| = 2, exactly two polygons
+// hold S and n points to the back of both (the certificates of the header).
+bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n, Rules rules) {
   if (s.count > 2) return false;
   const Vec3Ref first = incidence.point(s.ids[0]);
+  std::array<std::uint32_t, 2> holders{};
+  std::size_t count = 0;
   for (const std::uint32_t q : incidence.polygons(s.ids[0])) {
     const std::span<const std::uint32_t> corners = incidence.corners(q);
     if (s.count == 2 && std::find(corners.begin(), corners.end(), s.ids[1]) == corners.end()) continue;
+    if (count < 2) holders[count] = q;
+    ++count;
     for (const std::uint32_t w : corners) {
       if (compare_dot(incidence.point(w), first, n) == Sign::positive) return true;
     }
   }
-  return false;
+  return rules.at_edges && s.count == 2 && count == 2 && behind(incidence, holders[0], n) &&
+         behind(incidence, holders[1], n);
 }
 
 // The facets of one piece whose summand from A's side (parts of A) or,
 // when `b` is given, from B's side (parts of B) certifies them; without
-// `b`, A's parts are face polygons and the inner translate is certified too.
+// `b`, A's parts are face polygons, and their inner translates are
+// certified too.
 std::vector<char> piece_mask(const ConvexPolyhedron& piece, const CornerIncidence& a, std::size_t a_part,
-                             const CornerIncidence* b, std::size_t b_part) {
+                             const CornerIncidence* b, std::size_t b_part, Rules rules) {
   const FacetPlanes& planes = PolyhedronAccess::planes(piece);
   const std::span<const Vec3> normals = planes.exact_normals();
   std::vector<char> mask(piece.num_facets(), 0);
   for (std::size_t f = 0; f < mask.size(); ++f) {
     const Vec3Ref n{normals[f], planes.normal_approx[f]};
     const Extreme s = extreme_corners(a, a_part, n);
-    const bool inside = certified(a, s, n) || (b == nullptr && s.every && points_into_solid(a, a_part, n)) ||
-                        (b != nullptr && certified(*b, extreme_corners(*b, b_part, n), n));
+    const bool inside = certified(a, s, n, rules) || (b == nullptr && s.every && behind(a, a_part, n)) ||
+                        (b != nullptr && certified(*b, extreme_corners(*b, b_part, n), n, rules));
     mask[f] = inside ? 1 : 0;
   }
   return mask;
@@ -249,10 +300,11 @@ FacetMask masks_on_threads(std::size_t pieces, const Options& options, MaskOf&& 
 }  // namespace
 
 FacetMask interior_facets(std::span<const std::vector<Vec3>> polygons, std::span<const ConvexPolyhedron> pieces,
-                          const Options& options) {
+                          const Options& options, PolygonTiling tiling) {
   const CornerIncidence incidence(polygons);
+  const Rules rules{tiling == PolygonTiling::of_triangles};
   return masks_on_threads(pieces.size(), options,
-                          [&](std::size_t k) { return piece_mask(pieces[k], incidence, k, nullptr, 0); });
+                          [&](std::size_t k) { return piece_mask(pieces[k], incidence, k, nullptr, 0, rules); });
 }
 
 FacetMask interior_facets_of_pairs(std::span<const std::vector<Vec3>> a_parts,
@@ -261,7 +313,7 @@ FacetMask interior_facets_of_pairs(std::span<const std::vector<Vec3>> a_parts,
   const CornerIncidence a(a_parts), b(b_parts);
   const std::size_t m = b_parts.size();
   return masks_on_threads(pieces.size(), options,
-                          [&](std::size_t k) { return piece_mask(pieces[k], a, k / m, &b, k % m); });
+                          [&](std::size_t k) { return piece_mask(pieces[k], a, k / m, &b, k % m, Rules{}); });
 }
 
 }  // namespace cvms::detail
