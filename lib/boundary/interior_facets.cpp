@@ -75,9 +75,9 @@
 // of P = Q + B with outward normal n, S = {s0, s1} the corners of Q extreme
 // in n (exactly two), so e = [s0, s1] is a side of Q with no corner of Q
 // inside, and F = e + B_n; suppose exactly two polygons, Q and Q', have s0
-// and s1 among their corners, and n points to the back of both (dot(n, N)
-// < 0 for each one's outward normal N). Then relint F lies in the interior
-// of A + B:
+// and s1 among their corners, and n points to the front of neither
+// (dot(n, N) <= 0 for each one's outward normal N). Then relint F lies in
+// the interior of A + B:
 //  - Only two of A's triangles meet relint e, one in Q, one in Q', both
 //    with side e. A triangle t of Q has side e (no corner of Q, hence of
 //    its triangles, lies inside e). A's triangles (of positive area) meet
@@ -90,9 +90,9 @@
 //    e, Q's and Q''s, and A is the closed wedge W of points y + v with v in
 //    one of the two sectors they bound (times the line of e), the one on
 //    the back of both. n is orthogonal to e (F holds e) and lies in W: if
-//    W is convex, it is the set of v behind both planes, and n is behind
-//    both; if not, the other sector is convex and lies in front of both,
-//    and n is not.
+//    W is convex, it is the set of v with dot(v, N) <= 0 for both normals,
+//    as n is; if not, the other sector without its rays is convex, the set
+//    of v with dot(v, N) > 0 for both, and n is not in it.
 //  - F is two-dimensional, so B_n is B's facet with normal n, or an edge
 //    not parallel to e (a vertex would make F a segment): with z in
 //    relint B_n, some g orthogonal to n and not parallel to e has z +- r g
@@ -221,19 +221,19 @@ Extreme extreme_corners(const CornerIncidence& incidence, std::size_t k, Vec3Ref
   return out;
 }
 
-// Whether n points to the back of polygon k: dot(n, N) < 0 for its outward
-// normal N, the corners turning counterclockwise seen from N's tip
-// (facet_polygons.hpp). For the first corner c with c0, c, c1 not on one
-// line, det[n, c1 - c0, c - c0] has that sign (c0 -> c1 is a side of the
-// convex polygon, so cross(c1 - c0, c - c0) is a positive multiple of N).
-bool behind(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
+// The sign of dot(n, N) for polygon k's outward normal N, its corners
+// turning counterclockwise seen from N's tip (facet_polygons.hpp): for the
+// first corner c with c0, c1, c not on one line, det[n, c1 - c0, c - c0]
+// has that sign (c0 -> c1 is a side of the convex polygon, so
+// cross(c1 - c0, c - c0) is a positive multiple of N).
+Sign facing(const CornerIncidence& incidence, std::size_t k, Vec3Ref n) {
   const std::span<const std::uint32_t> corners = incidence.corners(k);
   const Vec3Ref c0 = incidence.point(corners[0]), c1 = incidence.point(corners[1]);
   for (std::size_t i = 2; i < corners.size(); ++i) {
     const Vec3Ref c = incidence.point(corners[i]);
-    if (!collinear(c0, c1, c)) return sign_triple_of_differences(n, c0, c1, c0, c) == Sign::negative;
+    if (!collinear(c0, c1, c)) return sign_triple_of_differences(n, c0, c1, c0, c);
   }
-  return false;
+  return Sign::zero;  // unreachable for a polygon with three corners not on one line
 }
 
 // The certificates of the header that look at the polygons holding S.
@@ -243,7 +243,8 @@ struct Rules {
 
 // Whether some polygon has all of s among its corners and a corner farther
 // than them in n or, with rules.at_edges and |S| = 2, exactly two polygons
-// hold S and n points to the back of both (the certificates of the header).
+// hold S and n points to the front of neither (the certificates of the
+// header).
 bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n, Rules rules) {
   if (s.count > 2) return false;
   const Vec3Ref first = incidence.point(s.ids[0]);
@@ -258,8 +259,8 @@ bool certified(const CornerIncidence& incidence, const Extreme& s, Vec3Ref n, Ru
       if (compare_dot(incidence.point(w), first, n) == Sign::positive) return true;
     }
   }
-  return rules.at_edges && s.count == 2 && count == 2 && behind(incidence, holders[0], n) &&
-         behind(incidence, holders[1], n);
+  return rules.at_edges && s.count == 2 && count == 2 && facing(incidence, holders[0], n) != Sign::positive &&
+         facing(incidence, holders[1], n) != Sign::positive;
 }
 
 // The facets of one piece whose summand from A's side (parts of A) or,
@@ -274,7 +275,7 @@ std::vector<char> piece_mask(const ConvexPolyhedron& piece, const CornerIncidenc
   for (std::size_t f = 0; f < mask.size(); ++f) {
     const Vec3Ref n{normals[f], planes.normal_approx[f]};
     const Extreme s = extreme_corners(a, a_part, n);
-    const bool inside = certified(a, s, n, rules) || (b == nullptr && s.every && behind(a, a_part, n)) ||
+    const bool inside = certified(a, s, n, rules) || (b == nullptr && s.every && facing(a, a_part, n) == Sign::negative) ||
                         (b != nullptr && certified(*b, extreme_corners(*b, b_part, n), n, rules));
     mask[f] = inside ? 1 : 0;
   }

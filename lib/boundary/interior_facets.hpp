@@ -10,7 +10,7 @@
 // below almost every point of Q and B rises from G. And when the polygons
 // are unions of A's triangles, so is a facet e + B_n at a side e of Q
 // where exactly Q and one more polygon meet and the facet's normal n
-// points to the back of both: A then holds every direction from e's
+// points to the front of neither: A then holds every direction from e's
 // points along e and n, and B every one along its own face B_n and some
 // into B below it. The proofs are in
 // interior_facets.cpp; skipping such a facet as a candidate of
