@@ -5,10 +5,13 @@
 // by 2^-30 along each of the 26 axis and diagonal directions, all lie in a
 // piece or in A + b, by exact containment in each convex piece and one
 // locate in A. The inner translates (each face polygon's facet of its piece
-// facing into A) are found by the polygons' area vectors and all checked.
+// facing into A) are found by the polygons' area vectors and all checked,
+// and so are the facets certified at A's edges (those skipped only when the
+// polygons are known to be made of A's triangles).
 // Operands: the test solids, polycubes (random ones with fixed seeds,
-// mapped by a rational rotation for decimal coordinates), a star prism,
-// and face polygons that do not meet edge to edge, each summed with a cube,
+// mapped by a rational rotation for decimal coordinates), a star prism, a
+// comb prism, parts touching along an edge or at a point, and face
+// polygons that do not meet edge to edge, each summed with a cube,
 // an octahedron, a random convex polyhedron and a box 2^-20 thin; and, with
 // neither operand convex, the pairwise sums of their decompositions.
 #include <gtest/gtest.h>
