@@ -301,6 +301,33 @@ TEST(InteriorFacets, CombPrism) {
   EXPECT_GT(expect_for(Solid::from_soup(prism_over(comb_polygon(4), Rational(0), Rational(1))), 9), 0U);
 }
 
+// Two wedges (triangular prisms, z in [0, 1]) touching along their apex
+// edge, the z axis, both below the plane y = 0: four polygons meet at that
+// edge, and none has a corner above it. Two of them (listed first) face
+// away from +y, yet the points just above the edge lie outside A: a facet
+// e + B_n with n = +y is not inside the sum, and only the edge certificate's
+// "exactly two polygons" keeps it a candidate.
+Solid wedges_touching_along_an_edge() {
+  const auto p = [](int x, int y, int z) { return Vec3{Rational(x), Rational(y), Rational(z)}; };
+  PolygonSoup soup;
+  // Each wedge's apex edge, then its two other edges (bottom, top).
+  soup.points = {p(0, 0, 0), p(0, 0, 1), p(-4, -1, 0), p(-4, -1, 1), p(-2, -4, 0), p(-2, -4, 1),
+                 p(0, 0, 0), p(0, 0, 1), p(2, -4, 0),  p(2, -4, 1),  p(4, -1, 0),  p(4, -1, 1)};
+  soup.add_face({4, 0, 1, 5});   // the first wedge's side facing down and right
+  soup.add_face({6, 8, 9, 7});   // the second's facing down and left
+  soup.add_face({0, 2, 3, 1});   // the first's facing up and left
+  soup.add_face({2, 4, 5, 3});   // the first's far side
+  soup.add_face({0, 4, 2});      // the first's bottom
+  soup.add_face({1, 3, 5});      // the first's top
+  soup.add_face({8, 10, 11, 9}); // the second's far side
+  soup.add_face({10, 6, 7, 11}); // the second's facing up and right
+  soup.add_face({6, 10, 8});     // the second's bottom
+  soup.add_face({7, 9, 11});     // the second's top
+  return Solid::from_soup(std::move(soup));
+}
+
+TEST(InteriorFacets, WedgesTouchingAlongAnEdge) { (void)expect_for(wedges_touching_along_an_edge(), 12); }
+
 // Parts touching along an edge or at a point (two cubes, the even cells of
 // a 2 x 2 x 2 grid, a cavity touching a notch of the outside along an
 // edge): four polygons meet at such an edge, and every facet certified
