@@ -12,9 +12,8 @@
 // where exactly Q and one more polygon meet and the facet's normal n
 // points to the front of neither: A then holds every direction from e's
 // points along e and n, and B every one along its own face B_n and some
-// into B below it. The proofs are in
-// interior_facets.cpp; skipping such a facet as a candidate of
-// union_boundary_fragments never changes the sum.
+// into B below it. The proofs are in interior_facets.cpp; skipping such a
+// facet as a candidate of union_boundary_fragments never changes the sum.
 #pragma once
 
 #include <span>
