@@ -107,7 +107,8 @@ Solid sum_with_convex(const Solid& a, const ConvexPolyhedron& b, const Options& 
   const std::vector<std::vector<Vec3>> polygons = detail::facet_polygons(a);
   const std::vector<ConvexPolyhedron> pieces = detail::face_sums(polygons, b, options);
   const Vec3 inside_b = interior_point(b);
-  const detail::FacetMask interior = detail::interior_facets(polygons, pieces, options);
+  const detail::FacetMask interior =
+      detail::interior_facets(polygons, pieces, options, detail::PolygonTiling::of_triangles);
   return detail::assemble_boundary(
       outside(detail::union_boundary_fragments(pieces, options, interior), a, inside_b, options), options);
 }
