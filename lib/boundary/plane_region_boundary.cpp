@@ -57,17 +57,30 @@ int compare_lines(const Vec3& a, const Vec3& b) {
   return 0;
 }
 
-LineEdge line_edge(const PlaneChart& chart, const Vec3& a, const Vec3& b) {
-  const Vec2 pa = chart(a);
-  const Vec2 pb = chart(b);
-  const Vec2 d = pb - pa;
-  const Vec3 dir3 = canonical_normal(Vec3{d.x, d.y, 0});
-  const Vec2 dir{dir3.x, dir3.y};
+// The edge from a to b, charted as pa and pb. An edge parallel to a chart
+// axis (every edge of a box-like part) has the primitive direction (1, 0)
+// or (0, 1), whose offset and parameters are coordinates: no product and
+// no gcd. The key is the same either way.
+LineEdge line_edge(const Vec2& pa, const Vec2& pb, const Vec3& a, const Vec3& b) {
   LineEdge e;
-  e.line = Vec3{dir.x, dir.y, cross(dir, pa)};
-  Rational ta = dot(dir, pa);
-  Rational tb = dot(dir, pb);
-  e.along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
+  Rational ta;
+  Rational tb;
+  if (const int sx = cmp(pb.x, pa.x), sy = cmp(pb.y, pa.y); sx == 0 || sy == 0) {
+    // (1, 0): offset cross((1, 0), pa) = pa.y, parameter x; (0, 1): offset -pa.x, parameter y.
+    const bool horizontal = sy == 0;
+    e.line = horizontal ? Vec3{1, 0, pa.y} : Vec3{0, 1, -pa.x};
+    ta = horizontal ? pa.x : pa.y;
+    tb = horizontal ? pb.x : pb.y;
+    e.along = (horizontal ? sx : sy) > 0 ? 1 : -1;
+  } else {
+    const Vec2 d = pb - pa;
+    const Vec3 dir3 = canonical_normal(Vec3{d.x, d.y, 0});
+    const Vec2 dir{dir3.x, dir3.y};
+    e.line = Vec3{dir.x, dir.y, cross(dir, pa)};
+    ta = dot(dir, pa);
+    tb = dot(dir, pb);
+    e.along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
+  }
   if (e.along > 0) {
     e.t_low = std::move(ta);
     e.t_high = std::move(tb);
@@ -127,10 +140,15 @@ std::vector<DirectedSegment> plane_region_boundary(const BoundaryFragments& frag
   const PlaneChart chart(normal);
   if (on_plane.size() == 1) return single_fragment_boundary(chart, fragments.fragments[on_plane[0]].corners);
   std::vector<LineEdge> edges;
+  std::vector<Vec2> charted;
   for (std::uint32_t f : on_plane) {
     const auto& corners = fragments.fragments[f].corners;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      edges.push_back(line_edge(chart, corners[i], corners[(i + 1) % corners.size()]));
+    charted.clear();
+    for (const Vec3& c : corners) charted.push_back(chart(c));
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const std::size_t j = (i + 1) % corners.size();
+      edges.push_back(line_edge(charted[i], charted[j], corners[i], corners[j]));
+    }
   }
   std::sort(edges.begin(), edges.end(),
             [](const LineEdge& a, const LineEdge& b) { return compare_lines(a.line, b.line) < 0; });

@@ -18,22 +18,35 @@
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "representation_order.hpp"
 
 namespace cvms::detail {
 
+// The ends are deduplicated as pointers in the representation order (an
+// integer comparison, no cross products), and only the distinct points are
+// copied and sorted by value.
 std::vector<Vec3> true_vertices(const std::vector<std::vector<DirectedSegment>>& segments_per_plane) {
-  std::vector<Vec3> vertices;
+  std::vector<const Vec3*> ends;
   for (const auto& segments : segments_per_plane)
     for (const auto& s : segments) {
-      vertices.push_back(s.from);
-      vertices.push_back(s.to);
+      ends.push_back(&s.from);
+      ends.push_back(&s.to);
     }
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  const RepresentationLess less;
+  std::sort(ends.begin(), ends.end(), less);
+  ends.erase(std::unique(ends.begin(), ends.end(), [](const Vec3* p, const Vec3* q) { return *p == *q; }), ends.end());
+  std::sort(ends.begin(), ends.end(), [](const Vec3* p, const Vec3* q) { return *p < *q; });
+  std::vector<Vec3> vertices;
+  vertices.reserve(ends.size());
+  for (const Vec3* p : ends) vertices.push_back(*p);
   return vertices;
 }
 
 SegmentSplitter::SegmentSplitter(const std::vector<Vec3>& vertices) : vertices_(vertices) {
+  by_representation_.resize(vertices.size());
+  std::iota(by_representation_.begin(), by_representation_.end(), std::uint32_t{0});
+  std::sort(by_representation_.begin(), by_representation_.end(),
+            [&](std::uint32_t i, std::uint32_t j) { return RepresentationLess::less(vertices[i], vertices[j]); });
   for (int k = 0; k < 3; ++k) {
     auto& order = by_axis_[k];
     order.resize(vertices.size());
@@ -72,11 +85,14 @@ std::span<const std::uint32_t> SegmentSplitter::candidates(int k, const Vec3& a,
   return {first, last};
 }
 
+// Searched in the representation order: integer comparisons where the
+// value order would cross-multiply.
 std::uint32_t SegmentSplitter::id(const Vec3& p) const {
-  const auto it = std::lower_bound(vertices_.begin(), vertices_.end(), p);
-  if (it == vertices_.end() || *it != p)
+  const auto it = std::lower_bound(by_representation_.begin(), by_representation_.end(), p,
+                                   [&](std::uint32_t i, const Vec3& q) { return RepresentationLess::less(vertices_[i], q); });
+  if (it == by_representation_.end() || vertices_[*it] != p)
     throw Error(ErrorCategory::invalid_argument, "assemble_boundary: a segment end is not a vertex");
-  return static_cast<std::uint32_t>(it - vertices_.begin());
+  return *it;
 }
 
 void SegmentSplitter::split(const DirectedSegment& segment, std::vector<std::array<std::uint32_t, 2>>& edges) const {
@@ -87,11 +103,21 @@ void SegmentSplitter::split(const DirectedSegment& segment, std::vector<std::arr
     lo[k] = a[k] < b[k] ? a[k] : b[k];
     hi[k] = a[k] < b[k] ? b[k] : a[k];
   }
-  // The smallest of the three candidate ranges.
-  std::span<const std::uint32_t> candidates = this->candidates(0, a, b);
-  for (int k = 1; k < 3; ++k) {
+  // The smallest of the candidate ranges of the orders that fix the most
+  // coordinates (the range of any order holds every vertex on the segment,
+  // so the choice only saves work): for a segment parallel to an axis, the
+  // one order that searches its line alone.
+  std::array<int, 3> fixed{};
+  for (int k = 0; k < 3; ++k)
+    for (int m = 0; m < 2 && a[(k + m) % 3] == b[(k + m) % 3]; ++m) ++fixed[k];
+  const int most = *std::max_element(fixed.begin(), fixed.end());
+  std::span<const std::uint32_t> candidates;
+  bool found = false;
+  for (int k = 0; k < 3; ++k) {
+    if (fixed[k] != most) continue;
     const auto range = this->candidates(k, a, b);
-    if (range.size() < candidates.size()) candidates = range;
+    if (!found || range.size() < candidates.size()) candidates = range;
+    found = true;
   }
   const Vec3 ab = b - a;
   std::vector<std::uint32_t> inside;

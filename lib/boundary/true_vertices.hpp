@@ -36,6 +36,7 @@ class SegmentSplitter {
   [[nodiscard]] std::span<const std::uint32_t> candidates(int k, const Vec3& a, const Vec3& b) const;
   const std::vector<Vec3>& vertices_;
   std::array<std::vector<std::uint32_t>, 3> by_axis_;  // vertex ids by coordinates (k, k + 1, k + 2)
+  std::vector<std::uint32_t> by_representation_;       // vertex ids in the representation order
 };
 
 }  // namespace cvms::detail
