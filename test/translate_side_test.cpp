@@ -94,19 +94,9 @@ TEST(TranslateSide, PolycubesWithHolesAndCavities) {
   expect_all_operands(hollow_cube(4), {}, 3, true);
 }
 
-// Random height fields h(i, j) = max(f(i), g(j)), so that each is a solid.
 TEST(TranslateSide, RandomPolycubesWithDecimalCoordinates) {
-  const Mapping rotated{rational_rotation(), Vec3{Rational(1, 10), Rational(-3, 10), Rational(7, 100)}};
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    std::mt19937_64 rng(seed);
-    std::vector<int> f(4), g(3);
-    for (int& h : f) h = 1 + static_cast<int>(rng() % 3);
-    for (int& h : g) h = 1 + static_cast<int>(rng() % 3);
-    const Cubes cubes = cubes_where(4, 3, 3, [&](int i, int j, int k) {
-      return k < std::max(f[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(j)]);
-    });
-    expect_all_operands(cubes, rotated, seed, false);
-  }
+  for (std::uint64_t seed = 1; seed <= 4; ++seed)
+    expect_all_operands(random_height_field(seed), decimal_rotation(), seed, false);
 }
 
 // Fragments that share a corner share a group; a group's members are joined
