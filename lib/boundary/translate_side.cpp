@@ -15,9 +15,11 @@
 // with no three consecutive ones collinear), located exactly in A after
 // the translation by -b.
 //
-// Corners are matched by sorting them in the exact representation order
-// (never by a hash, which an input can make collide), so the grouping costs
-// O(m log m) comparisons for m corners. Groups are only joined where
+// Corners are matched by sorting them (never in a hash table, which an
+// input can drive quadratic): by a word of their representation, then by
+// the exact representation order, a total order in which equal points are
+// adjacent; so the grouping costs O(m log m) comparisons for m corners
+// whatever the words. Groups are only joined where
 // fragments share a corner, never where a corner of one lies on an edge of
 // another: that would be sound too, but a group split in two only costs a
 // second locate.
@@ -25,6 +27,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
+
+#include <gmp.h>
 
 #include "progress_reporter.hpp"
 #include "representation_order.hpp"
@@ -33,16 +38,45 @@
 
 namespace cvms::detail {
 
+namespace {
+
+// A word made of the lowest limbs and sizes of a point's canonical
+// numerators and denominators: equal points have equal words, so ordering
+// by the word first and the exact representation on ties puts equal points
+// together while most comparisons read no limb through a pointer.
+std::uint64_t representation_word(const Vec3& p) {
+  std::uint64_t word = 0;
+  const auto mix = [&](mpz_srcptr z) {
+    const std::uint64_t limb = mpz_size(z) > 0 ? mpz_getlimbn(z, 0) : 0;
+    const std::uint64_t size = 2 * static_cast<std::uint64_t>(mpz_size(z)) + (mpz_sgn(z) < 0 ? 1 : 0);
+    word = (word ^ limb ^ size) * 0x9E3779B97F4A7C15ULL;
+    word ^= word >> 29;
+  };
+  for (int k = 0; k < 3; ++k) {
+    mix(p[k].get_num_mpz_t());
+    mix(p[k].get_den_mpz_t());
+  }
+  return word;
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> corner_groups(const BoundaryFragments& fragments, std::uint32_t& count) {
   struct Corner {
+    std::uint64_t word;
     const Vec3* point;
     std::uint32_t fragment;
   };
+  std::size_t total = 0;
+  for (const BoundaryFragment& f : fragments.fragments) total += f.corners.size();
   std::vector<Corner> corners;
+  corners.reserve(total);
   for (std::uint32_t f = 0; f < fragments.fragments.size(); ++f)
-    for (const Vec3& c : fragments.fragments[f].corners) corners.push_back({&c, f});
-  std::sort(corners.begin(), corners.end(),
-            [](const Corner& x, const Corner& y) { return RepresentationLess::less(*x.point, *y.point); });
+    for (const Vec3& c : fragments.fragments[f].corners) corners.push_back({representation_word(c), &c, f});
+  std::sort(corners.begin(), corners.end(), [](const Corner& x, const Corner& y) {
+    if (x.word != y.word) return x.word < y.word;
+    return RepresentationLess::less(*x.point, *y.point);
+  });
   UnionFind groups(fragments.fragments.size());
   for (std::size_t i = 1; i < corners.size(); ++i)
     if (*corners[i].point == *corners[i - 1].point) groups.join(corners[i].fragment, corners[i - 1].fragment);
