@@ -40,8 +40,16 @@ ConvexPolyhedron random_convex(std::uint64_t seed) {
 std::vector<ConvexPolyhedron> convex_operands(std::uint64_t seed) {
   const Rational h(1, 4);
   const Rational r(1, 3);
-  return {hull_of({{-h, -h, -h}, {h, -h, -h}, {-h, h, -h}, {h, h, -h}, {-h, -h, h}, {h, -h, h}, {-h, h, h}, {h, h, h}}),
-          hull_of({{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}}), random_convex(seed)};
+  return {hull_of({{-h, -h, -h},
+                   {h, -h, -h},
+                   {-h, h, -h},
+                   {h, h, -h},
+                   {-h, -h, h},
+                   {h, -h, h},
+                   {-h, h, h},
+                   {h, h, h}}),
+          hull_of({{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}}),
+          random_convex(seed)};
 }
 
 // A point of B's interior: the centroid of its vertices.
@@ -54,7 +62,8 @@ Vec3 centroid(const ConvexPolyhedron& b) {
 // The fragments of the boundary of dA + B for A = m(cubes), each checked
 // at its corners and centroid against the cubes; returns how many were
 // found inside A + b.
-std::size_t expect_sides(const Cubes& cubes, const Mapping& m, const ConvexPolyhedron& b, std::uint64_t seed) {
+std::size_t expect_sides(const Cubes& cubes, const Mapping& m, const ConvexPolyhedron& b,
+                         std::uint64_t seed) {
   SCOPED_TRACE("seed " + std::to_string(seed));
   const Solid a = polycube(cubes, m);
   const std::vector<ConvexPolyhedron> pieces = detail::face_sums(detail::facet_polygons(a), b, {});

@@ -178,7 +178,8 @@ std::vector<DirectedSegment> plane_region_boundary(const BoundaryFragments& frag
       edges.push_back(line_edge(charted[first + i], charted[first + j], corners[i], corners[j], values));
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const LineEdge& a, const LineEdge& b) { return compare_lines(a, b) < 0; });
+  std::sort(edges.begin(), edges.end(),
+            [](const LineEdge& a, const LineEdge& b) { return compare_lines(a, b) < 0; });
   std::vector<LineEvent> events;
   for (std::size_t k = 0; k < edges.size();) {
     std::size_t e = k;

@@ -25,11 +25,11 @@
 // second locate.
 #include "translate_side.hpp"
 
+#include <gmp.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
-
-#include <gmp.h>
 
 #include "progress_reporter.hpp"
 #include "representation_order.hpp"

@@ -34,7 +34,8 @@ std::vector<Vec3> true_vertices(const std::vector<std::vector<DirectedSegment>>&
     }
   const RepresentationLess less;
   std::sort(ends.begin(), ends.end(), less);
-  ends.erase(std::unique(ends.begin(), ends.end(), [](const Vec3* p, const Vec3* q) { return *p == *q; }), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end(), [](const Vec3* p, const Vec3* q) { return *p == *q; }),
+             ends.end());
   std::sort(ends.begin(), ends.end(), [](const Vec3* p, const Vec3* q) { return *p < *q; });
   std::vector<Vec3> vertices;
   vertices.reserve(ends.size());
@@ -48,8 +49,9 @@ SegmentSplitter::SegmentSplitter(const std::vector<Vec3>& vertices) : vertices_(
     near_.push_back({to_double_nearest(p.x), to_double_nearest(p.y), to_double_nearest(p.z)});
   by_representation_.resize(vertices.size());
   std::iota(by_representation_.begin(), by_representation_.end(), std::uint32_t{0});
-  std::sort(by_representation_.begin(), by_representation_.end(),
-            [&](std::uint32_t i, std::uint32_t j) { return RepresentationLess::less(vertices[i], vertices[j]); });
+  std::sort(by_representation_.begin(), by_representation_.end(), [&](std::uint32_t i, std::uint32_t j) {
+    return RepresentationLess::less(vertices[i], vertices[j]);
+  });
   for (int k = 0; k < 3; ++k) {
     auto& order = by_axis_[k];
     order.resize(vertices.size());
@@ -93,17 +95,17 @@ std::span<const std::uint32_t> SegmentSplitter::candidates(int k, const Query& q
   const auto first = std::partition_point(order.begin(), order.end(), [&](std::uint32_t i) {
     return key_compare(i, *q.lo[r], q.near_lo[r]) < 0;
   });
-  const auto last = std::partition_point(first, order.end(), [&](std::uint32_t i) {
-    return key_compare(i, *q.hi[r], q.near_hi[r]) <= 0;
-  });
+  const auto last = std::partition_point(
+      first, order.end(), [&](std::uint32_t i) { return key_compare(i, *q.hi[r], q.near_hi[r]) <= 0; });
   return {first, last};
 }
 
 // Searched in the representation order: integer comparisons where the
 // value order would cross-multiply.
 std::uint32_t SegmentSplitter::id(const Vec3& p) const {
-  const auto it = std::lower_bound(by_representation_.begin(), by_representation_.end(), p,
-                                   [&](std::uint32_t i, const Vec3& q) { return RepresentationLess::less(vertices_[i], q); });
+  const auto it = std::lower_bound(
+      by_representation_.begin(), by_representation_.end(), p,
+      [&](std::uint32_t i, const Vec3& q) { return RepresentationLess::less(vertices_[i], q); });
   if (it == by_representation_.end() || vertices_[*it] != p)
     throw Error(ErrorCategory::invalid_argument, "assemble_boundary: a segment end is not a vertex");
   return *it;

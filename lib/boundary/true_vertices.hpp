@@ -45,7 +45,7 @@ class SegmentSplitter {
   // Sign of vertex i's coordinate k minus x (whose nearest double is near_x).
   [[nodiscard]] int compare(std::uint32_t i, int k, const Rational& x, double near_x) const;
   const std::vector<Vec3>& vertices_;
-  std::vector<std::array<double, 3>> near_;  // each vertex's coordinates as nearest doubles
+  std::vector<std::array<double, 3>> near_;            // each vertex's coordinates as nearest doubles
   std::array<std::vector<std::uint32_t>, 3> by_axis_;  // vertex ids by coordinates (k, k + 1, k + 2)
   std::vector<std::uint32_t> by_representation_;       // vertex ids in the representation order
 };
