@@ -343,20 +343,8 @@ TEST(InteriorFacets, PartsTouchingAlongAnEdgeOrAtAPoint) {
     (void)expect_for(polycube(cubes), ++seed);
 }
 
-// Random height fields h(i, j) = max(f(i), g(j)): no two cubes of one meet
-// only along an edge or at a point, so each is a solid.
 TEST(InteriorFacets, RandomPolycubesWithDecimalCoordinates) {
-  const Mapping rotated{rational_rotation(), Vec3{Rational(1, 10), Rational(-3, 10), Rational(7, 100)}};
-  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    std::mt19937_64 rng(seed);
-    std::vector<int> f(4), g(3);
-    for (int& h : f) h = 1 + static_cast<int>(rng() % 3);
-    for (int& h : g) h = 1 + static_cast<int>(rng() % 3);
-    const Cubes cubes = cubes_where(4, 3, 3, [&](int i, int j, int k) {
-      return k < std::max(f[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(j)]);
-    });
-    expect_for(polycube(cubes, rotated), seed);
-  }
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) expect_for(polycube(random_height_field(seed), decimal_rotation()), seed);
 }
 
 // A cube [0, 2]^3 whose top is two rectangles: their shared corners lie

@@ -214,4 +214,23 @@ inline Mat3 rational_rotation() {
   return z * x;
 }
 
+// A random height field on a 4 x 3 grid, h(i, j) = max(f(i), g(j)) with
+// f, g in 1..3 drawn from `seed`: no two of its cubes meet only along an
+// edge or at a point, so it is a solid.
+inline Cubes random_height_field(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<int> f(4), g(3);
+  for (int& h : f) h = 1 + static_cast<int>(rng() % 3);
+  for (int& h : g) h = 1 + static_cast<int>(rng() % 3);
+  return cubes_where(4, 3, 3, [&](int i, int j, int k) {
+    return k < std::max(f[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(j)]);
+  });
+}
+
+// The map of the decimal-coordinate tests: rational_rotation() and a
+// decimal offset.
+inline Mapping decimal_rotation() {
+  return {rational_rotation(), Vec3{Rational(1, 10), Rational(-3, 10), Rational(7, 100)}};
+}
+
 }  // namespace cvms::test

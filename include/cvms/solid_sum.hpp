@@ -50,7 +50,8 @@ enum class SolidSumRoad {
 /// convex sum and all of them together, as minkowski_sum of two unions does
 /// (cvms/convex_union.hpp). options.progress hears "solid sum: faces" (A's
 /// face polygons summed with B) and "solid sum: fragments" (the union's
-/// fragments tested against A + b) when one operand is convex, and the
+/// fragments tested against A + b, one unit per group of fragments joined
+/// by shared corners) when one operand is convex, and the
 /// stages of the sums and of the union.
 /// \throw Error(invalid_argument) for an empty operand;
 /// \throw Error(limit) naming the limit (SumLimits, DecompositionLimits);

@@ -23,6 +23,7 @@
 #include "plane_region_boundary.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
@@ -34,10 +35,15 @@ namespace {
 
 // A fragment edge on its line: the line's key (dx, dy, offset), the
 // parameters of its lower and upper ends, whether it runs up (+1) or down
-// (-1), and its ends in 3D, lower first.
+// (-1), and its ends in 3D, lower first. The values are pointers into the
+// charted corners, two constants or the plane's pool, so that sorting moves
+// no number and an edge parallel to a chart axis allocates at most one.
 struct LineEdge {
-  Vec3 line;
-  Rational t_low, t_high;
+  const Rational* dx = nullptr;
+  const Rational* dy = nullptr;
+  const Rational* offset = nullptr;
+  const Rational* t_low = nullptr;
+  const Rational* t_high = nullptr;
   int along = 0;
   const Vec3* low = nullptr;
   const Vec3* high = nullptr;
@@ -51,34 +57,62 @@ struct LineEvent {
   const Vec3* point;
 };
 
-int compare_lines(const Vec3& a, const Vec3& b) {
-  for (int k = 0; k < 3; ++k)
-    if (int c = cmp(a[k], b[k]); c != 0) return c;
-  return 0;
+int compare_lines(const LineEdge& a, const LineEdge& b) {
+  if (int c = cmp(*a.dx, *b.dx); c != 0) return c;
+  if (int c = cmp(*a.dy, *b.dy); c != 0) return c;
+  return cmp(*a.offset, *b.offset);
 }
 
-LineEdge line_edge(const PlaneChart& chart, const Vec3& a, const Vec3& b) {
-  const Vec2 pa = chart(a);
-  const Vec2 pb = chart(b);
-  const Vec2 d = pb - pa;
-  const Vec3 dir3 = canonical_normal(Vec3{d.x, d.y, 0});
-  const Vec2 dir{dir3.x, dir3.y};
+// The values edges point to: a pool that never moves them (reserved for
+// the plane's five values per edge) and the constants of the axis
+// directions.
+struct LineValues {
+  explicit LineValues(std::size_t edges) { pool.reserve(5 * edges); }
+  const Rational* add(Rational value) { return &pool.emplace_back(std::move(value)); }
+  std::vector<Rational> pool;
+  const Rational zero{0};
+  const Rational one{1};
+};
+
+// The edge from a to b, charted as pa and pb. An edge parallel to a chart
+// axis has the primitive direction (1, 0) or (0, 1), whose offset and
+// parameters are coordinates (the offset of (0, 1) negated): no product
+// and no gcd. The key is the same either way.
+LineEdge line_edge(const Vec2& pa, const Vec2& pb, const Vec3& a, const Vec3& b, LineValues& values) {
   LineEdge e;
-  e.line = Vec3{dir.x, dir.y, cross(dir, pa)};
-  Rational ta = dot(dir, pa);
-  Rational tb = dot(dir, pb);
-  e.along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
-  if (e.along > 0) {
-    e.t_low = std::move(ta);
-    e.t_high = std::move(tb);
-    e.low = &a;
-    e.high = &b;
+  const Rational* ta = nullptr;
+  const Rational* tb = nullptr;
+  if (const int sx = cmp(pb.x, pa.x), sy = cmp(pb.y, pa.y); sy == 0) {
+    // (1, 0): offset cross((1, 0), pa) = pa.y, parameter x.
+    e.dx = &values.one;
+    e.dy = &values.zero;
+    e.offset = &pa.y;
+    ta = &pa.x;
+    tb = &pb.x;
+    e.along = sx > 0 ? 1 : -1;
+  } else if (sx == 0) {
+    // (0, 1): offset cross((0, 1), pa) = -pa.x, parameter y.
+    e.dx = &values.zero;
+    e.dy = &values.one;
+    e.offset = values.add(-pa.x);
+    ta = &pa.y;
+    tb = &pb.y;
+    e.along = sy > 0 ? 1 : -1;
   } else {
-    e.t_low = std::move(tb);
-    e.t_high = std::move(ta);
-    e.low = &b;
-    e.high = &a;
+    const Vec2 d = pb - pa;
+    const Vec3 dir3 = canonical_normal(Vec3{d.x, d.y, 0});
+    const Vec2 dir{dir3.x, dir3.y};
+    e.dx = values.add(dir.x);
+    e.dy = values.add(dir.y);
+    e.offset = values.add(cross(dir, pa));
+    ta = values.add(dot(dir, pa));
+    tb = values.add(dot(dir, pb));
+    e.along = sign_dot(dir, d) == Sign::positive ? 1 : -1;
   }
+  e.t_low = e.along > 0 ? ta : tb;
+  e.t_high = e.along > 0 ? tb : ta;
+  e.low = e.along > 0 ? &a : &b;
+  e.high = e.along > 0 ? &b : &a;
   return e;
 }
 
@@ -126,21 +160,33 @@ std::vector<DirectedSegment> plane_region_boundary(const BoundaryFragments& frag
   std::vector<DirectedSegment> out;
   const PlaneChart chart(normal);
   if (on_plane.size() == 1) return single_fragment_boundary(chart, fragments.fragments[on_plane[0]].corners);
+  // Every corner charted once, into storage that stays put while edges
+  // point into it.
+  std::size_t corners_on_plane = 0;
+  for (std::uint32_t f : on_plane) corners_on_plane += fragments.fragments[f].corners.size();
+  std::vector<Vec2> charted;
+  charted.reserve(corners_on_plane);
+  LineValues values(corners_on_plane);
   std::vector<LineEdge> edges;
+  edges.reserve(corners_on_plane);
   for (std::uint32_t f : on_plane) {
     const auto& corners = fragments.fragments[f].corners;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-      edges.push_back(line_edge(chart, corners[i], corners[(i + 1) % corners.size()]));
+    const std::size_t first = charted.size();
+    for (const Vec3& c : corners) charted.push_back(chart(c));
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const std::size_t j = (i + 1) % corners.size();
+      edges.push_back(line_edge(charted[first + i], charted[first + j], corners[i], corners[j], values));
+    }
   }
   std::sort(edges.begin(), edges.end(),
-            [](const LineEdge& a, const LineEdge& b) { return compare_lines(a.line, b.line) < 0; });
+            [](const LineEdge& a, const LineEdge& b) { return compare_lines(a, b) < 0; });
   std::vector<LineEvent> events;
   for (std::size_t k = 0; k < edges.size();) {
     std::size_t e = k;
     events.clear();
-    for (; e < edges.size() && compare_lines(edges[e].line, edges[k].line) == 0; ++e) {
-      events.push_back({&edges[e].t_low, edges[e].along, edges[e].low});
-      events.push_back({&edges[e].t_high, -edges[e].along, edges[e].high});
+    for (; e < edges.size() && compare_lines(edges[e], edges[k]) == 0; ++e) {
+      events.push_back({edges[e].t_low, edges[e].along, edges[e].low});
+      events.push_back({edges[e].t_high, -edges[e].along, edges[e].high});
     }
     std::sort(events.begin(), events.end(), [](const LineEvent& a, const LineEvent& b) { return cmp(*a.t, *b.t) < 0; });
     line_runs(events, out);

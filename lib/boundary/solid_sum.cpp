@@ -10,8 +10,9 @@
 //    interior of dA + B (b is interior to B), so no point of the boundary of
 //    dA + B lies on the boundary of A + b: each fragment (connected) lies
 //    wholly in the interior of A + b, where it bounds nothing of the sum and
-//    is dropped, or wholly outside A + b, where it is kept. One exact locate
-//    of a point of its relative interior in A tells which. The pieces'
+//    is dropped, or wholly outside A + b, where it is kept; so does a group
+//    of fragments joined by shared corners, and one exact locate of a point
+//    of the group in A tells which (translate_side.hpp). The pieces'
 //    facets proven to lie inside A + B (interior_facets.hpp) give only such
 //    dropped fragments, so they are not clipped at all.
 //  - neither convex: the pairwise sums of both decompositions, united, the
@@ -24,7 +25,6 @@
 #include "cvms/solid_sum.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -36,8 +36,7 @@
 #include "face_sums.hpp"
 #include "facet_polygons.hpp"
 #include "interior_facets.hpp"
-#include "progress_reporter.hpp"
-#include "worker.hpp"
+#include "translate_side.hpp"
 
 namespace cvms {
 namespace {
@@ -54,38 +53,11 @@ Vec3 interior_point(const ConvexPolyhedron& b) {
   return Rational(Rational(1) / b.num_vertices()) * sum;
 }
 
-// Whether each fragment lies inside A + b, by one locate of a point of its
-// relative interior (the centroid of three corners) in A; on
-// options.threads threads taking chunks of fragments from one counter, each
-// answer in its own slot, so the answers do not depend on the threads.
-std::vector<char> inside_translate(const detail::BoundaryFragments& all, const Solid& a, const Vec3& b,
-                                   const Options& options) {
-  constexpr std::size_t chunk = 256;
-  const std::size_t n = all.fragments.size();
-  std::vector<char> inside(n, 0);
-  detail::ProgressReporter progress(detail::callback_of(options.progress));
-  progress.begin("solid sum: fragments", n);
-  std::atomic<std::size_t> next{0};
-  detail::run_on_threads(detail::thread_count(options.threads, n / chunk + 1), [&](unsigned) {
-    for (std::size_t begin = next.fetch_add(chunk); begin < n; begin = next.fetch_add(chunk)) {
-      const std::size_t end = std::min(n, begin + chunk);
-      for (std::size_t i = begin; i < end; ++i) {
-        const std::vector<Vec3>& c = all.fragments[i].corners;
-        const Vec3 centroid = Rational(Rational(1) / 3) * (c[0] + c[1] + c[2]);
-        inside[i] = a.locate(centroid - b) == Location::inside ? 1 : 0;
-      }
-      progress.advance(end - begin);
-    }
-  });
-  progress.end();
-  return inside;
-}
-
 // The fragments that lie outside A + b, with the planes they use renumbered
 // in order.
 detail::BoundaryFragments outside(detail::BoundaryFragments all, const Solid& a, const Vec3& b,
                                   const Options& options) {
-  const std::vector<char> inside = inside_translate(all, a, b, options);
+  const std::vector<char> inside = detail::inside_translate(all, a, b, options);
   detail::BoundaryFragments kept;
   std::vector<std::uint32_t> renumbered(all.planes.size(), UINT32_MAX);
   for (std::size_t i = 0; i < all.fragments.size(); ++i) {

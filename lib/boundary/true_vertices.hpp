@@ -31,11 +31,23 @@ class SegmentSplitter {
   void split(const DirectedSegment& segment, std::vector<std::array<std::uint32_t, 2>>& edges) const;
 
  private:
+  // A segment [a, b] with its box [lo, hi], each coordinate also as its
+  // nearest double.
+  struct Query {
+    const Vec3& a;
+    const Vec3& b;
+    std::array<const Rational*, 3> lo, hi;
+    std::array<double, 3> near_a, near_lo, near_hi;
+  };
   [[nodiscard]] std::uint32_t id(const Vec3& p) const;
-  // The vertices of order k that may lie on the segment [a, b].
-  [[nodiscard]] std::span<const std::uint32_t> candidates(int k, const Vec3& a, const Vec3& b) const;
+  // The vertices of order k that may lie on the segment.
+  [[nodiscard]] std::span<const std::uint32_t> candidates(int k, const Query& q) const;
+  // Sign of vertex i's coordinate k minus x (whose nearest double is near_x).
+  [[nodiscard]] int compare(std::uint32_t i, int k, const Rational& x, double near_x) const;
   const std::vector<Vec3>& vertices_;
+  std::vector<std::array<double, 3>> near_;            // each vertex's coordinates as nearest doubles
   std::array<std::vector<std::uint32_t>, 3> by_axis_;  // vertex ids by coordinates (k, k + 1, k + 2)
+  std::vector<std::uint32_t> by_representation_;       // vertex ids in the representation order
 };
 
 }  // namespace cvms::detail
