@@ -109,7 +109,10 @@ BoundaryPlanes boundary_planes(const Solid& solid) {
     for (std::uint32_t w : triangles[t1])
       if (w != u1 && w != v1) far = w;
     const Plane& plane = result.planes[result.triangle_plane[t0]];
-    if (oriented_side(plane, result.triangle_side[t0], vertices[far]) > 0) {
+    const bool reflex = oriented_side(plane, result.triangle_side[t0], vertices[far]) > 0;
+    result.edges.push_back({u0, v0});
+    result.edge_reflex.push_back(reflex ? 1 : 0);
+    if (reflex) {
       ++result.reflex_edges;
       result.reflex_plane[result.triangle_plane[t0]] = 1;
       result.reflex_plane[result.triangle_plane[t1]] = 1;

@@ -7,6 +7,7 @@
 // decomposition depends on no other part of a solid's validation.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +34,11 @@ struct BoundaryPlanes {
   std::vector<std::uint32_t> triangle_plane;  // per triangle: index into planes
   std::vector<std::int8_t> triangle_side;     // +1 if the outward normal is planes[..].normal, else -1
   std::vector<std::uint8_t> reflex_plane;     // per plane: holds a triangle on a reflex edge
+  // The solid's edges (vertex index pairs, low first, sorted): the triangle
+  // edges between two facets, flat ones inside a facet left out; the
+  // reflex ones are flagged in `edge_reflex`.
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  std::vector<std::uint8_t> edge_reflex;
   std::uint32_t reflex_edges = 0;
   std::uint32_t shells = 0;
 };
