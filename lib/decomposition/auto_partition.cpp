@@ -214,13 +214,13 @@ std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& 
     const Plane& plane = planes.planes[s.plane];
 
     Node back, front;
-    for (const Fragment& f : node.fragments) {
+    for (Fragment& f : node.fragments) {
       if (f.plane == s.plane) continue;  // on the splitting plane: used up here
-      FragmentSplit parts = split_fragment(f, plane, s.side);
+      FragmentSplit parts = split_fragment(std::move(f), plane, s.side);
       if (parts.has_back) back.fragments.push_back(std::move(parts.back));
       if (parts.has_front) front.fragments.push_back(std::move(parts.front));
     }
-    CellSplit cells = split_cell(node.cell, planes.planes, s.plane, s.side);
+    CellSplit cells = split_cell(std::move(node.cell), planes.planes, s.plane, s.side);
     back.cell = std::move(cells.back);
     front.cell = std::move(cells.front);
     back.free = node.free;
