@@ -31,11 +31,13 @@
 #include "cvms/predicates.hpp"
 #include "cvms/proximity.hpp"
 #include "decomposition_fixtures.hpp"
+#include "diamond_ring.hpp"
 #include "solid_access.hpp"
 
 namespace cvms {
 namespace {
 
+using test::DiamondRing;
 using test::GridSolid;
 using test::Triangles;
 using test::unit_grid;
@@ -117,67 +119,6 @@ bool facet_separates(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
     if (all_front) return true;
   }
   return false;
-}
-
-// A ring (or an open bent bar) of convex segments: a diamond cross
-// section (outer, top, inner, bottom corners at 3 d, 2 d + z, d, 2 d - z)
-// at each integer direction d of `directions`, consecutive sections joined
-// by planar quads. The joints between segments are reflex along the inner
-// side and hold no facet: only planes through the joints' edges cut the
-// solid into its segments. Membership: in the hull of some two consecutive
-// sections (convex_hull and predicates only).
-struct DiamondRing {
-  std::vector<Vec2> directions;
-  bool closed = true;
-
-  std::array<Vec3, 4> section(std::size_t k) const {
-    const Vec2& d = directions[k];
-    return {Vec3{3 * d.x, 3 * d.y, 0}, Vec3{2 * d.x, 2 * d.y, 1}, Vec3{d.x, d.y, 0}, Vec3{2 * d.x, 2 * d.y, -1}};
-  }
-  std::size_t segments() const { return closed ? directions.size() : directions.size() - 1; }
-
-  Solid solid() const;
-
-  bool contains(const Vec3& p) const {
-    for (std::size_t k = 0; k < segments(); ++k) {
-      std::vector<Vec3> points;
-      for (const Vec3& q : section(k)) points.push_back(q);
-      for (const Vec3& q : section((k + 1) % directions.size())) points.push_back(q);
-      if (piece_contains(convex_hull(points), p)) return true;
-    }
-    return false;
-  }
-};
-
-Solid DiamondRing::solid() const {
-  std::vector<Vec3> vertices;
-  for (std::size_t k = 0; k < directions.size(); ++k)
-    for (const Vec3& q : section(k)) vertices.push_back(q);
-  Triangles triangles;
-  const auto n = static_cast<std::uint32_t>(directions.size());
-  for (std::uint32_t k = 0; k < segments(); ++k) {
-    const std::uint32_t a = 4 * k, b = 4 * ((k + 1) % n);
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t j = (i + 1) % 4;
-      triangles.push_back({a + i, b + i, b + j});
-      triangles.push_back({a + i, b + j, a + j});
-    }
-  }
-  if (!closed) {
-    const std::uint32_t last = 4 * (n - 1);
-    triangles.push_back({0, 1, 2});
-    triangles.push_back({0, 2, 3});
-    triangles.push_back({last, last + 2, last + 1});
-    triangles.push_back({last, last + 3, last + 2});
-  }
-  // from_soup validates: closed, 2-manifold, oriented outward.
-  PolygonSoup soup;
-  soup.points = std::move(vertices);
-  for (const auto& t : triangles) {
-    soup.face_indices.insert(soup.face_indices.end(), t.begin(), t.end());
-    soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
-  }
-  return Solid::from_soup(std::move(soup));
 }
 
 struct Box {
