@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "cvms/rational.hpp"
@@ -28,6 +29,15 @@ struct Plane {
 // with the orientation `side` (+1 or -1): negative means behind an outward
 // facet of that orientation.
 int oriented_side(const Plane& plane, int side, const Vec3& p);
+
+// The order of BoundaryPlanes::planes: by normal, then by offset.
+bool plane_less(const Plane& a, const Plane& b);
+bool plane_equal(const Plane& a, const Plane& b);
+
+// The plane through `point` orthogonal to `normal` (nonzero), in canonical
+// form, with the sign (+1 or -1) that turns `normal`'s direction into the
+// canonical normal's.
+std::pair<Plane, int> canonical_plane(const Vec3& normal, const Vec3& point);
 
 struct BoundaryPlanes {
   std::vector<Plane> planes;                 // distinct, sorted by (normal, offset)

@@ -8,28 +8,16 @@
 #include <array>
 #include <utility>
 
-#include "cvms/convex_polyhedron.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms::decomposition {
 namespace {
 
-bool plane_less(const Plane& a, const Plane& b) {
-  if (a.normal != b.normal) return a.normal < b.normal;
-  return a.offset < b.offset;
-}
-
-bool plane_equal(const Plane& a, const Plane& b) { return a.normal == b.normal && a.offset == b.offset; }
-
 // The canonical plane through x, y and w, or nothing if they are collinear.
 bool plane_through(const Vec3& x, const Vec3& y, const Vec3& w, Plane& out) {
-  const Vec3 cross_product = cross(y - x, w - x);
-  if (is_zero(cross_product)) return false;
-  Vec3 n = primitive_direction(cross_product);
-  const int first = sgn(n.x) != 0 ? sgn(n.x) : (sgn(n.y) != 0 ? sgn(n.y) : sgn(n.z));
-  if (first < 0) n = -n;
-  out.offset = dot(n, x);
-  out.normal = std::move(n);
+  const Vec3 normal = cross(y - x, w - x);
+  if (is_zero(normal)) return false;
+  out = canonical_plane(normal, x).first;
   return true;
 }
 
