@@ -116,6 +116,7 @@ BoundaryPlanes boundary_planes(const Solid& solid) {
     const bool reflex = oriented_side(plane, result.triangle_side[t0], vertices[far]) > 0;
     result.edges.push_back({u0, v0});
     result.edge_reflex.push_back(reflex ? 1 : 0);
+    result.edge_planes.push_back({result.triangle_plane[t0], result.triangle_plane[t1]});
     if (reflex) {
       ++result.reflex_edges;
       result.reflex_plane[result.triangle_plane[t0]] = 1;

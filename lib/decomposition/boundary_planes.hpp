@@ -49,6 +49,7 @@ struct BoundaryPlanes {
   // reflex ones are flagged in `edge_reflex`.
   std::vector<std::array<std::uint32_t, 2>> edges;
   std::vector<std::uint8_t> edge_reflex;
+  std::vector<std::array<std::uint32_t, 2>> edge_planes;  // per edge: its two triangles' planes
   std::uint32_t reflex_edges = 0;
   std::uint32_t shells = 0;
 };

@@ -21,6 +21,8 @@ bool plane_through(const Vec3& x, const Vec3& y, const Vec3& w, Plane& out) {
   return true;
 }
 
+bool on_plane(const Plane& plane, const Vec3& p) { return oriented_side(plane, 1, p) == 0; }
+
 // Per vertex, the indices of the edges at it.
 std::vector<std::vector<std::uint32_t>> edges_at(std::size_t vertices,
                                                  const std::vector<std::array<std::uint32_t, 2>>& edges) {
@@ -42,8 +44,12 @@ std::vector<Plane> free_planes(const Solid& solid, const BoundaryPlanes& planes)
       const std::uint32_t x = planes.edges[e][end], y = planes.edges[e][1 - end];
       for (std::uint32_t f : at[x]) {
         const std::uint32_t w = planes.edges[f][0] == x ? planes.edges[f][1] : planes.edges[f][0];
+        // On a plane of e's triangles, the pair spans that facet plane.
+        if (w == y || on_plane(planes.planes[planes.edge_planes[e][0]], vertices[w]) ||
+            on_plane(planes.planes[planes.edge_planes[e][1]], vertices[w]))
+          continue;
         Plane plane;
-        if (w == y || !plane_through(vertices[x], vertices[y], vertices[w], plane)) continue;
+        if (!plane_through(vertices[x], vertices[y], vertices[w], plane)) continue;
         if (std::binary_search(planes.planes.begin(), planes.planes.end(), plane, plane_less)) continue;
         found.push_back(std::move(plane));
       }
