@@ -31,11 +31,13 @@
 #include "cvms/predicates.hpp"
 #include "cvms/proximity.hpp"
 #include "decomposition_fixtures.hpp"
+#include "diamond_ring.hpp"
 #include "solid_access.hpp"
 
 namespace cvms {
 namespace {
 
+using test::DiamondRing;
 using test::GridSolid;
 using test::Triangles;
 using test::unit_grid;
@@ -236,6 +238,16 @@ TEST(ConvexDecomposition, BoxWithCavity) {
 TEST(ConvexDecomposition, StarPrism) {
   StarPrism star;
   EXPECT_LE(certify("star prism", star.solid(), [&](const Vec3& p) { return star.contains(p); }, 5), 5u);
+}
+
+TEST(ConvexDecomposition, RingOfSegmentsCutAtItsJoints) {
+  DiamondRing ring{{{2, 1}, {1, 2}, {-1, 2}, {-2, 1}, {-2, -1}, {-1, -2}, {1, -2}, {2, -1}}};
+  EXPECT_EQ(certify("diamond ring of 8 segments (genus 1)", ring.solid(),
+                    [&](const Vec3& p) { return ring.contains(p); }, 16),
+            8u);
+  DiamondRing bar{{{3, 0}, {2, 2}, {0, 3}, {-2, 2}}, false};
+  EXPECT_EQ(certify("bent diamond bar of 3 segments", bar.solid(), [&](const Vec3& p) { return bar.contains(p); }, 4),
+            3u);
 }
 
 TEST(ConvexDecomposition, CoplanarAndCollinearFacets) {

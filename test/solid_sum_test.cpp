@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "cvms/error.hpp"
+#include "diamond_ring.hpp"
 #include "solid_sum_fixtures.hpp"
 
 namespace cvms::test {
@@ -110,6 +111,26 @@ TEST(SolidSum, TwoNonConvexSolidsGoThroughBothDecompositions) {
   expect_polycube_sum(l_shape(), frame(3), {}, 10);
   const Cubes step = cubes_where(2, 2, 2, [](int i, int j, int k) { return i + j + k <= 1; });
   expect_polycube_sum(step, l_shape(), {}, 11);
+}
+
+TEST(SolidSum, RingCutAtItsJointsPlusLBlock) {
+  // Both non-convex: the ring's decomposition cuts it at its joints (planes
+  // that hold no facet). The oracle's pieces are the ring's segments built
+  // by hand, each + each unit cube of the L: no decomposition in them.
+  const DiamondRing ring{{{2, 1}, {1, 2}, {-1, 2}, {-2, 1}, {-2, -1}, {-1, -2}, {1, -2}, {2, -1}}};
+  const Solid result = minkowski_sum(ring.solid(), polycube(l_shape()));
+  std::vector<ConvexPolyhedron> cubes;
+  for (const auto& c : l_shape()) {
+    std::vector<Vec3> corners;
+    for (int k = 0; k < 8; ++k)
+      corners.push_back(Vec3{Rational(c[0] + (k & 1)), Rational(c[1] + ((k >> 1) & 1)), Rational(c[2] + (k >> 2))});
+    cubes.push_back(convex_hull(corners));
+  }
+  const ConvexUnion by_hand = minkowski_sum(ConvexUnion(ring.segment_hulls()), ConvexUnion(std::move(cubes)));
+  expect_points(result, by_hand, 15);
+  expect_vertices_on_piece_planes(result, by_hand);
+  EXPECT_EQ(result.num_shells(), 1u);
+  EXPECT_EQ(result.genus(), 1u);
 }
 
 TEST(SolidSum, LobesTouchingAlongAnEdgeHoldItsVerticesOncePerLobe) {

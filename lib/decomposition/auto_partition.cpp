@@ -19,14 +19,27 @@
 // cells). At most kCandidates planes are scored per node, chosen evenly over
 // the sorted candidates, each scored on at most kScored fragments, so the
 // choice costs O(kCandidates * kScored) and the split O(fragments).
+//
+// Before any facet plane, a free plane (free_planes.hpp, no facet on it)
+// that cuts none of the node's fragments and has some of them strictly on
+// each side: the split then makes no new fragment, each fragment goes whole
+// to one part, and both parts keep fragments, so neither is taken for an
+// inside or outside cell here and the classification above stays as it is.
+// Each part has fewer fragments than the node, and a plane cannot split a
+// cell that lies on one side of it again, so the partition stays finite. A
+// free plane with all of a node's fragments on one closed side is useless
+// for the node's whole subtree (the parts' fragments lie in the node's) and
+// is dropped from it.
 #include "auto_partition.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <utility>
 
 #include "convex_cell.hpp"
 #include "cvms/error.hpp"
+#include "free_planes.hpp"
 
 namespace cvms::decomposition {
 namespace {
@@ -40,6 +53,7 @@ constexpr std::uint64_t kPointBytes = 256;
 struct Node {
   Cell cell;
   std::vector<Fragment> fragments;
+  std::vector<std::uint32_t> free;  // table indices of the free planes still worth trying
 };
 
 std::uint64_t node_bytes(const Node& node) {
@@ -99,13 +113,60 @@ Splitter choose_splitter(const std::vector<Fragment>& fragments, const BoundaryP
   return Splitter{best, 1};
 }
 
+// Which closed sides of `plane` a fragment has points strictly on.
+struct Sides {
+  bool back = false;
+  bool front = false;
+};
+
+Sides fragment_sides(const Fragment& fragment, const Plane& plane) {
+  Sides sides;
+  for (const Vec3& p : fragment.points) {
+    const int s = oriented_side(plane, 1, p);
+    sides.back = sides.back || s < 0;
+    sides.front = sides.front || s > 0;
+    if (sides.back && sides.front) break;
+  }
+  return sides;
+}
+
+// The first of node.free that cuts no fragment and has fragments strictly
+// on both sides, or UINT32_MAX; the planes with every fragment on one side
+// are dropped from node.free on the way.
+std::uint32_t free_cut(Node& node, const std::vector<Plane>& planes) {
+  std::size_t kept = 0;
+  std::uint32_t chosen = UINT32_MAX;
+  for (std::size_t k = 0; k < node.free.size(); ++k) {
+    const std::uint32_t candidate = node.free[k];
+    if (chosen == UINT32_MAX) {
+      Sides all;
+      bool cuts = false;
+      for (const Fragment& f : node.fragments) {
+        const Sides sides = fragment_sides(f, planes[candidate]);
+        cuts = sides.back && sides.front;
+        if (cuts) break;
+        all.back = all.back || sides.back;
+        all.front = all.front || sides.front;
+      }
+      if (!cuts && !(all.back && all.front)) continue;  // useless below this node
+      if (!cuts) {
+        chosen = candidate;
+        continue;  // used here: no part needs it again
+      }
+    }
+    node.free[kept++] = candidate;
+  }
+  node.free.resize(kept);
+  return chosen;
+}
+
 [[noreturn]] void memory_limit(std::uint64_t needed, std::uint64_t limit) {
   throw Error(ErrorCategory::limit,
               "convex_decomposition: the partition would need about " + std::to_string(needed) +
                   " bytes of working memory, more than max_memory_bytes = " + std::to_string(limit));
 }
 
-Node root_node(const Solid& solid, BoundaryPlanes& planes) {
+Node root_node(const Solid& solid, BoundaryPlanes& planes, const std::vector<Plane>& free) {
   auto vertices = solid.vertices();
   auto triangles = solid.triangles();
   Vec3 lo = vertices[triangles[0][0]], hi = lo;
@@ -118,6 +179,7 @@ Node root_node(const Solid& solid, BoundaryPlanes& planes) {
   Node root;
   auto sorted = static_cast<std::uint32_t>(planes.planes.size());
   root.cell = box_cell(lo, hi, planes.planes, sorted);
+  for (const Plane& plane : free) root.free.push_back(plane_index(planes.planes, sorted, plane));
   planes.reflex_plane.resize(planes.planes.size(), 0);
   root.fragments.reserve(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -141,25 +203,28 @@ std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& 
 
   std::vector<std::vector<Vec3>> inside;
   std::vector<Node> stack;
-  stack.push_back(root_node(solid, planes));
+  stack.push_back(root_node(solid, planes, free_planes(solid, planes)));
   std::uint64_t live = node_bytes(stack.back());
   while (!stack.empty()) {
     Node node = std::move(stack.back());
     stack.pop_back();
     live -= std::min(live, node_bytes(node));
-    Splitter s = choose_splitter(node.fragments, planes);
+    const std::uint32_t free = free_cut(node, planes.planes);
+    const Splitter s = free != UINT32_MAX ? Splitter{free, 1} : choose_splitter(node.fragments, planes);
     const Plane& plane = planes.planes[s.plane];
 
     Node back, front;
-    for (const Fragment& f : node.fragments) {
+    for (Fragment& f : node.fragments) {
       if (f.plane == s.plane) continue;  // on the splitting plane: used up here
-      FragmentSplit parts = split_fragment(f, plane, s.side);
+      FragmentSplit parts = split_fragment(std::move(f), plane, s.side);
       if (parts.has_back) back.fragments.push_back(std::move(parts.back));
       if (parts.has_front) front.fragments.push_back(std::move(parts.front));
     }
-    CellSplit cells = split_cell(node.cell, planes.planes, s.plane, s.side);
+    CellSplit cells = split_cell(std::move(node.cell), planes.planes, s.plane, s.side);
     back.cell = std::move(cells.back);
     front.cell = std::move(cells.front);
+    back.free = node.free;
+    front.free = std::move(node.free);
     node = Node{};
 
     std::uint64_t added = node_bytes(back) + node_bytes(front);

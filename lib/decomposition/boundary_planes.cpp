@@ -16,24 +16,9 @@
 namespace cvms::decomposition {
 namespace {
 
-bool plane_less(const Plane& a, const Plane& b) {
-  if (a.normal != b.normal) return a.normal < b.normal;
-  return a.offset < b.offset;
-}
-
-bool plane_equal(const Plane& a, const Plane& b) { return a.normal == b.normal && a.offset == b.offset; }
-
 // The canonical plane of a triangle and the side its outward normal faces.
 std::pair<Plane, int> triangle_plane(const Vec3& a, const Vec3& b, const Vec3& c) {
-  Vec3 n = primitive_direction(cross(b - a, c - a));
-  int side = 1;
-  int first = sgn(n.x) != 0 ? sgn(n.x) : (sgn(n.y) != 0 ? sgn(n.y) : sgn(n.z));
-  if (first < 0) {
-    n = -n;
-    side = -1;
-  }
-  Rational offset = dot(n, a);
-  return {Plane{std::move(n), std::move(offset)}, side};
+  return canonical_plane(cross(b - a, c - a), a);
 }
 
 std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
@@ -45,6 +30,25 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
 }
 
 }  // namespace
+
+bool plane_less(const Plane& a, const Plane& b) {
+  if (a.normal != b.normal) return a.normal < b.normal;
+  return a.offset < b.offset;
+}
+
+bool plane_equal(const Plane& a, const Plane& b) { return a.normal == b.normal && a.offset == b.offset; }
+
+std::pair<Plane, int> canonical_plane(const Vec3& normal, const Vec3& point) {
+  Vec3 n = primitive_direction(normal);
+  int side = 1;
+  int first = sgn(n.x) != 0 ? sgn(n.x) : (sgn(n.y) != 0 ? sgn(n.y) : sgn(n.z));
+  if (first < 0) {
+    n = -n;
+    side = -1;
+  }
+  Rational offset = dot(n, point);
+  return {Plane{std::move(n), std::move(offset)}, side};
+}
 
 int oriented_side(const Plane& plane, int side, const Vec3& p) {
   return side * static_cast<int>(side_of_plane(p, plane.normal, plane.offset));
@@ -109,7 +113,11 @@ BoundaryPlanes boundary_planes(const Solid& solid) {
     for (std::uint32_t w : triangles[t1])
       if (w != u1 && w != v1) far = w;
     const Plane& plane = result.planes[result.triangle_plane[t0]];
-    if (oriented_side(plane, result.triangle_side[t0], vertices[far]) > 0) {
+    const bool reflex = oriented_side(plane, result.triangle_side[t0], vertices[far]) > 0;
+    result.edges.push_back({u0, v0});
+    result.edge_reflex.push_back(reflex ? 1 : 0);
+    result.edge_planes.push_back({result.triangle_plane[t0], result.triangle_plane[t1]});
+    if (reflex) {
       ++result.reflex_edges;
       result.reflex_plane[result.triangle_plane[t0]] = 1;
       result.reflex_plane[result.triangle_plane[t1]] = 1;

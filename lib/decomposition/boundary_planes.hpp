@@ -7,7 +7,9 @@
 // decomposition depends on no other part of a solid's validation.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "cvms/rational.hpp"
@@ -28,11 +30,26 @@ struct Plane {
 // facet of that orientation.
 int oriented_side(const Plane& plane, int side, const Vec3& p);
 
+// The order of BoundaryPlanes::planes: by normal, then by offset.
+bool plane_less(const Plane& a, const Plane& b);
+bool plane_equal(const Plane& a, const Plane& b);
+
+// The plane through `point` orthogonal to `normal` (nonzero), in canonical
+// form, with the sign (+1 or -1) that turns `normal`'s direction into the
+// canonical normal's.
+std::pair<Plane, int> canonical_plane(const Vec3& normal, const Vec3& point);
+
 struct BoundaryPlanes {
   std::vector<Plane> planes;                 // distinct, sorted by (normal, offset)
   std::vector<std::uint32_t> triangle_plane;  // per triangle: index into planes
   std::vector<std::int8_t> triangle_side;     // +1 if the outward normal is planes[..].normal, else -1
   std::vector<std::uint8_t> reflex_plane;     // per plane: holds a triangle on a reflex edge
+  // The solid's edges (vertex index pairs, low first, sorted): the triangle
+  // edges between two facets, flat ones inside a facet left out; the
+  // reflex ones are flagged in `edge_reflex`.
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  std::vector<std::uint8_t> edge_reflex;
+  std::vector<std::array<std::uint32_t, 2>> edge_planes;  // per edge: its two triangles' planes
   std::uint32_t reflex_edges = 0;
   std::uint32_t shells = 0;
 };

@@ -53,7 +53,7 @@ void add_plane(std::vector<std::uint32_t>& list, std::uint32_t index) {
 
 }  // namespace
 
-CellSplit split_cell(const Cell& cell, const std::vector<Plane>& planes, std::uint32_t index, int side) {
+CellSplit split_cell(Cell cell, const std::vector<Plane>& planes, std::uint32_t index, int side) {
   const Plane& plane = planes[index];
   const std::size_t n = cell.vertices.size();
   std::vector<int> signs(n);
@@ -63,25 +63,20 @@ CellSplit split_cell(const Cell& cell, const std::vector<Plane>& planes, std::ui
     any_back = any_back || signs[i] < 0;
     any_front = any_front || signs[i] > 0;
   }
+  for (std::size_t i = 0; i < n; ++i)
+    if (signs[i] == 0) add_plane(cell.vertices[i].planes, index);
   CellSplit split;
   if (!any_front) {
-    split.back = cell;
-    for (std::size_t i = 0; i < n; ++i)
-      if (signs[i] == 0) add_plane(split.back.vertices[i].planes, index);
+    split.back = std::move(cell);
     return split;
   }
   if (!any_back) {
-    split.front = cell;
-    for (std::size_t i = 0; i < n; ++i)
-      if (signs[i] == 0) add_plane(split.front.vertices[i].planes, index);
+    split.front = std::move(cell);
     return split;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    CellVertex v = cell.vertices[i];
-    if (signs[i] == 0) add_plane(v.planes, index);
-    if (signs[i] <= 0) split.back.vertices.push_back(v);
-    if (signs[i] >= 0) split.front.vertices.push_back(std::move(v));
-  }
+  // The crossing points first (they read the edges' ends), kept after the
+  // vertices of each part.
+  std::vector<CellVertex> crossings;
   for (std::size_t i = 0; i < n; ++i) {
     if (signs[i] >= 0) continue;
     for (std::size_t j = 0; j < n; ++j) {
@@ -89,16 +84,22 @@ CellSplit split_cell(const Cell& cell, const std::vector<Plane>& planes, std::ui
       std::vector<std::uint32_t> common = common_planes(cell.vertices[i], cell.vertices[j]);
       if (common.size() < 2) continue;
       add_plane(common, index);
-      CellVertex v{segment_plane_point(cell.vertices[i].point, cell.vertices[j].point, plane),
-                   std::move(common)};
-      split.back.vertices.push_back(v);
-      split.front.vertices.push_back(std::move(v));
+      crossings.push_back(CellVertex{segment_plane_point(cell.vertices[i].point, cell.vertices[j].point, plane),
+                                     std::move(common)});
     }
   }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (signs[i] == 0) split.back.vertices.push_back(cell.vertices[i]);
+    if (signs[i] < 0) split.back.vertices.push_back(std::move(cell.vertices[i]));
+    if (signs[i] >= 0) split.front.vertices.push_back(std::move(cell.vertices[i]));
+  }
+  split.back.vertices.insert(split.back.vertices.end(), crossings.begin(), crossings.end());
+  split.front.vertices.insert(split.front.vertices.end(), std::make_move_iterator(crossings.begin()),
+                              std::make_move_iterator(crossings.end()));
   return split;
 }
 
-FragmentSplit split_fragment(const Fragment& fragment, const Plane& plane, int side) {
+FragmentSplit split_fragment(Fragment fragment, const Plane& plane, int side) {
   const std::size_t n = fragment.points.size();
   std::vector<int> signs(n);
   bool any_back = false, any_front = false;
@@ -114,12 +115,12 @@ FragmentSplit split_fragment(const Fragment& fragment, const Plane& plane, int s
   }
   if (!any_front) {
     split.has_back = true;
-    split.back = fragment;
+    split.back = std::move(fragment);
     return split;
   }
   if (!any_back) {
     split.has_front = true;
-    split.front = fragment;
+    split.front = std::move(fragment);
     return split;
   }
   // Both parts have area: a convex polygon with vertices strictly on both

@@ -51,7 +51,8 @@ struct CellSplit {
   Cell back;
   Cell front;
 };
-CellSplit split_cell(const Cell& cell, const std::vector<Plane>& planes, std::uint32_t index, int side);
+// The cell is taken by value: a cell on one side moves whole into its part.
+CellSplit split_cell(Cell cell, const std::vector<Plane>& planes, std::uint32_t index, int side);
 
 // The parts of a fragment strictly behind and strictly in front of a plane
 // (either may be absent). A fragment on the plane has neither part:
@@ -63,7 +64,8 @@ struct FragmentSplit {
   Fragment back;
   Fragment front;
 };
-FragmentSplit split_fragment(const Fragment& fragment, const Plane& plane, int side);
+// The fragment is taken by value: one on one side moves whole into its part.
+FragmentSplit split_fragment(Fragment fragment, const Plane& plane, int side);
 
 // The exact point where segment (u, v) meets the plane; \pre u and v lie
 // strictly on opposite sides.

@@ -293,7 +293,7 @@ class ThreadedTrace {
 // Options::threads, but no more threads than cores unless the research
 // options ask (WorkerMinimums::oversubscribe).
 unsigned usable_threads(const Options& options, const ResearchOptions& research) {
-  const unsigned cores = std::thread::hardware_concurrency();
+  const unsigned cores = core_count();
   if (research.worker_minimums.oversubscribe || cores == 0) return options.threads;
   return std::min(options.threads, cores);
 }

@@ -96,12 +96,20 @@ unsigned run_on_threads(unsigned n, F&& f) {
   return started;
 }
 
+/// The machine's cores as std::thread::hardware_concurrency() gives them (0
+/// when unknown), asked once: the C library reads them from the system on
+/// every call, a cost of microseconds that small sums would pay per call.
+inline unsigned core_count() {
+  static const unsigned cores = std::thread::hardware_concurrency();
+  return cores;
+}
+
 /// How many threads to share `items` independent items on: `requested` (at
 /// least one), but no more than the machine's cores, when it says, and no
 /// more than the items (at least one). More threads than either would only
 /// wait.
 inline unsigned thread_count(unsigned requested, std::size_t items) {
-  const unsigned cores = std::thread::hardware_concurrency();
+  const unsigned cores = core_count();
   unsigned threads = std::max(1U, requested);
   if (cores != 0) threads = std::min(threads, cores);
   if (threads > items) threads = static_cast<unsigned>(std::max<std::size_t>(items, 1));
