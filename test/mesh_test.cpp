@@ -326,6 +326,17 @@ TEST(MeshBadInput, DuplicatePointsAmongDistinctPointsWithEqualDoubles) {
   expect_error(s, ErrorCategory::topology, {"vertices 4 and 7 are at the same point"});
 }
 
+// The oracle for the duplicate check: the message naming the first pair a
+// quadratic scan in index order finds, or "" when the points are distinct.
+std::string first_duplicate_by_scan(const PolygonSoup& s) {
+  const auto n = static_cast<std::uint32_t>(s.points.size());
+  for (std::uint32_t j = 0; j < n; ++j)
+    for (std::uint32_t i = 0; i < j; ++i)
+      if (s.points[i] == s.points[j])
+        return "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are at the same point";
+  return "";
+}
+
 // The duplicate check sorts on a key made of each coordinate's sizes and
 // lowest limbs. Coordinates that differ only above their lowest limb
 // (k 2^64 + 5) give every point one key: the check must then tell them
@@ -344,11 +355,7 @@ TEST(MeshBadInput, DuplicatePointsAmongPointsWithOneKey) {
   s.points.push_back(s.points[150]);
   const auto n = static_cast<std::uint32_t>(s.points.size());
   for (std::uint32_t i = 0; i < n; ++i) s.add_face({i, (i + 1) % n, (i + 2) % n});
-  std::string expected;
-  for (std::uint32_t j = 0; j < n && expected.empty(); ++j)
-    for (std::uint32_t i = 0; i < j && expected.empty(); ++i)
-      if (s.points[i] == s.points[j])
-        expected = "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are at the same point";
+  const std::string expected = first_duplicate_by_scan(s);
   ASSERT_EQ(expected, "vertices 200 and 291 are at the same point");
   expect_error(s, ErrorCategory::topology, {expected});
 
@@ -381,11 +388,7 @@ TEST(MeshBadInput, DuplicatePointsMatchABruteForceScan) {
     const std::uint32_t n = 3 + static_cast<std::uint32_t>(round % 40);
     for (std::uint32_t i = 0; i < n; ++i) s.points.push_back(Vec3{pool[pick(rng)], pool[pick(rng)], pool[pick(rng) % 3]});
     for (std::uint32_t i = 0; i < n; ++i) s.add_face({i, (i + 1) % n, (i + 2) % n});
-    std::string expected;
-    for (std::uint32_t j = 0; j < n && expected.empty(); ++j)
-      for (std::uint32_t i = 0; i < j && expected.empty(); ++i)
-        if (s.points[i] == s.points[j])
-          expected = "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are at the same point";
+    const std::string expected = first_duplicate_by_scan(s);
     with_duplicate += !expected.empty();
     try {
       (void)Mesh::from_soup(s);
