@@ -175,14 +175,17 @@ TEST(Approx, OneLimbFractionsTruncateLikeGmp) {
   const auto word = [&rng] {
     const int bits = 1 + static_cast<int>(rng() % 64);
     switch (rng() % 4) {
-      case 0: return std::uint64_t{1} << (bits - 1);
-      case 1: return bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;
+      case 0:
+        return std::uint64_t{1} << (bits - 1);
+      case 1:
+        return bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;
       case 2: {
         std::uint64_t ten = 1;
         for (int k = rng() % 20; k > 0; --k) ten *= 10;
         return ten;
       }
-      default: return (rng() | std::uint64_t{1} << 63) >> (64 - bits);
+      default:
+        return (rng() | std::uint64_t{1} << 63) >> (64 - bits);
     }
   };
   for (int i = 0; i < 200000; ++i) {
@@ -194,7 +197,8 @@ TEST(Approx, OneLimbFractionsTruncateLikeGmp) {
     ASSERT_EQ(check(q), "");
     const double truncated = mpq_get_d(q.get_mpq_t());
     const bool one_limb = mpz_size(q.get_num_mpz_t()) == 1 && mpz_size(q.get_den_mpz_t()) == 1;
-    const bool small = mpz_sizeinbase(q.get_num_mpz_t(), 2) <= 53 && mpz_sizeinbase(q.get_den_mpz_t(), 2) <= 53;
+    const bool small =
+        mpz_sizeinbase(q.get_num_mpz_t(), 2) <= 53 && mpz_sizeinbase(q.get_den_mpz_t(), 2) <= 53;
     if (one_limb && !small && !is_a_double(q)) {
       ASSERT_EQ(Approx::of(q).value, truncated);
       ASSERT_EQ(Approx::of(q).error, filtered::truncation_error(truncated));

@@ -201,9 +201,9 @@ TEST(ReadOff, FaceIndexSpellings) {
       {"3 0 1 2\r", {0, 1, 2}, nullptr},
       {"3 0 1 2#comment", {0, 1, 2}, nullptr},
       {"3 0 1 2 # comment", {0, 1, 2}, nullptr},
-      {"3 0000000000000000002 0 1", {2, 0, 1}, nullptr},      // 19 digits
-      {"3 00000000000000000001 2 0", {1, 2, 0}, nullptr},     // 20 digits
-      {"3 0 1 2 0.5 0.5 0.5", {0, 1, 2}, nullptr},            // a color
+      {"3 0000000000000000002 0 1", {2, 0, 1}, nullptr},   // 19 digits
+      {"3 00000000000000000001 2 0", {1, 2, 0}, nullptr},  // 20 digits
+      {"3 0 1 2 0.5 0.5 0.5", {0, 1, 2}, nullptr},         // a color
       {"3 0 1 +2", {}, "text.off:6: face 0: index '+2' is not a non-negative integer"},
       {"3 0 1 2x", {}, "text.off:6: face 0: index '2x' is not a non-negative integer"},
       {"3 0 1 -1", {}, "text.off:6: face 0: index '-1' is not a non-negative integer"},

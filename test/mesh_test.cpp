@@ -346,7 +346,8 @@ TEST(MeshBadInput, DuplicatePointsAmongPointsWithOneKey) {
   const auto high = [](std::uint32_t k, unsigned low) { return Rational((mpz_class(k) << 64) + low); };
   const auto points = [&](std::uint32_t n) {
     PolygonSoup s;
-    for (std::uint32_t i = 0; i < n; ++i) s.points.push_back(Vec3{high(1 + i % 97, 5), high(1 + i / 97, 3), 1});
+    for (std::uint32_t i = 0; i < n; ++i)
+      s.points.push_back(Vec3{high(1 + i % 97, 5), high(1 + i / 97, 3), 1});
     return s;
   };
   // 97 * 3 distinct points, then copies of points 200 and 150 (in that order).

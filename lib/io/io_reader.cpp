@@ -315,7 +315,8 @@ bool Tokenizer::next_short_unsigned(std::string_view& token, std::uint64_t& valu
   skip_space();
   std::uint64_t v = 0;
   std::size_t i = 0;
-  while (i < rest_.size() && i < 19 && is_digit(rest_[i])) v = v * 10 + static_cast<std::uint64_t>(rest_[i++] - '0');
+  while (i < rest_.size() && i < 19 && is_digit(rest_[i]))
+    v = v * 10 + static_cast<std::uint64_t>(rest_[i++] - '0');
   // Anything but a space after the digits ('#', a sign, a 20th digit, a
   // letter) is the general route's to read or refuse.
   if (i == 0 || (i < rest_.size() && character_classes[static_cast<unsigned char>(rest_[i])] != space_class))
@@ -348,7 +349,8 @@ namespace {
 std::uint64_t bit_length(mpz_srcptr z) noexcept {
   const std::size_t limbs = mpz_size(z);
   if (limbs == 0) return 1;
-  return 64 * (limbs - 1) + static_cast<std::uint64_t>(std::bit_width(mpz_getlimbn(z, static_cast<mp_size_t>(limbs) - 1)));
+  return 64 * (limbs - 1) +
+         static_cast<std::uint64_t>(std::bit_width(mpz_getlimbn(z, static_cast<mp_size_t>(limbs) - 1)));
 }
 
 static_assert(GMP_NUMB_BITS == 64, "bit_length reads 64-bit limbs");
