@@ -7,6 +7,8 @@ decimal hull; minimum CPU time over all repetitions of all rounds) and whole
 (minimum wall and task-clock, median page faults). The machine is shared, so
 single runs are noisy: the minimum of alternating runs is what compares.
 
+With --checks 0 no `cvms check` runs, and the trees need only the bench.
+
 usage: bench/load_before_after.py --before /tmp/main/build/release --after build/release
                                   [--rounds 4] [--checks 3] [--json out.json]
 """
@@ -21,7 +23,7 @@ import tempfile
 
 def load_rows(build):
     out = subprocess.run([os.path.join(build, "bench", "cvms_load_bench"),
-                          "--benchmark_filter=BM_(load|parse|validate)/", "--benchmark_min_time=0.3",
+                          "--benchmark_filter=BM_(load|parse|validate|parse_numbers)/", "--benchmark_min_time=0.3",
                           "--benchmark_repetitions=3", "--benchmark_format=json"],
                          check=True, capture_output=True, text=True).stdout
     rows = {}
@@ -52,8 +54,9 @@ def main():
     builds = {"before": args.before, "after": args.after}
     with tempfile.TemporaryDirectory() as scratch:
         shape = os.path.join(scratch, "sphere6.off")
-        subprocess.run([os.path.join(args.after, "tools", "cvms"), "gen", "sphere", "--subdivisions", "6", "-o",
-                        shape], check=True)
+        if args.checks > 0:
+            subprocess.run([os.path.join(args.after, "tools", "cvms"), "gen", "sphere", "--subdivisions", "6", "-o",
+                            shape], check=True)
         load = {k: {} for k in builds}
         checks = {k: [] for k in builds}
         for _ in range(args.rounds):
@@ -63,12 +66,13 @@ def main():
                 checks[key].extend(check_run(build, shape) for _ in range(args.checks))
     result = {"load_ms_cpu_min": {k: {n: min(t) for n, t in v.items()} for k, v in load.items()},
               "check": {k: {"wall_ms_min": min(c[0] for c in v), "task_clock_ms_min": min(c[1] for c in v),
-                            "page_faults_median": statistics.median(c[2] for c in v)} for k, v in checks.items()}}
+                            "page_faults_median": statistics.median(c[2] for c in v)}
+                        for k, v in checks.items() if v}}
     for name in sorted(result["load_ms_cpu_min"]["before"]):
         base_ms, new_ms = result["load_ms_cpu_min"]["before"][name], result["load_ms_cpu_min"]["after"][name]
         ratio = base_ms / new_ms
         print(f"{name:24s} before {base_ms:8.2f} ms  after {new_ms:8.2f} ms  {ratio:5.2f}x")
-    for key in builds:
+    for key in result["check"]:
         c = result["check"][key]
         print(f"cvms check sphere6.off {key:6s} wall {c['wall_ms_min']:7.1f} ms  task-clock "
               f"{c['task_clock_ms_min']:7.1f} ms  page faults {c['page_faults_median']:.0f}")

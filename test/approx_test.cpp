@@ -164,6 +164,48 @@ TEST(Approx, DyadicsOfEverySizeTruncateLikeGmp) {
   }
 }
 
+// One-limb fractions whose denominator is not a power of two (decimals of
+// up to 19 significant digits, like the shortest round-trip decimals of
+// doubles): the very double GMP's truncation gives, and the truncation
+// bound. Numerators and denominators of every bit length, their extremes
+// (1, 2^64 - 1) and powers of ten.
+TEST(Approx, OneLimbFractionsTruncateLikeGmp) {
+  constexpr unsigned seed = 2613;
+  test::Rng rng(seed);
+  const auto word = [&rng] {
+    const int bits = 1 + static_cast<int>(rng() % 64);
+    switch (rng() % 4) {
+      case 0:
+        return std::uint64_t{1} << (bits - 1);
+      case 1:
+        return bits == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;
+      case 2: {
+        std::uint64_t ten = 1;
+        for (int k = rng() % 20; k > 0; --k) ten *= 10;
+        return ten;
+      }
+      default:
+        return (rng() | std::uint64_t{1} << 63) >> (64 - bits);
+    }
+  };
+  for (int i = 0; i < 200000; ++i) {
+    Rational q(mpz_class(static_cast<unsigned long>(word())), mpz_class(static_cast<unsigned long>(word())));
+    q.canonicalize();
+    if (rng() % 2 == 0) q = -q;
+    if (q == 0) continue;
+    SCOPED_TRACE("case " + std::to_string(i) + ", seed " + std::to_string(seed) + ": " + to_string(q));
+    ASSERT_EQ(check(q), "");
+    const double truncated = mpq_get_d(q.get_mpq_t());
+    const bool one_limb = mpz_size(q.get_num_mpz_t()) == 1 && mpz_size(q.get_den_mpz_t()) == 1;
+    const bool small =
+        mpz_sizeinbase(q.get_num_mpz_t(), 2) <= 53 && mpz_sizeinbase(q.get_den_mpz_t(), 2) <= 53;
+    if (one_limb && !small && !is_a_double(q)) {
+      ASSERT_EQ(Approx::of(q).value, truncated);
+      ASSERT_EQ(Approx::of(q).error, filtered::truncation_error(truncated));
+    }
+  }
+}
+
 // Approx::of_quotient for integers n / d, unreduced: the bound holds
 // exactly (the oracle is the exact rational), and it is never looser than
 // the documented |value| 2^-51. Sizes of 1 to 6 limbs, tops with and without

@@ -184,6 +184,47 @@ TEST(ReadOff, HugeIndicesAreShownAsTyped) {
                            {"face 0 declares 99999999999999999999999 vertices but lists 3"}));
 }
 
+// Face indices in every spelling next to the one-pass reading of plain
+// digits: separators (tab, carriage return, a comment right after the
+// digits), leading zeros, 19 and 20 digits, and what the general route
+// reads or refuses (a sign, a letter, a '#' inside the token). The
+// expected indices and messages are written out by hand.
+TEST(ReadOff, FaceIndexSpellings) {
+  const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  const struct {
+    const char* face;
+    std::vector<std::uint32_t> indices;  // empty: refused with `message`
+    const char* message;
+  } cases[] = {
+      {"3 0 1 2", {0, 1, 2}, nullptr},
+      {"3\t2\t0\t1\t", {2, 0, 1}, nullptr},
+      {"3 0 1 2\r", {0, 1, 2}, nullptr},
+      {"3 0 1 2#comment", {0, 1, 2}, nullptr},
+      {"3 0 1 2 # comment", {0, 1, 2}, nullptr},
+      {"3 0000000000000000002 0 1", {2, 0, 1}, nullptr},   // 19 digits
+      {"3 00000000000000000001 2 0", {1, 2, 0}, nullptr},  // 20 digits
+      {"3 0 1 2 0.5 0.5 0.5", {0, 1, 2}, nullptr},         // a color
+      {"3 0 1 +2", {}, "text.off:6: face 0: index '+2' is not a non-negative integer"},
+      {"3 0 1 2x", {}, "text.off:6: face 0: index '2x' is not a non-negative integer"},
+      {"3 0 1 -1", {}, "text.off:6: face 0: index '-1' is not a non-negative integer"},
+      {"3 0 1 1.#INF", {}, "text.off:6: face 0: index '1.#INF' is not a non-negative integer"},
+      {"3 0 1 3", {}, "text.off:6: face 0 has index 3 but there are 3 vertices"},
+      {"3 0 1 0000000000000000003", {}, "text.off:6: face 0 has index 0000000000000000003 but there are 3"},
+      {"3 0 1 9999999999999999999", {}, "text.off:6: face 0 has index 9999999999999999999 but there are 3"},
+      {"3 0 1", {}, "text.off:6: face 0 declares 3 vertices but lists 2"},
+      {"3 0 1 #2", {}, "text.off:6: face 0 declares 3 vertices but lists 2"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.face);
+    const std::string text = head + c.face + "\n";
+    if (c.message == nullptr) {
+      EXPECT_EQ(faces_of(off_from(text)), Faces{c.indices});
+    } else {
+      EXPECT_TRUE(throws_error([&] { off_from(text); }, ErrorCategory::parse, {c.message}));
+    }
+  }
+}
+
 // ---- the bad corpus: one test per file --------------------------------------
 
 ::testing::AssertionResult bad(std::string_view name, ErrorCategory category,

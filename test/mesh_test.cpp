@@ -304,11 +304,11 @@ TEST(Mesh, DecimalFractionsAreKeptInLowestTerms) {
   expect_error(t, ErrorCategory::topology, {"vertices 2 and 4", "same point"});
 }
 
-// The duplicate check sorts on the coordinates' doubles first and tells
-// points with equal doubles apart exactly. Here a distinct point whose
-// doubles equal those of a duplicated one sits between its two copies in
-// index order: a check that took equal doubles for equal points, or that
-// ordered them by index alone, would miss the pair (or name the wrong one).
+// Distinct points whose coordinates round to the same doubles: here one
+// sits between the two copies of a duplicated point in index order. A check
+// that took equal approximations for equal points, or that ordered points
+// with equal sort keys by index alone, would miss the pair (or name the
+// wrong one).
 TEST(MeshBadInput, DuplicatePointsAmongDistinctPointsWithEqualDoubles) {
   const Rational third(1, 3);
   const Rational a = third + Rational(1, mpz_class(1) << 200);
@@ -324,6 +324,47 @@ TEST(MeshBadInput, DuplicatePointsAmongDistinctPointsWithEqualDoubles) {
   s.add_face({4, 5, 6});
   s.add_face({5, 6, 7});
   expect_error(s, ErrorCategory::topology, {"vertices 4 and 7 are at the same point"});
+}
+
+// The oracle for the duplicate check: the message naming the first pair a
+// quadratic scan in index order finds, or "" when the points are distinct.
+std::string first_duplicate_by_scan(const PolygonSoup& s) {
+  const auto n = static_cast<std::uint32_t>(s.points.size());
+  for (std::uint32_t j = 0; j < n; ++j)
+    for (std::uint32_t i = 0; i < j; ++i)
+      if (s.points[i] == s.points[j])
+        return "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are at the same point";
+  return "";
+}
+
+// The duplicate check sorts on a key made of each coordinate's sizes and
+// lowest limbs. Coordinates that differ only above their lowest limb
+// (k 2^64 + 5) give every point one key: the check must then tell them
+// apart exactly, still in O(n log n), and name the first pair a scan in
+// index order finds (brute force on a prefix, then at scale).
+TEST(MeshBadInput, DuplicatePointsAmongPointsWithOneKey) {
+  const auto high = [](std::uint32_t k, unsigned low) { return Rational((mpz_class(k) << 64) + low); };
+  const auto points = [&](std::uint32_t n) {
+    PolygonSoup s;
+    for (std::uint32_t i = 0; i < n; ++i)
+      s.points.push_back(Vec3{high(1 + i % 97, 5), high(1 + i / 97, 3), 1});
+    return s;
+  };
+  // 97 * 3 distinct points, then copies of points 200 and 150 (in that order).
+  PolygonSoup s = points(97 * 3);
+  s.points.push_back(s.points[200]);
+  s.points.push_back(s.points[150]);
+  const auto n = static_cast<std::uint32_t>(s.points.size());
+  for (std::uint32_t i = 0; i < n; ++i) s.add_face({i, (i + 1) % n, (i + 2) % n});
+  const std::string expected = first_duplicate_by_scan(s);
+  ASSERT_EQ(expected, "vertices 200 and 291 are at the same point");
+  expect_error(s, ErrorCategory::topology, {expected});
+
+  PolygonSoup large = points(97 * 1000);
+  large.points.push_back(large.points[777]);
+  const auto m = static_cast<std::uint32_t>(large.points.size());
+  for (std::uint32_t i = 0; i < m; ++i) large.add_face({i, (i + 1) % m, (i + 2) % m});
+  expect_error(large, ErrorCategory::topology, {"vertices 777 and 97000 are at the same point"});
 }
 
 // Against a brute-force oracle: points drawn from a few values whose doubles
@@ -348,11 +389,7 @@ TEST(MeshBadInput, DuplicatePointsMatchABruteForceScan) {
     const std::uint32_t n = 3 + static_cast<std::uint32_t>(round % 40);
     for (std::uint32_t i = 0; i < n; ++i) s.points.push_back(Vec3{pool[pick(rng)], pool[pick(rng)], pool[pick(rng) % 3]});
     for (std::uint32_t i = 0; i < n; ++i) s.add_face({i, (i + 1) % n, (i + 2) % n});
-    std::string expected;
-    for (std::uint32_t j = 0; j < n && expected.empty(); ++j)
-      for (std::uint32_t i = 0; i < j && expected.empty(); ++i)
-        if (s.points[i] == s.points[j])
-          expected = "vertices " + std::to_string(i) + " and " + std::to_string(j) + " are at the same point";
+    const std::string expected = first_duplicate_by_scan(s);
     with_duplicate += !expected.empty();
     try {
       (void)Mesh::from_soup(s);

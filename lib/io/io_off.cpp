@@ -183,11 +183,18 @@ PolygonSoup parse_off(LineReader& reader) {
     if (!size) reader.fail(name() + ": vertex count " + quote(token) + " is not a non-negative integer");
     if (*size < 3) reader.fail(name() + " has " + std::to_string(*size) + " vertices, at least 3 are needed");
     for (std::uint64_t k = 0; k < *size; ++k) {
-      std::string_view t = tokens.next();
-      if (t.empty())
-        reader.fail(name() + " declares " + typed(token) + " vertices but lists " + std::to_string(k));
-      auto index = parse_unsigned(t);
-      if (!index) reader.fail(name() + ": index " + quote(t) + " is not a non-negative integer");
+      std::string_view t;
+      std::uint64_t short_index = 0;
+      std::optional<std::uint64_t> index;
+      if (tokens.next_short_unsigned(t, short_index)) {
+        index = short_index;
+      } else {
+        t = tokens.next();
+        if (t.empty())
+          reader.fail(name() + " declares " + typed(token) + " vertices but lists " + std::to_string(k));
+        index = parse_unsigned(t);
+        if (!index) reader.fail(name() + ": index " + quote(t) + " is not a non-negative integer");
+      }
       if (*index >= num_vertices)
         reader.fail(name() + " has index " + typed(t) + " but there are " + std::to_string(num_vertices) +
                     " vertices");

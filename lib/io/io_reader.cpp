@@ -311,6 +311,22 @@ std::string_view Tokenizer::next() {
   return token;
 }
 
+bool Tokenizer::next_short_unsigned(std::string_view& token, std::uint64_t& value) {
+  skip_space();
+  std::uint64_t v = 0;
+  std::size_t i = 0;
+  while (i < rest_.size() && i < 19 && is_digit(rest_[i]))
+    v = v * 10 + static_cast<std::uint64_t>(rest_[i++] - '0');
+  // Anything but a space after the digits ('#', a sign, a 20th digit, a
+  // letter) is the general route's to read or refuse.
+  if (i == 0 || (i < rest_.size() && character_classes[static_cast<unsigned char>(rest_[i])] != space_class))
+    return false;
+  token = rest_.substr(0, i);
+  rest_.remove_prefix(i);
+  value = v;
+  return true;
+}
+
 bool Tokenizer::at_end() {
   skip_space();
   return rest_.empty();
@@ -326,14 +342,28 @@ std::string ValueName::str() const {
   return s;
 }
 
+namespace {
+
+// mpz_sizeinbase(z, 2) (1 for zero) from the top limb, inline: every
+// coordinate read asks for two, and GMP's is a call that handles any base.
+std::uint64_t bit_length(mpz_srcptr z) noexcept {
+  const std::size_t limbs = mpz_size(z);
+  if (limbs == 0) return 1;
+  return 64 * (limbs - 1) +
+         static_cast<std::uint64_t>(std::bit_width(mpz_getlimbn(z, static_cast<mp_size_t>(limbs) - 1)));
+}
+
+static_assert(GMP_NUMB_BITS == 64, "bit_length reads 64-bit limbs");
+
+}  // namespace
+
 void parse_number(LineReader& reader, std::string_view token, const ValueName& name, Rational& out) {
   const ReadLimits& limits = reader.limits();
   detail::NumberTextResult result{detail::NumberTextStatus::not_a_number};
   if (!token.empty() && token.size() <= limits.max_number_chars) {
     result = detail::parse_rational_into(token, {max_exponent, limits.max_number_bits}, out);
     if (result.status == detail::NumberTextStatus::ok) {
-      const std::uint64_t bits =
-          mpz_sizeinbase(out.get_num_mpz_t(), 2) + mpz_sizeinbase(out.get_den_mpz_t(), 2);
+      const std::uint64_t bits = bit_length(out.get_num_mpz_t()) + bit_length(out.get_den_mpz_t());
       if (reader.add_number_bits(bits)) return;
       reader.fail(name.str() + " " + quote(token) + " brings the numbers read to " +
                       std::to_string(reader.number_bits()) + " bits, beyond the " +

@@ -154,6 +154,13 @@ class Tokenizer {
   std::string_view next();
   /// True when only whitespace (and a comment) is left.
   bool at_end();
+  /// When the next token is 1 to 19 decimal digits ending the line or
+  /// followed by whitespace (every face index of a well-formed file), takes
+  /// it into `token` and its value into `value` and returns true, in one
+  /// pass over its digits. Otherwise returns false, and next() returns that
+  /// token as it would have (a caller then takes the general route, with
+  /// its checks and messages).
+  bool next_short_unsigned(std::string_view& token, std::uint64_t& value);
 
  private:
   void skip_space();

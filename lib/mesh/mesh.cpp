@@ -10,7 +10,6 @@
 #include <string>
 #include <utility>
 
-#include "approx.hpp"
 #include "cvms/error.hpp"
 #include "element_names.hpp"
 #include "face_lists.hpp"
@@ -105,52 +104,59 @@ void canonicalize_points(std::vector<Vec3>& points) {
       if (!surely_canonical(p[i])) p[i].canonicalize();
 }
 
-// A point's sort key for the duplicate check: its coordinates' doubles
-// (Approx::of, a function of the canonical value: equal points get equal
-// keys; distinct points may too, and are then told apart exactly), and its
-// index. A NaN key (Approx::of gives none, but a total order must not depend
-// on it) counts as infinity.
+// A point's sort key for the duplicate check: a mix of the signed sizes and
+// the lowest limbs of its coordinates' numerators and denominators, a
+// function of the canonical representation, so that equal points get equal
+// keys; distinct points may too, and are then told apart exactly. A few
+// multiplications per point and no division (the double of a decimal
+// coordinate takes one).
+std::uint64_t mixed(std::uint64_t h, std::uint64_t word) noexcept {
+  h = (h ^ word) * 0x9e3779b97f4a7c15u;
+  return h ^ (h >> 29);
+}
+
+std::uint64_t point_key(const Vec3& p) noexcept {
+  std::uint64_t h = 0;
+  for (int i = 0; i < 3; ++i) {
+    mpz_srcptr num = p[i].get_num_mpz_t();
+    mpz_srcptr den = p[i].get_den_mpz_t();
+    h = mixed(h, mpz_getlimbn(num, 0) + static_cast<std::uint64_t>(static_cast<std::int64_t>(num->_mp_size)));
+    h = mixed(h, mpz_getlimbn(den, 0) + static_cast<std::uint64_t>(den->_mp_size));
+  }
+  return h;
+}
+
 struct KeyedPoint {
-  double key[3];
+  std::uint64_t key;
   std::uint32_t index;
 };
 
-KeyedPoint keyed_point(const Vec3& p, std::uint32_t index) noexcept {
-  KeyedPoint k{{}, index};
-  for (int i = 0; i < 3; ++i) {
-    const double d = Approx::of(p[i]).value;
-    k.key[i] = std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
-  }
-  return k;
-}
-
-// Duplicate points: indices sorted lexicographically by (the doubles of the
-// coordinates, the exact position in the representation order, the index).
-// The doubles decide almost every comparison without reading a limb; the
-// exact order only splits points with equal doubles. The tuple order is a
-// strict weak order whose first two parts are equal exactly for equal
-// points, so equal points form one run, in index order, and the cost is
-// O(n log n) whatever the values (a hash set goes quadratic on points that
-// share one hash, which an input can choose). Reports the same pair a scan in index order
+// Duplicate points: indices sorted lexicographically by (key, the exact
+// position in the representation order, the index). The keys decide almost
+// every comparison without reading a limb beyond the first; the exact order
+// only splits points with equal keys. The tuple order is a strict weak order
+// whose first two parts are equal exactly for equal points, so equal points
+// form one run, in index order, and the cost is O(n log n) whatever the
+// values: an input that makes every key equal (the keys are easy to collide)
+// only turns the comparisons into exact ones (a hash set goes quadratic on
+// points that share one hash). Reports the same pair a scan in index order
 // would find first: the earliest second occurrence of any position, with the
 // first occurrence of that position.
 // \pre the coordinates are canonical.
 void check_distinct_points(const std::vector<Vec3>& pts) {
   const auto n = static_cast<std::uint32_t>(pts.size());
-  std::vector<KeyedPoint> order;
-  order.reserve(n);
-  for (std::uint32_t v = 0; v < n; ++v) order.push_back(keyed_point(pts[v], v));
+  std::vector<KeyedPoint> order(n);
+  for (std::uint32_t v = 0; v < n; ++v) order[v] = {point_key(pts[v]), v};
   const detail::RepresentationLess less;
   std::sort(order.begin(), order.end(), [&](const KeyedPoint& a, const KeyedPoint& b) {
-    for (int i = 0; i < 3; ++i)
-      if (a.key[i] != b.key[i]) return a.key[i] < b.key[i];
+    if (a.key != b.key) return a.key < b.key;
     if (less(pts[a.index], pts[b.index])) return true;
     return !less(pts[b.index], pts[a.index]) && a.index < b.index;
   });
   // Equal points have equal keys: comparing the keys first skips the exact
   // test for nearly every neighbour.
   const auto same = [&](const KeyedPoint& a, const KeyedPoint& b) {
-    return a.key[0] == b.key[0] && a.key[1] == b.key[1] && a.key[2] == b.key[2] && pts[a.index] == pts[b.index];
+    return a.key == b.key && pts[a.index] == pts[b.index];
   };
   std::uint32_t first = no_index, second = no_index;
   for (std::uint32_t k = 0; k + 1 < n; ++k) {

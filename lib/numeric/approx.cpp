@@ -17,6 +17,8 @@ namespace {
 
 static_assert(GMP_NUMB_BITS == 64, "top_bits reads 64-bit limbs");
 
+__extension__ using Uint128 = unsigned __int128;
+
 // The top 64 bits t of |x| (x != 0), highest bit set, and the shift s =
 // bit length - 64 (negative for short x), so |x| = t 2^s + r with
 // 0 <= r < 2^s, and r = 0 when s <= 0.
@@ -67,6 +69,27 @@ std::optional<Approx> truncated_dyadic(mpz_srcptr num, mpz_srcptr den) noexcept 
   return Approx{value, exact ? 0.0 : filtered::truncation_error(value)};
 }
 
+// n / d truncated toward zero to a double, as mpq_get_d gives it, for words
+// n > 0 and d > 1 (what a decimal of up to 19 significant digits reduces
+// to): one 128-by-64-bit division instead of GMP's general one. With b_n,
+// b_d the bit lengths, n / d lies in [2^(b_n - b_d - 1), 2^(b_n - b_d + 1)),
+// so for s = 54 + b_d - b_n the quotient floor(n 2^s / d) lies in [2^53,
+// 2^55): 54 or 55 bits, of which the top 53 are the truncated significand
+// (floor(floor(x) / 2^k) = floor(x / 2^k), and a negative s drops low bits of
+// n first, floor(floor(n / 2^j) / d) = floor(n / (2^j d))). n 2^s has at
+// most 54 + b_d <= 118 bits. The result lies in (2^-64, 2^64): a normal
+// double, and its scaling by a power of two is exact.
+double truncated_word_quotient(std::uint64_t n, std::uint64_t d) noexcept {
+  const int s = 54 + std::bit_width(d) - std::bit_width(n);
+  const Uint128 scaled = s >= 0 ? Uint128{n} << s : Uint128{n >> -s};
+  const auto quotient = static_cast<std::uint64_t>(scaled / d);
+  const int drop = std::bit_width(quotient) - 53;
+  const std::uint64_t significand = quotient >> drop;
+  // 2^(drop - s), with drop - s in [-116, 12]: a normal double.
+  const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(1023 + drop - s) << 52);
+  return static_cast<double>(significand) * scale;
+}
+
 }  // namespace
 
 Approx Approx::of(const Rational& q) noexcept {
@@ -100,6 +123,12 @@ Approx Approx::of(const Rational& q) noexcept {
       double v = static_cast<double>(num_limb) / static_cast<double>(den_limb);
       return {mpz_sgn(num) < 0 ? -v : v, v * filtered::unit_roundoff};
     }
+  }
+  if (mpz_size(den) == 1 && mpz_size(num) == 1 && !std::has_single_bit(mpz_getlimbn(den, 0))) {
+    const double magnitude = truncated_word_quotient(mpz_getlimbn(num, 0), mpz_getlimbn(den, 0));
+    const double value = mpz_sgn(num) < 0 ? -magnitude : magnitude;
+    // Not a double: the reduced denominator has an odd factor above 1.
+    return {value, filtered::truncation_error(value)};
   }
   if (const std::optional<Approx> a = truncated_dyadic(num, den)) return *a;
   // Integers (the primitive normals of edge facets reach 2^125): mpz_get_d
