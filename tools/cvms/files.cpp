@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include <cctype>
+#include <chrono>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -172,10 +173,12 @@ std::vector<Vec3> read_point_cloud(const std::string& path) {
 }
 
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
-                      const std::string& format, VertexOrder order) {
+                      const std::string& format, VertexOrder order, WriteTimes* times) {
   const FileFormat chosen = output_format(path, format);
-  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates, order);
+  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates, order, times);
+  const auto start = std::chrono::steady_clock::now();
   write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates, order); });
+  if (times != nullptr) *times = {std::chrono::steady_clock::now() - start, {}};
 }
 
 void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,

@@ -70,10 +70,12 @@ HalfspaceSystem read_halfspace_rows(const std::string& path);
 std::vector<Vec3> read_point_cloud(const std::string& path);
 
 /// cvms::write_file (atomic: a failed write leaves an existing file as it
-/// was), or stdout for "-", in output_format(path, format).
+/// was), or stdout for "-", in output_format(path, format). With `times`,
+/// the write's time and its wait for the disk (zero for stdout) go there.
 /// \throw Error naming the file ("standard output" for "-") and the reason.
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
-                      const std::string& format = {}, VertexOrder order = VertexOrder::as_is);
+                      const std::string& format = {}, VertexOrder order = VertexOrder::as_is,
+                      WriteTimes* times = nullptr);
 
 /// write_file of a soup (atomic), or stdout for "-", in output_format(path,
 /// format). \throw Error naming the file ("standard output" for "-").
