@@ -24,17 +24,6 @@ namespace {
 
 std::string reason(int error) { return error != 0 ? std::string(": ") + std::strerror(error) : ""; }
 
-// Standard input must be open for reading and not a directory; otherwise a
-// read fails at once and would look like an empty input.
-void check_stdin() {
-  struct stat info {};
-  if (::fstat(0, &info) != 0) throw Error(ErrorCategory::io, "cannot read standard input" + reason(errno));
-  if (S_ISDIR(info.st_mode)) throw Error(ErrorCategory::io, "cannot read standard input: it is a directory");
-  const int flags = ::fcntl(0, F_GETFL);
-  if (flags >= 0 && (flags & O_ACCMODE) == O_WRONLY)
-    throw Error(ErrorCategory::io, "cannot read standard input: it is open for writing only");
-}
-
 // Reads from stdin with `read`; a read error of the stream (not its end) is
 // Error(io) with the reason, whatever the reader made of the short input.
 template <class Read>
@@ -61,6 +50,15 @@ std::vector<Vec3> read_cdd_points_file(const std::string& path, const ReadLimits
 }
 
 }  // namespace
+
+void check_stdin() {
+  struct stat info {};
+  if (::fstat(0, &info) != 0) throw Error(ErrorCategory::io, "cannot read standard input" + reason(errno));
+  if (S_ISDIR(info.st_mode)) throw Error(ErrorCategory::io, "cannot read standard input: it is a directory");
+  const int flags = ::fcntl(0, F_GETFL);
+  if (flags >= 0 && (flags & O_ACCMODE) == O_WRONLY)
+    throw Error(ErrorCategory::io, "cannot read standard input: it is open for writing only");
+}
 
 std::ifstream open_input(const std::string& path) {
   std::error_code ec;

@@ -92,6 +92,11 @@ std::string lower_extension(const std::string& path);
 /// True for a path ending in .ext (any case): cdd's V-representation, points.
 bool is_cdd_points_path(const std::string& path);
 
+/// Standard input must be open for reading and not a directory; otherwise a
+/// read fails at once and would look like an empty input.
+/// \throw Error(io) "cannot read standard input: <reason>".
+void check_stdin();
+
 /// True for "-" (stdin or stdout).
 bool is_std_stream(const std::string& path);
 

@@ -137,8 +137,9 @@ Operands read_operands(const SumArgs& args) {
     }
     const std::size_t index = operands.sets.size();
     SetOrSolid read = read_set_or_solid(path, index == 0 ? args.place_a : args.place_b, index == 0 ? "a" : "b");
-    if (read.convex_error)
-      rethrow_explaining_non_convex(*read.convex_error, path, "pass --pieces to sum it as a union of convex pieces");
+    if (read.pieces)
+      throw_not_a_convex_set(path, pieces_file_of(*read.pieces), "pass --pieces to sum it as a union of convex pieces");
+    if (read.convex_error) throw *read.convex_error;
     operands.solids[index] = std::move(read.solid);
     return std::move(read.set);
   };
