@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A mesh operand's bytes, read once and parsed from memory as often as the
-// command needs: `cvms sum` tries an operand as a convex set and, when it
-// is not one, tells a pieces file (an OBJ of several objects) from a solid
-// and validates the solid. Reading the file again for each of those, or
+// command needs: `cvms sum` and `cvms check` try an input as a convex set
+// and, when it is not one, tell a pieces file (an OBJ of several objects)
+// from a solid and validate the solid. Reading the file again for each of those, or
 // copying the parsed soup in case it is needed, costs on every run what
 // only a refused or non-convex operand needs; bytes in memory cost a
 // parse on that path alone. A regular file is read with one read() of the
