@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -227,6 +228,32 @@ TEST_F(Cli, SumStatsAndFloatOutput) {
   for (const Vec3& p : read_file(file("s.off")).points) got.insert(nearest(p));
   EXPECT_EQ(got, rounded);
   EXPECT_EQ(got.size(), exact.num_vertices());
+}
+
+// --stats shows the operands' facet planes as a part of the read time and
+// the wait for the disk as a part of the write time: a file replaced
+// atomically is synchronised, standard output is not.
+TEST_F(Cli, SumStatsShowThePlanesInTheReadAndTheSyncInTheWrite) {
+  ASSERT_EQ(run("gen cube -o a.off").code, 0);
+  ASSERT_EQ(run("gen rotated-sphere --subdivisions 2 -o b.off").code, 0);
+  // The whole and the part of a line "<name> time: W ms (of it, <part> time: P ms)".
+  const auto times = [](const std::string& report, const std::string& name, const std::string& part) {
+    const std::regex line("\n" + name + " time: ([0-9.]+) ms \\(of it, " + part + " time: ([0-9.]+) ms\\)\n");
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(report, m, line)) << report;
+    return m.empty() ? std::pair<double, double>{-1, -1} : std::pair{std::stod(m[1]), std::stod(m[2])};
+  };
+  const Outcome to_file = run("sum a.off b.off --stats -o s.off");
+  ASSERT_EQ(to_file.code, 0) << to_file.err;
+  for (const auto& [name, part] : {std::pair{"read", "facet planes"}, std::pair{"write", "disk sync"}}) {
+    const auto [whole, of_it] = times(to_file.out, name, part);
+    EXPECT_GE(of_it, 0.0) << name;
+    EXPECT_LE(of_it, whole) << name;
+  }
+  const Outcome to_stdout = run("sum a.off b.off --stats -o -");
+  ASSERT_EQ(to_stdout.code, 0) << to_stdout.err;
+  EXPECT_EQ(times(to_stdout.err, "write", "disk sync").second, 0.0) << to_stdout.err;
+  EXPECT_EQ(to_stdout.out, slurp(file("s.off")));
 }
 
 TEST_F(Cli, StdinAndStdout) {

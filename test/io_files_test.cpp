@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 // write_file on real files (a failed write must never truncate the existing
 // file): atomic replacement, the mode of the new file, targets that are not
-// regular files (/dev/null, /dev/full, a directory, a symlink), and the
-// reader messages that concern line ends and the OFF header.
+// regular files (/dev/null, /dev/full, a directory, a symlink), a file
+// size limit hit in the middle of the text, the times a write reports, and
+// the reader messages that concern line ends and the OFF header.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <filesystem>
@@ -167,6 +171,70 @@ TEST_F(WriteFile, DevNullIsWrittenAndDevFullNamesTheReason) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
   EXPECT_TRUE(throws_error([] { write_file("/dev/full", tetrahedron_at(Rational(1)), FileFormat::stl); },
                            ErrorCategory::io, {"cannot write '/dev/full': No space left on device"}));
+}
+
+// Holds RLIMIT_FSIZE at `bytes` (SIGXFSZ ignored, so that write() fails
+// with EFBIG instead of ending the process) for the object's life.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    previous_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+    ok_ = ::getrlimit(RLIMIT_FSIZE, &previous_) == 0;
+    const rlimit limited{bytes, previous_.rlim_max};
+    ok_ = ok_ && bytes <= previous_.rlim_max && ::setrlimit(RLIMIT_FSIZE, &limited) == 0;
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+  ~FileSizeLimit() {
+    if (ok_) ::setrlimit(RLIMIT_FSIZE, &previous_);
+    std::signal(SIGXFSZ, previous_handler_);
+  }
+  [[nodiscard]] bool ok() const { return ok_; }
+
+ private:
+  rlimit previous_{};
+  void (*previous_handler_)(int) = SIG_DFL;
+  bool ok_ = false;
+};
+
+// A disk that fills in the middle of the text (a file size limit of 100 kB
+// against an OFF several times longer, written in blocks larger than the stream's
+// buffer, the first of which is written only in part): the reason is named,
+// the old file keeps its bytes and no temporary is left.
+TEST_F(WriteFile, AFileSizeLimitMidWriteLeavesTheOldFileAndNoTemporary) {
+  const ConvexPolyhedron sphere = shapes::geodesic_sphere(5);
+  put(file("big.off"), "old\n");
+  {
+    FileSizeLimit limit(100000);
+    if (!limit.ok()) GTEST_SKIP() << "cannot lower RLIMIT_FSIZE";
+    EXPECT_TRUE(throws_error([&] { write_file(file("big.off"), sphere); }, ErrorCategory::io,
+                             {"cannot write '" + file("big.off").string() + "': File too large"}));
+  }
+  EXPECT_EQ(slurp(file("big.off")), "old\n");
+  EXPECT_EQ(names(), std::vector<std::string>{"big.off"});
+}
+
+// Written through blocks larger than the stream's buffer and through small
+// ones, a file holds the bytes the stream writer makes; the times reported
+// are those of this call, the wait for the disk a part of the whole.
+TEST_F(WriteFile, AFileHoldsTheStreamWritersBytesAndItsTimesAreReported) {
+  const ConvexPolyhedron sphere = shapes::geodesic_sphere(5);
+  for (const FileFormat format : {FileFormat::off, FileFormat::obj, FileFormat::ply, FileFormat::stl}) {
+    std::ostringstream expected;
+    write(expected, sphere, format, Coordinates::exact, VertexOrder::canonical);
+    ASSERT_GT(expected.str().size(), std::size_t{1} << 17);
+    WriteTimes times{std::chrono::hours(1), std::chrono::hours(1)};
+    write_file(file("out"), sphere, format, Coordinates::exact, VertexOrder::canonical, &times);
+    EXPECT_EQ(slurp(file("out")), expected.str()) << static_cast<int>(format);
+    EXPECT_GT(times.total.count(), 0);
+    EXPECT_LE(times.sync, times.total);
+  }
+  // In place (no temporary, no synchronisation): no wait for the disk.
+  WriteTimes times{std::chrono::hours(1), std::chrono::hours(1)};
+  write_file("/dev/null", shapes::cube(), FileFormat::off, Coordinates::exact, VertexOrder::as_is,
+             &times);
+  EXPECT_EQ(times.sync.count(), 0);
+  EXPECT_LT(times.total, std::chrono::hours(1));
 }
 
 TEST_F(WriteFile, AnExplicitFormatNeedsNoExtension) {

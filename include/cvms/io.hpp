@@ -99,6 +99,7 @@
 ///    (max_number_bits_per_byte). Points are never copied while reading.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
@@ -318,11 +319,24 @@ void write_file(const std::filesystem::path& path, const PolygonSoup& soup, File
 /// Complexity: linear in the size of the output.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p,
                 Coordinates coordinates = Coordinates::exact, VertexOrder order = VertexOrder::as_is);
+/// Where the time of one write_file call went, for a caller's report (such as
+/// `cvms sum --stats`): the atomic replace waits for the disk, which can take
+/// longer than making the text.
+struct WriteTimes {
+  /// The whole call: the text or bytes made and written, then synchronised.
+  std::chrono::nanoseconds total{0};
+  /// Of it, waiting for the disk: fsync of the new file before it replaces
+  /// the target, the rename, and the fsync of the directory. Zero for a
+  /// target written in place (a device, a FIFO, a descriptor's alias).
+  std::chrono::nanoseconds sync{0};
+};
+
 /// As write_file(path, p, coordinates, order), in the given format whatever
-/// the path's extension.
+/// the path's extension; with `times`, fills it in once the file is written.
 /// \throw Error(invalid_argument), Error(io) as write_file.
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                Coordinates coordinates = Coordinates::exact, VertexOrder order = VertexOrder::as_is);
+                Coordinates coordinates = Coordinates::exact, VertexOrder order = VertexOrder::as_is,
+                WriteTimes* times = nullptr);
 
 /// Reads a file in the format of its extension (read_file) and validates it
 /// as a convex polyhedron (ConvexPolyhedron::from_soup, which also merges

@@ -2,11 +2,15 @@
 // Atomic file output (see file_output.hpp): a temporary file created next to
 // the target with O_EXCL (mode 0666, so the kernel applies the umask, as for
 // any new file; the replaced file's mode is copied onto it), written through
-// a small unbuffered-by-stdio stream buffer over the descriptor so that every
-// failure keeps its errno, then closed and renamed over the target.
+// a stream buffer over the descriptor (not stdio) so that every failure keeps
+// its errno, then synchronised, closed and renamed over the target. The
+// writers hand over their text in blocks of tens of kilobytes: a block that
+// does not fit the buffer's free space goes to write() as it is, so that
+// the text is copied once, into the kernel, not twice.
 #include "file_output.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <random>
 #include <string_view>
@@ -92,18 +96,33 @@ class DescriptorBuffer : public std::streambuf {
     return traits_type::not_eof(c);
   }
   int sync() override { return drain() ? 0 : -1; }
+  // A block larger than the free space: what is buffered, then the block,
+  // straight from the caller's memory.
+  std::streamsize xsputn(const char_type* s, std::streamsize n) override {
+    if (n <= epptr() - pptr()) {
+      std::memcpy(pptr(), s, static_cast<std::size_t>(n));
+      pbump(static_cast<int>(n));
+      return n;
+    }
+    if (!drain() || !write_all(s, static_cast<std::size_t>(n))) return 0;
+    return n;
+  }
 
  private:
-  bool drain() {
-    const char* p = pbase();
-    while (error_ == 0 && p < pptr()) {
-      const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+  bool write_all(const char* p, std::size_t size) {
+    const char* const end = p + size;
+    while (error_ == 0 && p < end) {
+      const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(end - p));
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) error_ = n < 0 ? errno : EIO;
       else p += n;
     }
-    setp(buffer_, buffer_ + sizeof buffer_);
     return error_ == 0;
+  }
+  bool drain() {
+    const bool written = write_all(pbase(), static_cast<std::size_t>(pptr() - pbase()));
+    setp(buffer_, buffer_ + sizeof buffer_);
+    return written;
   }
   int fd_;
   int error_ = 0;
@@ -166,7 +185,7 @@ void sync_directory(const std::filesystem::path& target) {
 }
 
 void replace_atomically(const std::filesystem::path& target, const struct stat* existing,
-                        const std::function<void(std::ostream&)>& write) {
+                        const std::function<void(std::ostream&)>& write, WriteTimes* times) {
   int fd = -1;
   TemporaryFile temporary;
   for (int attempt = 0; fd < 0; ++attempt) {
@@ -187,6 +206,7 @@ void replace_atomically(const std::filesystem::path& target, const struct stat* 
   }
   // On disk before the rename: otherwise a crash just after it could leave
   // the target empty, the very loss the temporary is there to prevent.
+  const auto sync_start = std::chrono::steady_clock::now();
   if (::fsync(fd) != 0 && errno != EINVAL) {
     const int error = errno;
     ::close(fd);
@@ -196,11 +216,15 @@ void replace_atomically(const std::filesystem::path& target, const struct stat* 
   if (::rename(temporary.path.c_str(), target.c_str()) != 0) fail(target, reason(errno));
   temporary.owned = false;
   sync_directory(target);
+  if (times != nullptr) times->sync = std::chrono::steady_clock::now() - sync_start;
 }
 
 }  // namespace
 
-void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+namespace {
+
+void write_to_target(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                     WriteTimes* times) {
   if (const int alias = descriptor_alias(path); alias >= 0) return write_in_place(path, alias, write);
   struct stat info {};
   const bool exists = ::stat(path.c_str(), &info) == 0;
@@ -213,14 +237,24 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
   std::error_code ec;
   std::filesystem::path target = exists ? std::filesystem::canonical(path, ec) : path;
   if (ec) target = path;
-  replace_atomically(target, exists ? &info : nullptr, write);
+  replace_atomically(target, exists ? &info : nullptr, write, times);
+}
+
+}  // namespace
+
+void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                      WriteTimes* times) {
+  if (times != nullptr) times->sync = {};
+  write_to_target(path, write, times);
 }
 
 #else  // no POSIX: the same steps with the standard library (no modes, no reasons)
 
 }  // namespace
 
-void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                      WriteTimes* times) {
+  if (times != nullptr) times->sync = {};  // no synchronisation here to time
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail(path, "it is a directory");
   const std::filesystem::path temporary = temporary_name(path);

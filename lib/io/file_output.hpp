@@ -16,15 +16,19 @@
 #include <ostream>
 #include <string>
 
+#include "cvms/io.hpp"
+
 namespace cvms::io_detail {
 
 /// Calls write(out) with a binary stream whose bytes end up in `path`, as
 /// above. Exceptions of `write` propagate after the cleanup. The new file's
 /// permissions are those of the file it replaces, or of any new file (0666
-/// less the umask).
+/// less the umask). With `times`, its `sync` is set to the wait for the disk
+/// (fsync, rename) once the file is written; `total` is the caller's.
 /// \throw Error(io) naming the path and the reason (the errno text) if the
 ///   target is a directory, the temporary cannot be created, or a write,
 ///   close or rename fails.
-void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+void write_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                      WriteTimes* times = nullptr);
 
 }  // namespace cvms::io_detail

@@ -3,6 +3,7 @@
 // errors, the point-list reader used for hulls (OFF, OBJ or "x y z" lines),
 // and the polyhedron-level calls that put the file name into every error.
 #include <cerrno>
+#include <chrono>
 #include <fstream>
 #include <system_error>
 #include <utility>
@@ -121,9 +122,10 @@ void write_view(std::ostream& out, const io_detail::SoupView& soup, FileFormat f
 }
 
 void write_view_to_file(const std::filesystem::path& path, const io_detail::SoupView& soup, FileFormat format,
-                        Coordinates coordinates) {
+                        Coordinates coordinates, WriteTimes* times = nullptr) {
   try {
-    io_detail::write_atomically(path, [&](std::ostream& out) { write_view(out, soup, format, coordinates); });
+    io_detail::write_atomically(
+        path, [&](std::ostream& out) { write_view(out, soup, format, coordinates); }, times);
   } catch (const Error& e) {
     // write_atomically names the file in its io errors; the stream writers
     // name a face, index or coordinate, never the file.
@@ -139,15 +141,15 @@ io_detail::SoupView numbered(const io_detail::SoupView& view, VertexOrder order,
 }
 
 void write_polyhedron_to_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                              Coordinates coordinates, VertexOrder order) {
+                              Coordinates coordinates, VertexOrder order, WriteTimes* times = nullptr) {
   const auto round = [&p](FloatMode mode) { return round_to_doubles(p, mode); };
   io_detail::CanonicalNumbering numbering;
   if (const auto rounded = io_detail::rounded_soup(format, coordinates, path.string(), round))
     return write_view_to_file(path, numbered(io_detail::SoupView::of(*rounded), order, numbering), format,
-                              Coordinates::double_);
+                              Coordinates::double_, times);
   detail::FaceLists faces;
   write_view_to_file(path, numbered(io_detail::polyhedron_view(p, format, faces), order, numbering), format,
-                     coordinates);
+                     coordinates, times);
 }
 
 }  // namespace
@@ -189,8 +191,10 @@ void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, Co
 }
 
 void write_file(const std::filesystem::path& path, const ConvexPolyhedron& p, FileFormat format,
-                Coordinates coordinates, VertexOrder order) {
-  write_polyhedron_to_file(path, p, format, coordinates, order);
+                Coordinates coordinates, VertexOrder order, WriteTimes* times) {
+  const auto start = std::chrono::steady_clock::now();
+  write_polyhedron_to_file(path, p, format, coordinates, order, times);
+  if (times != nullptr) times->total = std::chrono::steady_clock::now() - start;
 }
 
 ConvexPolyhedron to_polyhedron(PolygonSoup soup, std::string_view source) {

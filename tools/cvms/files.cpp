@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include <cctype>
+#include <chrono>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -22,17 +23,6 @@ namespace cvms::cli {
 namespace {
 
 std::string reason(int error) { return error != 0 ? std::string(": ") + std::strerror(error) : ""; }
-
-// Standard input must be open for reading and not a directory; otherwise a
-// read fails at once and would look like an empty input.
-void check_stdin() {
-  struct stat info {};
-  if (::fstat(0, &info) != 0) throw Error(ErrorCategory::io, "cannot read standard input" + reason(errno));
-  if (S_ISDIR(info.st_mode)) throw Error(ErrorCategory::io, "cannot read standard input: it is a directory");
-  const int flags = ::fcntl(0, F_GETFL);
-  if (flags >= 0 && (flags & O_ACCMODE) == O_WRONLY)
-    throw Error(ErrorCategory::io, "cannot read standard input: it is open for writing only");
-}
 
 // Reads from stdin with `read`; a read error of the stream (not its end) is
 // Error(io) with the reason, whatever the reader made of the short input.
@@ -60,6 +50,15 @@ std::vector<Vec3> read_cdd_points_file(const std::string& path, const ReadLimits
 }
 
 }  // namespace
+
+void check_stdin() {
+  struct stat info {};
+  if (::fstat(0, &info) != 0) throw Error(ErrorCategory::io, "cannot read standard input" + reason(errno));
+  if (S_ISDIR(info.st_mode)) throw Error(ErrorCategory::io, "cannot read standard input: it is a directory");
+  const int flags = ::fcntl(0, F_GETFL);
+  if (flags >= 0 && (flags & O_ACCMODE) == O_WRONLY)
+    throw Error(ErrorCategory::io, "cannot read standard input: it is open for writing only");
+}
 
 std::ifstream open_input(const std::string& path) {
   std::error_code ec;
@@ -172,10 +171,12 @@ std::vector<Vec3> read_point_cloud(const std::string& path) {
 }
 
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
-                      const std::string& format, VertexOrder order) {
+                      const std::string& format, VertexOrder order, WriteTimes* times) {
   const FileFormat chosen = output_format(path, format);
-  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates, order);
+  if (!is_std_stream(path)) return write_file(path, p, chosen, coordinates, order, times);
+  const auto start = std::chrono::steady_clock::now();
   write_stdout([&](std::ostream& out) { write(out, p, chosen, coordinates, order); });
+  if (times != nullptr) *times = {std::chrono::steady_clock::now() - start, {}};
 }
 
 void write_soup(const std::string& path, const PolygonSoup& soup, Coordinates coordinates,

@@ -70,10 +70,12 @@ HalfspaceSystem read_halfspace_rows(const std::string& path);
 std::vector<Vec3> read_point_cloud(const std::string& path);
 
 /// cvms::write_file (atomic: a failed write leaves an existing file as it
-/// was), or stdout for "-", in output_format(path, format).
+/// was), or stdout for "-", in output_format(path, format). With `times`,
+/// the write's time and its wait for the disk (zero for stdout) go there.
 /// \throw Error naming the file ("standard output" for "-") and the reason.
 void write_polyhedron(const std::string& path, const ConvexPolyhedron& p, Coordinates coordinates,
-                      const std::string& format = {}, VertexOrder order = VertexOrder::as_is);
+                      const std::string& format = {}, VertexOrder order = VertexOrder::as_is,
+                      WriteTimes* times = nullptr);
 
 /// write_file of a soup (atomic), or stdout for "-", in output_format(path,
 /// format). \throw Error naming the file ("standard output" for "-").
@@ -89,6 +91,11 @@ std::string lower_extension(const std::string& path);
 
 /// True for a path ending in .ext (any case): cdd's V-representation, points.
 bool is_cdd_points_path(const std::string& path);
+
+/// Standard input must be open for reading and not a directory; otherwise a
+/// read fails at once and would look like an empty input.
+/// \throw Error(io) "cannot read standard input: <reason>".
+void check_stdin();
 
 /// True for "-" (stdin or stdout).
 bool is_std_stream(const std::string& path);

@@ -18,7 +18,8 @@
 // in vectors that grow by doubling (up to half again): 48 * 2 * 1.5 = 144
 // bytes per byte of a mesh, whose numbers are all coordinates; the worst
 // mesh measured (a point-only OFF of one-digit coordinates, hulled) peaks
-// near 72. Rows and point lists may be files of the plane, whose rows and
+// near 72 (with the mesh's bytes held while they are parsed, one more per
+// byte: mesh_input.hpp). Rows and point lists may be files of the plane, whose rows and
 // points get a zero coordinate each (3 numbers for 2 of text), and the set
 // of rows of the plane is built through more copies: the worst measured (one-digit rows of
 // the plane, duplicated, through `diff`) peaks near 233, so they count 256.

@@ -31,14 +31,9 @@ std::string describe(const Solid& solid) {
          (solid.num_reflex_edges() == 1 ? "" : "s");
 }
 
-}  // namespace
-
-bool is_pieces_path(const std::string& path) {
-  if (is_std_stream(path) || lower_extension(path) != ".obj") return false;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  // Line by line in one pass, without holding a line: two `o` statements end it.
-  std::istreambuf_iterator<char> it(in), end;
+// Line by line in one pass, without holding a line: two `o` statements end it.
+template <class It>
+bool has_two_objects(It it, It end) {
   int objects = 0;
   while (it != end) {
     if (object_line(it, end) && ++objects == 2) return true;
@@ -47,6 +42,17 @@ bool is_pieces_path(const std::string& path) {
   }
   return false;
 }
+
+}  // namespace
+
+bool is_pieces_path(const std::string& path) {
+  if (is_std_stream(path) || lower_extension(path) != ".obj") return false;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  return has_two_objects(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+bool is_pieces_text(std::string_view text) { return has_two_objects(text.begin(), text.end()); }
 
 ConvexUnion read_pieces_file(const std::string& path) {
   return read_within_budget(path, InputCost::mesh,
@@ -98,15 +104,20 @@ void rethrow_explaining_non_convex(const Error& convex_error, const std::string&
   if (!shape_error || !mesh_file) throw convex_error;
   std::string what;
   if (is_pieces_path(path)) {
-    what = "a pieces file of " + std::to_string(read_pieces_file(path).size()) +
-           " convex pieces";
+    what = pieces_file_of(read_pieces_file(path).size());
   } else {
     PolygonSoup soup = read_soup(path);
     if (!spans_space(soup)) throw convex_error;
     what = describe(solid_from_soup(std::move(soup), input_name(path)));
   }
+  throw_not_a_convex_set(path, what, hint);
+}
+
+void throw_not_a_convex_set(const std::string& path, const std::string& what, std::string_view hint) {
   throw Error(ErrorCategory::not_convex, input_name(path) + ": " + what + ", not a convex set: " + std::string(hint));
 }
+
+std::string pieces_file_of(std::size_t count) { return "a pieces file of " + std::to_string(count) + " convex pieces"; }
 
 void check_pieces_output(const std::string& path) {
   const bool device = path.rfind("/dev/", 0) == 0 && std::filesystem::path(path).extension().empty();

@@ -27,6 +27,9 @@ namespace cvms::cli {
 /// then names the problem).
 bool is_pieces_path(const std::string& path);
 
+/// True when `text` (an OBJ file's bytes) holds two or more `o` statements.
+bool is_pieces_text(std::string_view text);
+
 /// The pieces file at `path`, read exactly (read_pieces) within the
 /// inputs' memory budget, as every other input is (files.hpp).
 ConvexUnion read_pieces_file(const std::string& path);
@@ -57,6 +60,12 @@ ConvexUnion decompose_soup(PolygonSoup soup, const std::string& path, const Deco
 /// again, another error) rethrows `convex_error`.
 [[noreturn]] void rethrow_explaining_non_convex(const Error& convex_error, const std::string& path,
                                                 std::string_view hint);
+
+/// Throws Error(not_convex) "<file>: <what>, not a convex set: <hint>".
+[[noreturn]] void throw_not_a_convex_set(const std::string& path, const std::string& what, std::string_view hint);
+
+/// What a pieces file of `count` pieces is, for throw_not_a_convex_set.
+std::string pieces_file_of(std::size_t count);
 
 /// Fails before any work unless `path` is "-" or ends in .obj (any case):
 /// pieces are written as OBJ objects. \throw UsageError; Error(io) as

@@ -9,6 +9,7 @@
 #include "cvms/solid_sum.hpp"
 #include "files.hpp"
 #include "keep_until_exit.hpp"
+#include "mesh_input.hpp"
 #include "pieces_files.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
@@ -48,27 +49,24 @@ SetOrSolid read_set_or_solid(const std::string& path, const Placement& placement
     }
     return read;
   }
-  PolygonSoup soup;
+  MeshInput input;
   try {
-    soup = read_soup(path);
+    input = read_mesh_input(path);
+    read.set = set_from_soup(parse_soup(input), is_std_stream(path) ? input_name(path) : path);
+    return read;
   } catch (const Error& e) {
     read.convex_error = e;
+  }
+  const ErrorCategory category = read.convex_error->category();
+  if (category != ErrorCategory::not_convex && category != ErrorCategory::topology) return read;
+  if (holds_pieces(input)) {
+    read.pieces = read_pieces_text(input).size();
     return read;
   }
-  // Kept for the solid: a copy costs far less than parsing the file again.
-  PolygonSoup kept = soup;
-  try {
-    read.set = set_from_soup(std::move(soup), is_std_stream(path) ? input_name(path) : path);
-    return read;
-  } catch (const Error& e) {
-    const bool shape_error =
-        e.category() == ErrorCategory::not_convex || e.category() == ErrorCategory::topology;
-    if (!shape_error || is_pieces_path(path) || !spans_space(kept)) {
-      read.convex_error = e;
-      return read;
-    }
-  }
-  read.solid = solid_from_soup(placed(std::move(kept), placement, operand), input_name(path));
+  PolygonSoup soup = parse_soup(input);
+  if (!spans_space(soup)) return read;
+  read.convex_error.reset();
+  read.solid = solid_from_soup(placed(std::move(soup), placement, operand), input_name(path));
   return read;
 }
 

@@ -26,12 +26,15 @@ struct SetOrSolid {
   ConvexSet set;
   std::optional<Solid> solid;
   std::optional<Error> convex_error;
+  /// With convex_error, for a pieces file: how many pieces it holds.
+  std::optional<std::size_t> pieces;
 };
 
-/// Reads `path` once: a mesh (a file or OFF on standard input) is parsed
-/// into one soup, tried as a convex set from a copy, and validated as a
-/// solid when it is none and its points span space (a pieces file is left
-/// to the caller); other forms are read as convex sets (read_set).
+/// Reads `path` once: a mesh (a file or OFF on standard input) is read into
+/// memory (mesh_input.hpp), parsed and tried as a convex set; when it is
+/// none, its bytes are parsed again, as pieces for a pieces file (counted,
+/// for the caller's message), else as a solid, validated when its points
+/// span space. Other forms are read as convex sets (read_set).
 /// \throw Error naming the file with the solid's located defect for a mesh
 ///   that spans space but is no solid.
 SetOrSolid read_set_or_solid(const std::string& path, const Placement& placement, const std::string& operand);

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "commands.hpp"
@@ -18,6 +19,7 @@
 #include "files.hpp"
 #include "json.hpp"
 #include "keep_until_exit.hpp"
+#include "mesh_input.hpp"
 #include "options.hpp"
 #include "pieces_files.hpp"
 #include "reports.hpp"
@@ -63,8 +65,7 @@ void report_json(const std::string& name, const ConvexSet& set, std::size_t inpu
 }
 
 // A pieces file: each piece validated as a convex polyhedron by read_pieces.
-void check_pieces(const std::string& input, bool json, std::ostream& report) {
-  const ConvexUnion pieces = read_pieces_file(input);
+void check_pieces(const std::string& input, const ConvexUnion& pieces, bool json, std::ostream& report) {
   std::int64_t vertices = 0, facets = 0;
   for (const ConvexPolyhedron& piece : pieces.pieces()) {
     vertices += static_cast<std::int64_t>(piece.num_vertices());
@@ -84,14 +85,15 @@ void check_pieces(const std::string& input, bool json, std::ostream& report) {
          << ", F " << facets << " (over all pieces)\n";
 }
 
-// The input as a solid, after it failed as a convex set with `convex_error`
-// (which stays the answer for a file that cannot be a solid).
-void check_solid(const std::string& input, const Error& convex_error, PolygonSoup soup, bool json,
-                 std::ostream& report) {
+// The mesh input as a solid, its bytes parsed again, after it failed as a
+// convex set with `convex_error` (which stays the answer for a file that
+// cannot be a solid).
+void check_solid(const MeshInput& mesh, const Error& convex_error, bool json, std::ostream& report) {
+  const std::string& input = mesh.path;
   if (convex_error.category() != ErrorCategory::not_convex && convex_error.category() != ErrorCategory::topology)
     throw convex_error;
-  if (is_pieces_path(input)) return check_pieces(input, json, report);
-  if (!is_std_stream(input)) soup = read_soup(input);
+  if (holds_pieces(mesh)) return check_pieces(input, read_pieces_text(mesh), json, report);
+  PolygonSoup soup = parse_soup(mesh);
   if (!spans_space(soup)) throw convex_error;
   const Solid solid = solid_from_soup(std::move(soup), input_name(input));
   ConvexUnion pieces;
@@ -107,15 +109,19 @@ void check_solid(const std::string& input, const Error& convex_error, PolygonSou
 }
 
 void run_check(const std::string& input, bool json, std::ostream& report) {
-  PolygonSoup soup = read_soup(input);
+  // A mesh is read once into memory and parsed again only if it is not
+  // convex; a cdd .ext is points (their hull: never a solid).
+  std::optional<MeshInput> mesh;
+  if (!is_cdd_points_path(input)) mesh = read_mesh_input(input);
+  PolygonSoup soup = mesh ? parse_soup(*mesh) : read_soup(input);
   const std::size_t input_points = soup.points.size();
   const std::size_t input_faces = soup.num_faces();
-  PolygonSoup kept = is_std_stream(input) ? soup : PolygonSoup{};  // stdin cannot be read again
   ConvexSet set;
   try {
     set = set_from_soup(std::move(soup), input_name(input));
   } catch (const Error& e) {
-    return check_solid(input, e, std::move(kept), json, report);
+    if (!mesh) throw;
+    return check_solid(*mesh, e, json, report);
   }
   if (json) {
     report_json(input_name(input), set, input_points, input_faces, report);

@@ -78,20 +78,24 @@ auto with_limit_hint(Sum&& sum) {
 
 // `read_time`: of reading and validating both operands, shown with --stats
 // beside the sum's and the write's, so that a whole run's wall time can be
-// told apart from the work inside it.
+// told apart from the work inside it. The operands' facet planes, made
+// before the sum's clock starts, count as reading, and the write shows its
+// wait for the disk: the atomic replace's fsync can outweigh the text.
 void sum_polyhedra(const ConvexPolyhedron& a, const ConvexPolyhedron& b, const SumArgs& args,
                    std::chrono::steady_clock::duration read_time, std::ostream& report) {
   Timed sum = with_limit_hint([&] { return timed_sum(a, b, args.options()); });
   // Written in an order of the set alone, so that A + B and B + A give the
   // same bytes.
-  const auto write_start = std::chrono::steady_clock::now();
+  WriteTimes written;
   write_polyhedron(args.output, sum.result.polyhedron, coordinates_of(args.float_output), args.format,
-                   VertexOrder::canonical);
-  const auto write_time = std::chrono::steady_clock::now() - write_start;
+                   VertexOrder::canonical, &written);
   if (args.stats) {
     report << "A: " << counts(a) << "\nB: " << counts(b) << "\nA+B: " << counts(sum.result.polyhedron)
            << "\nalgorithm: " << to_string(args.algorithm) << "\ntime: " << milliseconds(sum.time)
-           << "\nread time: " << milliseconds(read_time) << "\nwrite time: " << milliseconds(write_time) << "\n";
+           << "\nread time: " << milliseconds(read_time + sum.planes_time)
+           << " (of it, facet planes time: " << milliseconds(sum.planes_time)
+           << ")\nwrite time: " << milliseconds(written.total)
+           << " (of it, disk sync time: " << milliseconds(written.sync) << ")\n";
     print_stats(report, sum.result.stats, sum.diagnostics);
   }
   keep_until_exit(std::move(sum.result.polyhedron));
@@ -133,8 +137,9 @@ Operands read_operands(const SumArgs& args) {
     }
     const std::size_t index = operands.sets.size();
     SetOrSolid read = read_set_or_solid(path, index == 0 ? args.place_a : args.place_b, index == 0 ? "a" : "b");
-    if (read.convex_error)
-      rethrow_explaining_non_convex(*read.convex_error, path, "pass --pieces to sum it as a union of convex pieces");
+    if (read.pieces)
+      throw_not_a_convex_set(path, pieces_file_of(*read.pieces), "pass --pieces to sum it as a union of convex pieces");
+    if (read.convex_error) throw *read.convex_error;
     operands.solids[index] = std::move(read.solid);
     return std::move(read.set);
   };
