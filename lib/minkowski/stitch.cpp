@@ -23,6 +23,7 @@
 #include "prefetch_exact.hpp"
 #include "scaled_points.hpp"
 #include "small_direction.hpp"
+#include "two_word_scaled.hpp"
 #include "word_scaled.hpp"
 #include "worker.hpp"
 
@@ -469,16 +470,36 @@ std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::scaled_sum() const {
   if (looks_like_doubles(a_) && looks_like_doubles(b_)) return std::nullopt;
   const WordScaledPoints* sa = PolyhedronAccess::scaled_vertices(a_);
   const WordScaledPoints* sb = sa != nullptr ? PolyhedronAccess::scaled_vertices(b_) : nullptr;
-  if (sb == nullptr || (sa->dyadic() && sb->dyadic())) return std::nullopt;
+  if (sb == nullptr) return two_word_scaled_sum();
+  if (sa->dyadic() && sb->dyadic()) return std::nullopt;
   // L = (D_A / g) D_B < 2^126 for g = gcd(D_A, D_B); the factors are below 2^63.
   const std::uint64_t g = std::gcd(sa->denominator, sb->denominator);
   const std::uint64_t factor_a = sb->denominator / g, factor_b = sa->denominator / g;
   return ScaledSum{sa, sb, ScaledPoints::Uint128{sa->denominator} * factor_a, factor_a, factor_b};
 }
 
+std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::two_word_scaled_sum() const {
+  const TwoWordScaledPoints* wa = PolyhedronAccess::two_word_scaled_vertices(a_);
+  const TwoWordScaledPoints* wb = wa != nullptr ? PolyhedronAccess::two_word_scaled_vertices(b_) : nullptr;
+  if (wb == nullptr) return std::nullopt;
+  const std::optional<TwoWordSum> fits = two_word_sum_fits(*wa, *wb);
+  if (!fits) return std::nullopt;
+  return ScaledSum{nullptr, nullptr, fits->denominator, 0, 0, wa, wb, fits->factor_a, fits->factor_b};
+}
+
 void SumFacetBuilder::write_scaled_vertex(const VertexPair& p, const ScaledSum& sum, ScaledPoints& points,
                                           ApproxVec3* approx, std::size_t j) const {
   using Int128 = ScaledPoints::Int128;
+  if (sum.a == nullptr) {
+    for (int i = 0; i < 3; ++i) {
+      // |a| f_A + |b| f_B < 2^125 for the largest |a| and |b| (two_word_sum_fits).
+      const Int128 n = sum.wide_a->at(p.a, i) * static_cast<Int128>(sum.wide_factor_a) +
+                       sum.wide_b->at(p.b, i) * static_cast<Int128>(sum.wide_factor_b);
+      points.numerator(j, i) = n;
+      axis_of(approx[j], i) = points.approx(n);
+    }
+    return;
+  }
   for (int i = 0; i < 3; ++i) {
     // Each term is below 2^61 2^63 = 2^124 in magnitude (word_scaled.hpp).
     const Int128 n =
@@ -492,8 +513,14 @@ void SumFacetBuilder::write_scaled_vertices(std::span<const VertexPair> pairs, s
                                             const ScaledSum& sum, ScaledPoints& points, ApproxVec3* approx) const {
   for (std::size_t j = begin; j < end; ++j) {
     if (j + prefetch_far < end) {  // the pairs are met out of memory order
-      __builtin_prefetch(&sum.a->numerators[3 * std::size_t{pairs[j + prefetch_far].a}]);
-      __builtin_prefetch(&sum.b->numerators[3 * std::size_t{pairs[j + prefetch_far].b}]);
+      const VertexPair& ahead = pairs[j + prefetch_far];
+      if (sum.a != nullptr) {
+        __builtin_prefetch(&sum.a->numerators[3 * std::size_t{ahead.a}]);
+        __builtin_prefetch(&sum.b->numerators[3 * std::size_t{ahead.b}]);
+      } else {
+        __builtin_prefetch(&sum.wide_a->numerators[3 * std::size_t{ahead.a}]);
+        __builtin_prefetch(&sum.wide_b->numerators[3 * std::size_t{ahead.b}]);
+      }
     }
     write_scaled_vertex(pairs[j], sum, points, approx, j);
   }
