@@ -6,8 +6,9 @@
 // the denominator is the lcm of the coordinates' denominators; points at
 // each bound are accepted and just past it refused (denominator and
 // numerators 2^124, the sums' denominator 2^126 and numerators 2^125); sums
-// made as the stitch makes them are the mpq sums. Random cases use fixed
-// seeds, printed on failure.
+// made as the stitch makes them are the mpq sums; edge directions made
+// primitive are the vectors divided by GMP's gcd of their coordinates. Random cases use fixed seeds,
+// printed on failure.
 #include "two_word_scaled.hpp"
 
 #include <gtest/gtest.h>
@@ -23,6 +24,7 @@
 #include "gcd128.hpp"
 #include "limb_arena.hpp"
 #include "scaled_points.hpp"
+#include "small_direction.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -206,6 +208,49 @@ TEST(TwoWordScaled, SumBoundsAtTheirEdges) {
   EXPECT_FALSE(two_word_sum_fits(operand(1, two123 - 1), operand(1, 16)));
   // Coprime denominators whose product overflows 128 bits.
   EXPECT_FALSE(two_word_sum_fits(operand(1, two123 - 1), operand(1, two123 + 1)));
+}
+
+// Edge directions of two-word operands: differences below 2^125 made
+// primitive, against the vectors divided by GMP's gcd; small only below
+// 2^62 in every coordinate.
+TEST(TwoWordDirections, PrimitiveVectorsAreGmpsAndSmallOnlyWithinTheBound) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k < 500; ++k) {
+      Int128 c[3];
+      const Int128 factor = static_cast<Int128>(random_u128(rng) >> 70) + 1;  // a common factor below 2^58
+      for (Int128& x : c) {
+        x = static_cast<Int128>(random_u128(rng) >> 67) * factor;  // below 2^119
+        if (rng() % 2 == 0) x = -x;
+      }
+      if (k % 7 == 0) c[k % 3] = 0;  // zero coordinates
+      if (c[0] == 0 && c[1] == 0 && c[2] == 0) continue;
+      const SmallNormal v = primitive_vector(c[0], c[1], c[2]);
+      mpz_class g = gcd(gcd(from_i128(c[0]), from_i128(c[1])), from_i128(c[2]));
+      const Vec3 expected{Rational(from_i128(c[0]) / g), Rational(from_i128(c[1]) / g),
+                          Rational(from_i128(c[2]) / g)};
+      const Vec3 actual{Rational(from_i128(v.c[0])), Rational(from_i128(v.c[1])), Rational(from_i128(v.c[2]))};
+      ASSERT_EQ(actual, expected) << "seed " << seed << " case " << k;
+      const std::optional<SmallDirection> small = as_small_direction(v);
+      const mpz_class limit = mpz_class(1) << 62;
+      const bool fits = abs(actual.x.get_num()) < limit && abs(actual.y.get_num()) < limit &&
+                        abs(actual.z.get_num()) < limit;
+      ASSERT_EQ(small.has_value(), fits) << "seed " << seed << " case " << k;
+      if (small) {
+        ASSERT_EQ(small->to_vec3(), expected) << "seed " << seed << " case " << k;
+      }
+    }
+  }
+  const Int128 two62 = Int128{1} << 62;
+  EXPECT_TRUE(as_small_direction(primitive_vector(two62 - 1, -(two62 - 1), 2)));
+  EXPECT_FALSE(as_small_direction(primitive_vector(two62 + 1, 2, 0)));
+  EXPECT_FALSE(as_small_direction(primitive_vector(1, -(two62 + 1), 0)));
+  // A large difference whose coordinates share a power of ten: small once primitive.
+  const Int128 ten20 = static_cast<Int128>(100000000000000000) * 1000;
+  const std::optional<SmallDirection> d = as_small_direction(primitive_vector(3 * ten20, -7 * ten20, 0));
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->c[0], 3);
+  EXPECT_EQ(d->c[1], -7);
 }
 
 }  // namespace

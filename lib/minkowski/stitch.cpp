@@ -182,7 +182,27 @@ class EdgeDirections {
       if (d.c[0] == 0 && d.c[1] == 0 && d.c[2] == 0) return std::nullopt;
       return d;
     }
+    if (const std::optional<SmallNormal> d = two_word_direction(e)) return as_small_direction(*d);
     return small_fraction_direction(p_.vertex(m.from(even)), p_.vertex(m.to(even)));
+  }
+
+  // The primitive direction of e's even halfedge from the operand's
+  // two-word integers (two_word_scaled.hpp, made once per operand) when it
+  // has them: a difference below 2^125 in magnitude made primitive, where
+  // the two-word common denominator's extra factors (10^19 over the 10^17 of
+  // most ends) cancel; nullopt otherwise.
+  [[nodiscard]] std::optional<SmallNormal> two_word_direction(EdgeId e) {
+    if (!two_word_asked_) {
+      two_word_ = PolyhedronAccess::two_word_scaled_vertices(p_);
+      two_word_asked_ = true;
+    }
+    if (two_word_ == nullptr) return std::nullopt;
+    const Mesh& m = p_.mesh();
+    const HalfedgeId even = Mesh::halfedge(e);
+    const std::size_t from = m.from(even).index(), to = m.to(even).index();
+    SmallNormal::Int128 d[3];
+    for (int axis = 0; axis < 3; ++axis) d[axis] = two_word_->at(to, axis) - two_word_->at(from, axis);
+    return primitive_vector(d[0], d[1], d[2]);  // nonzero: a convex polyhedron's edge has distinct ends
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
@@ -192,8 +212,14 @@ class EdgeDirections {
     auto [it, inserted] = general_.try_emplace(e);
     if (inserted) {
       const SmallDirection* s = small(h);
-      it->second =
-          s != nullptr ? s->to_vec3() : primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+      if (s != nullptr) {
+        it->second = s->to_vec3();
+      } else if (const std::optional<SmallNormal> d = scaled_ == nullptr ? two_word_direction(Mesh::edge(h))
+                                                                           : std::nullopt) {
+        d->assign_to(it->second);  // the same primitive vector, without rationals
+      } else {
+        it->second = primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+      }
     }
     return it->second;
   }
@@ -203,6 +229,8 @@ class EdgeDirections {
   const ConvexPolyhedron& p_;
   const WordScaledPoints* scaled_ = nullptr;  // p_'s, once asked for
   bool scaled_asked_ = false;
+  const TwoWordScaledPoints* two_word_ = nullptr;  // p_'s, once asked for (when scaled_ is null)
+  bool two_word_asked_ = false;
   std::vector<State> state_;
   // On huge pages when large: fresh memory at every sum (huge_page_blocks.hpp).
   std::optional<HugePageArray<SmallDirection, BlockLife::scratch>> small_;

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "error_bounds.hpp"
+#include "gcd128.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -20,15 +21,16 @@ using Uint128 = ScaledPoints::Uint128;
 Uint128 magnitude_of(Int128 n) noexcept { return n < 0 ? -static_cast<Uint128>(n) : static_cast<Uint128>(n); }
 
 // gcd(m, d) for d > 0: GMP's one-limb gcd when d fits one limb (it reduces
-// the two-limb m modulo d first), else Euclid in 128-bit words.
-Uint128 gcd128(Uint128 m, Uint128 d) noexcept {
+// the two-limb m modulo d first), else the binary gcd on two words
+// (gcd128.hpp: each of Euclid's steps would be a 128-bit division, a library
+// call of about a hundred cycles).
+Uint128 fraction_gcd(Uint128 m, Uint128 d) noexcept {
   if (m == 0) return d;
   if ((d >> 64) == 0) {
     const mp_limb_t limbs[2] = {static_cast<mp_limb_t>(m), static_cast<mp_limb_t>(m >> 64)};
     return mpn_gcd_1(limbs, limbs[1] != 0 ? 2 : 1, static_cast<mp_limb_t>(d));
   }
-  while (m != 0) d = std::exchange(m, d % m);
-  return d;
+  return gcd128(m, d);
 }
 
 }  // namespace
@@ -68,7 +70,7 @@ Approx ScaledPoints::approx(Int128 numerator) const {
   const long double middle = (static_cast<long double>(t) + static_cast<long double>(next)) / 2;
   if (ld - e > t && ld + e < next && (ld + e < middle || ld - e > middle)) {
     if (ld + e < middle) return {sign(t), filtered::truncation_error(t)};  // nearest is t too
-    const Uint128 g = gcd128(m, denominator_);
+    const Uint128 g = fraction_gcd(m, denominator_);
     if (m / g < exact_limit && denominator_ / g < exact_limit)
       return {sign(next), next * filtered::unit_roundoff};
     return {sign(t), filtered::truncation_error(t)};
@@ -85,7 +87,7 @@ void ScaledPoints::store(std::size_t j, int axis, LimbArena& arena, Rational& ou
 
 void ScaledPoints::store_fraction(Int128 n, LimbArena& arena, Rational& out) const {
   const Uint128 m = magnitude_of(n);
-  const Uint128 g = gcd128(m, denominator_);
+  const Uint128 g = fraction_gcd(m, denominator_);
   const Uint128 reduced = m / g, den = denominator_ / g;
   const mp_limb_t num_limbs[2] = {static_cast<mp_limb_t>(reduced), static_cast<mp_limb_t>(reduced >> 64)};
   const mp_limb_t den_limbs[2] = {static_cast<mp_limb_t>(den), static_cast<mp_limb_t>(den >> 64)};

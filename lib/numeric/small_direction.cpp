@@ -260,6 +260,19 @@ SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) no
   return {{c[0], c[1], c[2]}};
 }
 
+SmallNormal primitive_vector(Int128 x, Int128 y, Int128 z) noexcept {
+  Int128 c[3] = {x, y, z};
+  make_primitive(c);
+  return {{c[0], c[1], c[2]}};
+}
+
+std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept {
+  constexpr Uint128 limit = Uint128{1} << 62;
+  if (magnitude(v.c[0]) >= limit || magnitude(v.c[1]) >= limit || magnitude(v.c[2]) >= limit) return std::nullopt;
+  return SmallDirection{{static_cast<std::int64_t>(v.c[0]), static_cast<std::int64_t>(v.c[1]),
+                         static_cast<std::int64_t>(v.c[2])}};
+}
+
 void SmallNormal::negate() noexcept {
   for (Int128& x : c) x = -x;
 }

@@ -65,6 +65,16 @@ struct SmallNormal {
   void pack(LimbArena& arena, DyadicPoints& out, std::size_t j) const;
 };
 
+/// The primitive integer vector of the direction of (x, y, z), as a
+/// SmallNormal: the edge direction of two points of a two-word scaled
+/// operand (two_word_scaled.hpp), whose difference is below 2^125.
+/// \pre (x, y, z) is nonzero and each below 2^127 in magnitude.
+[[nodiscard]] SmallNormal primitive_vector(SmallNormal::Int128 x, SmallNormal::Int128 y, SmallNormal::Int128 z) noexcept;
+
+/// v as a SmallDirection when every coordinate is below 2^62 in magnitude;
+/// nullopt otherwise.
+[[nodiscard]] std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept;
+
 /// primitive_direction(cross(u, v)) in 128-bit integers.
 /// \pre u and v are not parallel.
 [[nodiscard]] SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) noexcept;
