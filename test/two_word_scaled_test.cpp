@@ -210,6 +210,34 @@ TEST(TwoWordScaled, SumBoundsAtTheirEdges) {
   EXPECT_FALSE(two_word_sum_fits(operand(1, two123 - 1), operand(1, two123 + 1)));
 }
 
+// Approximations over two-word denominators, decimal (2^t 5^f, whose gcd
+// with a numerator is counted) or not, of fractions whose reduced terms
+// are below 2^53 (small fractions times the denominator), around them, and
+// random: Approx::of's double and at least its bound.
+TEST(TwoWordScaled, ApproximationsOverTwoWordDenominatorsAreApproxOf) {
+  const Uint128 ten15 = 1000000000000000;
+  const Uint128 denominators[] = {ten15 * ten15, (Uint128{1} << 90) * 9765625, ten15 * ten15 * 3, Uint128{1} << 125,
+                                  ten15 * 100 * (Uint128{1} << 60), ten15 * ten15 * ten15 / 8};
+  std::mt19937_64 rng(7);
+  for (const Uint128 d : denominators) {
+    ScaledPoints points(d, KeptAllocator<Int128>{});
+    std::vector<Int128> numerators = {1, -1, static_cast<Int128>(d / 2), static_cast<Int128>(d / 4 * 3),
+                                      static_cast<Int128>(d / 10), -static_cast<Int128>(d / 1000),
+                                      static_cast<Int128>(d / 5 * 2) + 1, static_cast<Int128>(d / 5 * 2) - 1,
+                                      static_cast<Int128>(d / 3), static_cast<Int128>(d / (Uint128{1} << 53)),
+                                      static_cast<Int128>(d / 5 * 2), static_cast<Int128>(d / 3 * 2),
+                                      -static_cast<Int128>(d / 10 * 7), static_cast<Int128>(d / 100000 * 3)};
+    for (int k = 0; k < 200; ++k) numerators.push_back(static_cast<Int128>(random_u128(rng) % d));
+    for (const Int128 n : numerators) {
+      if (n == 0) continue;
+      const Rational q = fraction(from_i128(n), from_u128(d));
+      const Approx x = points.approx(n), oracle = Approx::of(q);
+      ASSERT_EQ(x.value, oracle.value) << q << " over " << from_u128(d);
+      ASSERT_GE(x.error, oracle.error) << q << " over " << from_u128(d);
+    }
+  }
+}
+
 // Edge directions of two-word operands: differences below 2^125 made
 // primitive, against the vectors divided by GMP's gcd; small only below
 // 2^62 in every coordinate.

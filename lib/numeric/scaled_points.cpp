@@ -4,6 +4,7 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -33,7 +34,57 @@ Uint128 fraction_gcd(Uint128 m, Uint128 d) noexcept {
   return gcd128(m, d);
 }
 
+// The inverse of 5 modulo 2^128 (Newton's iteration doubles the correct
+// low bits each step: 3, 6, ..., 192 >= 128): x is a multiple of 5 exactly
+// when x times it is at most (2^128 - 1) / 5, and the product is x / 5 then.
+constexpr Uint128 inverse_of_5 = [] {
+  Uint128 inverse = 5;  // 5 * 5 = 25 = 1 mod 8: three bits
+  for (int k = 0; k < 6; ++k) inverse *= 2 - 5 * inverse;
+  return inverse;
+}();
+static_assert(inverse_of_5 * 5 == 1);
+constexpr Uint128 most_fifth = ~Uint128{0} / 5;
+
+int trailing_zeros(Uint128 x) noexcept {
+  const auto low = static_cast<std::uint64_t>(x);
+  return low != 0 ? __builtin_ctzll(low) : 64 + __builtin_ctzll(static_cast<std::uint64_t>(x >> 64));
+}
+
 }  // namespace
+
+ScaledPoints::DecimalDenominator ScaledPoints::DecimalDenominator::of(Uint128 d) noexcept {
+  DecimalDenominator out;
+  out.twos = trailing_zeros(d);  // d > 0
+  d >>= out.twos;
+  while (d * inverse_of_5 <= most_fifth) {
+    d *= inverse_of_5;
+    ++out.fives;
+  }
+  if (d != 1) out.fives = -1;
+  return out;
+}
+
+bool ScaledPoints::reduces_below_2_53(Uint128 n) const noexcept {
+  constexpr Uint128 limit = Uint128{1} << 53;
+  if (decimal_.fives < 0) {
+    const Uint128 g = fraction_gcd(n, denominator_);
+    return n / g < limit && denominator_ / g < limit;
+  }
+  // gcd(n, 2^t 5^f) = 2^a 5^b: a = min(t, trailing zeros of n), b the
+  // number of times 5 divides n, at most f.
+  const int a = std::min(decimal_.twos, trailing_zeros(n));
+  n >>= a;
+  int b = 0;
+  while (b < decimal_.fives && n * inverse_of_5 <= most_fifth) {
+    n *= inverse_of_5;
+    ++b;
+  }
+  if (n >= limit) return false;
+  // The reduced denominator 2^(t - a) 5^(f - b): below 2^53 when its factors are.
+  Uint128 den = Uint128{1} << std::min(decimal_.twos - a, 53);
+  for (int k = b; k < decimal_.fives && den < limit; ++k) den *= 5;
+  return den < limit;
+}
 
 // Approx::of of the canonical fraction, without making it. Approx::of
 // gives the nearest double with the bound u |v| when the reduced numerator
@@ -70,9 +121,7 @@ Approx ScaledPoints::approx(Int128 numerator) const {
   const long double middle = (static_cast<long double>(t) + static_cast<long double>(next)) / 2;
   if (ld - e > t && ld + e < next && (ld + e < middle || ld - e > middle)) {
     if (ld + e < middle) return {sign(t), filtered::truncation_error(t)};  // nearest is t too
-    const Uint128 g = fraction_gcd(m, denominator_);
-    if (m / g < exact_limit && denominator_ / g < exact_limit)
-      return {sign(next), next * filtered::unit_roundoff};
+    if (reduces_below_2_53(m)) return {sign(next), next * filtered::unit_roundoff};
     return {sign(t), filtered::truncation_error(t)};
   }
   LimbArena scratch;
