@@ -267,12 +267,32 @@ TEST(TwoWordDirections, PrimitiveVectorsAreGmpsAndSmallOnlyWithinTheBound) {
       if (small) {
         ASSERT_EQ(small->to_vec3(), expected) << "seed " << seed << " case " << k;
       }
+      // A multiple of it (a factor of 10^k kept when some coordinate has
+      // none) whenever the primitive vector fits.
+      const std::optional<SmallDirection> multiple = small_multiple(c[0], c[1], c[2]);
+      ASSERT_EQ(multiple.has_value(), fits) << "seed " << seed << " case " << k;
+      if (multiple) {
+        const Vec3 m = multiple->to_vec3();
+        mpz_class h = gcd(gcd(m.x.get_num(), m.y.get_num()), m.z.get_num());
+        ASSERT_EQ((Vec3{Rational(m.x.get_num() / h), Rational(m.y.get_num() / h), Rational(m.z.get_num() / h)}),
+                  expected)
+            << "seed " << seed << " case " << k;
+      }
     }
   }
   const Int128 two62 = Int128{1} << 62;
   EXPECT_TRUE(as_small_direction(primitive_vector(two62 - 1, -(two62 - 1), 2)));
   EXPECT_FALSE(as_small_direction(primitive_vector(two62 + 1, 2, 0)));
   EXPECT_FALSE(as_small_direction(primitive_vector(1, -(two62 + 1), 0)));
+  // A difference whose coordinates share 2^3 5^20 and 3: small_multiple
+  // divides by the powers of 2 and 5 alone.
+  const Int128 five20 = 95367431640625;
+  const std::optional<SmallDirection> m = small_multiple(3 * 8 * five20 * five20, -9 * 8 * five20 * five20, 0);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->c[0], 3);
+  EXPECT_EQ(m->c[1], -9);
+  EXPECT_EQ(m->c[2], 0);
+  EXPECT_FALSE(small_multiple(3 * (Int128{1} << 62) + 3, 1, 0));  // coprime past 2^62
   // A large difference whose coordinates share a power of ten: small once primitive.
   const Int128 ten20 = static_cast<Int128>(100000000000000000) * 1000;
   const std::optional<SmallDirection> d = as_small_direction(primitive_vector(3 * ten20, -7 * ten20, 0));

@@ -166,7 +166,9 @@ class EdgeDirections {
   // The direction of e's even halfedge from the exact ends, as fractions over
   // their common denominator, when that fits machine words: the difference
   // of the ends' integers over the operand's common denominator
-  // (word_scaled.hpp, made once per operand), else over the two ends'.
+  // (word_scaled.hpp, made once per operand), or of its two-word integers
+  // divided by their common factors (two_word_scaled.hpp, small_multiple),
+  // else over the two ends'.
   [[nodiscard]] std::optional<SmallDirection> fraction_direction(EdgeId e) {
     const Mesh& m = p_.mesh();
     const HalfedgeId even = Mesh::halfedge(e);
@@ -182,27 +184,29 @@ class EdgeDirections {
       if (d.c[0] == 0 && d.c[1] == 0 && d.c[2] == 0) return std::nullopt;
       return d;
     }
-    if (const std::optional<SmallNormal> d = two_word_direction(e)) return as_small_direction(*d);
+    if (two_word() != nullptr) {
+      const auto [x, y, z] = two_word_difference(e);
+      return small_multiple(x, y, z);
+    }
     return small_fraction_direction(p_.vertex(m.from(even)), p_.vertex(m.to(even)));
   }
 
-  // The primitive direction of e's even halfedge from the operand's
-  // two-word integers (two_word_scaled.hpp, made once per operand) when it
-  // has them: a difference below 2^125 in magnitude made primitive, where
-  // the two-word common denominator's extra factors (10^19 over the 10^17 of
-  // most ends) cancel; nullopt otherwise.
-  [[nodiscard]] std::optional<SmallNormal> two_word_direction(EdgeId e) {
+  // p_'s two-word integers (two_word_scaled.hpp, made once per operand), or null.
+  const TwoWordScaledPoints* two_word() {
     if (!two_word_asked_) {
       two_word_ = PolyhedronAccess::two_word_scaled_vertices(p_);
       two_word_asked_ = true;
     }
-    if (two_word_ == nullptr) return std::nullopt;
+    return two_word_;
+  }
+  // The difference of the ends of e's even halfedge in two_word()'s
+  // integers (each below 2^124, so the difference below 2^125: no overflow).
+  [[nodiscard]] std::array<SmallNormal::Int128, 3> two_word_difference(EdgeId e) const {
     const Mesh& m = p_.mesh();
     const HalfedgeId even = Mesh::halfedge(e);
     const std::size_t from = m.from(even).index(), to = m.to(even).index();
-    SmallNormal::Int128 d[3];
-    for (int axis = 0; axis < 3; ++axis) d[axis] = two_word_->at(to, axis) - two_word_->at(from, axis);
-    return primitive_vector(d[0], d[1], d[2]);  // nonzero: a convex polyhedron's edge has distinct ends
+    return {two_word_->at(to, 0) - two_word_->at(from, 0), two_word_->at(to, 1) - two_word_->at(from, 1),
+            two_word_->at(to, 2) - two_word_->at(from, 2)};
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
@@ -214,9 +218,10 @@ class EdgeDirections {
       const SmallDirection* s = small(h);
       if (s != nullptr) {
         it->second = s->to_vec3();
-      } else if (const std::optional<SmallNormal> d = scaled_ == nullptr ? two_word_direction(Mesh::edge(h))
-                                                                           : std::nullopt) {
-        d->assign_to(it->second);  // the same primitive vector, without rationals
+      } else if (scaled_ == nullptr && two_word() != nullptr) {
+        // The same primitive vector, without rationals; nonzero: an edge's ends differ.
+        const auto [x, y, z] = two_word_difference(Mesh::edge(h));
+        primitive_vector(x, y, z).assign_to(it->second);
       } else {
         it->second = primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
       }

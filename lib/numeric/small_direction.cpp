@@ -273,6 +273,35 @@ std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept 
                          static_cast<std::int64_t>(v.c[2])}};
 }
 
+namespace {
+
+// The inverse of 5 modulo 2^128 (Newton's iteration, 3 correct low bits
+// doubling each step): x is a multiple of 5 exactly when x times it is at
+// most (2^128 - 1) / 5, and the product is x / 5 then.
+constexpr Uint128 inverse_of_5 = [] {
+  Uint128 inverse = 5;
+  for (int k = 0; k < 6; ++k) inverse *= 2 - 5 * inverse;
+  return inverse;
+}();
+static_assert(inverse_of_5 * 5 == 1);
+
+}  // namespace
+
+std::optional<SmallDirection> small_multiple(Int128 x, Int128 y, Int128 z) noexcept {
+  Uint128 m[3] = {magnitude(x), magnitude(y), magnitude(z)};
+  const int twos = countr_zero(m[0] | m[1] | m[2]);  // nonzero
+  for (Uint128& v : m) v >>= twos;
+  constexpr Uint128 most_fifth = ~Uint128{0} / 5;
+  while (m[0] * inverse_of_5 <= most_fifth && m[1] * inverse_of_5 <= most_fifth && m[2] * inverse_of_5 <= most_fifth)
+    for (Uint128& v : m) v *= inverse_of_5;  // ends: some coordinate is nonzero
+  constexpr Uint128 limit = Uint128{1} << 62;
+  if (m[0] < limit && m[1] < limit && m[2] < limit)
+    return SmallDirection{{static_cast<std::int64_t>(x < 0 ? -m[0] : m[0]),
+                           static_cast<std::int64_t>(y < 0 ? -m[1] : m[1]),
+                           static_cast<std::int64_t>(z < 0 ? -m[2] : m[2])}};
+  return as_small_direction(primitive_vector(x, y, z));
+}
+
 void SmallNormal::negate() noexcept {
   for (Int128& x : c) x = -x;
 }

@@ -75,6 +75,14 @@ struct SmallNormal {
 /// nullopt otherwise.
 [[nodiscard]] std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept;
 
+/// A SmallDirection along the nonzero (x, y, z) (each below 2^127 in
+/// magnitude): the vector divided by the powers of 2 and 5 its coordinates
+/// share (what a decimal or dyadic common denominator puts in a difference
+/// of scaled points, found without a gcd) when that fits, else the
+/// primitive vector when it fits; nullopt otherwise.
+[[nodiscard]] std::optional<SmallDirection> small_multiple(SmallNormal::Int128 x, SmallNormal::Int128 y,
+                                                           SmallNormal::Int128 z) noexcept;
+
 /// primitive_direction(cross(u, v)) in 128-bit integers.
 /// \pre u and v are not parallel.
 [[nodiscard]] SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) noexcept;
