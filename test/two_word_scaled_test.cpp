@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Points as two-word integers over a common denominator
 // (two_word_scaled.hpp) and the binary gcd on 128-bit words (gcd128.hpp),
-// against GMP (the oracle): gcd128 is mpz_gcd on random and extreme values;
+// against GMP (the oracle): gcd128 is mpz_gcd and divide_by_5 exact
+// division of the multiples of 5 only, on random and extreme values;
 // every scaled numerator over the denominator is the original coordinate;
 // the denominator is the lcm of the coordinates' denominators; points at
 // each bound are accepted and just past it refused (denominator and
@@ -77,6 +78,19 @@ TEST(Gcd128, IsGmpsGcdOnRandomAndExtremeValues) {
       ASSERT_EQ(from_u128(gcd128(a, b)), gcd(from_u128(a), from_u128(b)))
           << "seed " << seed << ": " << from_u128(a) << " " << from_u128(b);
     }
+  }
+}
+
+TEST(Gcd128, DivideBy5IsExactDivisionOfTheMultiplesOnly) {
+  const Uint128 max = ~Uint128{0};
+  std::mt19937_64 rng(11);
+  std::vector<Uint128> values = {0, 1, 4, 5, 6, 25, max, max / 5, max / 5 * 5, max - 4, Uint128{1} << 127};
+  for (int k = 0; k < 3000; ++k) values.push_back(k % 2 == 0 ? random_u128(rng) : random_u128(rng) / 5 * 5);
+  for (const Uint128 x : values) {
+    Uint128 y = x;
+    const bool divided = divide_by_5(y);
+    ASSERT_EQ(divided, from_u128(x) % 5 == 0) << "seed 11: " << from_u128(x);
+    ASSERT_EQ(from_u128(y), divided ? mpz_class(from_u128(x) / 5) : from_u128(x)) << "seed 11: " << from_u128(x);
   }
 }
 

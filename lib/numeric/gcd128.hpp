@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The gcd of two 128-bit unsigned integers by the binary method (Stein):
-// shifts, subtractions and trailing-zero counts on two machine words, no
-// division (a 128-bit division is a library call of about a hundred
-// cycles) and no GMP value. Edge directions of operands carried as
-// two-word integers (two_word_scaled.hpp) are made primitive with it.
+// Factors of 128-bit unsigned integers without division (a 128-bit
+// division is a library call of about a hundred cycles) and without GMP:
+// the gcd by the binary method (Stein: shifts, subtractions and
+// trailing-zero counts on two machine words), and exact division by 5 (a
+// multiplication by its inverse modulo 2^128), with which the factors 2
+// and 5 that decimal and dyadic denominators bring are counted off
+// (scaled_points.cpp, small_direction.cpp).
 #pragma once
 
 #include <cstdint>
@@ -32,6 +34,26 @@ __extension__ using Gcd128Word = unsigned __int128;
     b -= a;  // even, and below the larger of the two
   } while (b != 0);
   return a << shift;
+}
+
+/// The inverse of 5 modulo 2^128 (Newton's iteration: 5 is its own
+/// inverse modulo 8, and each step doubles the correct low bits, 3 to 192).
+inline constexpr Gcd128Word inverse_of_5 = [] {
+  Gcd128Word inverse = 5;
+  for (int k = 0; k < 6; ++k) inverse *= 2 - 5 * inverse;
+  return inverse;
+}();
+static_assert(inverse_of_5 * 5 == 1);
+
+/// Whether x is a multiple of 5, and then x / 5 into x: x times the
+/// inverse is x / 5 exactly for the multiples, which are the x whose
+/// product is at most (2^128 - 1) / 5 (the map is a bijection and sends
+/// the multiples onto [0, (2^128 - 1) / 5]).
+[[nodiscard]] inline bool divide_by_5(Gcd128Word& x) noexcept {
+  const Gcd128Word quotient = x * inverse_of_5;
+  if (quotient > ~Gcd128Word{0} / 5) return false;
+  x = quotient;
+  return true;
 }
 
 }  // namespace cvms::detail

@@ -34,32 +34,13 @@ Uint128 fraction_gcd(Uint128 m, Uint128 d) noexcept {
   return gcd128(m, d);
 }
 
-// The inverse of 5 modulo 2^128 (Newton's iteration doubles the correct
-// low bits each step: 3, 6, ..., 192 >= 128): x is a multiple of 5 exactly
-// when x times it is at most (2^128 - 1) / 5, and the product is x / 5 then.
-constexpr Uint128 inverse_of_5 = [] {
-  Uint128 inverse = 5;  // 5 * 5 = 25 = 1 mod 8: three bits
-  for (int k = 0; k < 6; ++k) inverse *= 2 - 5 * inverse;
-  return inverse;
-}();
-static_assert(inverse_of_5 * 5 == 1);
-constexpr Uint128 most_fifth = ~Uint128{0} / 5;
-
-int trailing_zeros(Uint128 x) noexcept {
-  const auto low = static_cast<std::uint64_t>(x);
-  return low != 0 ? __builtin_ctzll(low) : 64 + __builtin_ctzll(static_cast<std::uint64_t>(x >> 64));
-}
-
 }  // namespace
 
 ScaledPoints::DecimalDenominator ScaledPoints::DecimalDenominator::of(Uint128 d) noexcept {
   DecimalDenominator out;
-  out.twos = trailing_zeros(d);  // d > 0
+  out.twos = trailing_zeros128(d);  // d > 0
   d >>= out.twos;
-  while (d * inverse_of_5 <= most_fifth) {
-    d *= inverse_of_5;
-    ++out.fives;
-  }
+  while (divide_by_5(d)) ++out.fives;
   if (d != 1) out.fives = -1;
   return out;
 }
@@ -72,13 +53,10 @@ bool ScaledPoints::reduces_below_2_53(Uint128 n) const noexcept {
   }
   // gcd(n, 2^t 5^f) = 2^a 5^b: a = min(t, trailing zeros of n), b the
   // number of times 5 divides n, at most f.
-  const int a = std::min(decimal_.twos, trailing_zeros(n));
+  const int a = std::min(decimal_.twos, trailing_zeros128(n));
   n >>= a;
   int b = 0;
-  while (b < decimal_.fives && n * inverse_of_5 <= most_fifth) {
-    n *= inverse_of_5;
-    ++b;
-  }
+  while (b < decimal_.fives && divide_by_5(n)) ++b;
   if (n >= limit) return false;
   // The reduced denominator 2^(t - a) 5^(f - b): below 2^53 when its factors are.
   Uint128 den = Uint128{1} << std::min(decimal_.twos - a, 53);

@@ -12,6 +12,7 @@
 #include <gmp.h>
 
 #include "error_bounds.hpp"
+#include "gcd128.hpp"
 #include "limb_arena.hpp"
 
 namespace cvms::detail {
@@ -273,27 +274,13 @@ std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept 
                          static_cast<std::int64_t>(v.c[2])}};
 }
 
-namespace {
-
-// The inverse of 5 modulo 2^128 (Newton's iteration, 3 correct low bits
-// doubling each step): x is a multiple of 5 exactly when x times it is at
-// most (2^128 - 1) / 5, and the product is x / 5 then.
-constexpr Uint128 inverse_of_5 = [] {
-  Uint128 inverse = 5;
-  for (int k = 0; k < 6; ++k) inverse *= 2 - 5 * inverse;
-  return inverse;
-}();
-static_assert(inverse_of_5 * 5 == 1);
-
-}  // namespace
-
 std::optional<SmallDirection> small_multiple(Int128 x, Int128 y, Int128 z) noexcept {
   Uint128 m[3] = {magnitude(x), magnitude(y), magnitude(z)};
   const int twos = countr_zero(m[0] | m[1] | m[2]);  // nonzero
   for (Uint128& v : m) v >>= twos;
-  constexpr Uint128 most_fifth = ~Uint128{0} / 5;
-  while (m[0] * inverse_of_5 <= most_fifth && m[1] * inverse_of_5 <= most_fifth && m[2] * inverse_of_5 <= most_fifth)
-    for (Uint128& v : m) v *= inverse_of_5;  // ends: some coordinate is nonzero
+  // While all three are multiples of 5 (ends: some coordinate is nonzero).
+  for (Uint128 q[3] = {m[0], m[1], m[2]}; divide_by_5(q[0]) && divide_by_5(q[1]) && divide_by_5(q[2]);)
+    for (int i = 0; i < 3; ++i) m[i] = q[i];
   constexpr Uint128 limit = Uint128{1} << 62;
   if (m[0] < limit && m[1] < limit && m[2] < limit)
     return SmallDirection{{static_cast<std::int64_t>(x < 0 ? -m[0] : m[0]),
