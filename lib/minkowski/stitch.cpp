@@ -514,7 +514,7 @@ std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::scaled_sum() const {
 std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::two_word_scaled_sum() const {
   const TwoWordScaledPoints* wa = PolyhedronAccess::two_word_scaled_vertices(a_);
   const TwoWordScaledPoints* wb = wa != nullptr ? PolyhedronAccess::two_word_scaled_vertices(b_) : nullptr;
-  if (wb == nullptr) return std::nullopt;
+  if (wb == nullptr || (wa->dyadic() && wb->dyadic())) return std::nullopt;  // the packed dyadic path's
   const std::optional<TwoWordSum> fits = two_word_sum_fits(*wa, *wb);
   if (!fits) return std::nullopt;
   return ScaledSum{nullptr, nullptr, fits->denominator, 0, 0, wa, wb, fits->factor_a, fits->factor_b};

@@ -169,8 +169,9 @@ class SumFacetBuilder {
   // sums that fit 128 bits) and some coordinate is not a double (operands
   // of doubles keep the dyadic path); nullopt otherwise.
   [[nodiscard]] std::optional<ScaledSum> scaled_sum() const;
-  // The two-word form of scaled_sum(), when both operands have it and their
-  // sums fit (two_word_sum_fits); nullopt otherwise.
+  // The two-word form of scaled_sum(), when both operands have it, some
+  // coordinate is not dyadic and their sums fit (two_word_sum_fits);
+  // nullopt otherwise.
   [[nodiscard]] std::optional<ScaledSum> two_word_scaled_sum() const;
   // Output vertex j, the sum of the vertices of pair p, as integers over
   // sum.denominator into points, with its approximation into approx[j].

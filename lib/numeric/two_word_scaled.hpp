@@ -38,6 +38,8 @@ struct TwoWordScaledPoints {
   [[nodiscard]] Int128 at(std::size_t j, int axis) const noexcept {
     return numerators[3 * j + static_cast<std::size_t>(axis)];
   }
+  /// Whether D is a power of two (every coordinate dyadic).
+  [[nodiscard]] bool dyadic() const noexcept { return (denominator & (denominator - 1)) == 0; }
 };
 
 /// The bound below which two_word_scaled's denominator and numerators stay.
