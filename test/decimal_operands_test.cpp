@@ -175,6 +175,47 @@ TEST(DecimalOperands, RationalGridsAtTheWordSizeBounds) {
   }
 }
 
+// Rationals over denominators at the bounds of the two-word integer path
+// (two_word_scaled.hpp): common denominators beyond one word but below
+// 2^124 (10^19, 10^30, 2^123 - 1, lcm(2^61, 10^17)), where the sums are
+// 128-bit integers over the lcm of the two, and just past (2^124 + 1; and
+// lcm(2^70, 10^30) or 10^30 with 2^123 - 1, whose sums' denominators pass
+// 2^126), where the general rational paths take over.
+TEST(DecimalOperands, RationalGridsAtTheTwoWordBounds) {
+  const mpz_class two = 2;
+  const mpz_class ten17("100000000000000000"), ten19("10000000000000000000"), ten30("1" + std::string(30, '0'));
+  const mpz_class two61 = two << 60, two70 = two << 69, two123 = two << 122, two124 = two << 123;
+  const std::pair<mpz_class, mpz_class> denominators[] = {
+      {ten19, ten19}, {ten30, ten19},         {two123 - 1, two123 - 1}, {two61, ten30},         {ten30, 7},
+      {two70, ten30}, {two124 + 1, two124 + 1}, {ten30, two123 - 1},    {two124 - 1, ten17}};
+  const ConvexPolyhedron a = shapes::geodesic_sphere(2), b = shapes::rotated_geodesic_sphere(2);
+  const Rational fifth(1, 5);
+  for (const auto& [qa, qb] : denominators) {
+    const ConvexPolyhedron ga = convex_hull(on_grid(a, fifth, qa)), gb = convex_hull(on_grid(b, fifth, qb));
+    check_sum(ga, gb, "grids 1/" + qa.get_str() + " and 1/" + qb.get_str());
+  }
+}
+
+// Coordinates as small as 1e-30 (denominator 10^30) beside shortest
+// decimals, and exact ties: a two-word operand plus itself (every facet has
+// a parallel twin).
+TEST(DecimalOperands, TinyCoordinatesAndTiesOnTwoWords) {
+  const ConvexPolyhedron a = in_form(shapes::geodesic_sphere(3), Form::shortest);
+  std::vector<Vec3> nudged = points(in_form(shapes::rotated_geodesic_sphere(2), Form::nineteen_digits));
+  const Rational tiny(mpz_class(1), mpz_class("1" + std::string(30, '0')));
+  for (std::size_t j = 0; j < nudged.size(); ++j) nudged[j][static_cast<int>(j % 3)] += (j % 2 == 0 ? tiny : -tiny);
+  const ConvexPolyhedron b = convex_hull(nudged);
+  check_sum(a, b, "shortest + 19 digits nudged by 1e-30");
+  check_sum(a, a, "shortest + itself");
+  const ConvexPolyhedron c = in_form(shapes::geodesic_sphere(3), Form::nineteen_digits);
+  check_sum(c, c, "19 digits + itself");
+  // Points whose coordinates are 1e-30 and zero: a tiny tetrahedron.
+  const ConvexPolyhedron t = convex_hull(std::vector<Vec3>{
+      {Rational(0), Rational(0), Rational(0)}, {tiny, Rational(0), Rational(0)}, {Rational(0), tiny, Rational(0)},
+      {Rational(0), Rational(0), -tiny}});
+  check_sum(t, a, "1e-30 tetrahedron + shortest");
+}
+
 // Loaded operands make their facet planes on first use; the fast path for
 // decimal corners gives the same primitive normals as plain rationals.
 TEST(DecimalOperands, LoadedOperandsHaveTheRationalNormals) {

@@ -17,6 +17,7 @@
 #include "facet_planes.hpp"
 #include "limb_arena.hpp"
 #include "mesh_access.hpp"
+#include "two_word_scaled.hpp"
 #include "word_scaled.hpp"
 
 namespace cvms {
@@ -64,6 +65,10 @@ struct ConvexPolyhedron::Impl {
   /// nullopt when they do not fit machine words.
   std::optional<detail::WordScaledPoints> scaled;
   std::once_flag scaled_made;
+  /// The same in two-word integers (two_word_scaled.hpp), for operands
+  /// whose common denominator does not fit one word; made on first use.
+  std::optional<detail::TwoWordScaledPoints> two_word_scaled;
+  std::once_flag two_word_scaled_made;
 };
 
 /// The library's access to ConvexPolyhedron's private parts (see the file
@@ -100,6 +105,15 @@ struct PolyhedronAccess {
     if (impl == nullptr) return nullptr;
     std::call_once(impl->scaled_made, [&] { impl->scaled = detail::scale_to_words(p.mesh().positions()); });
     return impl->scaled ? &*impl->scaled : nullptr;
+  }
+  /// The vertices as two-word integers over their common denominator, made
+  /// on the first call; null when they do not fit (or p is empty).
+  [[nodiscard]] static const detail::TwoWordScaledPoints* two_word_scaled_vertices(const ConvexPolyhedron& p) {
+    ConvexPolyhedron::Impl* impl = p.impl_.get();
+    if (impl == nullptr) return nullptr;
+    std::call_once(impl->two_word_scaled_made,
+                   [&] { impl->two_word_scaled = detail::scale_to_two_words(p.mesh().positions()); });
+    return impl->two_word_scaled ? &*impl->two_word_scaled : nullptr;
   }
 
  private:

@@ -23,6 +23,7 @@
 #include "prefetch_exact.hpp"
 #include "scaled_points.hpp"
 #include "small_direction.hpp"
+#include "two_word_scaled.hpp"
 #include "word_scaled.hpp"
 #include "worker.hpp"
 
@@ -165,7 +166,9 @@ class EdgeDirections {
   // The direction of e's even halfedge from the exact ends, as fractions over
   // their common denominator, when that fits machine words: the difference
   // of the ends' integers over the operand's common denominator
-  // (word_scaled.hpp, made once per operand), else over the two ends'.
+  // (word_scaled.hpp, made once per operand), or of its two-word integers
+  // divided by their common factors (two_word_scaled.hpp, small_multiple),
+  // else over the two ends'.
   [[nodiscard]] std::optional<SmallDirection> fraction_direction(EdgeId e) {
     const Mesh& m = p_.mesh();
     const HalfedgeId even = Mesh::halfedge(e);
@@ -181,7 +184,29 @@ class EdgeDirections {
       if (d.c[0] == 0 && d.c[1] == 0 && d.c[2] == 0) return std::nullopt;
       return d;
     }
+    if (two_word() != nullptr) {
+      const auto [x, y, z] = two_word_difference(e);
+      return small_multiple(x, y, z);
+    }
     return small_fraction_direction(p_.vertex(m.from(even)), p_.vertex(m.to(even)));
+  }
+
+  // p_'s two-word integers (two_word_scaled.hpp, made once per operand), or null.
+  const TwoWordScaledPoints* two_word() {
+    if (!two_word_asked_) {
+      two_word_ = PolyhedronAccess::two_word_scaled_vertices(p_);
+      two_word_asked_ = true;
+    }
+    return two_word_;
+  }
+  // The difference of the ends of e's even halfedge in two_word()'s
+  // integers (each below 2^124, so the difference below 2^125: no overflow).
+  [[nodiscard]] std::array<SmallNormal::Int128, 3> two_word_difference(EdgeId e) const {
+    const Mesh& m = p_.mesh();
+    const HalfedgeId even = Mesh::halfedge(e);
+    const std::size_t from = m.from(even).index(), to = m.to(even).index();
+    return {two_word_->at(to, 0) - two_word_->at(from, 0), two_word_->at(to, 1) - two_word_->at(from, 1),
+            two_word_->at(to, 2) - two_word_->at(from, 2)};
   }
 
   // The direction of h's edge as rationals (rarely needed: only when the
@@ -191,8 +216,15 @@ class EdgeDirections {
     auto [it, inserted] = general_.try_emplace(e);
     if (inserted) {
       const SmallDirection* s = small(h);
-      it->second =
-          s != nullptr ? s->to_vec3() : primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+      if (s != nullptr) {
+        it->second = s->to_vec3();
+      } else if (scaled_ == nullptr && two_word() != nullptr) {
+        // The same primitive vector, without rationals; nonzero: an edge's ends differ.
+        const auto [x, y, z] = two_word_difference(Mesh::edge(h));
+        primitive_vector(x, y, z).assign_to(it->second);
+      } else {
+        it->second = primitive_direction(p_.edge_vector(Mesh::halfedge(Mesh::edge(h))));
+      }
     }
     return it->second;
   }
@@ -202,6 +234,8 @@ class EdgeDirections {
   const ConvexPolyhedron& p_;
   const WordScaledPoints* scaled_ = nullptr;  // p_'s, once asked for
   bool scaled_asked_ = false;
+  const TwoWordScaledPoints* two_word_ = nullptr;  // p_'s, once asked for (when scaled_ is null)
+  bool two_word_asked_ = false;
   std::vector<State> state_;
   // On huge pages when large: fresh memory at every sum (huge_page_blocks.hpp).
   std::optional<HugePageArray<SmallDirection, BlockLife::scratch>> small_;
@@ -469,16 +503,36 @@ std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::scaled_sum() const {
   if (looks_like_doubles(a_) && looks_like_doubles(b_)) return std::nullopt;
   const WordScaledPoints* sa = PolyhedronAccess::scaled_vertices(a_);
   const WordScaledPoints* sb = sa != nullptr ? PolyhedronAccess::scaled_vertices(b_) : nullptr;
-  if (sb == nullptr || (sa->dyadic() && sb->dyadic())) return std::nullopt;
+  if (sb == nullptr) return two_word_scaled_sum();
+  if (sa->dyadic() && sb->dyadic()) return std::nullopt;
   // L = (D_A / g) D_B < 2^126 for g = gcd(D_A, D_B); the factors are below 2^63.
   const std::uint64_t g = std::gcd(sa->denominator, sb->denominator);
   const std::uint64_t factor_a = sb->denominator / g, factor_b = sa->denominator / g;
   return ScaledSum{sa, sb, ScaledPoints::Uint128{sa->denominator} * factor_a, factor_a, factor_b};
 }
 
+std::optional<SumFacetBuilder::ScaledSum> SumFacetBuilder::two_word_scaled_sum() const {
+  const TwoWordScaledPoints* wa = PolyhedronAccess::two_word_scaled_vertices(a_);
+  const TwoWordScaledPoints* wb = wa != nullptr ? PolyhedronAccess::two_word_scaled_vertices(b_) : nullptr;
+  if (wb == nullptr || (wa->dyadic() && wb->dyadic())) return std::nullopt;  // the packed dyadic path's
+  const std::optional<TwoWordSum> fits = two_word_sum_fits(*wa, *wb);
+  if (!fits) return std::nullopt;
+  return ScaledSum{nullptr, nullptr, fits->denominator, 0, 0, wa, wb, fits->factor_a, fits->factor_b};
+}
+
 void SumFacetBuilder::write_scaled_vertex(const VertexPair& p, const ScaledSum& sum, ScaledPoints& points,
                                           ApproxVec3* approx, std::size_t j) const {
   using Int128 = ScaledPoints::Int128;
+  if (sum.a == nullptr) {
+    for (int i = 0; i < 3; ++i) {
+      // |a| f_A + |b| f_B < 2^125 for the largest |a| and |b| (two_word_sum_fits).
+      const Int128 n = sum.wide_a->at(p.a, i) * static_cast<Int128>(sum.wide_factor_a) +
+                       sum.wide_b->at(p.b, i) * static_cast<Int128>(sum.wide_factor_b);
+      points.numerator(j, i) = n;
+      axis_of(approx[j], i) = points.approx(n);
+    }
+    return;
+  }
   for (int i = 0; i < 3; ++i) {
     // Each term is below 2^61 2^63 = 2^124 in magnitude (word_scaled.hpp).
     const Int128 n =
@@ -492,8 +546,14 @@ void SumFacetBuilder::write_scaled_vertices(std::span<const VertexPair> pairs, s
                                             const ScaledSum& sum, ScaledPoints& points, ApproxVec3* approx) const {
   for (std::size_t j = begin; j < end; ++j) {
     if (j + prefetch_far < end) {  // the pairs are met out of memory order
-      __builtin_prefetch(&sum.a->numerators[3 * std::size_t{pairs[j + prefetch_far].a}]);
-      __builtin_prefetch(&sum.b->numerators[3 * std::size_t{pairs[j + prefetch_far].b}]);
+      const VertexPair& ahead = pairs[j + prefetch_far];
+      if (sum.a != nullptr) {
+        __builtin_prefetch(&sum.a->numerators[3 * std::size_t{ahead.a}]);
+        __builtin_prefetch(&sum.b->numerators[3 * std::size_t{ahead.b}]);
+      } else {
+        __builtin_prefetch(&sum.wide_a->numerators[3 * std::size_t{ahead.a}]);
+        __builtin_prefetch(&sum.wide_b->numerators[3 * std::size_t{ahead.b}]);
+      }
     }
     write_scaled_vertex(pairs[j], sum, points, approx, j);
   }

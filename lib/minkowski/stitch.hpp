@@ -23,6 +23,7 @@
 #include "progress_reporter.hpp"
 #include "realloc_vector.hpp"
 #include "scaled_points.hpp"
+#include "two_word_scaled.hpp"
 #include "word_scaled.hpp"
 
 namespace cvms::detail {
@@ -147,19 +148,31 @@ class SumFacetBuilder {
   // write_packed_vertex for the vertices [begin, end) of pairs; false as soon as one fails.
   bool write_packed_vertices(std::span<const VertexPair> pairs, std::size_t begin, std::size_t end,
                              const PackedOutput& out, Vec3& scratch) const;
-  // Both operands' vertices as integers over their common denominators
-  // (word_scaled.hpp), and the output's denominator L = lcm(D_A, D_B) with
-  // each operand's factor to it (scaled_points.hpp).
+  // Both operands' vertices as integers over their common denominators, in
+  // one word (word_scaled.hpp: a and b) or else in two (two_word_scaled.hpp:
+  // wide_a and wide_b, a and b null), and the output's denominator
+  // L = lcm(D_A, D_B) with each operand's factor to it (scaled_points.hpp).
+  // One-word operands keep one-word factors: a 64 x 64-bit product is one
+  // multiplication, a 128 x 128-bit one three.
   struct ScaledSum {
     const WordScaledPoints* a;
     const WordScaledPoints* b;
     ScaledPoints::Uint128 denominator;
-    std::uint64_t factor_a;  // L / D_A
-    std::uint64_t factor_b;  // L / D_B
+    std::uint64_t factor_a;  // L / D_A, with a and b
+    std::uint64_t factor_b;  // L / D_B, with a and b
+    const TwoWordScaledPoints* wide_a = nullptr;
+    const TwoWordScaledPoints* wide_b = nullptr;
+    ScaledPoints::Uint128 wide_factor_a = 0;  // L / D_A, with wide_a and wide_b
+    ScaledPoints::Uint128 wide_factor_b = 0;  // L / D_B, with wide_a and wide_b
   };
-  // The scaled operands when both have them and some coordinate is not a
-  // double (operands of doubles keep the dyadic path); nullopt otherwise.
+  // The scaled operands when both have them (in one word, else in two with
+  // sums that fit 128 bits) and some coordinate is not a double (operands
+  // of doubles keep the dyadic path); nullopt otherwise.
   [[nodiscard]] std::optional<ScaledSum> scaled_sum() const;
+  // The two-word form of scaled_sum(), when both operands have it, some
+  // coordinate is not dyadic and their sums fit (two_word_sum_fits);
+  // nullopt otherwise.
+  [[nodiscard]] std::optional<ScaledSum> two_word_scaled_sum() const;
   // Output vertex j, the sum of the vertices of pair p, as integers over
   // sum.denominator into points, with its approximation into approx[j].
   void write_scaled_vertex(const VertexPair& p, const ScaledSum& sum, ScaledPoints& points, ApproxVec3* approx,

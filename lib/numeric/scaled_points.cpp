@@ -4,12 +4,14 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <utility>
 
 #include "error_bounds.hpp"
+#include "gcd128.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -20,18 +22,47 @@ using Uint128 = ScaledPoints::Uint128;
 Uint128 magnitude_of(Int128 n) noexcept { return n < 0 ? -static_cast<Uint128>(n) : static_cast<Uint128>(n); }
 
 // gcd(m, d) for d > 0: GMP's one-limb gcd when d fits one limb (it reduces
-// the two-limb m modulo d first), else Euclid in 128-bit words.
-Uint128 gcd128(Uint128 m, Uint128 d) noexcept {
+// the two-limb m modulo d first), else the binary gcd on two words
+// (gcd128.hpp: each of Euclid's steps would be a 128-bit division, a library
+// call of about a hundred cycles).
+Uint128 fraction_gcd(Uint128 m, Uint128 d) noexcept {
   if (m == 0) return d;
   if ((d >> 64) == 0) {
     const mp_limb_t limbs[2] = {static_cast<mp_limb_t>(m), static_cast<mp_limb_t>(m >> 64)};
     return mpn_gcd_1(limbs, limbs[1] != 0 ? 2 : 1, static_cast<mp_limb_t>(d));
   }
-  while (m != 0) d = std::exchange(m, d % m);
-  return d;
+  return gcd128(m, d);
 }
 
 }  // namespace
+
+ScaledPoints::DecimalDenominator ScaledPoints::DecimalDenominator::of(Uint128 d) noexcept {
+  DecimalDenominator out;
+  out.twos = trailing_zeros128(d);  // d > 0
+  d >>= out.twos;
+  while (divide_by_5(d)) ++out.fives;
+  if (d != 1) out.fives = -1;
+  return out;
+}
+
+bool ScaledPoints::reduces_below_2_53(Uint128 n) const noexcept {
+  constexpr Uint128 limit = Uint128{1} << 53;
+  if (decimal_.fives < 0) {
+    const Uint128 g = fraction_gcd(n, denominator_);
+    return n / g < limit && denominator_ / g < limit;
+  }
+  // gcd(n, 2^t 5^f) = 2^a 5^b: a = min(t, trailing zeros of n), b the
+  // number of times 5 divides n, at most f.
+  const int a = std::min(decimal_.twos, trailing_zeros128(n));
+  n >>= a;
+  int b = 0;
+  while (b < decimal_.fives && divide_by_5(n)) ++b;
+  if (n >= limit) return false;
+  // The reduced denominator 2^(t - a) 5^(f - b): below 2^53 when its factors are.
+  Uint128 den = Uint128{1} << std::min(decimal_.twos - a, 53);
+  for (int k = b; k < decimal_.fives && den < limit; ++k) den *= 5;
+  return den < limit;
+}
 
 // Approx::of of the canonical fraction, without making it. Approx::of
 // gives the nearest double with the bound u |v| when the reduced numerator
@@ -68,9 +99,7 @@ Approx ScaledPoints::approx(Int128 numerator) const {
   const long double middle = (static_cast<long double>(t) + static_cast<long double>(next)) / 2;
   if (ld - e > t && ld + e < next && (ld + e < middle || ld - e > middle)) {
     if (ld + e < middle) return {sign(t), filtered::truncation_error(t)};  // nearest is t too
-    const Uint128 g = gcd128(m, denominator_);
-    if (m / g < exact_limit && denominator_ / g < exact_limit)
-      return {sign(next), next * filtered::unit_roundoff};
+    if (reduces_below_2_53(m)) return {sign(next), next * filtered::unit_roundoff};
     return {sign(t), filtered::truncation_error(t)};
   }
   LimbArena scratch;
@@ -85,7 +114,7 @@ void ScaledPoints::store(std::size_t j, int axis, LimbArena& arena, Rational& ou
 
 void ScaledPoints::store_fraction(Int128 n, LimbArena& arena, Rational& out) const {
   const Uint128 m = magnitude_of(n);
-  const Uint128 g = gcd128(m, denominator_);
+  const Uint128 g = fraction_gcd(m, denominator_);
   const Uint128 reduced = m / g, den = denominator_ / g;
   const mp_limb_t num_limbs[2] = {static_cast<mp_limb_t>(reduced), static_cast<mp_limb_t>(reduced >> 64)};
   const mp_limb_t den_limbs[2] = {static_cast<mp_limb_t>(den), static_cast<mp_limb_t>(den >> 64)};

@@ -33,12 +33,14 @@ class ScaledPoints {
       : denominator_(denominator),
         denominator_value_(static_cast<double>(denominator)),
         denominator_long_(static_cast<long double>(denominator)),
+        decimal_(DecimalDenominator::of(denominator)),
         numerators_(allocator) {}
   /// count points at the origin, as above.
   ScaledPoints(std::size_t count, Uint128 denominator, const KeptAllocator<Int128>& allocator = {})
       : denominator_(denominator),
         denominator_value_(static_cast<double>(denominator)),
         denominator_long_(static_cast<long double>(denominator)),
+        decimal_(DecimalDenominator::of(denominator)),
         numerators_(3 * count, allocator) {}
   /// Adds to plan the room for count points (result_slab.hpp).
   static void plan(SlabPlan& plan, std::size_t count) { plan.add<Int128>(3 * count); }
@@ -72,9 +74,22 @@ class ScaledPoints {
   void store_fraction(Int128 n, LimbArena& arena, Rational& out) const;
 
  private:
+  // The denominator as 2^twos 5^fives when it is one (decimals, doubles and
+  // sums of the two), else fives = -1: the gcd of such a denominator with a
+  // numerator is found by counting the numerator's factors 2 and 5.
+  struct DecimalDenominator {
+    int twos = 0;
+    int fives = 0;
+    static DecimalDenominator of(Uint128 d) noexcept;
+  };
+  // Whether n / denominator() reduced has a numerator and a denominator
+  // below 2^53. \pre n > 0.
+  [[nodiscard]] bool reduces_below_2_53(Uint128 n) const noexcept;
+
   Uint128 denominator_ = 1;
   double denominator_value_ = 1.0;       // denominator_ as a double (exact when below 2^53)
   long double denominator_long_ = 1.0L;  // and as a long double (within 2^-64 relative)
+  DecimalDenominator decimal_;
   KeptVector<Int128> numerators_;        // 3 per point
 };
 

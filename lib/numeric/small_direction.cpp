@@ -12,6 +12,7 @@
 #include <gmp.h>
 
 #include "error_bounds.hpp"
+#include "gcd128.hpp"
 #include "limb_arena.hpp"
 
 namespace cvms::detail {
@@ -258,6 +259,34 @@ SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) no
   }
   make_primitive(c);
   return {{c[0], c[1], c[2]}};
+}
+
+SmallNormal primitive_vector(Int128 x, Int128 y, Int128 z) noexcept {
+  Int128 c[3] = {x, y, z};
+  make_primitive(c);
+  return {{c[0], c[1], c[2]}};
+}
+
+std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept {
+  constexpr Uint128 limit = Uint128{1} << 62;
+  if (magnitude(v.c[0]) >= limit || magnitude(v.c[1]) >= limit || magnitude(v.c[2]) >= limit) return std::nullopt;
+  return SmallDirection{{static_cast<std::int64_t>(v.c[0]), static_cast<std::int64_t>(v.c[1]),
+                         static_cast<std::int64_t>(v.c[2])}};
+}
+
+std::optional<SmallDirection> small_multiple(Int128 x, Int128 y, Int128 z) noexcept {
+  Uint128 m[3] = {magnitude(x), magnitude(y), magnitude(z)};
+  const int twos = countr_zero(m[0] | m[1] | m[2]);  // nonzero
+  for (Uint128& v : m) v >>= twos;
+  // While all three are multiples of 5 (ends: some coordinate is nonzero).
+  for (Uint128 q[3] = {m[0], m[1], m[2]}; divide_by_5(q[0]) && divide_by_5(q[1]) && divide_by_5(q[2]);)
+    for (int i = 0; i < 3; ++i) m[i] = q[i];
+  constexpr Uint128 limit = Uint128{1} << 62;
+  if (m[0] < limit && m[1] < limit && m[2] < limit)
+    return SmallDirection{{static_cast<std::int64_t>(x < 0 ? -m[0] : m[0]),
+                           static_cast<std::int64_t>(y < 0 ? -m[1] : m[1]),
+                           static_cast<std::int64_t>(z < 0 ? -m[2] : m[2])}};
+  return as_small_direction(primitive_vector(x, y, z));
 }
 
 void SmallNormal::negate() noexcept {

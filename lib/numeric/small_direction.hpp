@@ -65,6 +65,24 @@ struct SmallNormal {
   void pack(LimbArena& arena, DyadicPoints& out, std::size_t j) const;
 };
 
+/// The primitive integer vector of the direction of (x, y, z), as a
+/// SmallNormal: the edge direction of two points of a two-word scaled
+/// operand (two_word_scaled.hpp), whose difference is below 2^125.
+/// \pre (x, y, z) is nonzero and each below 2^127 in magnitude.
+[[nodiscard]] SmallNormal primitive_vector(SmallNormal::Int128 x, SmallNormal::Int128 y, SmallNormal::Int128 z) noexcept;
+
+/// v as a SmallDirection when every coordinate is below 2^62 in magnitude;
+/// nullopt otherwise.
+[[nodiscard]] std::optional<SmallDirection> as_small_direction(const SmallNormal& v) noexcept;
+
+/// A SmallDirection along the nonzero (x, y, z) (each below 2^127 in
+/// magnitude): the vector divided by the powers of 2 and 5 its coordinates
+/// share (what a decimal or dyadic common denominator puts in a difference
+/// of scaled points, found without a gcd) when that fits, else the
+/// primitive vector when it fits; nullopt otherwise.
+[[nodiscard]] std::optional<SmallDirection> small_multiple(SmallNormal::Int128 x, SmallNormal::Int128 y,
+                                                           SmallNormal::Int128 z) noexcept;
+
 /// primitive_direction(cross(u, v)) in 128-bit integers.
 /// \pre u and v are not parallel.
 [[nodiscard]] SmallNormal primitive_cross(const SmallDirection& u, const SmallDirection& v) noexcept;

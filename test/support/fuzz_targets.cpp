@@ -456,9 +456,12 @@ void from_soup_target(std::span<const std::uint8_t> data) {
 void minkowski_target(std::span<const std::uint8_t> data) {
   ByteStream in(data);
   // mode: bit 0 grid coordinates, bits 1-2 how B relates to A, bit 3 tiny
-  // moves and an extreme scale, bit 4 B divided by 10^k (k < 21: decimals
-  // whose common denominator is below 2^63 up to 10^18 and beyond it from
-  // 10^19, for the sum's integer paths over a common denominator).
+  // moves and an extreme scale, bit 4 B divided by 10^k (k < 40: decimals
+  // whose common denominator is below 2^63 up to 10^18, below 2^124 (two
+  // words) up to about 10^36, and beyond, for the sum's integer paths over
+  // a common denominator in one word, in two, and the rational ones), bit 5
+  // A divided by 2^j (61 <= j < 69: with bit 4, mixed dyadic and decimal
+  // denominators such as 2^61 10^17).
   const std::uint8_t mode = in.next();
   const bool grid = (mode & 1) != 0;
   std::vector<Vec3> pa = decode_cloud(in, 4 + in.next() % 27, grid);
@@ -495,9 +498,13 @@ void minkowski_target(std::span<const std::uint8_t> data) {
   }
   if ((mode & 16) != 0) {
     mpz_class power;
-    mpz_ui_pow_ui(power.get_mpz_t(), 10, in.next() % 21);
+    mpz_ui_pow_ui(power.get_mpz_t(), 10, in.next() % 40);
     const Rational scale(mpz_class(1), power);
     for (Vec3& p : pb) p = scale * p;
+  }
+  if ((mode & 32) != 0) {
+    const Rational scale(mpz_class(1), mpz_class(1) << (61 + in.next() % 8));
+    for (Vec3& p : pa) p = scale * p;
   }
   ConvexPolyhedron a, b;
   try {
