@@ -36,10 +36,12 @@
 // a solid that is convex away from a few reflex edges, the cells away from
 // them end after a few splits, not after one split per facet. The test costs
 // O(m log m) for a node of m fragment points, so it is tried only at nodes
-// with no fragment on a reflex plane (there it would mostly fail), and
-// after it fails at a node of m fragments, the node's subtree tries it again
-// only at nodes of at most m / 2 fragments: along every path the tested
-// sizes halve, so the tests cost O(log) times the work of the splits.
+// of at least kTestFrom fragments (a smaller node ends after a few splits
+// anyway, cheaper than an exact hull), with no fragment on a reflex plane
+// (there it would mostly fail), and after it fails at a node of m
+// fragments, the node's subtree tries it again only at nodes of at most
+// m / 2 fragments: along every path the tested sizes halve, so the tests
+// cost O(log) times the work of the splits.
 #include "auto_partition.hpp"
 
 #include <algorithm>
@@ -58,6 +60,7 @@ namespace {
 
 constexpr std::size_t kCandidates = 12;
 constexpr std::size_t kScored = 256;
+constexpr std::size_t kTestFrom = 64;
 // A rough size of one exact point in a cell or a fragment: three small
 // rationals with their limbs and the bookkeeping beside them.
 constexpr std::uint64_t kPointBytes = 256;
@@ -188,7 +191,8 @@ bool on_reflex_plane(const std::vector<Fragment>& fragments, const BoundaryPlane
 // convex and the node is due for the test; else nothing, and the node's
 // subtree is due again at half its fragments.
 std::optional<std::vector<Vec3>> finished_cell(Node& node, const BoundaryPlanes& planes) {
-  if (node.fragments.size() > node.test_at || on_reflex_plane(node.fragments, planes)) return std::nullopt;
+  const std::size_t m = node.fragments.size();
+  if (m < kTestFrom || m > node.test_at || on_reflex_plane(node.fragments, planes)) return std::nullopt;
   std::optional<std::vector<Vec3>> part = convex_part(node.cell, node.fragments, planes.planes);
   if (!part) node.test_at = node.fragments.size() / 2;
   return part;
