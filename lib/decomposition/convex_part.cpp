@@ -94,6 +94,9 @@ std::optional<std::vector<Vec3>> convex_part(const Cell& cell, const std::vector
                                              const std::vector<Plane>& planes) {
   std::vector<Vec3> points;
   for (const Fragment& f : fragments) points.insert(points.end(), f.points.begin(), f.points.end());
+  // Neighbouring fragments share their corners: the hull takes each once.
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
   std::optional<ConvexPolyhedron> hull;
   try {
     hull.emplace(convex_hull(points));
