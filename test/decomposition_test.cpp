@@ -29,6 +29,7 @@
 #include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "cvms/progress.hpp"
 #include "cvms/proximity.hpp"
 #include "cvms/shapes.hpp"
 #include "decomposition_fixtures.hpp"
@@ -396,6 +397,47 @@ TEST(ConvexDecomposition, PinchedSphereLimits) {
   DecompositionOptions small;
   small.limits.max_memory_bytes = 100000;
   expect_limit(pinched, small, "max_memory_bytes");
+}
+
+TEST(ConvexDecomposition, PinchedSphereCancelled) {
+  // The callback sees each stage start at done 0, done never decreasing
+  // within a run and at most total; a false return in any stage stops the
+  // call.
+  const Solid pinched = pinched_sphere(5);
+  for (const char* stop_in : {"decomposition: partition", "hull", "decomposition: merge"}) {
+    SCOPED_TRACE(stop_in);
+    DecompositionOptions options;
+    std::string stage;
+    std::uint64_t last = 0;
+    int in_stage = 0;  // reports of stop_in so far
+    options.progress = [&](const Progress& p) {
+      if (stage != p.stage) {
+        EXPECT_EQ(p.done, 0u) << p.stage;
+        stage = p.stage;
+        last = 0;
+      }
+      EXPECT_GE(p.done, last);
+      EXPECT_LE(p.done, p.total);
+      last = p.done;
+      return stage != stop_in || ++in_stage < 2;  // stop at its second report
+    };
+    try {
+      (void)convex_decomposition(pinched, options);
+      ADD_FAILURE() << "not cancelled";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::cancelled) << e.what();
+    }
+  }
+  DecompositionOptions listening;
+  std::vector<std::string> stages;
+  listening.progress = [&](const Progress& p) {
+    if (stages.empty() || stages.back() != p.stage) stages.push_back(p.stage);
+    return true;
+  };
+  EXPECT_LE(convex_decomposition(pinched, listening).size(), 12u);
+  ASSERT_FALSE(stages.empty());
+  EXPECT_EQ(stages.front(), "decomposition: partition");
+  EXPECT_EQ(stages.back(), "decomposition: merge");
 }
 
 TEST(ConvexDecomposition, EmptySolid) {

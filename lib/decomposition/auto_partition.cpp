@@ -190,10 +190,11 @@ bool on_reflex_plane(const std::vector<Fragment>& fragments, const BoundaryPlane
 // The node's part of the solid as one inside cell, when convex_part finds it
 // convex and the node is due for the test; else nothing, and the node's
 // subtree is due again at half its fragments.
-std::optional<std::vector<Vec3>> finished_cell(Node& node, const BoundaryPlanes& planes) {
+std::optional<std::vector<Vec3>> finished_cell(Node& node, const BoundaryPlanes& planes,
+                                              const ProgressCallback& callback) {
   const std::size_t m = node.fragments.size();
   if (m < kTestFrom || m > node.test_at || on_reflex_plane(node.fragments, planes)) return std::nullopt;
-  std::optional<std::vector<Vec3>> part = convex_part(node.cell, node.fragments, planes.planes);
+  std::optional<std::vector<Vec3>> part = convex_part(node.cell, node.fragments, planes.planes, callback);
   if (!part) node.test_at = node.fragments.size() / 2;
   return part;
 }
@@ -227,21 +228,24 @@ Node root_node(const Solid& solid, BoundaryPlanes& planes, const std::vector<Pla
 }  // namespace
 
 std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& planes,
-                                            const DecompositionLimits& limits) {
+                                            const DecompositionLimits& limits,
+                                            detail::ProgressReporter& progress, const ProgressCallback& callback) {
   const std::uint64_t root_estimate =
       (std::uint64_t{8} + 3 * std::uint64_t{solid.triangles().size()}) * kPointBytes +
       solid.triangles().size() * sizeof(Fragment);
   if (root_estimate > limits.max_memory_bytes) memory_limit(root_estimate, limits.max_memory_bytes);
 
+  progress.begin("decomposition: partition", 1);
   std::vector<std::vector<Vec3>> inside;
   std::vector<Node> stack;
   stack.push_back(root_node(solid, planes, free_planes(solid, planes)));
   std::uint64_t live = node_bytes(stack.back());
   while (!stack.empty()) {
+    progress.advance(0);
     Node node = std::move(stack.back());
     stack.pop_back();
     live -= std::min(live, node_bytes(node));
-    if (std::optional<std::vector<Vec3>> part = finished_cell(node, planes)) {
+    if (std::optional<std::vector<Vec3>> part = finished_cell(node, planes, callback)) {
       live += part->size() * kPointBytes;
       inside.push_back(std::move(*part));
       continue;
@@ -286,6 +290,7 @@ std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& 
       }
     }
   }
+  progress.end();
   return inside;
 }
 

@@ -91,7 +91,7 @@ bool on_or_behind_all(const Vec3& point, const std::vector<SidedPlane>& bounds) 
 }  // namespace
 
 std::optional<std::vector<Vec3>> convex_part(const Cell& cell, const std::vector<Fragment>& fragments,
-                                             const std::vector<Plane>& planes) {
+                                             const std::vector<Plane>& planes, const ProgressCallback& progress) {
   std::vector<Vec3> points;
   for (const Fragment& f : fragments) points.insert(points.end(), f.points.begin(), f.points.end());
   // Neighbouring fragments share their corners: the hull takes each once.
@@ -99,7 +99,7 @@ std::optional<std::vector<Vec3>> convex_part(const Cell& cell, const std::vector
   points.erase(std::unique(points.begin(), points.end()), points.end());
   std::optional<ConvexPolyhedron> hull;
   try {
-    hull.emplace(convex_hull(points));
+    hull.emplace(convex_hull(points, progress));
   } catch (const Error& e) {
     if (e.category() != ErrorCategory::degenerate) throw;
     return std::nullopt;  // flat: the partition goes on with facet planes

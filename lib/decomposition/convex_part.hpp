@@ -8,6 +8,7 @@
 
 #include "boundary_planes.hpp"
 #include "convex_cell.hpp"
+#include "cvms/progress.hpp"
 #include "cvms/vec.hpp"
 
 namespace cvms::decomposition {
@@ -20,7 +21,8 @@ namespace cvms::decomposition {
 // points span no volume, nothing. O(m log m) for m fragment points, plus
 // the cell's vertices times the distinct fragment planes.
 // \pre fragments is not empty and holds the solid's boundary in the cell.
+// `progress` hears the hull (stage "hull") and may stop it (Error(cancelled)).
 std::optional<std::vector<Vec3>> convex_part(const Cell& cell, const std::vector<Fragment>& fragments,
-                                             const std::vector<Plane>& planes);
+                                             const std::vector<Plane>& planes, const ProgressCallback& progress);
 
 }  // namespace cvms::decomposition
