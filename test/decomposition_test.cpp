@@ -29,7 +29,9 @@
 #include "cvms/decomposition.hpp"
 #include "cvms/error.hpp"
 #include "cvms/predicates.hpp"
+#include "cvms/progress.hpp"
 #include "cvms/proximity.hpp"
+#include "cvms/shapes.hpp"
 #include "decomposition_fixtures.hpp"
 #include "diamond_ring.hpp"
 #include "solid_access.hpp"
@@ -235,6 +237,74 @@ TEST(ConvexDecomposition, BoxWithCavity) {
   EXPECT_LE(certify("box with a cubic cavity", g, 12), 6u);
 }
 
+// A geodesic sphere with one vertex moved onto the vertex farthest from it:
+// its fan becomes a thin cone reaching across the inside to touch the far
+// side at one point. Convex but for the cone (whose edges are the solid's
+// only reflex edges) and that touching point.
+Solid pinched_sphere(int k) {
+  const ConvexPolyhedron sphere = shapes::geodesic_sphere(k);
+  PolygonSoup soup;
+  soup.points = sphere.mesh().positions();
+  for (FaceId f : sphere.mesh().faces()) {
+    std::vector<std::uint32_t> cycle;
+    for (HalfedgeId h : sphere.mesh().face_halfedges(f)) cycle.push_back(sphere.mesh().from(h).index());
+    for (std::size_t i = 1; i + 1 < cycle.size(); ++i) {  // fan: the solid's triangles
+      soup.face_indices.insert(soup.face_indices.end(), {cycle[0], cycle[i], cycle[i + 1]});
+      soup.face_offsets.push_back(static_cast<std::uint32_t>(soup.face_indices.size()));
+    }
+  }
+  std::size_t far = 0;
+  Rational best = -1;
+  for (std::size_t v = 1; v < soup.points.size(); ++v) {
+    const Vec3 d = soup.points[v] - soup.points[0];
+    if (best < dot(d, d)) {
+      best = dot(d, d);
+      far = v;
+    }
+  }
+  soup.points[0] = soup.points[far];
+  return Solid::from_soup(std::move(soup));
+}
+
+// Brute-force point location in a solid: on a triangle, or an odd number of
+// crossings of a ray with the triangles (a ray through an edge or a vertex is
+// replaced by another direction). Exact; independent of the decomposition.
+bool on_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) {
+  if (orient3d(a, b, c, x) != Sign::zero) return false;
+  const Vec3 e = a + cross(b - a, c - a);
+  const Sign s1 = orient3d(a, b, e, x), s2 = orient3d(b, c, e, x), s3 = orient3d(c, a, e, x);
+  const bool has_pos = s1 == Sign::positive || s2 == Sign::positive || s3 == Sign::positive;
+  const bool has_neg = s1 == Sign::negative || s2 == Sign::negative || s3 == Sign::negative;
+  return !(has_pos && has_neg);
+}
+
+bool solid_contains(const Solid& solid, const Vec3& x) {
+  auto v = solid.vertices();
+  for (const auto& t : solid.triangles())
+    if (on_triangle(v[t[0]], v[t[1]], v[t[2]], x)) return true;
+  for (long attempt = 1;; ++attempt) {
+    const Vec3 d{Rational(1), Rational(attempt, 7919), Rational(attempt * attempt + 3, 104729)};
+    const Vec3 y = x + d;
+    bool degenerate = false;
+    int crossings = 0;
+    for (const auto& t : solid.triangles()) {
+      const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
+      const Vec3 n = cross(b - a, c - a);
+      const int toward = sgn(dot(n, a - x)), along = sgn(dot(n, d));
+      if (toward == 0 || along == 0 || toward != along) continue;  // no crossing ahead
+      const Sign o1 = orient3d(x, y, a, b), o2 = orient3d(x, y, b, c), o3 = orient3d(x, y, c, a);
+      if (o1 == Sign::zero || o2 == Sign::zero || o3 == Sign::zero) {
+        const bool mixed = (o1 == Sign::positive || o2 == Sign::positive || o3 == Sign::positive) &&
+                           (o1 == Sign::negative || o2 == Sign::negative || o3 == Sign::negative);
+        if (!mixed) degenerate = true;
+        continue;
+      }
+      if (o1 == o2 && o2 == o3) ++crossings;
+    }
+    if (!degenerate) return crossings % 2 == 1;
+  }
+}
+
 TEST(ConvexDecomposition, StarPrism) {
   StarPrism star;
   EXPECT_LE(certify("star prism", star.solid(), [&](const Vec3& p) { return star.contains(p); }, 5), 5u);
@@ -306,6 +376,68 @@ TEST(ConvexDecomposition, Limits) {
   DecompositionOptions small;
   small.limits.max_memory_bytes = 1000;
   expect_limit(g.solid(), small, "max_memory_bytes");
+}
+
+TEST(ConvexDecomposition, PinchedSphereEndsAtConvexCells) {
+  // Away from the cone the cells hold convex parts of the solid and end
+  // there, so the pieces number about the cone's facets, not the sphere's.
+  const Solid pinched = pinched_sphere(3);
+  EXPECT_LE(certify("pinched geodesic sphere", pinched, [&](const Vec3& p) { return solid_contains(pinched, p); },
+                    6),
+            12u);
+  ConvexUnion big = convex_decomposition(pinched_sphere(5));
+  EXPECT_LE(big.size(), 12u);
+}
+
+TEST(ConvexDecomposition, PinchedSphereLimits) {
+  const Solid pinched = pinched_sphere(5);
+  DecompositionOptions few;
+  few.limits.max_pieces = 2;
+  expect_limit(pinched, few, "max_pieces");
+  DecompositionOptions small;
+  small.limits.max_memory_bytes = 100000;
+  expect_limit(pinched, small, "max_memory_bytes");
+}
+
+TEST(ConvexDecomposition, PinchedSphereCancelled) {
+  // The callback sees each stage start at done 0, done never decreasing
+  // within a run and at most total; a false return in any stage stops the
+  // call.
+  const Solid pinched = pinched_sphere(5);
+  for (const char* stop_in : {"decomposition: partition", "hull", "decomposition: merge"}) {
+    SCOPED_TRACE(stop_in);
+    DecompositionOptions options;
+    std::string stage;
+    std::uint64_t last = 0;
+    int in_stage = 0;  // reports of stop_in so far
+    options.progress = [&](const Progress& p) {
+      if (stage != p.stage) {
+        EXPECT_EQ(p.done, 0u) << p.stage;
+        stage = p.stage;
+        last = 0;
+      }
+      EXPECT_GE(p.done, last);
+      EXPECT_LE(p.done, p.total);
+      last = p.done;
+      return stage != stop_in || ++in_stage < 2;  // stop at its second report
+    };
+    try {
+      (void)convex_decomposition(pinched, options);
+      ADD_FAILURE() << "not cancelled";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.category(), ErrorCategory::cancelled) << e.what();
+    }
+  }
+  DecompositionOptions listening;
+  std::vector<std::string> stages;
+  listening.progress = [&](const Progress& p) {
+    if (stages.empty() || stages.back() != p.stage) stages.push_back(p.stage);
+    return true;
+  };
+  EXPECT_LE(convex_decomposition(pinched, listening).size(), 12u);
+  ASSERT_FALSE(stages.empty());
+  EXPECT_EQ(stages.front(), "decomposition: partition");
+  EXPECT_EQ(stages.back(), "decomposition: merge");
 }
 
 TEST(ConvexDecomposition, EmptySolid) {

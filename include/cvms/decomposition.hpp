@@ -10,6 +10,7 @@
 
 #include "cvms/convex_union.hpp"
 #include "cvms/minkowski.hpp"
+#include "cvms/progress.hpp"
 #include "cvms/solid.hpp"
 
 namespace cvms {
@@ -23,6 +24,13 @@ struct DecompositionLimits {
 /// How to decompose.
 struct DecompositionOptions {
   DecompositionLimits limits;  ///< bounds on pieces and working memory
+  /// Hears the stages "decomposition: partition" (one unit: done is 0 until
+  /// the partition ends, as its size is not known before; reported after
+  /// every cell it splits or finishes), "hull" (inside the partition, for a
+  /// large cell tested for convexity) and "decomposition: merge" (units:
+  /// two per cell of the partition: its hull, its merge sweep); returning false stops the call with
+  /// Error(cancelled) (cvms/progress.hpp).
+  ProgressCallback progress;
 };
 
 /// Interior-disjoint convex polyhedra whose union is the solid, exactly; few
@@ -30,7 +38,8 @@ struct DecompositionOptions {
 /// as its one piece. Deterministic: the same solid gives the same pieces in
 /// the same order.
 /// \throw Error(invalid_argument) for an empty solid;
-/// \throw Error(limit) if the pieces or the memory would exceed the limits.
+/// \throw Error(limit) if the pieces or the memory would exceed the limits;
+/// \throw Error(cancelled) if options.progress asks to stop.
 ConvexUnion convex_decomposition(const Solid& solid, const DecompositionOptions& options = {});
 
 /// A + B for solids that need not be convex, as the union of the pairwise

@@ -30,14 +30,28 @@
 // free plane with all of a node's fragments on one closed side is useless
 // for the node's whole subtree (the parts' fragments lie in the node's) and
 // is dropped from it.
+//
+// A node whose part of the solid is convex ends there as one inside cell
+// (convex_part.hpp), instead of being peeled one facet plane at a time: on
+// a solid that is convex away from a few reflex edges, the cells away from
+// them end after a few splits, not after one split per facet. The test costs
+// O(m log m) for a node of m fragment points, so it is tried only at nodes
+// of at least kTestFrom fragments (a smaller node ends after a few splits
+// anyway, cheaper than an exact hull), with no fragment on a reflex plane
+// (there it would mostly fail), and after it fails at a node of m
+// fragments, the node's subtree tries it again only at nodes of at most
+// m / 2 fragments: along every path the tested sizes halve, so the tests
+// cost O(log) times the work of the splits.
 #include "auto_partition.hpp"
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "convex_cell.hpp"
+#include "convex_part.hpp"
 #include "cvms/error.hpp"
 #include "free_planes.hpp"
 
@@ -46,6 +60,7 @@ namespace {
 
 constexpr std::size_t kCandidates = 12;
 constexpr std::size_t kScored = 256;
+constexpr std::size_t kTestFrom = 64;
 // A rough size of one exact point in a cell or a fragment: three small
 // rationals with their limbs and the bookkeeping beside them.
 constexpr std::uint64_t kPointBytes = 256;
@@ -54,6 +69,7 @@ struct Node {
   Cell cell;
   std::vector<Fragment> fragments;
   std::vector<std::uint32_t> free;  // table indices of the free planes still worth trying
+  std::size_t test_at = SIZE_MAX;   // try convex_part at no more fragments than this
 };
 
 std::uint64_t node_bytes(const Node& node) {
@@ -166,6 +182,23 @@ std::uint32_t free_cut(Node& node, const std::vector<Plane>& planes) {
                   " bytes of working memory, more than max_memory_bytes = " + std::to_string(limit));
 }
 
+bool on_reflex_plane(const std::vector<Fragment>& fragments, const BoundaryPlanes& planes) {
+  return std::any_of(fragments.begin(), fragments.end(),
+                     [&](const Fragment& f) { return planes.reflex_plane[f.plane] != 0; });
+}
+
+// The node's part of the solid as one inside cell, when convex_part finds it
+// convex and the node is due for the test; else nothing, and the node's
+// subtree is due again at half its fragments.
+std::optional<std::vector<Vec3>> finished_cell(Node& node, const BoundaryPlanes& planes,
+                                              const ProgressCallback& callback) {
+  const std::size_t m = node.fragments.size();
+  if (m < kTestFrom || m > node.test_at || on_reflex_plane(node.fragments, planes)) return std::nullopt;
+  std::optional<std::vector<Vec3>> part = convex_part(node.cell, node.fragments, planes.planes, callback);
+  if (!part) node.test_at = node.fragments.size() / 2;
+  return part;
+}
+
 Node root_node(const Solid& solid, BoundaryPlanes& planes, const std::vector<Plane>& free) {
   auto vertices = solid.vertices();
   auto triangles = solid.triangles();
@@ -195,20 +228,28 @@ Node root_node(const Solid& solid, BoundaryPlanes& planes, const std::vector<Pla
 }  // namespace
 
 std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& planes,
-                                            const DecompositionLimits& limits) {
+                                            const DecompositionLimits& limits,
+                                            detail::ProgressReporter& progress, const ProgressCallback& callback) {
   const std::uint64_t root_estimate =
       (std::uint64_t{8} + 3 * std::uint64_t{solid.triangles().size()}) * kPointBytes +
       solid.triangles().size() * sizeof(Fragment);
   if (root_estimate > limits.max_memory_bytes) memory_limit(root_estimate, limits.max_memory_bytes);
 
+  progress.begin("decomposition: partition", 1);
   std::vector<std::vector<Vec3>> inside;
   std::vector<Node> stack;
   stack.push_back(root_node(solid, planes, free_planes(solid, planes)));
   std::uint64_t live = node_bytes(stack.back());
   while (!stack.empty()) {
+    progress.advance(0);
     Node node = std::move(stack.back());
     stack.pop_back();
     live -= std::min(live, node_bytes(node));
+    if (std::optional<std::vector<Vec3>> part = finished_cell(node, planes, callback)) {
+      live += part->size() * kPointBytes;
+      inside.push_back(std::move(*part));
+      continue;
+    }
     const std::uint32_t free = free_cut(node, planes.planes);
     const Splitter s = free != UINT32_MAX ? Splitter{free, 1} : choose_splitter(node.fragments, planes);
     const Plane& plane = planes.planes[s.plane];
@@ -225,6 +266,7 @@ std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& 
     front.cell = std::move(cells.front);
     back.free = node.free;
     front.free = std::move(node.free);
+    back.test_at = front.test_at = node.test_at;
     node = Node{};
 
     std::uint64_t added = node_bytes(back) + node_bytes(front);
@@ -248,6 +290,7 @@ std::vector<std::vector<Vec3>> inside_cells(const Solid& solid, BoundaryPlanes& 
       }
     }
   }
+  progress.end();
   return inside;
 }
 

@@ -130,10 +130,15 @@ Rational six_volume(const ConvexPolyhedron& polyhedron) {
   return sum;
 }
 
-std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<Vec3>>& cells) {
+std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<Vec3>>& cells,
+                                                 detail::ProgressReporter& progress) {
+  progress.begin("decomposition: merge", 2 * std::uint64_t{cells.size()});
   std::vector<Piece> pieces;
   pieces.reserve(cells.size());
-  for (const auto& cell : cells) pieces.push_back(make_piece(convex_hull(cell)));
+  for (const auto& cell : cells) {
+    pieces.push_back(make_piece(convex_hull(cell)));
+    progress.advance(1);
+  }
   // The pieces at each vertex: two pieces with a convex union share the
   // vertices of their cross section, so only these are candidates. An
   // ordered map: exact keys, and no hashing of values derived from input.
@@ -148,6 +153,7 @@ std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<V
   // later piece tries it after its own last growth, so one sweep leaves no
   // two neighbours with a convex union untried.
   for (std::uint32_t i = 0; i < pieces.size(); ++i) {
+    progress.advance(1);
     bool grew = alive[i] != 0;
     while (grew) {
       grew = false;
@@ -158,6 +164,7 @@ std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<V
       std::sort(near.begin(), near.end());
       near.erase(std::unique(near.begin(), near.end()), near.end());
       for (std::uint32_t j : near) {
+        progress.advance(0);
         if (!try_merge(pieces[i], pieces[j])) continue;
         alive[j] = 0;
         index_piece(i);
@@ -169,6 +176,7 @@ std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<V
   std::vector<ConvexPolyhedron> result;
   for (std::uint32_t i = 0; i < pieces.size(); ++i)
     if (alive[i] != 0) result.push_back(std::move(pieces[i].polyhedron));
+  progress.end();
   return result;
 }
 

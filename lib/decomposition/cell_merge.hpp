@@ -6,6 +6,7 @@
 
 #include "cvms/convex_polyhedron.hpp"
 #include "cvms/vec.hpp"
+#include "progress_reporter.hpp"
 
 namespace cvms::decomposition {
 
@@ -16,6 +17,9 @@ Rational six_volume(const ConvexPolyhedron& polyhedron);
 // Convex pieces with the same union as the cells (given by their vertices;
 // interior-disjoint), fewer where two of them form a convex body.
 // Deterministic: the cells are visited in the order given.
-std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<Vec3>>& cells);
+// Reports the stage "decomposition: merge" (units: two per cell) to `progress`.
+// \throw Error(cancelled) when progress's callback asks to stop.
+std::vector<ConvexPolyhedron> merge_convex_cells(const std::vector<std::vector<Vec3>>& cells,
+                                                 detail::ProgressReporter& progress);
 
 }  // namespace cvms::decomposition

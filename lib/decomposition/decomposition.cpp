@@ -23,6 +23,7 @@
 #include "cell_merge.hpp"
 #include "cvms/convex_hull.hpp"
 #include "cvms/error.hpp"
+#include "progress_reporter.hpp"
 
 namespace cvms {
 
@@ -35,7 +36,9 @@ ConvexUnion convex_decomposition(const Solid& solid, const DecompositionOptions&
     std::vector<Vec3> points(solid.vertices().begin(), solid.vertices().end());
     pieces.push_back(convex_hull(points));
   } else {
-    pieces = decomposition::merge_convex_cells(decomposition::inside_cells(solid, planes, options.limits));
+    detail::ProgressReporter progress(detail::callback_of(options.progress));
+    pieces = decomposition::merge_convex_cells(
+        decomposition::inside_cells(solid, planes, options.limits, progress, options.progress), progress);
   }
   if (pieces.size() > options.limits.max_pieces)
     throw Error(ErrorCategory::limit, "convex_decomposition: " + std::to_string(pieces.size()) +
