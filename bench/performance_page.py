@@ -548,11 +548,12 @@ def before_after_section(page, path):
     before, after = data["cpu_ms_min"]["before"], data["cpu_ms_min"]["after"]
     page.para(f"*`docs/bench/{os.path.basename(path)}` (`bench/decimal_before_after.py`): two release trees "
               f"run alternately, {data['rounds']} rounds; CPU time, the minimum over all repetitions of all "
-              "rounds. `--before` makes the edge directions and facet planes of points that are not doubles "
-              "as rationals (or in machine words when their common denominator is below 2^40) and sums "
-              "non-dyadic vertex coordinates in GMP; `--after`, the code on this page, makes those "
-              "directions in machine integers whenever the points' common denominator is below 2^63 and "
-              "the scaled coordinates below 2^61, and sums one-word fractions in 128-bit words.*")
+              "rounds. `--before` carries an operand as machine integers over its common denominator only "
+              "when that denominator is below 2^63 (scaled coordinates below 2^61) and makes the vertices "
+              "of other non-dyadic operands as GMP rationals; `--after`, the code on this page, also carries "
+              "operands whose common denominator is below 2^124 as 128-bit integers "
+              "(`lib/numeric/two_word_scaled.cpp`): their sum's vertices are 128-bit integers over the lcm "
+              "of the two denominators, their edge directions differences of those integers.*")
     forms = dict(zip(("0", "4", "5"), WRITTEN_FORMS))
     labels = {f"BM_Written_{key}/6/{i}": f"{label}, {WRITTEN_FORMS[i]}" for key, label in WRITTEN_FAMILIES
               for i in range(3)}
@@ -609,21 +610,17 @@ def profile_section(page, path, table):
 
     page.para(
         f"With shortest decimals the sum takes {fmt_ms(forms[1][0] - forms[0][0])} ms more than with the "
-        f"dyadic operands. The output build takes {more(build)} ms of it. The vertices and the mesh, "
-        f"{more(vertices)} ms more, the largest part: each output vertex is made as three GMP rationals "
-        f"(`SumFacetBuilder::soup`, {fmt_ms(ms[(sums, 'shortest')])} ms), their sums in 128-bit words "
-        "when numerators and denominators fit one word each (`word_fraction.hpp`, with GMP's one-limb "
-        "gcd), stored in the result's arena, and their double approximations divided out of the "
-        "rationals (`Approx::of`), where a dyadic vertex is a packed 16-byte value made from machine "
-        f"words with its approximation. The facet normals, {more(normals)} ms more: the edge directions "
-        "of ends that are not doubles are machine integers over the ends' common denominator "
-        "(`small_fraction_direction` in `lib/numeric/small_direction.cpp`, when that denominator is below "
-        "2^63 and the scaled coordinates below 2^61; the general rational path beyond), read from the "
-        "twelve GMP integers of the ends' coordinates, where a double's direction is a few shifts of its "
-        f"bits. The search, {more(search)} ms more, decides its predicates on the floating-point filters "
-        "in every form (the rows' `exact_share` counter is the same for the three forms). GMP's own code "
-        f"is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's samples, "
-        f"against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
+        f"dyadic operands. The search, {more(search)} ms more, decides its predicates on the floating-point "
+        "filters in every form (the rows' `exact_share` counter is the same for the three forms); its "
+        "operands' approximations are read off 128-bit integers over a decimal denominator instead of a "
+        f"double's bits. The output build takes {more(build)} ms more: the vertices and the mesh "
+        f"{more(vertices)} ms (128-bit vertex integers over a denominator of 10^19 or more, whose "
+        "approximations need a 128-bit division where a dyadic vertex is a packed 16-byte value made from "
+        f"machine words), the facet normals {more(normals)} ms (cross products of the edge directions made "
+        "primitive in GMP where a double's direction is a few shifts of its bits). No vertex is made as a "
+        "GMP rational and no edge direction takes the general rational path in any form (the zero rows). "
+        f"GMP's own code is {100 * rows['shortest']['innermost']['GMP']:.0f} % of the shortest-decimal sum's "
+        f"samples, against {100 * rows['dyadic']['innermost']['GMP']:.0f} % with dyadic operands.")
     page.para(
         "6-digit decimals share one denominator, 10^6: each operand is scaled once, on first use, to machine "
         "integers over it (`lib/numeric/word_scaled.cpp`, whenever the common denominator is below 2^63 and the "
@@ -632,9 +629,12 @@ def profile_section(page, path, table):
         "integers; the canonical rationals are made only when read) and the edge directions differences of the "
         f"operands' integers: {forms[2][0] / forms[0][0]:.2f}× the dyadic sum, the output build "
         f"{fmt_ms(ms[(build, 'six_digits')])} ms against {fmt_ms(ms[(build, 'dyadic')])} ms. Shortest "
-        "round-trip decimals do not fit: a coordinate below 0.01 in magnitude keeps 17 significant digits, "
-        "so its denominator is 10^19 or more, beyond 2^63, and the operand's common denominator with it; "
-        "such operands keep the paths above until fixed two-word integers carry them.")
+        "round-trip decimals do not fit one word: a coordinate below 0.01 in magnitude keeps 17 significant "
+        "digits, so its denominator is 10^19 or more, beyond 2^63, and the operand's common denominator "
+        "with it. Below 2^124 such an operand is carried as 128-bit integers over its denominator "
+        "(`lib/numeric/two_word_scaled.cpp`): the sum's vertices are 128-bit integers over the lcm of the "
+        "two denominators, the edge directions differences of the integers with their common powers of 2 "
+        "and 5 divided out.")
 
 
 def load_forms_section(page, path):
