@@ -115,6 +115,26 @@ TEST_F(CliInterrupt, ProgressOnlyWhenAskedOffATerminal) {
   EXPECT_NE(diff.err.find("cvms: difference: rows 100% ("), std::string::npos) << diff.err;
 }
 
+TEST_F(CliInterrupt, DecompositionsShowProgressWhenAsked) {
+  // A non-convex solid is decomposed by `decompose` and by `check` (its piece
+  // count); both hear the decomposition's stages, and showing them changes
+  // nothing on stdout or in the pieces file.
+  const std::string solid = (std::filesystem::path(CVMS_TEST_DATA_DIR) / "solids" / "l_block.off").string();
+  const CliOutcome quiet = run("decompose " + solid + " -o q.obj");
+  EXPECT_EQ(quiet.code, 0) << quiet.err;
+  const CliOutcome shown = run("decompose " + solid + " -o p.obj --progress");
+  EXPECT_EQ(shown.code, 0) << shown.err;
+  EXPECT_NE(shown.err.find("cvms: decomposition: merge 100% ("), std::string::npos) << shown.err;
+  EXPECT_EQ(slurp(dir_.path() / "q.obj"), slurp(dir_.path() / "p.obj")) << "the same pieces";
+  const CliOutcome check_quiet = run("check " + solid);
+  EXPECT_EQ(check_quiet.code, 0) << check_quiet.err;
+  EXPECT_EQ(check_quiet.err, "");
+  const CliOutcome check_shown = run("check " + solid + " --progress");
+  EXPECT_EQ(check_shown.code, 0) << check_shown.err;
+  EXPECT_NE(check_shown.err.find("cvms: decomposition: merge 100% ("), std::string::npos) << check_shown.err;
+  EXPECT_EQ(check_quiet.out, check_shown.out);
+}
+
 TEST_F(CliInterrupt, CtrlCEndsALongSumWithTheOutputUntouched) {
   // ESSDMS on Sphere6 + rotated Sphere6 tests some 10^10 pairs: far longer
   // than the test waits, and it reports every few facets.

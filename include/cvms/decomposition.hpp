@@ -44,7 +44,8 @@ ConvexUnion convex_decomposition(const Solid& solid, const DecompositionOptions&
 
 /// A + B for solids that need not be convex, as the union of the pairwise
 /// sums of their convex pieces (convex_decomposition of each, then
-/// minkowski_sum of the two unions with `options`).
+/// minkowski_sum of the two unions with `options`). options.progress also
+/// hears the decompositions' stages when decomposition.progress is empty.
 /// \throw as convex_decomposition and minkowski_sum(ConvexUnion, ConvexUnion).
 ConvexUnion minkowski_sum_pieces(const Solid& a, const Solid& b, const Options& options = {},
                                  const DecompositionOptions& decomposition = {});

@@ -51,8 +51,9 @@ enum class SolidSumRoad {
 /// (cvms/convex_union.hpp). options.progress hears "solid sum: faces" (A's
 /// face polygons summed with B) and "solid sum: fragments" (the union's
 /// fragments tested against A + b, one unit per group of fragments joined
-/// by shared corners) when one operand is convex, and the
-/// stages of the sums and of the union.
+/// by shared corners) when one operand is convex, the stages of the
+/// decompositions (when decomposition.progress is empty), of the sums and
+/// of the union.
 /// \throw Error(invalid_argument) for an empty operand;
 /// \throw Error(limit) naming the limit (SumLimits, DecompositionLimits);
 /// \throw as convex_decomposition, minkowski_sum and union_solid.

@@ -101,8 +101,10 @@ std::vector<std::vector<Vec3>> vertex_lists(const ConvexUnion& parts) {
 // decompositions prove inside the sum left out of the candidates.
 Solid sum_of_pieces(const Solid& a, const Solid& b, const Options& options,
                     const DecompositionOptions& decomposition) {
-  const ConvexUnion a_parts = convex_decomposition(a, decomposition);
-  const ConvexUnion b_parts = convex_decomposition(b, decomposition);
+  DecompositionOptions heard = decomposition;
+  if (!heard.progress) heard.progress = options.progress;  // a caller cancels the whole sum with one callback
+  const ConvexUnion a_parts = convex_decomposition(a, heard);
+  const ConvexUnion b_parts = convex_decomposition(b, heard);
   const ConvexUnion pieces = minkowski_sum(a_parts, b_parts, options);
   const detail::FacetMask interior =
       detail::interior_facets_of_pairs(vertex_lists(a_parts), vertex_lists(b_parts), pieces.pieces(), options);

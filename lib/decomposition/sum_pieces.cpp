@@ -7,8 +7,9 @@ namespace cvms {
 
 ConvexUnion minkowski_sum_pieces(const Solid& a, const Solid& b, const Options& options,
                                  const DecompositionOptions& decomposition) {
-  return minkowski_sum(convex_decomposition(a, decomposition), convex_decomposition(b, decomposition),
-                       options);
+  DecompositionOptions heard = decomposition;
+  if (!heard.progress) heard.progress = options.progress;  // a caller cancels the whole sum with one callback
+  return minkowski_sum(convex_decomposition(a, heard), convex_decomposition(b, heard), options);
 }
 
 }  // namespace cvms

@@ -22,6 +22,7 @@
 #include "mesh_input.hpp"
 #include "options.hpp"
 #include "pieces_files.hpp"
+#include "progress_line.hpp"
 #include "reports.hpp"
 #include "set_files.hpp"
 #include "solid_report.hpp"
@@ -88,7 +89,7 @@ void check_pieces(const std::string& input, const ConvexUnion& pieces, bool json
 // The mesh input as a solid, its bytes parsed again, after it failed as a
 // convex set with `convex_error` (which stays the answer for a file that
 // cannot be a solid).
-void check_solid(const MeshInput& mesh, const Error& convex_error, bool json, std::ostream& report) {
+void check_solid(const MeshInput& mesh, const Error& convex_error, bool json, bool progress, std::ostream& report) {
   const std::string& input = mesh.path;
   if (convex_error.category() != ErrorCategory::not_convex && convex_error.category() != ErrorCategory::topology)
     throw convex_error;
@@ -98,7 +99,7 @@ void check_solid(const MeshInput& mesh, const Error& convex_error, bool json, st
   const Solid solid = solid_from_soup(std::move(soup), input_name(input));
   ConvexUnion pieces;
   try {
-    pieces = convex_decomposition(solid);
+    pieces = convex_decomposition(solid, DecompositionOptions{.limits = {}, .progress = progress_callback(progress)});
   } catch (const Error& e) {
     rethrow_with_pieces_limit_hint(e);
   }
@@ -108,7 +109,7 @@ void check_solid(const MeshInput& mesh, const Error& convex_error, bool json, st
   o.end();
 }
 
-void run_check(const std::string& input, bool json, std::ostream& report) {
+void run_check(const std::string& input, bool json, bool progress, std::ostream& report) {
   // A mesh is read once into memory and parsed again only if it is not
   // convex; a cdd .ext is points (their hull: never a solid).
   std::optional<MeshInput> mesh;
@@ -121,7 +122,7 @@ void run_check(const std::string& input, bool json, std::ostream& report) {
     set = set_from_soup(std::move(soup), input_name(input));
   } catch (const Error& e) {
     if (!mesh) throw;
-    return check_solid(*mesh, e, json, report);
+    return check_solid(*mesh, e, json, progress, report);
   }
   if (json) {
     report_json(input_name(input), set, input_points, input_faces, report);
@@ -142,7 +143,9 @@ void register_check(CLI::App& app, Commands& commands) {
   command->add_option("F", *input, "the file")->required()->check(mesh_path());
   command->add_flag("--json", *json, "one JSON object: the same facts, exact numbers as strings beside their doubles");
   add_input_memory_option(*command);
-  commands.push_back({command, [input, json] { run_check(*input, *json, std::cout); }});
+  auto progress = std::make_shared<bool>(false);
+  add_progress_option(*command, *progress);
+  commands.push_back({command, [input, json, progress] { run_check(*input, *json, *progress, std::cout); }});
 }
 
 }  // namespace cvms::cli

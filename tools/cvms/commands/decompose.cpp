@@ -16,6 +16,7 @@
 #include "json.hpp"
 #include "options.hpp"
 #include "pieces_files.hpp"
+#include "progress_line.hpp"
 #include "reports.hpp"
 #include "solid_report.hpp"
 
@@ -26,11 +27,13 @@ struct DecomposeArgs {
   std::string input, output = "-";
   std::string float_output;  ///< --float: empty, "nearest" or "outer"
   bool json = false;
+  bool progress = false;  ///< --progress
   DecompositionOptions options;
 };
 
-void run_decompose(const DecomposeArgs& args, std::ostream& report) {
+void run_decompose(DecomposeArgs args, std::ostream& report) {
   check_pieces_output(args.output);
+  args.options.progress = progress_callback(args.progress);
   const Solid solid = solid_from_soup(read_soup(args.input), input_name(args.input));
   const auto start = std::chrono::steady_clock::now();
   ConvexUnion pieces;
@@ -62,6 +65,7 @@ void register_decompose(CLI::App& app, Commands& commands) {
   add_float_option(*command, args->float_output);
   command->add_flag("--json", args->json, "report as one JSON object: exact numbers as strings beside their doubles");
   add_decomposition_limit_options(*command, args->options.limits);
+  add_progress_option(*command, args->progress);
   commands.push_back(
       {command, [args] { run_decompose(*args, args->output == "-" ? std::cerr : std::cout); }});
 }
