@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <utility>
 #include <map>
 #include <optional>
@@ -37,6 +38,7 @@
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
+#include "support/random_numbers.hpp"
 #include "support/union_oracle.hpp"
 
 namespace {
@@ -426,6 +428,76 @@ TEST(CoveringRegion, AgreesWithItsDefinition) {
       }
     }
   }
+}
+
+// box_side against its definition by plain Rational arithmetic: every
+// point of the box strictly inside iff the greatest dot(normal, x) over the
+// box's eight corners is below the offset, strictly outside iff the least
+// is above it. It may answer nothing when one holds (the filter could not
+// prove it), never a side that fails: planes through the box's farthest
+// and nearest corners exactly (the degenerate cases), a hair beyond them
+// (10^-30), and anywhere; boxes flat in some coordinate; small and long
+// integer normals, some with zero coordinates. Planes well clear of a box
+// of moderate size must be proven, and a box that is not finite never is.
+TEST(CoveringRegion, BoxSideOnlyWhenEveryPointIsOnIt) {
+  for (const std::uint64_t seed : {31U, 32U, 33U}) {
+    cvms::test::Rng rng(seed);
+    std::deque<TestPlane> store;
+    int proven = 0;
+    for (int i = 0; i < 400; ++i) {
+      cvms::unions::OutwardBox box;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double a = cvms::test::random_uniform(rng, -10, 10);
+        const double b = rng() % 5 == 0 ? a : cvms::test::random_uniform(rng, -10, 10);
+        box.lo[k] = std::min(a, b);
+        box.hi[k] = std::max(a, b);
+      }
+      const unsigned bits = rng() % 2 == 0 ? 4 : 70;
+      Vec3 normal;
+      for (int k = 0; k < 3; ++k)
+        normal[k] = rng() % 6 == 0 ? Rational(0) : Rational(cvms::test::random_integer(rng, bits));
+      if (normal == Vec3{0, 0, 0}) continue;
+      Rational highest;
+      Rational lowest;
+      for (unsigned c = 0; c < 8; ++c) {
+        Vec3 corner;
+        for (unsigned k = 0; k < 3; ++k)
+          corner[static_cast<int>(k)] = Rational(((c >> k) & 1U) != 0 ? box.hi[k] : box.lo[k]);
+        const Rational value = dot(normal, corner);
+        if (c == 0 || value > highest) highest = value;
+        if (c == 0 || value < lowest) lowest = value;
+      }
+      const Rational spread = abs(normal.x) + abs(normal.y) + abs(normal.z);
+      const Rational hair = cvms::test::power_of_ten(-30);
+      const std::vector<Rational> offsets = {highest, highest + hair, lowest, lowest - hair, highest + spread,
+                                             lowest - spread,
+                                             Rational(cvms::test::random_uniform(rng, -30, 30)) * spread};
+      for (const Rational& offset : offsets) {
+        const std::optional<cvms::Sign> got = cvms::detail::box_side(box, clip_plane(store, normal, offset));
+        if (got == cvms::Sign::negative) {
+          ASSERT_LT(highest, offset) << "seed " << seed << ", case " << i;
+        } else if (got == cvms::Sign::positive) {
+          ASSERT_GT(lowest, offset) << "seed " << seed << ", case " << i;
+        } else {
+          ASSERT_FALSE(got.has_value()) << "seed " << seed << ", case " << i;
+        }
+        if (offset == highest + spread) {
+          ASSERT_EQ(got, cvms::Sign::negative) << "seed " << seed << ", case " << i;
+        }
+        if (offset == lowest - spread) {
+          ASSERT_EQ(got, cvms::Sign::positive) << "seed " << seed << ", case " << i;
+        }
+        proven += got ? 1 : 0;
+      }
+    }
+    EXPECT_GT(proven, 800) << "seed " << seed;
+  }
+  cvms::unions::OutwardBox unbounded;
+  unbounded.lo = {-std::numeric_limits<double>::infinity(), 0, 0};
+  unbounded.hi = {0, 1, 1};
+  std::deque<TestPlane> store;
+  EXPECT_FALSE(cvms::detail::box_side(unbounded, clip_plane(store, {-1, 0, 0}, 1)));
+  EXPECT_FALSE(cvms::detail::box_side(unbounded, clip_plane(store, {0, 1, 0}, 5)));
 }
 
 TEST(BoundaryFragments, CubeAlone) {

@@ -309,6 +309,41 @@ TEST(Predicates, CompareDotWithIntegerNormalsMatchesTheOracle) {
   }
 }
 
+// compare_dot_if_certain answers only when the filter proves the sign, and
+// then the oracle's sign; an exact tie (w = v + a vector orthogonal to n) is
+// never answered, a tie nudged by a tiny multiple of n may or may not be.
+// With the cached, the loose cached and the plain double inputs alike.
+TEST(Predicates, CompareDotIfCertainIsTheOracleOrNothing) {
+  for (Kind kind : all_kinds) {
+    const unsigned seed = 950 + static_cast<unsigned>(kind);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    int answered = 0;
+    for (int i = 0; i < 400; ++i) {
+      const Vec3 v = point3(rng, kind), w = point3(rng, kind), u = point3(rng, kind);
+      const Vec3 n{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
+                   Rational(test::random_integer(rng, 1u + static_cast<unsigned>(rng() % 60)))};
+      const Vec3 tie = v + cross(n, u);
+      const Vec3 above = tie - power_of_ten(-30) * n;
+      for (const Vec3* other : {&w, &tie, &above}) {
+        const ApproxVec3 pv = ApproxVec3::of(v), po = ApproxVec3::of(*other), pn = ApproxVec3::of(n);
+        const ApproxVec3 lv = loose3(v), lo = loose3(*other), ln = loose3(n);
+        const Sign expected = oracle_compare_dot(v, *other, n);
+        for (const auto& s : {compare_dot_if_certain({v, pv}, {*other, po}, {n, pn}),
+                              compare_dot_if_certain({v, lv}, {*other, lo}, {n, ln})}) {
+          if (!s) continue;
+          ++answered;
+          ASSERT_EQ(*s, expected) << "case " << i;
+        }
+        if (other == &tie) {
+          ASSERT_FALSE(compare_dot_if_certain({v, pv}, {*other, po}, {n, pn})) << "case " << i;
+        }
+      }
+    }
+    EXPECT_GT(answered, 400);  // the random pairs are mostly far from a tie
+  }
+}
+
 // The exact paths with an integer normal scale a point to the lcm of its
 // denominators, skipping the quotient for a denominator equal to it and the
 // gcd for one that divides or is divided by the others: points over one

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "cvms/sign.hpp"
@@ -45,6 +46,16 @@ namespace cvms::detail {
 /// `sides` and `section` are scratch space.
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);
+
+/// Which side of the plane every point of the box lies strictly on, decided
+/// by the filter alone (nothing when it cannot prove one): inside
+/// (negative) iff the box's corner farthest along the normal is, outside
+/// (positive) iff the nearest one is; those corners have the greatest and
+/// the least dot(normal, x) of the box's points, and their coordinates are
+/// doubles, so their approximation is exact. A box that is not finite is
+/// never proven on a side. One filtered test where the box holds a piece's
+/// vertices or a facet's corners stands for one test per vertex or corner.
+std::optional<Sign> box_side(const unions::OutwardBox& box, const ClipPlane& plane);
 
 /// How a convex region of a facet's plane (given by half-spaces) meets the
 /// facet: in zero area (some half-space has every corner on or outside its

@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "filtered_predicates.hpp"
+#include "polyhedron_access.hpp"
+#include "prefetch_exact.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -34,23 +36,47 @@ class SectionWalk {
   std::optional<HalfedgeId> crossing_edge(VertexId v) {
     const int sv = side_of(v);
     if (sv == 0) return met(v);
-    const Vec3Ref normal{*plane_.normal, *plane_.normal_approx};
     for (std::uint32_t steps = 0; steps <= q_.num_vertices(); ++steps) {
-      VertexId nearer;
+      // The neighbours' approximations are scattered through the piece's
+      // vertices: asking for all of them before the first is read lets
+      // their cache misses overlap.
+      for (HalfedgeId h : mesh_.outgoing_halfedges(v))
+        prefetch_bytes(&PolyhedronAccess::vertex_approx(q_, mesh_.to(h)), sizeof(ApproxVec3));
       for (HalfedgeId h : mesh_.outgoing_halfedges(v)) {
         const VertexId u = mesh_.to(h);
         const int su = side_of(u);
         if (su == 0) return met(u);
         if (su != sv) return sv < 0 ? h : Mesh::twin(h);
-        // Inside (sv < 0): nearer means farther along the normal.
-        if (!nearer.is_valid() &&
-            static_cast<int>(compare_dot(vertex_ref(q_, u), vertex_ref(q_, v), normal)) == -sv)
-          nearer = u;
       }
+      const VertexId nearer = nearer_neighbour(v, sv);
       if (!nearer.is_valid()) return HalfedgeId();
       v = nearer;
     }
     return std::nullopt;
+  }
+
+  // A neighbour of v strictly nearer to the plane than v, v on side sv
+  // (inside, sv < 0: nearer means farther along the normal); invalid if
+  // none is. Any nearer neighbour serves the climb (it ends at the same
+  // section whatever path it takes), so one the filter alone proves nearer
+  // is taken first: an edge of v parallel to the plane, common where pieces
+  // share directions, is an exact tie that only exact arithmetic decides,
+  // and it is decided only if no other edge is proven to lead nearer.
+  VertexId nearer_neighbour(VertexId v, int sv) {
+    const Vec3Ref normal{*plane_.normal, *plane_.normal_approx};
+    bool undecided = false;
+    for (HalfedgeId h : mesh_.outgoing_halfedges(v)) {
+      const VertexId u = mesh_.to(h);
+      const std::optional<Sign> s = compare_dot_if_certain(vertex_ref(q_, u), vertex_ref(q_, v), normal);
+      if (!s) undecided = true;
+      else if (static_cast<int>(*s) == -sv) return u;
+    }
+    if (!undecided) return VertexId();
+    for (HalfedgeId h : mesh_.outgoing_halfedges(v)) {
+      const VertexId u = mesh_.to(h);
+      if (static_cast<int>(compare_dot(vertex_ref(q_, u), vertex_ref(q_, v), normal)) == -sv) return u;
+    }
+    return VertexId();
   }
 
   // Goes round the section from `first` (inside to outside); false if a
@@ -60,6 +86,8 @@ class SectionWalk {
     HalfedgeId e = first;
     for (std::uint32_t faces = 0; faces <= q_.num_facets(); ++faces) {
       scratch_.facets.push_back(mesh_.face(e).index());
+      for (HalfedgeId h = mesh_.next(e); h != e; h = mesh_.next(h))
+        prefetch_bytes(&PolyhedronAccess::vertex_approx(q_, mesh_.to(h)), sizeof(ApproxVec3));
       HalfedgeId out;
       for (HalfedgeId h = mesh_.next(e); h != e; h = mesh_.next(h)) {
         const int from = side_of(mesh_.from(h));
