@@ -430,16 +430,18 @@ TEST(CoveringRegion, AgreesWithItsDefinition) {
   }
 }
 
-// box_side against its definition by plain Rational arithmetic: every
+// box_strictly_inside and box_strictly_outside against their definitions
+// by plain Rational arithmetic: every
 // point of the box strictly inside iff the greatest dot(normal, x) over the
 // box's eight corners is below the offset, strictly outside iff the least
-// is above it. It may answer nothing when one holds (the filter could not
-// prove it), never a side that fails: planes through the box's farthest
+// is above it. They may answer false when it holds (the filter could not
+// prove it), never true when it fails: planes through the box's farthest
 // and nearest corners exactly (the degenerate cases), a hair beyond them
 // (10^-30), and anywhere; boxes flat in some coordinate; small and long
 // integer normals, some with zero coordinates. Planes well clear of a box
-// of moderate size must be proven, and a box that is not finite never is.
-TEST(CoveringRegion, BoxSideOnlyWhenEveryPointIsOnIt) {
+// of moderate size must be proven; a box infinite in one direction only on
+// the planes that it lies inside.
+TEST(CoveringRegion, BoxSidesOnlyWhenEveryPointIsThere) {
   for (const std::uint64_t seed : {31U, 32U, 33U}) {
     cvms::test::Rng rng(seed);
     std::deque<TestPlane> store;
@@ -473,21 +475,22 @@ TEST(CoveringRegion, BoxSideOnlyWhenEveryPointIsOnIt) {
                                              lowest - spread,
                                              Rational(cvms::test::random_uniform(rng, -30, 30)) * spread};
       for (const Rational& offset : offsets) {
-        const std::optional<cvms::Sign> got = cvms::detail::box_side(box, clip_plane(store, normal, offset));
-        if (got == cvms::Sign::negative) {
+        const cvms::detail::ClipPlane plane = clip_plane(store, normal, offset);
+        const bool inside = cvms::detail::box_strictly_inside(box, plane);
+        const bool outside = cvms::detail::box_strictly_outside(box, plane);
+        if (inside) {
           ASSERT_LT(highest, offset) << "seed " << seed << ", case " << i;
-        } else if (got == cvms::Sign::positive) {
+        }
+        if (outside) {
           ASSERT_GT(lowest, offset) << "seed " << seed << ", case " << i;
-        } else {
-          ASSERT_FALSE(got.has_value()) << "seed " << seed << ", case " << i;
         }
         if (offset == highest + spread) {
-          ASSERT_EQ(got, cvms::Sign::negative) << "seed " << seed << ", case " << i;
+          ASSERT_TRUE(inside) << "seed " << seed << ", case " << i;
         }
         if (offset == lowest - spread) {
-          ASSERT_EQ(got, cvms::Sign::positive) << "seed " << seed << ", case " << i;
+          ASSERT_TRUE(outside) << "seed " << seed << ", case " << i;
         }
-        proven += got ? 1 : 0;
+        proven += (inside ? 1 : 0) + (outside ? 1 : 0);
       }
     }
     EXPECT_GT(proven, 800) << "seed " << seed;
@@ -496,8 +499,10 @@ TEST(CoveringRegion, BoxSideOnlyWhenEveryPointIsOnIt) {
   unbounded.lo = {-std::numeric_limits<double>::infinity(), 0, 0};
   unbounded.hi = {0, 1, 1};
   std::deque<TestPlane> store;
-  EXPECT_FALSE(cvms::detail::box_side(unbounded, clip_plane(store, {-1, 0, 0}, 1)));
-  EXPECT_FALSE(cvms::detail::box_side(unbounded, clip_plane(store, {0, 1, 0}, 5)));
+  // x reaches -infinity: x <= 1 holds everywhere, -x <= 1 and x >= -1 do not.
+  EXPECT_TRUE(cvms::detail::box_strictly_inside(unbounded, clip_plane(store, {1, 0, 0}, 1)));
+  EXPECT_FALSE(cvms::detail::box_strictly_inside(unbounded, clip_plane(store, {-1, 0, 0}, 1)));
+  EXPECT_FALSE(cvms::detail::box_strictly_outside(unbounded, clip_plane(store, {1, 0, 0}, -1)));
 }
 
 TEST(BoundaryFragments, CubeAlone) {

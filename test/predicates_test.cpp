@@ -344,6 +344,37 @@ TEST(Predicates, CompareDotIfCertainIsTheOracleOrNothing) {
   }
 }
 
+// side_of_plane_if_certain answers only when the filter proves the sign, and
+// then the oracle's sign: points of every kind anywhere, exactly on the
+// plane (never answered) and a hair (10^-30 along the normal) off it, with
+// the cached and the loose cached approximations.
+TEST(Predicates, SideOfPlaneIfCertainIsTheOracleOrNothing) {
+  for (Kind kind : all_kinds) {
+    const unsigned seed = 970 + static_cast<unsigned>(kind);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    int answered = 0;
+    for (int i = 0; i < 400; ++i) {
+      const Vec3 p = point3(rng, kind), q = point3(rng, kind);
+      const Vec3 n{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
+                   Rational(test::random_integer(rng, 1u + static_cast<unsigned>(rng() % 60)))};
+      const Rational on = dot(n, q);  // the plane through q
+      const Vec3 tests[] = {p, q, q + power_of_ten(-30) * n, q - power_of_ten(-30) * n};
+      for (const Vec3& x : tests) {
+        const Sign expected = oracle_side(x, n, on);
+        for (const auto& s : {side_of_plane_if_certain(ApproxVec3::of(x), ApproxVec3::of(n), Approx::of(on)),
+                              side_of_plane_if_certain(loose3(x), loose3(n), loosen(Approx::of(on)))}) {
+          if (!s) continue;
+          ++answered;
+          ASSERT_EQ(*s, expected) << "case " << i;
+        }
+      }
+      ASSERT_FALSE(side_of_plane_if_certain(ApproxVec3::of(q), ApproxVec3::of(n), Approx::of(on))) << "case " << i;
+    }
+    EXPECT_GT(answered, 400);
+  }
+}
+
 // The exact paths with an integer normal scale a point to the lcm of its
 // denominators, skipping the quotient for a denominator equal to it and the
 // gcd for one that divides or is divided by the others: points over one

@@ -3,6 +3,7 @@
 #include "covering_region.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 
@@ -84,7 +85,7 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region) {
   region.clear();
   // Q strictly on one side, proven on its box: no vertex of Q is read.
-  if (box_side(q_geometry.box, plane)) return false;
+  if (box_strictly_inside(q_geometry.box, plane) || box_strictly_outside(q_geometry.box, plane)) return false;
   if (const std::optional<bool> cuts = walk_section(q_geometry, q_index, plane, section)) {
     if (!*cuts) return false;
     for (const std::uint32_t g : section.facets) region.push_back(q_geometry.planes[g]);
@@ -132,35 +133,45 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
   return true;
 }
 
-std::optional<Sign> box_side(const unions::OutwardBox& box, const ClipPlane& plane) {
-  // Corner `toward` takes hi[k] where the normal's k-th coordinate is
-  // positive when toward is true, where it is negative when toward is false.
-  const auto corner = [&](bool toward) {
-    ApproxVec3 c;
-    Approx* coordinates[3] = {&c.x, &c.y, &c.z};
-    for (int k = 0; k < 3; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      *coordinates[i] = Approx{(sgn((*plane.normal)[k]) > 0) == toward ? box.hi[i] : box.lo[i], 0.0};
-    }
-    return c;
-  };
-  if (side_of_plane_if_certain(corner(true), *plane.normal_approx, plane.offset_approx) == Sign::negative)
-    return Sign::negative;
-  if (side_of_plane_if_certain(corner(false), *plane.normal_approx, plane.offset_approx) == Sign::positive)
-    return Sign::positive;
-  return std::nullopt;
+namespace {
+
+// The box's corner with the greatest dot(normal, x) of its points when
+// `sense` is Sign::positive, with the least when it is Sign::negative: per
+// coordinate, hi or lo as the normal's coordinate has the sense's sign or
+// the other. The signs are read off the normal's approximation, never its
+// exact coordinates (one more cache line per plane): a coordinate whose
+// approximation does not prove its sign gives nothing, unless it is exactly
+// zero (value and error 0), when either end will do.
+std::optional<ApproxVec3> extreme_corner(const unions::OutwardBox& box, const ApproxVec3& normal, Sign sense) {
+  const Approx* n[3] = {&normal.x, &normal.y, &normal.z};
+  ApproxVec3 corner;
+  Approx* c[3] = {&corner.x, &corner.y, &corner.z};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Approx& nk = *n[k];
+    if (!(std::fabs(nk.value) > nk.error) && !(nk.value == 0 && nk.error == 0)) return std::nullopt;
+    const bool high = sense == Sign::positive ? nk.value > 0 : nk.value < 0;
+    *c[k] = Approx{high ? box.hi[k] : box.lo[k], 0.0};
+  }
+  return corner;
+}
+
+}  // namespace
+
+bool box_strictly_inside(const unions::OutwardBox& box, const ClipPlane& plane) {
+  const std::optional<ApproxVec3> corner = extreme_corner(box, *plane.normal_approx, Sign::positive);
+  return corner && side_of_plane_if_certain(*corner, *plane.normal_approx, plane.offset_approx) == Sign::negative;
+}
+
+bool box_strictly_outside(const unions::OutwardBox& box, const ClipPlane& plane) {
+  const std::optional<ApproxVec3> corner = extreme_corner(box, *plane.normal_approx, Sign::negative);
+  return corner && side_of_plane_if_certain(*corner, *plane.normal_approx, plane.offset_approx) == Sign::positive;
 }
 
 FacetOverlap facet_overlap(const std::vector<ClipPlane>& region, const PieceGeometry& p_geometry,
                            std::uint32_t facet) {
   const ConvexPolyhedron& piece = *p_geometry.piece;
-  const unions::OutwardBox& box = p_geometry.facet_boxes[facet];
   bool all = true;
   for (const ClipPlane& plane : region) {
-    // Most planes of a region pass well clear of the facet, every corner
-    // strictly inside: then so is the facet box's corner farthest along
-    // the plane's normal, one filtered test instead of one per corner.
-    if (box_side(box, plane) == Sign::negative) continue;
     bool outside = false;
     bool inside = false;
     for (std::uint32_t k = p_geometry.corner_start[facet]; k < p_geometry.corner_start[facet + 1]; ++k) {

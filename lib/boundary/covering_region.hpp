@@ -23,7 +23,6 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "cvms/sign.hpp"
@@ -47,15 +46,17 @@ namespace cvms::detail {
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);
 
-/// Which side of the plane every point of the box lies strictly on, decided
-/// by the filter alone (nothing when it cannot prove one): inside
-/// (negative) iff the box's corner farthest along the normal is, outside
-/// (positive) iff the nearest one is; those corners have the greatest and
-/// the least dot(normal, x) of the box's points, and their coordinates are
-/// doubles, so their approximation is exact. A box that is not finite is
-/// never proven on a side. One filtered test where the box holds a piece's
-/// vertices or a facet's corners stands for one test per vertex or corner.
-std::optional<Sign> box_side(const unions::OutwardBox& box, const ClipPlane& plane);
+/// True only if every point of the box lies strictly inside the plane's
+/// half-space (dot(normal, x) < offset), decided by the filter alone (false
+/// when it cannot prove it): the box's corner farthest along the normal has
+/// the greatest dot(normal, x) of the box's points, and its coordinates are
+/// doubles, so their approximation is exact. A corner with an infinite
+/// coordinate is never proven inside. On a piece's box, one filtered test
+/// stands for one test per vertex of the piece, with no exact value made.
+bool box_strictly_inside(const unions::OutwardBox& box, const ClipPlane& plane);
+/// The same for strictly outside (dot(normal, x) > offset), with the
+/// corner nearest along the normal.
+bool box_strictly_outside(const unions::OutwardBox& box, const ClipPlane& plane);
 
 /// How a convex region of a facet's plane (given by half-spaces) meets the
 /// facet: in zero area (some half-space has every corner on or outside its

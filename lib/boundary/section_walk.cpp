@@ -5,8 +5,6 @@
 #include <algorithm>
 
 #include "filtered_predicates.hpp"
-#include "polyhedron_access.hpp"
-#include "prefetch_exact.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -37,11 +35,6 @@ class SectionWalk {
     const int sv = side_of(v);
     if (sv == 0) return met(v);
     for (std::uint32_t steps = 0; steps <= q_.num_vertices(); ++steps) {
-      // The neighbours' approximations are scattered through the piece's
-      // vertices: asking for all of them before the first is read lets
-      // their cache misses overlap.
-      for (HalfedgeId h : mesh_.outgoing_halfedges(v))
-        prefetch_bytes(&PolyhedronAccess::vertex_approx(q_, mesh_.to(h)), sizeof(ApproxVec3));
       for (HalfedgeId h : mesh_.outgoing_halfedges(v)) {
         const VertexId u = mesh_.to(h);
         const int su = side_of(u);
@@ -86,8 +79,6 @@ class SectionWalk {
     HalfedgeId e = first;
     for (std::uint32_t faces = 0; faces <= q_.num_facets(); ++faces) {
       scratch_.facets.push_back(mesh_.face(e).index());
-      for (HalfedgeId h = mesh_.next(e); h != e; h = mesh_.next(h))
-        prefetch_bytes(&PolyhedronAccess::vertex_approx(q_, mesh_.to(h)), sizeof(ApproxVec3));
       HalfedgeId out;
       for (HalfedgeId h = mesh_.next(e); h != e; h = mesh_.next(h)) {
         const int from = side_of(mesh_.from(h));
