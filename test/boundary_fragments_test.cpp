@@ -430,6 +430,53 @@ TEST(CoveringRegion, AgreesWithItsDefinition) {
   }
 }
 
+// section_through_vertex against the definition (region_by_definition) on
+// planes through each vertex of Q that cut through Q: random small integer
+// normals, which often run along Q's edges or hold other vertices (a grid
+// polytope and a prism have many on one plane), and the directions of Q's
+// own facets, edges and vertices.
+TEST(CoveringRegion, SectionThroughAVertexFindsEveryFacetItMeets) {
+  const std::uint64_t seed = 41;
+  cvms::test::Rng rng(seed);
+  for (const ConvexPolyhedron& q : {cvms::shapes::geodesic_sphere(1), cvms::shapes::truncated_cube(),
+                                    cvms::shapes::random_hull(7, 30), cvms::shapes::prism(7, 2),
+                                    box(0, 0, 0, 2, 3, 5)}) {
+    const cvms::detail::PieceGeometry geometry = cvms::detail::piece_geometry(q);
+    std::vector<Vec3> directions = face_directions(geometry);
+    for (int i = 0; i < 60; ++i) {
+      directions.push_back({static_cast<long>(rng() % 5) - 2, static_cast<long>(rng() % 5) - 2,
+                            static_cast<long>(rng() % 5) - 2});
+    }
+    cvms::detail::SectionScratch section;
+    section.start.assign(1, 0);
+    std::deque<TestPlane> store;
+    int crossings = 0;
+    for (std::size_t d = 0; d < directions.size(); ++d) {
+      if (directions[d] == Vec3{0, 0, 0}) continue;
+      for (cvms::VertexId v : q.mesh().vertices()) {
+        const Rational offset = dot(directions[d], q.vertex(v));
+        const auto expected = region_by_definition(q, directions[d], offset, false);
+        const cvms::detail::ClipPlane plane = clip_plane(store, directions[d], offset);
+        (void)cvms::detail::walk_section(geometry, 0, plane, section);  // the walk the function follows
+        bool outer = false;
+        bool inner = false;
+        for (cvms::VertexId u : q.mesh().vertices()) {
+          const int c = cmp(dot(directions[d], q.vertex(u)), offset);
+          outer = outer || c > 0;
+          inner = inner || c < 0;
+        }
+        if (!(outer && inner)) continue;
+        ++crossings;
+        cvms::detail::section_through_vertex(geometry, v, plane, section);
+        ASSERT_TRUE(expected.has_value());
+        ASSERT_EQ(section.facets, *expected)
+            << "seed " << seed << ", direction " << d << ", vertex " << v.index();
+      }
+    }
+    EXPECT_GT(crossings, 50);
+  }
+}
+
 // box_strictly_inside and box_strictly_outside against their definitions
 // by plain Rational arithmetic: every
 // point of the box strictly inside iff the greatest dot(normal, x) over the

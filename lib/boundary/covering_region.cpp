@@ -98,6 +98,9 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
     // Q on one side, touching the plane in no facet: in an edge or a
     // vertex, which covers nothing.
     if (!crosses_at(section, q, section.met, plane)) return false;
+    section_through_vertex(q_geometry, section.met, plane, section);
+    for (const std::uint32_t g : section.facets) region.push_back(q_geometry.planes[g]);
+    return true;
   }
   sides.resize(q.num_vertices());
   bool any_outer = false;

@@ -40,8 +40,10 @@ namespace cvms::detail {
 /// is a corner of a facet of Q lying in the plane (neighbouring pieces often
 /// share planes), C_Q is read off that facet: the facets across its edges;
 /// when no neighbour of that vertex is strictly on each side, Q does not
-/// cross the plane and touches it in no facet, so C_Q is empty. Otherwise
-/// every vertex of Q is tested.
+/// cross the plane and touches it in no facet, so C_Q is empty; otherwise
+/// Q crosses the plane through that vertex and the facets are found from it
+/// outwards (section_through_vertex). Only a walk that gave up for another
+/// reason leaves every vertex of Q to be tested.
 /// `sides` and `section` are scratch space.
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);

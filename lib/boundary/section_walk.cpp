@@ -123,6 +123,63 @@ Sign walked_side(SectionScratch& scratch, const ConvexPolyhedron& q, VertexId v,
   return static_cast<Sign>(scratch.sides[i]);
 }
 
+namespace {
+
+// Queues the face of h unless it was queued since the last stamp.
+void queue_face(SectionScratch& scratch, const Mesh& mesh, HalfedgeId h) {
+  std::uint32_t& stamp = scratch.face_stamps[mesh.face(h).index()];
+  if (stamp == scratch.face_stamp) return;
+  stamp = scratch.face_stamp;
+  scratch.queue.push_back(h);
+}
+
+// Whether face g meets the plane in a segment of positive length.
+bool holds_segment(SectionScratch& scratch, const ConvexPolyhedron& q, FaceId g, const ClipPlane& plane) {
+  bool outer = false;
+  bool inner = false;
+  std::uint32_t zeros = 0;
+  std::uint32_t corners = 0;
+  for (HalfedgeId h : q.mesh().face_halfedges(g)) {
+    const Sign s = walked_side(scratch, q, q.mesh().to(h), plane);
+    outer = outer || s == Sign::positive;
+    inner = inner || s == Sign::negative;
+    zeros += s == Sign::zero ? 1 : 0;
+    ++corners;
+  }
+  return (outer && inner) || (zeros >= 2 && zeros < corners);
+}
+
+}  // namespace
+
+void section_through_vertex(const PieceGeometry& q_geometry, VertexId v, const ClipPlane& plane,
+                            SectionScratch& scratch) {
+  const ConvexPolyhedron& q = *q_geometry.piece;
+  const Mesh& mesh = q.mesh();
+  if (scratch.face_stamps.size() < q.num_facets()) scratch.face_stamps.resize(q.num_facets(), 0);
+  if (++scratch.face_stamp == 0) {
+    std::fill(scratch.face_stamps.begin(), scratch.face_stamps.end(), 0);
+    scratch.face_stamp = 1;
+  }
+  scratch.facets.clear();
+  scratch.queue.clear();
+  for (HalfedgeId out : mesh.outgoing_halfedges(v)) queue_face(scratch, mesh, out);
+  for (std::size_t i = 0; i < scratch.queue.size(); ++i) {
+    const FaceId g = mesh.face(scratch.queue[i]);
+    if (!holds_segment(scratch, q, g, plane)) continue;
+    scratch.facets.push_back(g.index());
+    for (HalfedgeId h : mesh.face_halfedges(g)) {
+      const Sign from = walked_side(scratch, q, mesh.from(h), plane);
+      const Sign to = walked_side(scratch, q, mesh.to(h), plane);
+      if ((from == Sign::positive && to == Sign::negative) || (from == Sign::negative && to == Sign::positive))
+        queue_face(scratch, mesh, Mesh::twin(h));
+      if (to == Sign::zero) {
+        for (HalfedgeId out : mesh.outgoing_halfedges(mesh.to(h))) queue_face(scratch, mesh, out);
+      }
+    }
+  }
+  std::sort(scratch.facets.begin(), scratch.facets.end());
+}
+
 std::optional<bool> walk_section(const PieceGeometry& q_geometry, std::uint32_t piece_index, const ClipPlane& plane,
                                  SectionScratch& scratch) {
   SectionWalk walk(q_geometry, plane, scratch);
