@@ -5,7 +5,7 @@
 // corner cycles, and outward-rounded boxes of the piece and of each facet,
 // read off the vertices' cached approximations,
 // for the box hierarchy and for sides of planes proven on a whole box
-// (covering_region.hpp, box_side).
+// (covering_region.hpp: box_strictly_inside, box_strictly_outside).
 #pragma once
 
 #include <cstdint>
