@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <utility>
 #include <map>
 #include <optional>
@@ -37,6 +38,7 @@
 #include "cvms/convex_union.hpp"
 #include "cvms/error.hpp"
 #include "cvms/shapes.hpp"
+#include "support/random_numbers.hpp"
 #include "support/union_oracle.hpp"
 
 namespace {
@@ -426,6 +428,128 @@ TEST(CoveringRegion, AgreesWithItsDefinition) {
       }
     }
   }
+}
+
+// section_through_vertex against the definition (region_by_definition) on
+// planes through each vertex of Q that cut through Q: random small integer
+// normals, which often run along Q's edges or hold other vertices (a grid
+// polytope and a prism have many on one plane), and the directions of Q's
+// own facets, edges and vertices.
+TEST(CoveringRegion, SectionThroughAVertexFindsEveryFacetItMeets) {
+  const std::uint64_t seed = 41;
+  cvms::test::Rng rng(seed);
+  for (const ConvexPolyhedron& q : {cvms::shapes::geodesic_sphere(1), cvms::shapes::truncated_cube(),
+                                    cvms::shapes::random_hull(7, 30), cvms::shapes::prism(7, 2),
+                                    box(0, 0, 0, 2, 3, 5)}) {
+    const cvms::detail::PieceGeometry geometry = cvms::detail::piece_geometry(q);
+    std::vector<Vec3> directions = face_directions(geometry);
+    for (int i = 0; i < 60; ++i) {
+      directions.push_back({static_cast<long>(rng() % 5) - 2, static_cast<long>(rng() % 5) - 2,
+                            static_cast<long>(rng() % 5) - 2});
+    }
+    cvms::detail::SectionScratch section;
+    section.start.assign(1, 0);
+    std::deque<TestPlane> store;
+    int crossings = 0;
+    for (std::size_t d = 0; d < directions.size(); ++d) {
+      if (directions[d] == Vec3{0, 0, 0}) continue;
+      for (cvms::VertexId v : q.mesh().vertices()) {
+        const Rational offset = dot(directions[d], q.vertex(v));
+        const auto expected = region_by_definition(q, directions[d], offset, false);
+        const cvms::detail::ClipPlane plane = clip_plane(store, directions[d], offset);
+        (void)cvms::detail::walk_section(geometry, 0, plane, section);  // the walk the function follows
+        bool outer = false;
+        bool inner = false;
+        for (cvms::VertexId u : q.mesh().vertices()) {
+          const int c = cmp(dot(directions[d], q.vertex(u)), offset);
+          outer = outer || c > 0;
+          inner = inner || c < 0;
+        }
+        if (!(outer && inner)) continue;
+        ++crossings;
+        cvms::detail::section_through_vertex(geometry, v, plane, section);
+        ASSERT_TRUE(expected.has_value());
+        ASSERT_EQ(section.facets, *expected)
+            << "seed " << seed << ", direction " << d << ", vertex " << v.index();
+      }
+    }
+    EXPECT_GT(crossings, 50);
+  }
+}
+
+// box_strictly_inside and box_strictly_outside against their definitions
+// by plain Rational arithmetic: every
+// point of the box strictly inside iff the greatest dot(normal, x) over the
+// box's eight corners is below the offset, strictly outside iff the least
+// is above it. They may answer false when it holds (the filter could not
+// prove it), never true when it fails: planes through the box's farthest
+// and nearest corners exactly (the degenerate cases), a hair beyond them
+// (10^-30), and anywhere; boxes flat in some coordinate; small and long
+// integer normals, some with zero coordinates. Planes well clear of a box
+// of moderate size must be proven; a box infinite in one direction only on
+// the planes that it lies inside.
+TEST(CoveringRegion, BoxSidesOnlyWhenEveryPointIsThere) {
+  for (const std::uint64_t seed : {31U, 32U, 33U}) {
+    cvms::test::Rng rng(seed);
+    std::deque<TestPlane> store;
+    int proven = 0;
+    for (int i = 0; i < 400; ++i) {
+      cvms::unions::OutwardBox box;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double a = cvms::test::random_uniform(rng, -10, 10);
+        const double b = rng() % 5 == 0 ? a : cvms::test::random_uniform(rng, -10, 10);
+        box.lo[k] = std::min(a, b);
+        box.hi[k] = std::max(a, b);
+      }
+      const unsigned bits = rng() % 2 == 0 ? 4 : 70;
+      Vec3 normal;
+      for (int k = 0; k < 3; ++k)
+        normal[k] = rng() % 6 == 0 ? Rational(0) : Rational(cvms::test::random_integer(rng, bits));
+      if (normal == Vec3{0, 0, 0}) continue;
+      Rational highest;
+      Rational lowest;
+      for (unsigned c = 0; c < 8; ++c) {
+        Vec3 corner;
+        for (unsigned k = 0; k < 3; ++k)
+          corner[static_cast<int>(k)] = Rational(((c >> k) & 1U) != 0 ? box.hi[k] : box.lo[k]);
+        const Rational value = dot(normal, corner);
+        if (c == 0 || value > highest) highest = value;
+        if (c == 0 || value < lowest) lowest = value;
+      }
+      const Rational spread = abs(normal.x) + abs(normal.y) + abs(normal.z);
+      const Rational hair = cvms::test::power_of_ten(-30);
+      const std::vector<Rational> offsets = {highest, highest + hair, lowest, lowest - hair, highest + spread,
+                                             lowest - spread,
+                                             Rational(cvms::test::random_uniform(rng, -30, 30)) * spread};
+      for (const Rational& offset : offsets) {
+        const cvms::detail::ClipPlane plane = clip_plane(store, normal, offset);
+        const bool inside = cvms::detail::box_strictly_inside(box, plane);
+        const bool outside = cvms::detail::box_strictly_outside(box, plane);
+        if (inside) {
+          ASSERT_LT(highest, offset) << "seed " << seed << ", case " << i;
+        }
+        if (outside) {
+          ASSERT_GT(lowest, offset) << "seed " << seed << ", case " << i;
+        }
+        if (offset == highest + spread) {
+          ASSERT_TRUE(inside) << "seed " << seed << ", case " << i;
+        }
+        if (offset == lowest - spread) {
+          ASSERT_TRUE(outside) << "seed " << seed << ", case " << i;
+        }
+        proven += (inside ? 1 : 0) + (outside ? 1 : 0);
+      }
+    }
+    EXPECT_GT(proven, 800) << "seed " << seed;
+  }
+  cvms::unions::OutwardBox unbounded;
+  unbounded.lo = {-std::numeric_limits<double>::infinity(), 0, 0};
+  unbounded.hi = {0, 1, 1};
+  std::deque<TestPlane> store;
+  // x reaches -infinity: x <= 1 holds everywhere, -x <= 1 and x >= -1 do not.
+  EXPECT_TRUE(cvms::detail::box_strictly_inside(unbounded, clip_plane(store, {1, 0, 0}, 1)));
+  EXPECT_FALSE(cvms::detail::box_strictly_inside(unbounded, clip_plane(store, {-1, 0, 0}, 1)));
+  EXPECT_FALSE(cvms::detail::box_strictly_outside(unbounded, clip_plane(store, {1, 0, 0}, -1)));
 }
 
 TEST(BoundaryFragments, CubeAlone) {

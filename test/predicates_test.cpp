@@ -12,6 +12,7 @@
 #include <cfloat>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -284,6 +285,15 @@ TEST(Predicates, ExactlyDegenerateNonDoubleInputsFallBack) {
   EXPECT_GT(perturbed_exact, 1000u);
 }
 
+// An integer vector, maybe zero: two coordinates in [-1000, 1000], the third
+// of up to `bits` bits (a facet's primitive normal may be long).
+Vec3 integer_normal(Rng& rng, unsigned bits) {
+  const long x = static_cast<long>(rng() % 2001) - 1000;
+  const long y = static_cast<long>(rng() % 2001) - 1000;
+  const unsigned z_bits = 1u + static_cast<unsigned>(rng() % bits);
+  return {x, y, Rational(test::random_integer(rng, z_bits))};
+}
+
 // compare_dot with an integer normal (every facet normal is one) takes its
 // own exact path: L (v - w) over the lcm L of the denominators, no rational
 // canonicalised. Against the written-out oracle on every kind of coordinate,
@@ -296,8 +306,7 @@ TEST(Predicates, CompareDotWithIntegerNormalsMatchesTheOracle) {
     Rng rng(seed);
     for (int i = 0; i < 400; ++i) {
       const Vec3 v = point3(rng, kind), w = point3(rng, kind), u = point3(rng, kind);
-      const Vec3 n{static_cast<long>(rng() % 2001) - 1000, static_cast<long>(rng() % 2001) - 1000,
-                   Rational(test::random_integer(rng, 1u + static_cast<unsigned>(rng() % 120)))};
+      const Vec3 n = integer_normal(rng, 120u);
       ASSERT_EQ(compare_dot(v, w, n), oracle_compare_dot(v, w, n)) << "case " << i;
       if (is_zero(n)) continue;
       const Vec3 tie = v + cross(n, u);  // dot(v - tie, n) = 0 exactly
@@ -306,6 +315,49 @@ TEST(Predicates, CompareDotWithIntegerNormalsMatchesTheOracle) {
       ASSERT_EQ(compare_dot(v, tie - e * n, n), Sign::positive) << "case " << i;
       ASSERT_EQ(compare_dot(v, tie + e * n, n), Sign::negative) << "case " << i;
     }
+  }
+}
+
+// The filter-only predicates answer only when the filter proves the sign,
+// and then the oracle's sign, with the cached and the loose cached
+// approximations alike. compare_dot_if_certain: an exact tie (w = v + a
+// vector orthogonal to n) is never answered, one nudged by 10^-30 n may or
+// may not be. side_of_plane_if_certain: a point exactly on the plane is
+// never answered, points a hair (10^-30 n) off it may or may not be.
+TEST(Predicates, IfCertainIsTheOracleOrNothing) {
+  for (Kind kind : all_kinds) {
+    const unsigned seed = 950 + static_cast<unsigned>(kind);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    Rng rng(seed);
+    int answered = 0;
+    const auto check = [&](std::optional<Sign> s, Sign expected, int i) {
+      if (!s) return;
+      ++answered;
+      ASSERT_EQ(*s, expected) << "case " << i;
+    };
+    for (int i = 0; i < 400; ++i) {
+      const Vec3 v = point3(rng, kind), w = point3(rng, kind), u = point3(rng, kind);
+      const Vec3 n = integer_normal(rng, 60u);
+      const Vec3 hair = power_of_ten(-30) * n;
+      const Vec3 tie = v + cross(n, u);
+      const ApproxVec3 pn = ApproxVec3::of(n), ln = loose3(n);
+      const ApproxVec3 pv = ApproxVec3::of(v), lv = loose3(v);
+      for (const Vec3& other : {w, tie, Vec3(tie - hair)}) {
+        const ApproxVec3 po = ApproxVec3::of(other), lo = loose3(other);
+        const Sign expected = oracle_compare_dot(v, other, n);
+        check(compare_dot_if_certain({v, pv}, {other, po}, {n, pn}), expected, i);
+        check(compare_dot_if_certain({v, lv}, {other, lo}, {n, ln}), expected, i);
+      }
+      ASSERT_FALSE(compare_dot_if_certain({v, pv}, {tie, ApproxVec3::of(tie)}, {n, pn})) << "case " << i;
+      const Rational on = dot(n, v);  // the plane through v
+      for (const Vec3& x : {w, v, Vec3(v + hair), Vec3(v - hair)}) {
+        const Sign expected = oracle_side(x, n, on);
+        check(side_of_plane_if_certain(ApproxVec3::of(x), pn, Approx::of(on)), expected, i);
+        check(side_of_plane_if_certain(loose3(x), ln, loosen(Approx::of(on))), expected, i);
+      }
+      ASSERT_FALSE(side_of_plane_if_certain(pv, pn, Approx::of(on))) << "case " << i;
+    }
+    EXPECT_GT(answered, 800);  // random points are mostly far from a tie or the plane
   }
 }
 

@@ -3,10 +3,12 @@
 #include "covering_region.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 
 #include "cvms/rational.hpp"
+#include "filtered_predicates.hpp"
 
 namespace cvms::detail {
 namespace {
@@ -82,15 +84,8 @@ bool crosses_at(SectionScratch& section, const ConvexPolyhedron& q, VertexId v, 
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region) {
   region.clear();
-  if (!q_geometry.box_corners.empty()) {
-    // The corners nearest and farthest in the normal's direction.
-    unsigned nearest = 0;
-    for (int k = 0; k < 3; ++k) {
-      if (sgn((*plane.normal)[k]) < 0) nearest |= 1U << k;
-    }
-    if (side(q_geometry.box_corners[nearest], plane) == Sign::positive) return false;
-    if (side(q_geometry.box_corners[nearest ^ 7U], plane) == Sign::negative) return false;
-  }
+  // Q strictly on one side, proven on its box: no vertex of Q is read.
+  if (box_strictly_inside(q_geometry.box, plane) || box_strictly_outside(q_geometry.box, plane)) return false;
   if (const std::optional<bool> cuts = walk_section(q_geometry, q_index, plane, section)) {
     if (!*cuts) return false;
     for (const std::uint32_t g : section.facets) region.push_back(q_geometry.planes[g]);
@@ -103,6 +98,9 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
     // Q on one side, touching the plane in no facet: in an edge or a
     // vertex, which covers nothing.
     if (!crosses_at(section, q, section.met, plane)) return false;
+    section_through_vertex(q_geometry, section.met, plane, section);
+    for (const std::uint32_t g : section.facets) region.push_back(q_geometry.planes[g]);
+    return true;
   }
   sides.resize(q.num_vertices());
   bool any_outer = false;
@@ -136,6 +134,40 @@ bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q_index, boo
     if ((outer && inner) || (zeros >= 2 && zeros < end - begin)) region.push_back(q_geometry.planes[g]);
   }
   return true;
+}
+
+namespace {
+
+// The box's corner with the greatest dot(normal, x) of its points when
+// `sense` is Sign::positive, with the least when it is Sign::negative: per
+// coordinate, hi or lo as the normal's coordinate has the sense's sign or
+// the other. The signs are read off the normal's approximation, never its
+// exact coordinates (one more cache line per plane): a coordinate whose
+// approximation does not prove its sign gives nothing, unless it is exactly
+// zero (value and error 0), when either end will do.
+std::optional<ApproxVec3> extreme_corner(const unions::OutwardBox& box, const ApproxVec3& normal, Sign sense) {
+  const Approx* n[3] = {&normal.x, &normal.y, &normal.z};
+  ApproxVec3 corner;
+  Approx* c[3] = {&corner.x, &corner.y, &corner.z};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Approx& nk = *n[k];
+    if (!(std::fabs(nk.value) > nk.error) && !(nk.value == 0 && nk.error == 0)) return std::nullopt;
+    const bool high = sense == Sign::positive ? nk.value > 0 : nk.value < 0;
+    *c[k] = Approx{high ? box.hi[k] : box.lo[k], 0.0};
+  }
+  return corner;
+}
+
+}  // namespace
+
+bool box_strictly_inside(const unions::OutwardBox& box, const ClipPlane& plane) {
+  const std::optional<ApproxVec3> corner = extreme_corner(box, *plane.normal_approx, Sign::positive);
+  return corner && side_of_plane_if_certain(*corner, *plane.normal_approx, plane.offset_approx) == Sign::negative;
+}
+
+bool box_strictly_outside(const unions::OutwardBox& box, const ClipPlane& plane) {
+  const std::optional<ApproxVec3> corner = extreme_corner(box, *plane.normal_approx, Sign::negative);
+  return corner && side_of_plane_if_certain(*corner, *plane.normal_approx, plane.offset_approx) == Sign::positive;
 }
 
 FacetOverlap facet_overlap(const std::vector<ClipPlane>& region, const PieceGeometry& p_geometry,

@@ -40,11 +40,25 @@ namespace cvms::detail {
 /// is a corner of a facet of Q lying in the plane (neighbouring pieces often
 /// share planes), C_Q is read off that facet: the facets across its edges;
 /// when no neighbour of that vertex is strictly on each side, Q does not
-/// cross the plane and touches it in no facet, so C_Q is empty. Otherwise
-/// every vertex of Q is tested.
+/// cross the plane and touches it in no facet, so C_Q is empty; otherwise
+/// Q crosses the plane through that vertex and the facets are found from it
+/// outwards (section_through_vertex). Only a walk that gave up for another
+/// reason leaves every vertex of Q to be tested.
 /// `sides` and `section` are scratch space.
 bool covering_region(const PieceGeometry& q_geometry, std::uint32_t q, bool q_before_p, const ClipPlane& plane,
                      std::vector<Sign>& sides, SectionScratch& section, std::vector<ClipPlane>& region);
+
+/// True only if every point of the box lies strictly inside the plane's
+/// half-space (dot(normal, x) < offset), decided by the filter alone (false
+/// when it cannot prove it): the box's corner farthest along the normal has
+/// the greatest dot(normal, x) of the box's points, and its coordinates are
+/// doubles, so their approximation is exact. A corner with an infinite
+/// coordinate is never proven inside. On a piece's box, one filtered test
+/// stands for one test per vertex of the piece, with no exact value made.
+bool box_strictly_inside(const unions::OutwardBox& box, const ClipPlane& plane);
+/// The same for strictly outside (dot(normal, x) > offset), with the
+/// corner nearest along the normal.
+bool box_strictly_outside(const unions::OutwardBox& box, const ClipPlane& plane);
 
 /// How a convex region of a facet's plane (given by half-spaces) meets the
 /// facet: in zero area (some half-space has every corner on or outside its

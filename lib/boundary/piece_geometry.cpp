@@ -12,21 +12,6 @@
 namespace cvms::detail {
 namespace {
 
-std::vector<ClipPoint> box_corners(const unions::OutwardBox& box) {
-  for (int k = 0; k < 3; ++k) {
-    if (!std::isfinite(box.lo[k]) || !std::isfinite(box.hi[k])) return {};
-  }
-  std::vector<ClipPoint> corners;
-  corners.reserve(8);
-  for (unsigned i = 0; i < 8; ++i) {
-    Vec3 p;
-    for (unsigned k = 0; k < 3; ++k) p[static_cast<int>(k)] = Rational(((i >> k) & 1U) != 0 ? box.hi[k] : box.lo[k]);
-    const ApproxVec3 approx = ApproxVec3::of(p);  // exact: the coordinates are doubles
-    corners.push_back({std::move(p), approx});
-  }
-  return corners;
-}
-
 // The box of vertex v from its cached approximation, with no exact
 // arithmetic: each coordinate lies within `error` of `value`, and value -
 // error and value + error, each rounded to nearest and then stepped one
@@ -61,7 +46,6 @@ PieceGeometry piece_geometry(const ConvexPolyhedron& piece) {
   for (VertexId v : piece.mesh().vertices()) vertex_boxes.push_back(vertex_box(piece, v));
   g.box = vertex_boxes.front();
   for (const unions::OutwardBox& b : vertex_boxes) g.box = unions::merged(g.box, b);
-  g.box_corners = box_corners(g.box);
   const Mesh& mesh = piece.mesh();
   g.planes.reserve(piece.num_facets());
   g.corner_start.reserve(piece.num_facets() + 1);

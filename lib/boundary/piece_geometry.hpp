@@ -4,7 +4,8 @@
 // (exact integer normal and offset, with their approximations), the facets'
 // corner cycles, and outward-rounded boxes of the piece and of each facet,
 // read off the vertices' cached approximations,
-// for the box hierarchy.
+// for the box hierarchy and for sides of planes proven on a whole box
+// (covering_region.hpp: box_strictly_inside, box_strictly_outside).
 #pragma once
 
 #include <cstdint>
@@ -26,12 +27,6 @@ struct PieceGeometry {
   std::vector<VertexId> corners;
   std::vector<unions::OutwardBox> facet_boxes;
   unions::OutwardBox box;
-  /// The box's corners as exact points (corner i takes box.hi[k] where bit
-  /// k of i is set, else box.lo[k]), when the box is finite; else empty.
-  /// A plane has the whole piece strictly on one side if it has the
-  /// box's corner that is nearest in that direction there: two filtered
-  /// predicates on doubles instead of one per vertex.
-  std::vector<ClipPoint> box_corners;
 };
 
 /// The geometry of a non-empty piece, which must outlive it.

@@ -34,6 +34,9 @@ struct SectionScratch {
   std::uint32_t stamp = 0;
   std::vector<std::uint32_t> start;    // per piece: a vertex next to its last section
   std::vector<std::uint32_t> facets;   // the answer
+  std::vector<std::uint32_t> face_stamps;  // per face, for section_through_vertex
+  std::uint32_t face_stamp = 0;
+  std::vector<HalfedgeId> queue;       // faces to classify, by one of their halfedges
   VertexId met;                        // a vertex on the plane that made the walk give up, if one did
 };
 
@@ -44,6 +47,26 @@ struct SectionScratch {
 /// in scratch.met) or gave up otherwise (scratch.met invalid).
 std::optional<bool> walk_section(const PieceGeometry& q_geometry, std::uint32_t piece_index, const ClipPlane& plane,
                                  SectionScratch& scratch);
+
+/// For a plane that cuts through the piece last walked (vertices strictly on
+/// both sides) and passes through its vertex v: the facets that meet the
+/// plane in a segment of positive length (corners strictly on both sides,
+/// or two on the plane without the facet lying in it), in increasing order,
+/// into scratch.facets; the same set as testing every vertex finds, found
+/// from the facets round v outwards.
+///
+/// Why: the section S (piece ∩ plane) is a convex polygon of positive area
+/// whose edges are exactly those segments (an edge of the piece lying in
+/// the plane is the segment of both its facets). v, extreme in the piece,
+/// is a corner of S, so some facet round v holds a segment. Going round S,
+/// consecutive segments meet at a point inside an edge of the piece that
+/// crosses the plane strictly (their facets share it) or at a vertex on the
+/// plane (their facets lie round it). So from each facet found, crossing
+/// the edges whose ends lie strictly on opposite sides and visiting the
+/// facets round each corner on the plane reaches every one of them. The
+/// cost is the facets along S and round its vertices on the plane.
+void section_through_vertex(const PieceGeometry& q_geometry, VertexId v, const ClipPlane& plane,
+                            SectionScratch& scratch);
 
 /// The side of vertex v of the piece last walked, for the plane of that
 /// walk: remembered if the walk evaluated it, else evaluated and

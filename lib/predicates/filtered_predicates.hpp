@@ -41,7 +41,17 @@ Sign orient3d(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d);
 std::optional<Sign> orient3d_if_certain(Vec3Ref a, Vec3Ref b, Vec3Ref c, Vec3Ref d) noexcept;
 Sign sign_dot(Vec3Ref u, Vec3Ref v);
 Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n);
+/// compare_dot when the filter alone proves its sign (never zero), else
+/// nothing: for callers that can try another choice before paying for exact
+/// arithmetic (an exact tie, dot(v - w, n) = 0, is never proven).
+std::optional<Sign> compare_dot_if_certain(Vec3Ref v, Vec3Ref w, Vec3Ref n) noexcept;
 Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_approx);
+/// side_of_plane when the filter alone proves its sign (never zero) from the
+/// approximations of the point, the normal and the offset, else nothing: for
+/// a point known only by approximation, such as the corner of a box that
+/// holds exact points (its doubles exact, error 0), where no exact value
+/// exists to fall back on.
+std::optional<Sign> side_of_plane_if_certain(const ApproxVec3& p, const ApproxVec3& n, Approx offset) noexcept;
 Sign sign_triple(Vec3Ref u, Vec3Ref v, Vec3Ref w);
 bool is_parallel(Vec3Ref u, Vec3Ref v);
 

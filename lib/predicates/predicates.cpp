@@ -137,6 +137,9 @@ Sign compare_dot(Vec3Ref v, Vec3Ref w, Vec3Ref n) {
   return decide(filter(filtered::compare_dot_approx, v, w, n),
                 [&] { return exact::compare_dot(v.exact, w.exact, n.exact); });
 }
+std::optional<Sign> compare_dot_if_certain(Vec3Ref v, Vec3Ref w, Vec3Ref n) noexcept {
+  return sign_if_certain(filter(filtered::compare_dot_approx, v, w, n));
+}
 Sign compare_dot(const Vec3& v, const Vec3& w, const Vec3& n) {
   return on_the_fly([](auto... r) { return compare_dot(r...); }, v, w, n);
 }
@@ -146,6 +149,9 @@ Sign side_of_plane(Vec3Ref p, Vec3Ref n, const Rational& offset, Approx offset_a
     return has_integer_coordinates(n.exact) ? exact::side_of_integer_plane(p.exact, n.exact, offset)
                                             : exact::side_of_plane(p.exact, n.exact, offset);
   });
+}
+std::optional<Sign> side_of_plane_if_certain(const ApproxVec3& p, const ApproxVec3& n, Approx offset) noexcept {
+  return sign_if_certain(filtered::sub(filtered::filtered_value(filtered::dot3_approx, p, n), offset));
 }
 Sign side_of_plane(const Vec3& p, const Vec3& n, const Rational& offset) {
   return on_the_fly([&](Vec3Ref rp, Vec3Ref rn) { return side_of_plane(rp, rn, offset, Approx::of(offset)); },
