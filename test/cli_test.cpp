@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -238,10 +237,14 @@ TEST_F(Cli, SumStatsShowThePlanesInTheReadAndTheSyncInTheWrite) {
   ASSERT_EQ(run("gen rotated-sphere --subdivisions 2 -o b.off").code, 0);
   // The whole and the part of a line "<name> time: W ms (of it, <part> time: P ms)".
   const auto times = [](const std::string& report, const std::string& name, const std::string& part) {
-    const std::regex line("\n" + name + " time: ([0-9.]+) ms \\(of it, " + part + " time: ([0-9.]+) ms\\)\n");
-    std::smatch m;
-    EXPECT_TRUE(std::regex_search(report, m, line)) << report;
-    return m.empty() ? std::pair<double, double>{-1, -1} : std::pair{std::stod(m[1]), std::stod(m[2])};
+    const std::string head = "\n" + name + " time: ", middle = " ms (of it, " + part + " time: ";
+    const std::size_t at = report.find(head);
+    const std::size_t mid = at == std::string::npos ? at : report.find(middle, at);
+    const std::size_t end = mid == std::string::npos ? mid : report.find(" ms)\n", mid);
+    EXPECT_NE(end, std::string::npos) << report;
+    if (end == std::string::npos) return std::pair<double, double>{-1, -1};
+    const std::size_t whole = at + head.size(), part_at = mid + middle.size();
+    return std::pair{std::stod(report.substr(whole, mid - whole)), std::stod(report.substr(part_at, end - part_at))};
   };
   const Outcome to_file = run("sum a.off b.off --stats -o s.off");
   ASSERT_EQ(to_file.code, 0) << to_file.err;
